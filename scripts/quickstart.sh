@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# quickstart.sh main|test - install what is missing, build, then run the main job or the tests.
+#
+#   main  prints the C-3 manoeuvring report (turning circles against the sea trial,
+#         zig-zags, IMO verdicts) and draws its plots into out/manoeuvres/
+#   test  builds twice (plain, and with AddressSanitizer + UndefinedBehaviorSanitizer)
+#         and runs the whole ctest suite on both builds
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode=${1:-main}
+packages=(build-essential cmake pkg-config libyaml-dev libsundials-dev libsqlite3-dev sqlite3
+          sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -q
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+export SUMO_HOME=${SUMO_HOME:-/usr/share/sumo}
+jobs=$(nproc)
+
+build() { # build DIR [cmake options...]
+  local dir=$1; shift
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+  cmake --build "$dir" -j "$jobs"
+}
+
+case "$mode" in
+  main)
+    build build
+    mkdir -p out/manoeuvres
+    ./build/fairway manoeuvre report --ship c3 --csv-dir out/manoeuvres
+    python3 analysis/plot_manoeuvre.py out/manoeuvres/*.csv --trial c3 --out out/manoeuvres
+    echo "plots: out/manoeuvres/*.png"
+    ;;
+  test)
+    build build
+    (cd build && ctest --output-on-failure -j "$jobs")
+    build build-asan -DFAIRWAY_SANITIZE=ON
+    (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+       ctest --output-on-failure -j "$jobs" -LE no_sanitize)
+    ;;
+  *)
+    echo "usage: $0 main|test" >&2
+    exit 2
+    ;;
+esac

@@ -1,0 +1,38 @@
+/* args.h - small helpers for subcommand option parsing.
+ *
+ * Options are GNU style (--name VALUE or --name=VALUE).  Number parsing is
+ * strict: the whole text must be a finite number, and the error names the
+ * option.  Interface units (knots, degrees) are converted by the caller via
+ * core/units.h, never here.
+ */
+#ifndef FW_ARGS_H
+#define FW_ARGS_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "core/error.h"
+
+typedef struct fw_args {
+    int argc;
+    char **argv;
+    int i; /* next argument to read */
+} fw_args;
+
+/* If argv[i] is option `name` (with or without "=VALUE"), consumes it, stores
+ * the value in *value (NULL for flags) and returns true. */
+bool fw_args_opt(fw_args *a, const char *name, const char **value, fw_error *err);
+bool fw_args_flag(fw_args *a, const char *name);
+
+fw_status fw_parse_double(const char *opt, const char *text, double *out, fw_error *err);
+fw_status fw_parse_long(const char *opt, const char *text, long *out, fw_error *err);
+/* Splits "a,b,c" into up to max finite numbers; *n gets the count. */
+fw_status fw_parse_list(const char *opt, const char *text, double *out, int max, int *n,
+                        fw_error *err);
+
+bool fw_is_help(const char *arg);
+
+/* Prints "fairway: msg" to stderr and returns the status as an exit code. */
+int fw_report(const fw_error *err);
+
+#endif

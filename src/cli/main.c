@@ -1,0 +1,57 @@
+/* fairway - ship traffic safety studies: MMG own ship, Nomoto avoidance, SUMO traffic. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/args.h"
+#include "cli/commands.h"
+
+typedef struct command {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} command;
+
+static const command commands[] = {
+    {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
+};
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: fairway COMMAND [OPTIONS]\n"
+            "\n"
+            "Maritime traffic safety studies: the own ship stepped with the MMG model\n"
+            "(integrated by SUNDIALS CVODE), Nomoto-based collision avoidance, SUMO traffic.\n"
+            "\n"
+            "commands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(out, "  %-12s %s\n", commands[i].name, commands[i].summary);
+    fprintf(out,
+            "\n"
+            "'fairway COMMAND --help' describes each command.\n"
+            "Exit codes: 0 ok, 1 a run failed, 2 bad input.\n"
+            "Units at the interface: knots, degrees, nautical miles; metres east/north.\n"
+            "Data files (ships, scenarios) are looked up under $FAIRWAY_DATA (default: the\n"
+            "source tree this fairway was built from).\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    if (fw_is_help(argv[1])) {
+        usage(stdout);
+        return 0;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("fairway 0.1.0\n");
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (strcmp(argv[1], commands[i].name) == 0)
+            return commands[i].run(argc - 2, argv + 2);
+    fprintf(stderr, "fairway: unknown command '%s' (see fairway --help)\n", argv[1]);
+    return 2;
+}

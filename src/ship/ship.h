@@ -1,0 +1,111 @@
+/* ship.h - a ship as data: particulars, MMG coefficients, Nomoto knowledge base.
+ *
+ * Ship definitions come from YAML files (scenarios/ships/NAME.yaml), never from
+ * constants in C.  Everything here is SI (m, kg, s, rad) or non-dimensional in
+ * the MMG scaling (forces by 0.5 rho L d U^2, moments by 0.5 rho L^2 d U^2).
+ * The Nomoto knowledge base keeps the paper's interface units (U in knots,
+ * rudder angle in degrees) because its regression coefficients are fitted in
+ * them; fw_nomoto_kb_eval() is the only place that reads them.
+ */
+#ifndef FW_SHIP_H
+#define FW_SHIP_H
+
+#include <stdbool.h>
+
+#include "core/error.h"
+
+/* Basis terms of the Nomoto index regressions (paper equations 10 to 13).
+ * U is the speed in knots and d the rudder angle magnitude in degrees. */
+typedef enum fw_nomoto_basis {
+    FW_NB_ONE,      /* "1"      */
+    FW_NB_U,        /* "U"      */
+    FW_NB_D,        /* "d"      */
+    FW_NB_LN_D,     /* "ln_d"   */
+    FW_NB_U_LN_D,   /* "U*ln_d" */
+    FW_NB_U_D,      /* "U*d"    */
+    FW_NB_D2,       /* "d^2"    */
+    FW_NB_U2,       /* "U^2"    */
+    FW_NB_INV_U,    /* "1/U"    */
+    FW_NB_LN_D_U,   /* "ln_d/U" */
+    FW_NB_D_U,      /* "d/U"    */
+    FW_NB_COUNT
+} fw_nomoto_basis;
+
+extern const char *const fw_nomoto_basis_names[FW_NB_COUNT];
+
+/* One index as sum(coef[i] * basis_i(U, d)) over the terms present. */
+typedef struct fw_nomoto_index {
+    int n;
+    fw_nomoto_basis basis[FW_NB_COUNT];
+    double coef[FW_NB_COUNT];
+} fw_nomoto_index;
+
+typedef struct fw_nomoto_kb {
+    bool present;
+    fw_nomoto_index K;  /* 1/s: K*delta in deg/s for delta in deg */
+    fw_nomoto_index T1; /* s */
+    fw_nomoto_index T2; /* s */
+    fw_nomoto_index T3; /* s */
+    double speed_min_kn, speed_max_kn;  /* range the regression was fitted over */
+    double rudder_min_deg, rudder_max_deg;
+} fw_nomoto_kb;
+
+typedef struct fw_ship {
+    char name[64];
+    char file[512]; /* where it was loaded from */
+
+    /* particulars */
+    double L;       /* m, length between perpendiculars */
+    double Loa;     /* m, length overall (hull outline, SUMO length) */
+    double B;       /* m, breadth */
+    double d;       /* m, mean draft */
+    double Cb;      /* block coefficient */
+    double volume;  /* m^3, displacement volume */
+    double x_G;     /* m, centre of gravity forward of midship */
+    double k_zz;    /* yaw radius of gyration / L */
+    double rho;     /* kg/m^3, water density */
+    double rudder_rate; /* rad/s, steering gear rate limit */
+    double rudder_max;  /* rad, maximum rudder angle */
+
+    /* hull, non-dimensional */
+    double m_x, m_y, J_z, R_0;
+    double X_vv, X_vr, X_rr, X_vvvv;
+    double Y_v, Y_r, Y_vvv, Y_vvr, Y_vrr, Y_rrr;
+    double N_v, N_r, N_vvv, N_vvr, N_vrr, N_rrr;
+
+    /* propeller */
+    double D_P;   /* m */
+    double t_P, w_P0, x_P; /* x_P non-dimensional (x_P / L) */
+    double k0, k1, k2;     /* K_T = k0 + k1 J + k2 J^2 */
+    double C_1, C_2_plus, C_2_minus;
+
+    /* rudder */
+    double A_R;   /* m^2 */
+    double H_R;   /* m, rudder span */
+    double aspect_ratio; /* Lambda, for f_alpha */
+    double t_R, a_H, x_H, x_R; /* x_H, x_R non-dimensional */
+    double eps, kappa, l_R;    /* l_R non-dimensional */
+    double gamma_R_plus, gamma_R_minus;
+
+    fw_nomoto_kb nomoto;
+} fw_ship;
+
+/* Loads a ship by name (searched as scenarios/ships/NAME.yaml under the data
+ * root) or by path (anything containing '/' or ending in .yaml).  Every field
+ * is checked; errors name file, line and field and return FW_EINPUT. */
+fw_status fw_ship_load(const char *name_or_path, fw_ship *ship, fw_error *err);
+
+/* Resolves a ship name to its file path (without checking it exists). */
+void fw_ship_path(const char *name_or_path, char *out, unsigned outsz);
+
+/* The data root: $FAIRWAY_DATA if set, else the build's FAIRWAY_DATA_DIR. */
+const char *fw_data_root(void);
+
+/* Derived quantities. */
+double fw_ship_mass(const fw_ship *s);             /* kg */
+double fw_ship_f_alpha(const fw_ship *s);          /* rudder lift gradient */
+
+/* Evaluates one Nomoto index at U (knots) and rudder magnitude d (degrees). */
+double fw_nomoto_index_eval(const fw_nomoto_index *ix, double U_kn, double d_deg);
+
+#endif

@@ -1,0 +1,85 @@
+/* yaml_tree.h - YAML files as a small tree that remembers line numbers.
+ *
+ * fairway's data files (ships, scenarios, studies) are YAML.  Every error in
+ * them must name the file, line and field, so this module keeps the line of
+ * every node and key, and offers typed readers that check presence, type,
+ * finiteness and range in one call and report "FILE:LINE: FIELD: problem".
+ * Built on libyaml's event parser (Debian's libyaml-dev).
+ */
+#ifndef FW_YAML_TREE_H
+#define FW_YAML_TREE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "core/error.h"
+
+typedef enum yt_kind { YT_SCALAR, YT_MAP, YT_SEQ } yt_kind;
+
+typedef struct yt_node {
+    yt_kind kind;
+    int line; /* 1-based */
+    char *str;   /* scalar text (NULL for maps and sequences) */
+    bool quoted; /* scalar was quoted: never a number or null */
+    size_t n;             /* entries of a map or sequence */
+    char **keys;          /* map keys */
+    int *key_lines;       /* line of each map key */
+    struct yt_node **items; /* map values or sequence items */
+} yt_node;
+
+typedef struct yt_doc {
+    char *file; /* name used in messages */
+    yt_node *root;
+} yt_doc;
+
+fw_status yt_load_file(const char *path, yt_doc **out, fw_error *err);
+fw_status yt_load_string(const char *text, const char *name, yt_doc **out, fw_error *err);
+void yt_free(yt_doc *doc);
+
+/* Value of key in a map, or NULL (also when node is not a map). */
+const yt_node *yt_get(const yt_node *map, const char *key);
+/* Line of key in map, or the map's own line when the key is absent. */
+int yt_key_line(const yt_node *map, const char *key);
+
+/* Rejects keys of map that are not in allowed (NULL-terminated).  path is the
+ * map's dotted field path ("" for the root) used in messages. */
+fw_status yt_check_keys(const yt_doc *doc, const yt_node *map, const char *path,
+                        const char *const *allowed, fw_error *err);
+
+/* Typed readers.  path is the dotted path of map; key is looked up in it.
+ * yt_req_* fail when the key is missing; yt_opt_* leave *out untouched then.
+ * Numbers must be finite and within [lo, hi]. */
+fw_status yt_req_number(const yt_doc *doc, const yt_node *map, const char *path,
+                        const char *key, double lo, double hi, double *out, fw_error *err);
+fw_status yt_opt_number(const yt_doc *doc, const yt_node *map, const char *path,
+                        const char *key, double lo, double hi, double *out, fw_error *err);
+fw_status yt_req_int(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                     long lo, long hi, long *out, fw_error *err);
+fw_status yt_opt_int(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                     long lo, long hi, long *out, fw_error *err);
+/* Copies a scalar string into out (size outsz); fails if it does not fit. */
+fw_status yt_req_string(const yt_doc *doc, const yt_node *map, const char *path,
+                        const char *key, char *out, size_t outsz, fw_error *err);
+fw_status yt_opt_string(const yt_doc *doc, const yt_node *map, const char *path,
+                        const char *key, char *out, size_t outsz, fw_error *err);
+fw_status yt_opt_bool(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                      bool *out, fw_error *err);
+/* Fetches a child map or sequence, failing with a located error when it is
+ * missing (req) or of the wrong kind. */
+fw_status yt_req_map(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                     const yt_node **out, fw_error *err);
+fw_status yt_opt_map(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                     const yt_node **out, fw_error *err);
+fw_status yt_req_seq(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                     const yt_node **out, fw_error *err);
+fw_status yt_opt_seq(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                     const yt_node **out, fw_error *err);
+
+/* Parses a scalar node as a finite number; fails with a located error. */
+fw_status yt_number(const yt_doc *doc, const yt_node *node, const char *field, double *out,
+                    fw_error *err);
+
+/* Joins a dotted path: out = path + "." + key (or key when path is empty). */
+const char *yt_path(char *out, size_t outsz, const char *path, const char *key);
+
+#endif
