@@ -1,0 +1,48 @@
+/* mmg.h - the MMG 3-DOF manoeuvring model (Yasukawa and Yoshimura 2015).
+ *
+ * Forces of hull, propeller (2015 wake form) and rudder (finite u_R form) on a
+ * ship in calm deep water, and the accelerations they cause.  Frames: earth
+ * positions in metres east and north, heading psi navigational (0 north,
+ * clockwise); body x forward, y starboard, origin at midship; r > 0 and rudder
+ * delta > 0 turn to starboard.  All SI.
+ */
+#ifndef FW_MMG_H
+#define FW_MMG_H
+
+#include "core/error.h"
+#include "ship/ship.h"
+
+typedef struct fw_mmg_state {
+    double u;      /* m/s, surge */
+    double vm;     /* m/s, sway at midship */
+    double r;      /* rad/s, yaw rate */
+    double east;   /* m, midship position */
+    double north;  /* m */
+    double psi;    /* rad, heading (navigational, not wrapped) */
+    double delta;  /* rad, actual rudder angle */
+} fw_mmg_state;
+
+/* Forces on the ship for a state, propeller speed n (rev/s) and rudder delta. */
+typedef struct fw_mmg_forces {
+    double X_H, Y_H, N_H;
+    double X_P;
+    double X_R, Y_R, N_R;
+    double K_T, J, w_P;  /* propeller operating point */
+    double u_R, v_R, alpha_R, F_N;  /* rudder inflow */
+} fw_mmg_forces;
+
+void fw_mmg_forces_eval(const fw_ship *ship, const fw_mmg_state *s, double n,
+                        fw_mmg_forces *f);
+
+/* Time derivatives of u, vm, r, east, north, psi (6 values) for state s (its
+ * delta is the rudder angle used) and propeller speed n. */
+void fw_mmg_derivs(const fw_ship *ship, const fw_mmg_state *s, double n, double out[6]);
+
+/* Propeller speed (rev/s) that balances surge in straight running at U (m/s):
+ * X_H(U, 0, 0) + X_P = 0.  Fails (FW_ERUN) if no positive solution exists. */
+fw_status fw_mmg_propeller_for_speed(const fw_ship *ship, double U, double *n, fw_error *err);
+
+/* Straight, steady running at speed U on heading psi from (east, north). */
+fw_mmg_state fw_mmg_straight(double U, double east, double north, double psi);
+
+#endif
