@@ -3,3 +3,37 @@ fw_cli_test(cli_help 0 "usage: fairway COMMAND" --help)
 fw_cli_test(cli_unknown_command 2 "unknown command" frobnicate)
 fw_cli_test(cli_ship_c3 0 "ship c3" ship c3)
 fw_cli_test(cli_ship_unknown 2 "unknown ship 'nosuch'" ship nosuch)
+
+# Standard manoeuvres and the calibration.
+set(FW_C3_TURN manoeuvre turning --ship c3 --speed 26.7 --rudder 35 --side starboard)
+fw_cli_test(cli_turning 0 "tactical diameter +1[34][0-9][0-9]\\.[0-9] m" ${FW_C3_TURN})
+fw_cli_test(cli_turning_json 0 "^\\{\"ship\": \"c3\".*\"advance_m\": 1[01][0-9][0-9]\\.[0-9]+.*\"imo_advance_ok\": true" ${FW_C3_TURN} --json)
+fw_cli_test(cli_turning_port 0 "35 deg port at 27.16 kn" manoeuvre turning --ship c3 --speed 27.16 --rudder 35 --side port)
+fw_cli_test(cli_zigzag_10 0 "first overshoot .*pass" manoeuvre zigzag --ship c3 --speed 26.7 --angle 10)
+fw_cli_test(cli_zigzag_20_json 0 "\"angle_deg\": 20.00.*\"imo_ok1\": true" manoeuvre zigzag --ship c3 --speed 26.7 --angle 20 --json)
+string(REPLACE ";" " " FW_C3_TURN_TEXT "${FW_C3_TURN}")
+fw_script_test(cli_turning_csv 0 "^t_s,east_m,north_m,heading_deg,u_mps,v_mps,r_degps,rudder_deg,helm_deg,propeller_rps"
+               "\"$FAIRWAY\" ${FW_C3_TURN_TEXT} --csv turning.csv > /dev/null && head -n 3 turning.csv")
+fw_cli_test(cli_report 0 "all criteria met" manoeuvre report --ship c3)
+fw_cli_test(cli_manoeuvre_help 0 "usage: fairway manoeuvre" manoeuvre --help)
+fw_cli_test(cli_calibrate_help 0 "usage: fairway calibrate" calibrate --help)
+
+# Bad input: one line naming what is wrong, exit code 2.
+fw_cli_test(cli_bad_unknown_ship 2 "unknown ship 'nosuch'" manoeuvre turning --ship nosuch --speed 10 --rudder 35)
+fw_cli_test(cli_bad_broken_ship 2 "broken_ship.yaml:[0-9]+: YAML syntax error"
+            manoeuvre turning --ship ${CMAKE_CURRENT_SOURCE_DIR}/data/broken_ship.yaml --speed 10 --rudder 35)
+fw_cli_test(cli_bad_nan_coefficient 2 "nan_coef_ship.yaml:[0-9]+: hull.N_r: 'nan' is not a finite number"
+            manoeuvre turning --ship ${CMAKE_CURRENT_SOURCE_DIR}/data/nan_coef_ship.yaml --speed 2 --rudder 35)
+fw_cli_test(cli_bad_unknown_field 2 "unknown_field_ship.yaml:[0-9]+: particulars.depth: unknown field"
+            ship ${CMAKE_CURRENT_SOURCE_DIR}/data/unknown_field_ship.yaml)
+fw_cli_test(cli_bad_negative_speed 2 "--speed: must be positive" ${FW_C3_TURN} --speed -5)
+fw_cli_test(cli_bad_speed_text 2 "--speed: 'fast' is not a number" manoeuvre turning --ship c3 --speed fast --rudder 35)
+fw_cli_test(cli_bad_speed_nan 2 "--speed: 'nan' is not a finite number" manoeuvre turning --ship c3 --speed nan --rudder 35)
+fw_cli_test(cli_bad_rudder_beyond_max 2 "--rudder: 40 deg is beyond c3's maximum of 35 deg"
+            manoeuvre turning --ship c3 --speed 26.7 --rudder 40)
+fw_cli_test(cli_bad_side 2 "--side: 'left' is not starboard or port" ${FW_C3_TURN} --side left)
+fw_cli_test(cli_bad_kind 2 "'spiral' is not turning, zigzag or report" manoeuvre spiral --ship c3)
+fw_cli_test(cli_bad_missing_rudder 2 "needs --speed and --rudder" manoeuvre turning --ship c3 --speed 26.7)
+fw_cli_test(cli_bad_option 2 "unknown option '--rpm'" manoeuvre turning --ship c3 --rpm 80)
+fw_cli_test(cli_bad_trial 2 "c3-trial-bad.yaml:[0-9]+: turns\\[0\\].side: 'left' is not starboard or port"
+            calibrate --ship c3 --trial ${CMAKE_CURRENT_SOURCE_DIR}/data/c3-trial-bad.yaml)

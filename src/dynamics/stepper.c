@@ -56,9 +56,9 @@ struct fw_stepper {
 fw_stepper_def fw_default_stepper_def(void)
 {
     fw_stepper_def d = {
-        .rtol = 1e-6,
-        .atol_vel = 1e-5,
-        .atol_pos = 1e-3,
+        .rtol = 1e-8,
+        .atol_vel = 1e-7,
+        .atol_pos = 1e-5,
         .max_step = 0.0,
     };
     return d;
@@ -222,7 +222,8 @@ fw_status fw_stepper_start(fw_stepper *st, double t0, const fw_mmg_state *s0, do
             check(st, ERKStepSetUserData(st->ark, st), "ERKStepSetUserData", err) ||
             check(st, ERKStepSVtolerances(st->ark, st->def.rtol, st->atol), "ERKStepSVtolerances", err) ||
             check(st, ERKStepSetTableNum(st->ark, ARKODE_DORMAND_PRINCE_7_4_5), "ERKStepSetTableNum", err) ||
-            check(st, ERKStepSetMaxNumSteps(st->ark, 100000), "ERKStepSetMaxNumSteps", err))
+            check(st, ERKStepSetMaxNumSteps(st->ark, 100000), "ERKStepSetMaxNumSteps", err) ||
+            check(st, ERKStepSetDenseOrder(st->ark, 5), "ERKStepSetDenseOrder", err))
             return FW_ERUN;
         if (st->def.max_step > 0.0 &&
             check(st, ERKStepSetMaxStep(st->ark, st->def.max_step), "ERKStepSetMaxStep", err))
