@@ -8,3 +8,11 @@ foreach(case embedded remote badnet noport dies)
   set_tests_properties(test_traffic_${case} PROPERTIES TIMEOUT 90
                        ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR}")
 endforeach()
+
+# The traffic command: a short embedded run, and one-line errors for bad input.
+fw_cli_test(cli_traffic_run 0 "median [0-9.]+ ms per step" traffic --network channel --ships 20
+            --duration 30 --every 10 --log traffic-cli.log --routes traffic-cli.rou.xml)
+fw_cli_test(cli_traffic_help 0 "usage: fairway traffic" traffic --help)
+fw_cli_test(cli_traffic_bad_network 2 "unknown network 'atlantis'" traffic --network atlantis)
+fw_cli_test(cli_traffic_bad_mode 2 "expected embedded, gui or remote:HOST:PORT" traffic --sumo tcp)
+fw_cli_test(cli_traffic_bad_ships 2 "--ships: 'many' is not an integer" traffic --ships many)

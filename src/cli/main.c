@@ -13,6 +13,7 @@ typedef struct command {
 
 static const command commands[] = {
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
+    {"traffic", fw_cmd_traffic, "run SUMO background traffic around a straight-running own ship"},
 };
 
 static void usage(FILE *out)
