@@ -9,5 +9,6 @@
 int fw_cmd_ship(int argc, char **argv);
 int fw_cmd_manoeuvre(int argc, char **argv);
 int fw_cmd_calibrate(int argc, char **argv);
+int fw_cmd_traffic(int argc, char **argv);
 
 #endif

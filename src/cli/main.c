@@ -15,6 +15,7 @@ static const command commands[] = {
     {"manoeuvre", fw_cmd_manoeuvre, "standard manoeuvres (turning circle, zig-zag) with IMO verdicts"},
     {"calibrate", fw_cmd_calibrate, "fit named MMG coefficients of a ship to its sea trial"},
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
+    {"traffic", fw_cmd_traffic, "run SUMO background traffic around a straight-running own ship"},
 };
 
 static void usage(FILE *out)

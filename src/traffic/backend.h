@@ -1,0 +1,49 @@
+/* backend.h - the table of operations traffic_sumo.cpp provides, once per SUMO
+ * library (fw_backend_libsumo, fw_backend_libtraci).  Internal to src/traffic.
+ *
+ * Values cross this boundary raw, in SUMO's own terms (front bumper, degrees);
+ * traffic.c converts them.  Each function returns an fw_status and fills err;
+ * no C++ exception ever leaves it.
+ */
+#ifndef FW_TRAFFIC_BACKEND_H
+#define FW_TRAFFIC_BACKEND_H
+
+#include "core/error.h"
+
+typedef struct fw_sumo_raw {
+    char id[64];
+    char type[64];
+    double x, y;      /* front bumper, SUMO coordinates */
+    double angle_deg; /* SUMO angle: navigational degrees */
+    double speed, length, width;
+} fw_sumo_raw;
+
+/* A growable array the back end fills. */
+typedef struct fw_sumo_list {
+    fw_sumo_raw *v;
+    int n, cap;
+} fw_sumo_list;
+
+typedef struct fw_sumo_backend {
+    const char *name;
+    /* libsumo: start the simulation with argv; libtraci: connect to host:port. */
+    fw_status (*start)(const char *const *argv, fw_error *err);
+    fw_status (*connect)(const char *host, int port, int retries, fw_error *err);
+    double (*step_length)(void);
+    /* Own ship: vType, route on edge (NULL: pick one), vehicle, and the POI
+     * whose context subscription is the range query. */
+    fw_status (*add_own)(const char *id, double length, double width, const char *edge,
+                         double radius, fw_error *err);
+    fw_status (*place)(const char *id, double fx, double fy, double angle_deg, double cx,
+                       double cy, fw_error *err);
+    fw_status (*step)(double *time, fw_error *err);
+    fw_status (*context)(fw_sumo_list *out, fw_error *err);
+    fw_status (*all)(fw_sumo_list *out, fw_error *err);
+    fw_status (*get)(const char *id, fw_sumo_raw *out, fw_error *err);
+    void (*close)(void);
+} fw_sumo_backend;
+
+extern const fw_sumo_backend fw_backend_libsumo;
+extern const fw_sumo_backend fw_backend_libtraci;
+
+#endif

@@ -1,0 +1,62 @@
+/* demand.h - background traffic as a SUMO route file, written per run.
+ *
+ * A network's streams (networks/NAME/demand.yaml: id, edges, ships per hour at
+ * density 1, ship type or type distribution) become flows with Poisson arrivals
+ * (SUMO's period="exp(RATE)") whose rates scale with a density factor, so a
+ * study varies traffic without editing files.  Optionally `fill` ships start
+ * spread along the routes, so a run begins near steady state instead of with
+ * an empty waterway.
+ */
+#ifndef FW_DEMAND_H
+#define FW_DEMAND_H
+
+#include "core/error.h"
+
+#define FW_DEMAND_MAX_STREAMS 32
+#define FW_DEMAND_MAX_EDGES 16
+
+typedef struct fw_stream {
+    char id[64];
+    char types[64]; /* vType or vTypeDistribution id (networks/ships.add.xml) */
+    int n_edges;
+    char edges[FW_DEMAND_MAX_EDGES][64];
+    double per_hour; /* ships per hour at density 1 */
+} fw_stream;
+
+typedef struct fw_demand {
+    char file[512];
+    int n;
+    fw_stream streams[FW_DEMAND_MAX_STREAMS];
+} fw_demand;
+
+typedef struct fw_demand_def {
+    double density;     /* multiplies every rate; 0: no flows */
+    double begin, end;  /* s, when the flows run */
+    int fill;           /* ships placed along the routes at time 0 */
+    unsigned long seed; /* chooses the fill ships' streams' edges */
+} fw_demand_def;
+
+/* density 1, 0 .. 86400 s, no fill, seed 1. */
+fw_demand_def fw_default_demand_def(void);
+
+/* Reads a demand.yaml; errors name file, line and field. */
+fw_status fw_demand_load(const char *path, fw_demand *out, fw_error *err);
+
+/* Writes the route file for d under def to path. */
+fw_status fw_demand_write(const fw_demand *d, const fw_demand_def *def, const char *path,
+                          fw_error *err);
+
+/* The files of network `name` (letters, digits, '_', '-'): the net.xml the
+ * build made, its demand.yaml and the shared ship types.  FW_EINPUT with the
+ * list of networks when there is no such network. */
+typedef struct fw_network_files {
+    char net[1024];
+    char demand[1024];
+    char types[1024];
+} fw_network_files;
+fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err);
+
+/* Total ships per hour at density 1. */
+double fw_demand_rate(const fw_demand *d);
+
+#endif

@@ -1,0 +1,404 @@
+/* traffic.c - the C side of the SUMO coupling: mode strings, the one frame
+ * conversion, SUMO's command line, and the step-loop calls dispatched to the
+ * libsumo or libtraci table of traffic_sumo.cpp. */
+#include "traffic/traffic.h"
+
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "core/units.h"
+#include "traffic/backend.h"
+
+struct fw_traffic {
+    const fw_sumo_backend *be;
+    fw_traffic_def def;
+    char own_id[64];
+    char log_file[1024];
+    pid_t child; /* sumo-gui started here, or 0 */
+    bool placed, dead;
+    double time;
+    fw_sumo_list raw;
+    fw_traffic_ship *ships;
+    int ships_cap;
+};
+
+static bool embedded_open = false; /* libsumo: one simulation per process */
+
+fw_traffic_def fw_default_traffic_def(void)
+{
+    fw_traffic_def d;
+    memset(&d, 0, sizeof d);
+    d.mode.kind = FW_TRAFFIC_EMBEDDED;
+    d.step = 1.0;
+    d.seed = 1;
+    d.sumo_gui = "sumo-gui";
+    d.connect_timeout = 10.0;
+    d.own_id = "own";
+    d.own_length = 100.0;
+    d.own_width = 16.0;
+    d.radius = fw_nm_to_m(6.0);
+    return d;
+}
+
+fw_status fw_traffic_mode_parse(const char *text, fw_traffic_mode *out, fw_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (!text || strcmp(text, "embedded") == 0) {
+        out->kind = FW_TRAFFIC_EMBEDDED;
+        return FW_OK;
+    }
+    if (strcmp(text, "gui") == 0) {
+        out->kind = FW_TRAFFIC_GUI;
+        return FW_OK;
+    }
+    if (strncmp(text, "remote:", 7) == 0) {
+        const char *host = text + 7;
+        const char *colon = strrchr(host, ':');
+        size_t hl = colon ? (size_t)(colon - host) : 0;
+        if (!colon || hl == 0)
+            return fw_fail(err, FW_EINPUT, "--sumo '%s': expected remote:HOST:PORT", text);
+        if (hl >= sizeof out->host)
+            return fw_fail(err, FW_EINPUT, "--sumo '%s': host name too long", text);
+        char *end = NULL;
+        long port = strtol(colon + 1, &end, 10);
+        if (end == colon + 1 || *end != '\0' || port < 1 || port > 65535)
+            return fw_fail(err, FW_EINPUT, "--sumo '%s': port must be 1..65535", text);
+        memcpy(out->host, host, hl);
+        out->host[hl] = '\0';
+        out->port = (int)port;
+        out->kind = FW_TRAFFIC_REMOTE;
+        return FW_OK;
+    }
+    return fw_fail(err, FW_EINPUT,
+                   "--sumo '%s': expected embedded, gui or remote:HOST:PORT", text);
+}
+
+void fw_traffic_to_sumo(double x, double y, double heading, double length, double *fx,
+                        double *fy, double *angle_deg)
+{
+    *fx = x + 0.5 * length * sin(heading);
+    *fy = y + 0.5 * length * cos(heading);
+    *angle_deg = fw_rad_to_deg(fw_wrap_2pi(heading));
+}
+
+void fw_traffic_from_sumo(double fx, double fy, double angle_deg, double length, double *x,
+                          double *y, double *heading)
+{
+    double h = fw_deg_to_rad(angle_deg);
+    *x = fx - 0.5 * length * sin(h);
+    *y = fy - 0.5 * length * cos(h);
+    *heading = fw_wrap_2pi(h);
+}
+
+fw_status fw_traffic_sumo_args(const fw_traffic_def *def, const char *program, int remote_port,
+                               const char **argv, int max, char *buf, size_t bufsz,
+                               fw_error *err)
+{
+    int n = 0;
+    size_t used = 0;
+    bool overflow = false;
+#define ARG(s)                                                                              \
+    do {                                                                                    \
+        if (n + 1 < max) argv[n++] = (s); else overflow = true;                             \
+    } while (0)
+    /* numbers are printed into buf so argv can point at them */
+#define NUM(fmt, v)                                                                         \
+    do {                                                                                    \
+        int k_ = snprintf(buf + used, bufsz - used, fmt, v);                                \
+        if (k_ < 0 || (size_t)k_ >= bufsz - used) { overflow = true; break; }               \
+        ARG(buf + used);                                                                    \
+        used += (size_t)k_ + 1;                                                             \
+    } while (0)
+    ARG(program);
+    ARG("--net-file");
+    ARG(def->net_file);
+    if (def->route_file) {
+        ARG("--route-files");
+        ARG(def->route_file);
+    }
+    if (def->add_file) {
+        ARG("--additional-files");
+        ARG(def->add_file);
+    }
+    ARG("--step-length");
+    NUM("%.17g", def->step);
+    ARG("--seed");
+    NUM("%lu", def->seed);
+    /* ships are never teleported; collisions are fairway's to judge */
+    ARG("--time-to-teleport");
+    ARG("-1");
+    ARG("--collision.action");
+    ARG("warn");
+    ARG("--no-step-log");
+    ARG("true");
+    ARG("--duration-log.disable");
+    ARG("true");
+    /* --log alone leaves load errors on stderr: name the file for errors too */
+    ARG("--log");
+    ARG(def->log_file ? def->log_file : "/dev/null");
+    ARG("--error-log");
+    ARG(def->log_file ? def->log_file : "/dev/null");
+    if (remote_port > 0) {
+        ARG("--remote-port");
+        NUM("%d", remote_port);
+    }
+#undef NUM
+#undef ARG
+    if (overflow)
+        return fw_fail(err, FW_ERUN, "sumo command line too long");
+    argv[n] = NULL;
+    return FW_OK;
+}
+
+static fw_status check_def(const fw_traffic_def *d, fw_error *err)
+{
+    if (!(d->step > 0.0 && d->step <= 60.0))
+        return fw_fail(err, FW_EINPUT, "traffic step %g s: must be in (0, 60]", d->step);
+    if (!(d->radius > 0.0 && isfinite(d->radius)))
+        return fw_fail(err, FW_EINPUT, "traffic radius %g m: must be positive", d->radius);
+    if (!(d->own_length > 0.0 && d->own_width > 0.0))
+        return fw_fail(err, FW_EINPUT, "own ship %g x %g m: length and width must be positive",
+                       d->own_length, d->own_width);
+    if (!d->own_id || !d->own_id[0] || strlen(d->own_id) >= 64)
+        return fw_fail(err, FW_EINPUT, "own ship id must have 1..63 characters");
+    if (d->mode.kind != FW_TRAFFIC_REMOTE) {
+        const char *files[3] = {d->net_file, d->route_file, d->add_file};
+        const char *what[3] = {"network", "route", "additional"};
+        if (!d->net_file)
+            return fw_fail(err, FW_EINPUT, "no network file given");
+        for (int i = 0; i < 3; i++)
+            if (files[i] && access(files[i], R_OK) != 0)
+                return fw_fail(err, FW_EINPUT, "%s file '%s' cannot be read", what[i], files[i]);
+    }
+    return FW_OK;
+}
+
+static void own_sigpipe(void)
+{
+    /* A sumo that dies leaves a closed socket: writing to it must give an error
+     * from libtraci, not kill fairway with SIGPIPE. */
+    struct sigaction sa;
+    if (sigaction(SIGPIPE, NULL, &sa) == 0 && sa.sa_handler == SIG_DFL) {
+        sa.sa_handler = SIG_IGN;
+        sigaction(SIGPIPE, &sa, NULL);
+    }
+}
+
+/* Puts context in front of the back end's message. */
+static fw_status prefix(fw_error *err, const char *fmt, const char *a, int b)
+{
+    if (!err)
+        return FW_ERUN;
+    char head[300], msg[sizeof err->msg];
+    snprintf(head, sizeof head, fmt, a, b);
+    snprintf(msg, sizeof msg, "%s", err->msg);
+    return fw_fail(err, FW_ERUN, "%s: %s", head, msg);
+}
+
+static fw_status start(fw_traffic *t, fw_error *err)
+{
+    const fw_traffic_def *d = &t->def;
+    const char *argv[48];
+    char buf[128];
+    int retries = (int)ceil(d->connect_timeout);
+    fw_status st;
+    switch (d->mode.kind) {
+    case FW_TRAFFIC_EMBEDDED:
+        if (embedded_open)
+            return fw_fail(err, FW_ERUN, "an embedded SUMO is already running in this process");
+        t->be = &fw_backend_libsumo;
+        if ((st = fw_traffic_sumo_args(d, "sumo", 0, argv, 48, buf, sizeof buf, err)))
+            return st;
+        /* libsumo only says "Process Error"; SUMO's reasons are in its log,
+         * which it flushes when the process ends */
+        if ((st = t->be->start(argv, err)))
+            return fw_fail(err, FW_ERUN, "SUMO cannot load '%s' (reasons in %s)", d->net_file,
+                           d->log_file ? d->log_file : "no log: set a log file");
+        embedded_open = true;
+        return FW_OK;
+    case FW_TRAFFIC_REMOTE:
+        own_sigpipe();
+        t->be = &fw_backend_libtraci;
+        if ((st = t->be->connect(d->mode.host, d->mode.port, retries, err)))
+            return prefix(err, "no SUMO at %s:%d", d->mode.host, d->mode.port);
+        return FW_OK;
+    case FW_TRAFFIC_GUI: {
+        own_sigpipe();
+        t->be = &fw_backend_libtraci;
+        int port;
+        if ((st = fw_traffic_free_port(&port, err)))
+            return st;
+        if ((st = fw_traffic_sumo_args(d, d->sumo_gui, port, argv, 44, buf, sizeof buf, err)))
+            return st;
+        int n = 0;
+        while (argv[n])
+            n++;
+        argv[n++] = "--start"; /* run without waiting for the play button */
+        argv[n++] = "true";
+        argv[n] = NULL;
+        if ((st = fw_traffic_spawn(argv, NULL, &t->child, err)))
+            return st;
+        if ((st = t->be->connect("localhost", port, retries, err)))
+            return prefix(err, "%s did not accept a connection on port %d", d->sumo_gui, port);
+        return FW_OK;
+    }
+    }
+    return fw_fail(err, FW_EINPUT, "unknown SUMO mode");
+}
+
+fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error *err)
+{
+    *out = NULL;
+    fw_status st = check_def(def, err);
+    if (st)
+        return st;
+    setenv("SUMO_HOME", FW_SUMO_HOME, 0); /* SUMO looks up its XML schemata there */
+    fw_traffic *t = calloc(1, sizeof *t);
+    if (!t)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    t->def = *def;
+    snprintf(t->own_id, sizeof t->own_id, "%s", def->own_id);
+    t->def.own_id = t->own_id;
+    if (def->log_file) {
+        snprintf(t->log_file, sizeof t->log_file, "%s", def->log_file);
+        t->def.log_file = t->log_file;
+    }
+    /* only the start uses the file names; they are not kept */
+    if ((st = start(t, err))) {
+        fw_traffic_close(t);
+        return st;
+    }
+    double dt = t->be->step_length();
+    if (fabs(dt - def->step) > 1e-9) {
+        fw_traffic_close(t);
+        return fw_fail(err, FW_EINPUT, "SUMO's step length is %g s, the controller's %g s",
+                       dt, def->step);
+    }
+    if ((st = t->be->add_own(t->own_id, def->own_length, def->own_width, def->own_edge,
+                             def->radius, err))) {
+        fw_traffic_close(t);
+        return st;
+    }
+    *out = t;
+    return FW_OK;
+}
+
+void fw_traffic_close(fw_traffic *t)
+{
+    if (!t)
+        return;
+    if (t->be) {
+        t->be->close();
+        if (t->be == &fw_backend_libsumo)
+            embedded_open = false;
+    }
+    if (t->child > 0)
+        fw_traffic_stop_child(t->child);
+    free(t->raw.v);
+    free(t->ships);
+    free(t);
+}
+
+static fw_status alive(const fw_traffic *t, fw_error *err)
+{
+    if (t->dead)
+        return fw_fail(err, FW_ERUN, "SUMO is no longer usable after an earlier error");
+    return FW_OK;
+}
+
+fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, double speed,
+                           fw_error *err)
+{
+    (void)speed; /* SUMO derives the own ship's speed from the distance moved */
+    if (alive(t, err))
+        return FW_ERUN;
+    if (!isfinite(x) || !isfinite(y) || !isfinite(heading))
+        return fw_fail(err, FW_ERUN, "own ship state is not finite (%g, %g, %g)", x, y, heading);
+    double fx, fy, a;
+    fw_traffic_to_sumo(x, y, heading, t->def.own_length, &fx, &fy, &a);
+    fw_status st = t->be->place(t->own_id, fx, fy, a, x, y, err);
+    if (st)
+        t->dead = true;
+    else
+        t->placed = true;
+    return st;
+}
+
+fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
+{
+    if (alive(t, err))
+        return FW_ERUN;
+    if (!t->placed)
+        return fw_fail(err, FW_ERUN, "own ship not placed before the first step");
+    fw_status st = t->be->step(&t->time, err);
+    if (st)
+        t->dead = true;
+    return st;
+}
+
+double fw_traffic_time(const fw_traffic *t) { return t->time; }
+
+/* Raw SUMO values to fairway's frame: the one place this happens. */
+static fw_status convert(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
+{
+    if (t->raw.n > t->ships_cap) {
+        int cap = t->raw.n * 2;
+        void *p = realloc(t->ships, sizeof *t->ships * (size_t)cap);
+        if (!p)
+            return fw_fail(err, FW_ERUN, "out of memory for %d ships", t->raw.n);
+        t->ships = p;
+        t->ships_cap = cap;
+    }
+    for (int i = 0; i < t->raw.n; i++) {
+        const fw_sumo_raw *r = &t->raw.v[i];
+        fw_traffic_ship *s = &t->ships[i];
+        memcpy(s->id, r->id, sizeof s->id);
+        memcpy(s->type, r->type, sizeof s->type);
+        fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->x, &s->y, &s->heading);
+        s->speed = r->speed;
+        s->length = r->length;
+        s->width = r->width;
+    }
+    *ships = t->ships;
+    *n = t->raw.n;
+    return FW_OK;
+}
+
+fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    if (alive(t, err))
+        return FW_ERUN;
+    fw_status st = t->be->context(&t->raw, err);
+    return st ? st : convert(t, ships, n, err);
+}
+
+fw_status fw_traffic_all(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    if (alive(t, err))
+        return FW_ERUN;
+    fw_status st = t->be->all(&t->raw, err);
+    return st ? st : convert(t, ships, n, err);
+}
+
+fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_traffic_ship *ship, fw_error *err)
+{
+    if (alive(t, err))
+        return FW_ERUN;
+    fw_sumo_raw r;
+    fw_status st = t->be->get(id, &r, err);
+    if (st)
+        return st;
+    memcpy(ship->id, r.id, sizeof ship->id);
+    memcpy(ship->type, r.type, sizeof ship->type);
+    fw_traffic_from_sumo(r.x, r.y, r.angle_deg, r.length, &ship->x, &ship->y, &ship->heading);
+    ship->speed = r.speed;
+    ship->length = r.length;
+    ship->width = r.width;
+    return FW_OK;
+}

@@ -1,0 +1,124 @@
+/* traffic.h - background ships from SUMO, and the own ship as a SUMO vehicle.
+ *
+ * The only door to SUMO.  Back ends: libsumo in-process ("embedded", default),
+ * libtraci to a sumo someone else started ("remote:HOST:PORT"), or libtraci to
+ * a sumo-gui started here ("gui").  Every SUMO failure comes back as an
+ * fw_status and message; nothing throws or aborts.
+ *
+ * Frame: metres east (x) and north (y) in the SUMO network's coordinates.
+ * fairway's networks are built with normalisation off, so these are exactly the
+ * coordinates of networks/NAME/NAME.nod.xml.  Headings are navigational radians
+ * (0 north, clockwise), speeds m/s.  SUMO places a vehicle by its front-bumper
+ * centre; fairway by the hull centre (midship, Loa/2 abaft the bow):
+ * fw_traffic_to_sumo / fw_traffic_from_sumo are the one conversion.
+ *
+ * libsumo holds one simulation per process and is not thread-safe: at most one
+ * embedded fw_traffic may be open in a process at a time.
+ */
+#ifndef FW_TRAFFIC_H
+#define FW_TRAFFIC_H
+
+#include <stdbool.h>
+#include <sys/types.h>
+
+#include "core/error.h"
+
+typedef enum fw_traffic_kind {
+    FW_TRAFFIC_EMBEDDED, /* libsumo, in this process */
+    FW_TRAFFIC_REMOTE,   /* libtraci to a running sumo at host:port */
+    FW_TRAFFIC_GUI       /* libtraci to a sumo-gui started by fw_traffic_open */
+} fw_traffic_kind;
+
+typedef struct fw_traffic_mode {
+    fw_traffic_kind kind;
+    char host[256]; /* remote only */
+    int port;       /* remote only */
+} fw_traffic_mode;
+
+/* "embedded", "gui" or "remote:HOST:PORT" (port 1..65535). */
+fw_status fw_traffic_mode_parse(const char *text, fw_traffic_mode *out, fw_error *err);
+
+typedef struct fw_traffic_def {
+    fw_traffic_mode mode;
+    /* What sumo loads (embedded and gui; a remote sumo has its own). */
+    const char *net_file;    /* required for embedded and gui */
+    const char *route_file;  /* NULL: no background traffic */
+    const char *add_file;    /* NULL: none; normally networks/ships.add.xml */
+    const char *log_file;    /* SUMO's messages; NULL: discarded */
+    double step;             /* s, SUMO step length = controller step */
+    unsigned long seed;
+    const char *sumo_gui;    /* program for gui mode */
+    double connect_timeout;  /* s, libtraci connection attempts (about 1 per s) */
+    /* The own ship. */
+    const char *own_id;
+    double own_length;       /* m, Loa */
+    double own_width;        /* m, B */
+    const char *own_edge;    /* NULL: the first edge that allows ships */
+    /* The query. */
+    double radius;           /* m, around the own ship's hull centre */
+} fw_traffic_def;
+
+/* embedded, step 1 s, seed 1, radius 6 nm, own ship "own" 100 x 16 m. */
+fw_traffic_def fw_default_traffic_def(void);
+
+/* One ship as fairway sees it. */
+typedef struct fw_traffic_ship {
+    char id[64];
+    char type[64];
+    double x, y;    /* m, hull centre */
+    double heading; /* rad, navigational, [0, 2 pi) */
+    double speed;   /* m/s */
+    double length;  /* m */
+    double width;   /* m */
+} fw_traffic_ship;
+
+/* Hull centre and heading <-> SUMO front bumper and angle (degrees). */
+void fw_traffic_to_sumo(double x, double y, double heading, double length, double *fx,
+                        double *fy, double *angle_deg);
+void fw_traffic_from_sumo(double fx, double fy, double angle_deg, double length, double *x,
+                          double *y, double *heading);
+
+typedef struct fw_traffic fw_traffic;
+
+/* Starts or connects to SUMO, adds the own ship's type, route and vehicle and
+ * the range query.  Call fw_traffic_place before the first step. */
+fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error *err);
+/* Ends the simulation (or the connection), stops a sumo-gui started here and
+ * frees t.  Safe on NULL and after errors. */
+void fw_traffic_close(fw_traffic *t);
+
+/* Places the own ship (hull centre, heading rad, speed m/s) for the next step. */
+fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, double speed,
+                           fw_error *err);
+/* Advances SUMO by one step. */
+fw_status fw_traffic_step(fw_traffic *t, fw_error *err);
+/* Ships within the radius of the own ship after the last step, own ship
+ * excluded.  *ships points into t and stays valid until the next step. */
+fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n,
+                            fw_error *err);
+double fw_traffic_time(const fw_traffic *t); /* s, SUMO time after the last step */
+
+/* For checks, not for the step loop (one SUMO call per ship and variable):
+ * every ship in SUMO through the individual getters, own ship included.
+ * *ships points into t until the next call. */
+fw_status fw_traffic_all(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err);
+/* One ship by id through the getters. */
+fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_traffic_ship *ship, fw_error *err);
+
+/* The command line fairway gives sumo for def (program name first, NULL
+ * terminated, at most max entries); extra remote_port > 0 adds --remote-port.
+ * Used for the embedded start, for sumo-gui and by tests starting a sumo. */
+fw_status fw_traffic_sumo_args(const fw_traffic_def *def, const char *program, int remote_port,
+                               const char **argv, int max, char *buf, size_t bufsz,
+                               fw_error *err);
+
+/* A free TCP port on localhost (bound and released: a small race remains). */
+fw_status fw_traffic_free_port(int *port, fw_error *err);
+/* Starts a sumo (or sumo-gui) child with argv, its stdout/stderr to log_file
+ * (or /dev/null).  The caller stops it with fw_traffic_stop_child. */
+fw_status fw_traffic_spawn(const char *const *argv, const char *log_file, pid_t *pid,
+                           fw_error *err);
+/* SIGTERM, wait up to 3 s, then SIGKILL; always reaps. */
+void fw_traffic_stop_child(pid_t pid);
+
+#endif

@@ -1,0 +1,292 @@
+// traffic_sumo.cpp - the thin C++ shim over SUMO's client API.
+//
+// Compiled twice: plain against libsumo (in-process) and with FW_LIBTRACI
+// against libtraci (socket); the two share the source because both libraries
+// expose the same classes under namespaces libsumo / libtraci.  Each build
+// exports exactly one table (fw_backend_libsumo or fw_backend_libtraci), so
+// their symbols never clash.  Every entry point catches everything: a SUMO
+// exception becomes an fw_status and a message.
+#ifdef FW_LIBTRACI
+#include <libsumo/libtraci.h>
+namespace S = libtraci;
+#define FW_BACKEND_TABLE fw_backend_libtraci
+#define FW_BACKEND_NAME "libtraci"
+#else
+#include <libsumo/libsumo.h>
+namespace S = libsumo;
+#define FW_BACKEND_TABLE fw_backend_libsumo
+#define FW_BACKEND_NAME "libsumo"
+#endif
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+extern "C" {
+#include "traffic/backend.h"
+}
+
+namespace {
+
+// Ids of what fairway adds to SUMO next to the own vehicle.
+const char *const kOwnType = "fw_own_type";
+const char *const kOwnRoute = "fw_own_route";
+const char *const kRangePoi = "fw_own_range";
+
+std::string g_own;      // own vehicle id
+bool g_subscribed = false;
+// Only a started simulation or an open connection may be closed: libtraci's
+// close after a failed init follows a dangling connection.
+bool g_open = false;
+
+// A variable subscription result as double / string, whatever the back end
+// stored it as.
+double as_double(const libsumo::TraCIResults &r, int var)
+{
+    auto it = r.find(var);
+    if (it == r.end())
+        throw libsumo::TraCIException("subscription result misses variable " + std::to_string(var));
+    auto *d = dynamic_cast<const libsumo::TraCIDouble *>(it->second.get());
+    if (!d)
+        throw libsumo::TraCIException("subscription variable " + std::to_string(var) + " is not a number");
+    return d->value;
+}
+
+fw_status fail(fw_error *err, fw_status st, const char *what, const char *detail)
+{
+    return fw_fail(err, st, "SUMO (%s): %s: %s", FW_BACKEND_NAME, what, detail);
+}
+
+// Runs body and turns every exception into an fw_status.  TraCIException is a
+// refusal of a request; anything else (lost connection, process error) a run
+// failure.  Both are FW_ERUN for the caller: the input was checked before.
+template <typename F> fw_status guarded(const char *what, fw_error *err, F body)
+{
+    try {
+        body();
+        return FW_OK;
+    } catch (const libsumo::TraCIException &e) {
+        return fail(err, FW_ERUN, what, e.what()[0] ? e.what() : "TraCI error");
+    } catch (const libsumo::FatalTraCIError &e) {
+        return fail(err, FW_ERUN, what, e.what()[0] ? e.what() : "connection lost");
+    } catch (const std::exception &e) {
+        return fail(err, FW_ERUN, what, e.what()[0] ? e.what() : "error");
+    } catch (...) {
+        return fail(err, FW_ERUN, what, "unknown exception");
+    }
+}
+
+void copy_id(char *dst, size_t n, const std::string &s)
+{
+    std::snprintf(dst, n, "%s", s.c_str());
+}
+
+fw_status reserve(fw_sumo_list *out, int n, fw_error *err)
+{
+    if (n <= out->cap)
+        return FW_OK;
+    int cap = out->cap ? out->cap : 64;
+    while (cap < n)
+        cap *= 2;
+    void *p = std::realloc(out->v, sizeof(fw_sumo_raw) * (size_t)cap);
+    if (!p)
+        return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
+    out->v = static_cast<fw_sumo_raw *>(p);
+    out->cap = cap;
+    return FW_OK;
+}
+
+void read_vehicle(const std::string &id, fw_sumo_raw *r)
+{
+    const libsumo::TraCIPosition p = S::Vehicle::getPosition(id);
+    copy_id(r->id, sizeof r->id, id);
+    copy_id(r->type, sizeof r->type, S::Vehicle::getTypeID(id));
+    r->x = p.x;
+    r->y = p.y;
+    r->angle_deg = S::Vehicle::getAngle(id);
+    r->speed = S::Vehicle::getSpeed(id);
+    r->length = S::Vehicle::getLength(id);
+    r->width = S::Vehicle::getWidth(id);
+}
+
+// The first normal edge whose first lane lets ships through.
+std::string ship_edge()
+{
+    for (const std::string &e : S::Edge::getIDList()) {
+        if (e.empty() || e[0] == ':')
+            continue;
+        std::vector<std::string> allowed = S::Lane::getAllowed(e + "_0");
+        if (allowed.empty())
+            return e;
+        for (const std::string &c : allowed)
+            if (c == "ship")
+                return e;
+    }
+    throw libsumo::TraCIException("the network has no edge that allows vClass ship");
+}
+
+fw_status be_start(const char *const *argv, fw_error *err)
+{
+#ifdef FW_LIBTRACI
+    (void)argv;
+    return fw_fail(err, FW_ERUN, "libtraci back end cannot start an in-process simulation");
+#else
+    std::vector<std::string> cmd;
+    for (int i = 0; argv[i]; i++)
+        cmd.emplace_back(argv[i]);
+    g_subscribed = false;
+    return guarded("cannot load the simulation", err, [&] {
+        S::Simulation::start(cmd);
+        g_open = true;
+    });
+#endif
+}
+
+fw_status be_connect(const char *host, int port, int retries, fw_error *err)
+{
+#ifdef FW_LIBTRACI
+    g_subscribed = false;
+    return guarded("cannot connect", err, [&] {
+        S::Simulation::init(port, retries, host);
+        g_open = true;
+    });
+#else
+    (void)host;
+    (void)port;
+    (void)retries;
+    return fw_fail(err, FW_ERUN, "libsumo back end cannot connect to a remote sumo");
+#endif
+}
+
+double be_step_length(void)
+{
+    try {
+        return S::Simulation::getDeltaT();
+    } catch (...) {
+        return -1.0;
+    }
+}
+
+fw_status be_add_own(const char *id, double length, double width, const char *edge,
+                     double radius, fw_error *err)
+{
+    return guarded("cannot add the own ship", err, [&] {
+        g_own = id;
+        S::VehicleType::copy("DEFAULT_VEHTYPE", kOwnType);
+        S::VehicleType::setVehicleClass(kOwnType, "ship");
+        S::VehicleType::setShapeClass(kOwnType, "ship");
+        S::VehicleType::setLength(kOwnType, length);
+        S::VehicleType::setWidth(kOwnType, width);
+        S::VehicleType::setMinGap(kOwnType, 0.0);
+        // signal orange: stands out against the background types' blues, browns, greys
+        S::VehicleType::setColor(kOwnType, libsumo::TraCIColor(255, 80, 0, 255));
+        S::Route::add(kOwnRoute, {edge && edge[0] ? std::string(edge) : ship_edge()});
+        S::Vehicle::add(g_own, kOwnRoute, kOwnType, "now");
+        // The range query hangs on a POI at the own ship's hull centre, not on
+        // the vehicle: a vehicle context is evaluated from its lane, and the own
+        // ship is often off the lanes.  Transparent, so sumo-gui shows the ship.
+        S::POI::add(kRangePoi, 0.0, 0.0, libsumo::TraCIColor(0, 0, 0, 0), "fw_range");
+        S::POI::subscribeContext(kRangePoi, libsumo::CMD_GET_VEHICLE_VARIABLE, radius,
+                                 {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED,
+                                  libsumo::VAR_LENGTH, libsumo::VAR_WIDTH, libsumo::VAR_TYPE});
+        g_subscribed = true;
+    });
+}
+
+fw_status be_place(const char *id, double fx, double fy, double angle_deg, double cx, double cy,
+                   fw_error *err)
+{
+    return guarded("cannot place the own ship", err, [&] {
+        // keepRoute 2: exactly here, off the lanes if need be; never refused.
+        S::Vehicle::moveToXY(id, "", -1, fx, fy, angle_deg, 2);
+        S::POI::setPosition(kRangePoi, cx, cy);
+    });
+}
+
+fw_status be_step(double *time, fw_error *err)
+{
+    return guarded("step failed", err, [&] {
+        S::Simulation::step();
+        *time = S::Simulation::getTime();
+    });
+}
+
+fw_status be_context(fw_sumo_list *out, fw_error *err)
+{
+    out->n = 0;
+    if (!g_subscribed)
+        return fw_fail(err, FW_ERUN, "SUMO (%s): no range query (own ship not added)",
+                       FW_BACKEND_NAME);
+    fw_status st = FW_OK;
+    fw_status gst = guarded("range query failed", err, [&] {
+        const libsumo::SubscriptionResults res =
+            S::POI::getContextSubscriptionResults(kRangePoi);
+        if ((st = reserve(out, (int)res.size(), err)) != FW_OK)
+            return;
+        for (const auto &kv : res) {
+            if (kv.first == g_own)
+                continue;
+            fw_sumo_raw *r = &out->v[out->n++];
+            const libsumo::TraCIResults &v = kv.second;
+            copy_id(r->id, sizeof r->id, kv.first);
+            auto pit = v.find(libsumo::VAR_POSITION);
+            auto *pos = pit == v.end() ? nullptr
+                        : dynamic_cast<const libsumo::TraCIPosition *>(pit->second.get());
+            if (!pos)
+                throw libsumo::TraCIException("subscription result without a position");
+            r->x = pos->x;
+            r->y = pos->y;
+            r->angle_deg = as_double(v, libsumo::VAR_ANGLE);
+            r->speed = as_double(v, libsumo::VAR_SPEED);
+            r->length = as_double(v, libsumo::VAR_LENGTH);
+            r->width = as_double(v, libsumo::VAR_WIDTH);
+            auto tit = v.find(libsumo::VAR_TYPE);
+            r->type[0] = '\0';
+            if (tit != v.end())
+                copy_id(r->type, sizeof r->type, tit->second->getString());
+        }
+    });
+    return gst ? gst : st;
+}
+
+fw_status be_all(fw_sumo_list *out, fw_error *err)
+{
+    out->n = 0;
+    fw_status st = FW_OK;
+    fw_status gst = guarded("reading all ships failed", err, [&] {
+        const std::vector<std::string> ids = S::Vehicle::getIDList();
+        if ((st = reserve(out, (int)ids.size(), err)) != FW_OK)
+            return;
+        for (const std::string &id : ids)
+            read_vehicle(id, &out->v[out->n++]);
+    });
+    return gst ? gst : st;
+}
+
+fw_status be_get(const char *id, fw_sumo_raw *out, fw_error *err)
+{
+    return guarded("reading a ship failed", err, [&] { read_vehicle(id, out); });
+}
+
+void be_close(void)
+{
+    g_subscribed = false;
+    if (!g_open)
+        return;
+    g_open = false;
+    try {
+        S::Simulation::close();
+    } catch (...) {
+        // already gone (lost connection, failed start): nothing left to close
+    }
+}
+
+} // namespace
+
+extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
+    FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
+    be_step, be_context, be_all, be_get, be_close,
+};

@@ -1,0 +1,426 @@
+/* test_traffic - the SUMO coupling, one case per process (libsumo allows one
+ * simulation per process):  test_traffic unit|embedded|remote|badnet|noport|dies */
+#include <signal.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core/units.h"
+#include "test.h"
+#include "traffic/demand.h"
+#include "traffic/traffic.h"
+
+static char workdir[256];
+
+static const char *work_file(const char *name, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s/%s", workdir, name);
+    return buf;
+}
+
+static void make_workdir(void)
+{
+    snprintf(workdir, sizeof workdir, "/tmp/fw_test_traffic_XXXXXX");
+    if (!mkdtemp(workdir)) {
+        perror("mkdtemp");
+        exit(1);
+    }
+}
+
+static void remove_workdir(void)
+{
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", workdir);
+    if (system(cmd) != 0)
+        fprintf(stderr, "could not remove %s\n", workdir);
+}
+
+/* ---- unit: no SUMO running ---- */
+
+static void test_mode_parse(void)
+{
+    fw_traffic_mode m;
+    fw_error err = {0};
+    CHECK(fw_traffic_mode_parse("embedded", &m, &err) == FW_OK && m.kind == FW_TRAFFIC_EMBEDDED);
+    CHECK(fw_traffic_mode_parse("gui", &m, &err) == FW_OK && m.kind == FW_TRAFFIC_GUI);
+    CHECK(fw_traffic_mode_parse("remote:localhost:8813", &m, &err) == FW_OK);
+    CHECK(m.kind == FW_TRAFFIC_REMOTE && strcmp(m.host, "localhost") == 0 && m.port == 8813);
+    CHECK(fw_traffic_mode_parse("remote:10.0.0.2:1", &m, &err) == FW_OK && m.port == 1);
+    CHECK(fw_traffic_mode_parse("remote:host:0", &m, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "port must be 1..65535");
+    CHECK(fw_traffic_mode_parse("remote:host:70000", &m, &err) == FW_EINPUT);
+    CHECK(fw_traffic_mode_parse("remote:host:12x", &m, &err) == FW_EINPUT);
+    CHECK(fw_traffic_mode_parse("remote::8813", &m, &err) == FW_EINPUT);
+    CHECK(fw_traffic_mode_parse("remote:8813", &m, &err) == FW_EINPUT);
+    CHECK(fw_traffic_mode_parse("libsumo", &m, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "expected embedded, gui or remote:HOST:PORT");
+}
+
+static void test_conversion(void)
+{
+    /* heading east: the bow is L/2 east of the centre */
+    double fx, fy, a, x, y, h;
+    fw_traffic_to_sumo(100.0, 200.0, FW_PI / 2, 50.0, &fx, &fy, &a);
+    CHECK_NEAR(fx, 125.0, 1e-9);
+    CHECK_NEAR(fy, 200.0, 1e-9);
+    CHECK_NEAR(a, 90.0, 1e-9);
+    fw_traffic_to_sumo(0.0, 0.0, -FW_PI / 2, 100.0, &fx, &fy, &a); /* west, wrapped */
+    CHECK_NEAR(fx, -50.0, 1e-9);
+    CHECK_NEAR(a, 270.0, 1e-9);
+    for (double hh = 0.0; hh < 7.0; hh += 0.37) {
+        fw_traffic_to_sumo(1234.5, -987.6, hh, 333.0, &fx, &fy, &a);
+        fw_traffic_from_sumo(fx, fy, a, 333.0, &x, &y, &h);
+        CHECK_NEAR(x, 1234.5, 1e-9);
+        CHECK_NEAR(y, -987.6, 1e-9);
+        CHECK_NEAR(fw_wrap_pi(h - hh), 0.0, 1e-12);
+        CHECK_NEAR(hypot(fx - x, fy - y), 166.5, 1e-9);
+    }
+}
+
+static void test_sumo_args(void)
+{
+    fw_traffic_def d = fw_default_traffic_def();
+    d.net_file = "n.net.xml";
+    d.route_file = "r.rou.xml";
+    d.log_file = "run.log";
+    d.step = 0.5;
+    d.seed = 42;
+    const char *argv[48];
+    char buf[128];
+    fw_error err = {0};
+    CHECK(fw_traffic_sumo_args(&d, "sumo", 9999, argv, 48, buf, sizeof buf, &err) == FW_OK);
+    char line[1024] = "";
+    for (int i = 0; argv[i]; i++) {
+        strcat(line, argv[i]);
+        strcat(line, " ");
+    }
+    CHECK_CONTAINS(line, "sumo --net-file n.net.xml --route-files r.rou.xml ");
+    CHECK_CONTAINS(line, "--step-length 0.5 --seed 42 --time-to-teleport -1 ");
+    CHECK_CONTAINS(line, "--collision.action warn ");
+    CHECK_CONTAINS(line, "--log run.log ");
+    CHECK_CONTAINS(line, "--remote-port 9999 ");
+    CHECK(strstr(line, "--additional-files") == NULL);
+    CHECK(fw_traffic_sumo_args(&d, "sumo", 0, argv, 8, buf, sizeof buf, &err) == FW_ERUN);
+}
+
+static void test_demand(void)
+{
+    fw_network_files nf;
+    fw_demand dm;
+    fw_error err = {0};
+    CHECK(fw_network_find("strait", &nf, &err) == FW_OK);
+    CHECK(fw_demand_load(nf.demand, &dm, &err) == FW_OK);
+    CHECK(dm.n == 4);
+    CHECK_NEAR(fw_demand_rate(&dm), 22.0, 1e-12);
+    fw_demand_def dd = fw_default_demand_def();
+    dd.density = 2.0;
+    dd.fill = 7;
+    char path[300], text[8192];
+    CHECK(fw_demand_write(&dm, &dd, work_file("d.rou.xml", path, sizeof path), &err) == FW_OK);
+    FILE *f = fopen(path, "r");
+    size_t n = f ? fread(text, 1, sizeof text - 1, f) : 0;
+    if (f)
+        fclose(f);
+    text[n] = '\0';
+    /* 9 ships/h at density 2 = 0.005 ships/s */
+    CHECK_CONTAINS(text, "<flow id=\"east\" type=\"fw_seagoing\" route=\"r_east_0\" begin=\"0\"");
+    CHECK_CONTAINS(text, "period=\"exp(0.005)\"");
+    CHECK_CONTAINS(text, "<route id=\"r_ferry_north_1\" edges=\"EX_WX WX_FN\"/>");
+    int fills = 0;
+    for (const char *p = text; (p = strstr(p, "_fill")); p++)
+        fills++;
+    CHECK(fills == 7);
+    dd.density = -1.0;
+    CHECK(fw_demand_write(&dm, &dd, path, &err) == FW_EINPUT);
+    CHECK(fw_network_find("atlantis", &nf, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "unknown network 'atlantis'");
+    CHECK(fw_network_find("../x", &nf, &err) == FW_EINPUT);
+    /* a located error in a demand file */
+    FILE *g = fopen(work_file("bad.yaml", path, sizeof path), "w");
+    fputs("streams:\n  - {id: a, edges: [X], per_hour: -3, types: t}\n", g);
+    fclose(g);
+    CHECK(fw_demand_load(path, &dm, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, ":2: streams[0].per_hour");
+}
+
+/* ---- integration: the own ship on a circle through channel traffic ---- */
+
+/* Heading turns at omega from psi0; x, y integrate U (sin psi, cos psi). */
+static void own_pose(double t, double *x, double *y, double *psi)
+{
+    const double U = 6.0, omega = 0.004, psi0 = 1.2, x0 = 8000.0, y0 = -600.0;
+    *psi = psi0 + omega * t;
+    *x = x0 + (U / omega) * (cos(psi0) - cos(*psi));
+    *y = y0 + (U / omega) * (sin(*psi) - sin(psi0));
+}
+
+static fw_status write_channel_demand(fw_traffic_def *d, fw_network_files *nf, char *routes,
+                                      size_t n, fw_error *err)
+{
+    fw_demand dm;
+    fw_status st;
+    if ((st = fw_network_find("channel", nf, err)) || (st = fw_demand_load(nf->demand, &dm, err)))
+        return st;
+    fw_demand_def dd = fw_default_demand_def();
+    dd.density = 4.0;
+    dd.fill = 60;
+    dd.seed = 7;
+    if ((st = fw_demand_write(&dm, &dd, work_file("channel.rou.xml", routes, n), err)))
+        return st;
+    d->net_file = nf->net;
+    d->route_file = routes;
+    d->add_file = nf->types;
+    d->seed = 7;
+    d->radius = 3000.0; /* small enough that ships are both in and out of range */
+    d->own_length = 180.0;
+    d->own_width = 30.0;
+    return FW_OK;
+}
+
+static void run_channel(fw_traffic *t, int check_every)
+{
+    fw_error err = {0};
+    const double radius = 3000.0;
+    int in_range = 0, out_range = 0, steps = 0, max_seen = 0;
+    for (int k = 0; k < 600; k++) {
+        double x, y, psi;
+        own_pose(k, &x, &y, &psi);
+        if (fw_traffic_place(t, x, y, psi, 6.0, &err) || fw_traffic_step(t, &err)) {
+            CHECK_MSG(0, "step %d: %s", k, err.msg);
+            return;
+        }
+        steps++;
+        fw_traffic_ship own;
+        CHECK(fw_traffic_get(t, "own", &own, &err) == FW_OK);
+        CHECK_NEAR(own.x, x, 0.01);
+        CHECK_NEAR(own.y, y, 0.01);
+        CHECK_NEAR(fw_rad_to_deg(fw_wrap_pi(own.heading - psi)), 0.0, 0.01);
+        CHECK_NEAR(own.length, 180.0, 1e-9);
+        CHECK_NEAR(own.width, 30.0, 1e-9);
+        const fw_traffic_ship *near, *all;
+        int n_near, n_all;
+        CHECK(fw_traffic_around(t, &near, &n_near, &err) == FW_OK);
+        if (k % check_every)
+            continue;
+        /* copy: fw_traffic_all reuses the buffer */
+        fw_traffic_ship *nc = malloc(sizeof *nc * (size_t)(n_near + 1));
+        memcpy(nc, near, sizeof *nc * (size_t)n_near);
+        CHECK(fw_traffic_all(t, &all, &n_all, &err) == FW_OK);
+        if (n_all > max_seen)
+            max_seen = n_all;
+        int expected = 0;
+        for (int i = 0; i < n_all; i++) {
+            const fw_traffic_ship *s = &all[i];
+            bool is_own = strcmp(s->id, "own") == 0;
+            double fx, fy, a;
+            fw_traffic_to_sumo(s->x, s->y, s->heading, s->length, &fx, &fy, &a);
+            double d = hypot(fx - x, fy - y); /* SUMO's range: to the front bumper */
+            int found = -1;
+            for (int j = 0; j < n_near; j++)
+                if (strcmp(nc[j].id, s->id) == 0)
+                    found = j;
+            if (is_own) {
+                CHECK_MSG(found < 0, "own ship among the targets at step %d", k);
+                continue;
+            }
+            if (fabs(d - radius) < 1e-3)
+                continue; /* too close to the edge to call */
+            if (d < radius) {
+                expected++;
+                in_range++;
+                CHECK_MSG(found >= 0, "step %d: %s at %.1f m missing", k, s->id, d);
+                if (found >= 0) {
+                    CHECK_NEAR(nc[found].x, s->x, 1e-6);
+                    CHECK_NEAR(nc[found].y, s->y, 1e-6);
+                    CHECK_NEAR(nc[found].heading, s->heading, 1e-9);
+                    CHECK_NEAR(nc[found].speed, s->speed, 1e-9);
+                    CHECK_NEAR(nc[found].length, s->length, 1e-9);
+                    CHECK_NEAR(nc[found].width, s->width, 1e-9);
+                    CHECK(strcmp(nc[found].type, s->type) == 0);
+                }
+            } else {
+                out_range++;
+                CHECK_MSG(found < 0, "step %d: %s at %.1f m reported in range", k, s->id, d);
+            }
+        }
+        CHECK_MSG(n_near == expected, "step %d: %d in range, expected %d", k, n_near, expected);
+        free(nc);
+    }
+    CHECK(steps == 600);
+    CHECK_NEAR(fw_traffic_time(t), 600.0, 1e-9);
+    /* the check saw both sides of the radius, and real traffic */
+    CHECK_MSG(in_range > 50 && out_range > 50, "in %d, out %d", in_range, out_range);
+    CHECK_MSG(max_seen > 30, "only %d ships", max_seen);
+}
+
+static void test_embedded(void)
+{
+    fw_traffic_def d = fw_default_traffic_def();
+    fw_network_files nf;
+    char routes[300], log[300];
+    fw_error err = {0};
+    CHECK(write_channel_demand(&d, &nf, routes, sizeof routes, &err) == FW_OK);
+    d.log_file = work_file("sumo.log", log, sizeof log);
+    fw_traffic *t = NULL;
+    if (fw_traffic_open(&d, &t, &err)) {
+        CHECK_MSG(0, "%s", err.msg);
+        return;
+    }
+    run_channel(t, 1);
+    fw_traffic_close(t);
+    CHECK(access(log, R_OK) == 0);
+}
+
+/* Starts a headless sumo for the channel with fairway's settings. */
+static pid_t start_sumo(fw_traffic_def *d, int *port)
+{
+    fw_error err = {0};
+    const char *argv[48];
+    char buf[128], log[300];
+    if (fw_traffic_free_port(port, &err) ||
+        fw_traffic_sumo_args(d, "sumo", *port, argv, 48, buf, sizeof buf, &err)) {
+        CHECK_MSG(0, "%s", err.msg);
+        return -1;
+    }
+    pid_t pid = -1;
+    CHECK(fw_traffic_spawn(argv, work_file("sumo.out", log, sizeof log), &pid, &err) == FW_OK);
+    return pid;
+}
+
+static void test_remote(void)
+{
+    fw_traffic_def d = fw_default_traffic_def();
+    fw_network_files nf;
+    char routes[300], log[300];
+    fw_error err = {0};
+    CHECK(write_channel_demand(&d, &nf, routes, sizeof routes, &err) == FW_OK);
+    d.log_file = work_file("sumo.log", log, sizeof log);
+    int port;
+    pid_t pid = start_sumo(&d, &port);
+    if (pid <= 0)
+        return;
+    d.mode.kind = FW_TRAFFIC_REMOTE;
+    snprintf(d.mode.host, sizeof d.mode.host, "localhost");
+    d.mode.port = port;
+    fw_traffic *t = NULL;
+    if (fw_traffic_open(&d, &t, &err) == FW_OK) {
+        run_channel(t, 20); /* getters over a socket are slow: check every 20th step */
+        fw_traffic_close(t);
+    } else {
+        CHECK_MSG(0, "%s", err.msg);
+    }
+    fw_traffic_stop_child(pid);
+}
+
+static void test_bad_network(void)
+{
+    fw_traffic_def d = fw_default_traffic_def();
+    char path[300], log[300];
+    fw_error err = {0};
+    fw_traffic *t = NULL;
+    d.net_file = work_file("missing.net.xml", path, sizeof path);
+    CHECK(fw_traffic_open(&d, &t, &err) == FW_EINPUT && t == NULL);
+    CHECK_CONTAINS(err.msg, "missing.net.xml' cannot be read");
+    FILE *f = fopen(work_file("broken.net.xml", path, sizeof path), "w");
+    fputs("<net><edge id=\"a\"><lane id=\"a_0\" shape=\"oops\"/></edge>\n", f);
+    fclose(f);
+    d.log_file = work_file("sumo.log", log, sizeof log);
+    fw_status st = fw_traffic_open(&d, &t, &err);
+    CHECK(st == FW_ERUN && t == NULL);
+    CHECK_CONTAINS(err.msg, "SUMO cannot load");
+    CHECK_CONTAINS(err.msg, "broken.net.xml' (reasons in ");
+    printf("broken network: %s\n", err.msg);
+}
+
+static void test_no_listener(void)
+{
+    fw_traffic_def d = fw_default_traffic_def();
+    fw_error err = {0};
+    fw_traffic *t = NULL;
+    int port;
+    CHECK(fw_traffic_free_port(&port, &err) == FW_OK);
+    d.mode.kind = FW_TRAFFIC_REMOTE;
+    snprintf(d.mode.host, sizeof d.mode.host, "localhost");
+    d.mode.port = port;
+    d.connect_timeout = 1.0;
+    CHECK(fw_traffic_open(&d, &t, &err) == FW_ERUN && t == NULL);
+    CHECK_CONTAINS(err.msg, "no SUMO at localhost:");
+    printf("no listener: %s\n", err.msg);
+}
+
+static void test_sumo_dies(void)
+{
+    fw_traffic_def d = fw_default_traffic_def();
+    fw_network_files nf;
+    char routes[300], log[300];
+    fw_error err = {0};
+    CHECK(write_channel_demand(&d, &nf, routes, sizeof routes, &err) == FW_OK);
+    d.log_file = work_file("sumo.log", log, sizeof log);
+    int port;
+    pid_t pid = start_sumo(&d, &port);
+    if (pid <= 0)
+        return;
+    d.mode.kind = FW_TRAFFIC_REMOTE;
+    snprintf(d.mode.host, sizeof d.mode.host, "localhost");
+    d.mode.port = port;
+    fw_traffic *t = NULL;
+    if (fw_traffic_open(&d, &t, &err) != FW_OK) {
+        CHECK_MSG(0, "%s", err.msg);
+        fw_traffic_stop_child(pid);
+        return;
+    }
+    fw_status st = FW_OK;
+    int k;
+    for (k = 0; k < 100 && !st; k++) {
+        double x, y, psi;
+        own_pose(k, &x, &y, &psi);
+        if (k == 20) {
+            kill(pid, SIGKILL);
+            waitpid(pid, NULL, 0);
+            pid = 0;
+        }
+        st = fw_traffic_place(t, x, y, psi, 6.0, &err);
+        if (!st)
+            st = fw_traffic_step(t, &err);
+        if (!st) {
+            const fw_traffic_ship *s;
+            int n;
+            st = fw_traffic_around(t, &s, &n, &err);
+        }
+    }
+    CHECK(st == FW_ERUN);
+    CHECK_MSG(k > 20 && k <= 22, "failed at step %d", k);
+    printf("sumo died: %s\n", err.msg);
+    /* later calls keep failing cleanly */
+    CHECK(fw_traffic_step(t, &err) == FW_ERUN);
+    fw_traffic_close(t);
+    if (pid > 0)
+        fw_traffic_stop_child(pid);
+}
+
+int main(int argc, char **argv)
+{
+    const char *which = argc > 1 ? argv[1] : "unit";
+    make_workdir();
+    if (strcmp(which, "unit") == 0) {
+        TEST_RUN(test_mode_parse);
+        TEST_RUN(test_conversion);
+        TEST_RUN(test_sumo_args);
+        TEST_RUN(test_demand);
+    } else if (strcmp(which, "embedded") == 0) {
+        TEST_RUN(test_embedded);
+    } else if (strcmp(which, "remote") == 0) {
+        TEST_RUN(test_remote);
+    } else if (strcmp(which, "badnet") == 0) {
+        TEST_RUN(test_bad_network);
+    } else if (strcmp(which, "noport") == 0) {
+        TEST_RUN(test_no_listener);
+    } else if (strcmp(which, "dies") == 0) {
+        TEST_RUN(test_sumo_dies);
+    } else {
+        fprintf(stderr, "unknown case %s\n", which);
+        return 2;
+    }
+    remove_workdir();
+    return TEST_EXIT();
+}

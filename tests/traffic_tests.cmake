@@ -1,0 +1,26 @@
+# The traffic layer (src/traffic): one process per case, since libsumo holds
+# one simulation per process.  Remote cases start their own headless sumo.
+# Leaks inside SUMO's libraries are suppressed (see lsan_sumo.supp); harmless
+# outside sanitizer builds.
+set(fw_lsan "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/lsan_sumo.supp")
+fw_test(test_traffic test_traffic.c)
+target_link_libraries(test_traffic PRIVATE fairway_traffic)
+set_tests_properties(test_traffic PROPERTIES TIMEOUT 30
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+foreach(case embedded remote badnet noport dies)
+  add_test(NAME test_traffic_${case} COMMAND test_traffic ${case})
+  set_tests_properties(test_traffic_${case} PROPERTIES TIMEOUT 90
+                       ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+endforeach()
+
+# The traffic command: a short embedded run, and one-line errors for bad input.
+fw_cli_test(cli_traffic_run 0 "median [0-9.]+ ms per step" traffic --network channel --ships 20
+            --duration 30 --every 10 --log traffic-cli.log --routes traffic-cli.rou.xml)
+fw_cli_test(cli_traffic_help 0 "usage: fairway traffic" traffic --help)
+fw_cli_test(cli_traffic_bad_network 2 "unknown network 'atlantis'" traffic --network atlantis)
+fw_cli_test(cli_traffic_bad_mode 2 "expected embedded, gui or remote:HOST:PORT" traffic --sumo tcp)
+fw_cli_test(cli_traffic_bad_ships 2 "--ships: 'many' is not an integer" traffic --ships many)
+foreach(t cli_traffic_run cli_traffic_help cli_traffic_bad_network cli_traffic_bad_mode
+          cli_traffic_bad_ships)
+  set_tests_properties(${t} PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 60)
+endforeach()
