@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 
 mode=${1:-main}
 packages=(build-essential cmake pkg-config libyaml-dev libsundials-dev libsqlite3-dev sqlite3
-          sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy)
+          sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy python3-yaml)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -37,7 +37,7 @@ case "$mode" in
     build build
     mkdir -p out/manoeuvres
     ./build/fairway manoeuvre report --ship c3 --csv-dir out/manoeuvres
-    python3 analysis/plot_manoeuvre.py out/manoeuvres/*.csv --trial c3 --out out/manoeuvres
+    /usr/bin/python3 analysis/plot_manoeuvre.py out/manoeuvres/*.csv --trial c3 --out out/manoeuvres
     echo "plots: out/manoeuvres/*.png"
     ;;
   test)

@@ -11,9 +11,8 @@ fw_cli_test(cli_turning_json 0 "^\\{\"ship\": \"c3\".*\"advance_m\": 1[01][0-9][
 fw_cli_test(cli_turning_port 0 "35 deg port at 27.16 kn" manoeuvre turning --ship c3 --speed 27.16 --rudder 35 --side port)
 fw_cli_test(cli_zigzag_10 0 "first overshoot .*pass" manoeuvre zigzag --ship c3 --speed 26.7 --angle 10)
 fw_cli_test(cli_zigzag_20_json 0 "\"angle_deg\": 20.00.*\"imo_ok1\": true" manoeuvre zigzag --ship c3 --speed 26.7 --angle 20 --json)
-string(REPLACE ";" " " FW_C3_TURN_TEXT "${FW_C3_TURN}")
 fw_script_test(cli_turning_csv 0 "^t_s,east_m,north_m,heading_deg,u_mps,v_mps,r_degps,rudder_deg,helm_deg,propeller_rps"
-               "\"$FAIRWAY\" ${FW_C3_TURN_TEXT} --csv turning.csv > /dev/null && head -n 3 turning.csv")
+               turning_csv.sh)
 fw_cli_test(cli_report 0 "all criteria met" manoeuvre report --ship c3)
 fw_cli_test(cli_manoeuvre_help 0 "usage: fairway manoeuvre" manoeuvre --help)
 fw_cli_test(cli_calibrate_help 0 "usage: fairway calibrate" calibrate --help)
@@ -37,3 +36,7 @@ fw_cli_test(cli_bad_missing_rudder 2 "needs --speed and --rudder" manoeuvre turn
 fw_cli_test(cli_bad_option 2 "unknown option '--rpm'" manoeuvre turning --ship c3 --rpm 80)
 fw_cli_test(cli_bad_trial 2 "c3-trial-bad.yaml:[0-9]+: turns\\[0\\].side: 'left' is not starboard or port"
             calibrate --ship c3 --trial ${CMAKE_CURRENT_SOURCE_DIR}/data/c3-trial-bad.yaml)
+
+# The plotting script turns manoeuvre CSVs into PNG sheets (Debian's python3).
+fw_script_test(analysis_plot_manoeuvre 0 "turning_starboard_26.70kn.png [0-9]{5,} bytes" plot_manoeuvre.sh)
+fw_script_test(analysis_plot_bad_csv 2 "plot_manoeuvre: .*bad.csv: missing columns" plot_bad_csv.sh)
