@@ -13,6 +13,7 @@ typedef struct command {
 
 static const command commands[] = {
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
+    {"helm", fw_cmd_helm, "one avoidance decision (Nomoto helm search) for an own ship and targets"},
 };
 
 static void usage(FILE *out)

@@ -19,7 +19,7 @@ int fw_track_samples(const fw_track_def *def)
 
 fw_status fw_track_alloc(fw_track *tr, int cap, fw_error *err)
 {
-    double *block = malloc(sizeof(double) * 7 * (size_t)cap);
+    double *block = malloc(sizeof(double) * 8 * (size_t)cap);
     if (!block)
         return fw_fail(err, FW_ERUN, "out of memory for a %d-sample track", cap);
     tr->cap = cap;
@@ -31,6 +31,7 @@ fw_status fw_track_alloc(fw_track *tr, int cap, fw_error *err)
     tr->delta = block + 4 * cap;
     tr->sin_psi = block + 5 * cap;
     tr->cos_psi = block + 6 * cap;
+    tr->rdot = block + 7 * cap;
     return FW_OK;
 }
 
@@ -111,19 +112,19 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
                 double h = pc.h0 * e2 + A * ph;
                 double hd = pc.h1 * e2 + B * ph;
                 double H = -TT * (hd - pc.h1) - TS * (h - pc.h0);
-                double r = pc.c0 + pc.b * tau + h;
+                double r = pc.c0 + pc.b * tau + h, rd = pc.b + hd;
                 double turn = turned0 + pc.c0 * tau + 0.5 * pc.b * tau * tau + H;
                 double dl = piece_delta0[p] + piece_rho[p] * tau;
                 if (steadied) {
                     turn = prev_turn;
-                    r = 0.0;
+                    r = rd = 0.0;
                     dl = 0.0;
                 } else if (def->max_turn > 0.0 && fabs(turn) >= def->max_turn) {
                     /* clamped at the sample: the steadying is instantaneous in
                      * the prediction, an error of at most r dt in heading */
                     steadied = true;
                     turn = copysign(def->max_turn, turn);
-                    r = 0.0;
+                    r = rd = 0.0;
                     dl = 0.0;
                 }
                 if (k > 0) {
@@ -139,6 +140,7 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
                 out->north[k] = north;
                 out->psi[k] = s->psi + turn;
                 out->r[k] = r;
+                out->rdot[k] = rd;
                 out->delta[k] = dl;
                 out->sin_psi[k] = sn;
                 out->cos_psi[k] = cs;
@@ -172,6 +174,7 @@ void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst)
         dst->north[k] = s->north + along * uy + perp * ux;
         dst->psi[k] = 2.0 * s->psi - src->psi[k];
         dst->r[k] = -src->r[k];
+        dst->rdot[k] = -src->rdot[k];
         dst->delta[k] = -src->delta[k];
         /* heading 2 psi0 - psi: sin = s2 cos - c2 sin, cos = c2 cos + s2 sin */
         dst->sin_psi[k] = s2 * src->cos_psi[k] - c2 * src->sin_psi[k];

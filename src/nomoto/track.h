@@ -42,7 +42,7 @@ typedef struct fw_track {
     int cap;
     double dt;
     double helm;    /* rad, the order */
-    double *east, *north, *psi, *r, *delta, *sin_psi, *cos_psi;
+    double *east, *north, *psi, *r, *rdot, *delta, *sin_psi, *cos_psi;
 } fw_track;
 
 int fw_track_samples(const fw_track_def *def);
