@@ -10,6 +10,5 @@ int fw_cmd_ship(int argc, char **argv);
 int fw_cmd_helm(int argc, char **argv);
 int fw_cmd_manoeuvre(int argc, char **argv);
 int fw_cmd_calibrate(int argc, char **argv);
-int fw_cmd_report(int argc, char **argv);
 
 #endif

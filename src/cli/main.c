@@ -12,6 +12,8 @@ typedef struct command {
 } command;
 
 static const command commands[] = {
+    {"manoeuvre", fw_cmd_manoeuvre, "standard manoeuvres (turning circle, zig-zag) with IMO verdicts"},
+    {"calibrate", fw_cmd_calibrate, "fit named MMG coefficients of a ship to its sea trial"},
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
     {"helm", fw_cmd_helm, "one avoidance decision (Nomoto helm search) for an own ship and targets"},
 };

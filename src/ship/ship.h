@@ -108,4 +108,10 @@ double fw_ship_f_alpha(const fw_ship *s);          /* rudder lift gradient */
 /* Evaluates one Nomoto index at U (knots) and rudder magnitude d (degrees). */
 double fw_nomoto_index_eval(const fw_nomoto_index *ix, double U_kn, double d_deg);
 
+
+
+/* Named access to a ship's numeric fields, as they are spelt in ship files
+ * (e.g. "N_r", "A_R").  Returns NULL for an unknown name.  *section gets the
+ * file section holding the field; *scale the factor from file units to SI. */
+double *fw_ship_field(fw_ship *ship, const char *key, const char **section, double *scale);
 #endif

@@ -223,3 +223,29 @@ fw_status fw_ship_load(const char *name_or_path, fw_ship *ship, fw_error *err)
     yt_free(doc);
     return st;
 }
+
+double *fw_ship_field(fw_ship *ship, const char *key, const char **section, double *scale)
+{
+    static const struct {
+        const char *name;
+        const field *fields;
+        size_t n;
+    } sections[] = {
+        {"particulars", particulars, COUNT(particulars)},
+        {"hull", hull, COUNT(hull)},
+        {"propeller", propeller, COUNT(propeller)},
+        {"rudder", rudder, COUNT(rudder)},
+    };
+    for (size_t s = 0; s < COUNT(sections); s++)
+        for (size_t i = 0; i < sections[s].n; i++)
+            if (strcmp(sections[s].fields[i].key, key) == 0) {
+                const field *f = &sections[s].fields[i];
+                if (section)
+                    *section = sections[s].name;
+                if (scale)
+                    /* rudder_rate is read in deg/s and converted after the table pass */
+                    *scale = strcmp(key, "rudder_rate") == 0 ? FW_PI / 180.0 : f->scale;
+                return (double *)((char *)ship + f->offset);
+            }
+    return NULL;
+}

@@ -1,0 +1,377 @@
+/* fairway manoeuvre turning|zigzag|report: IMO standard manoeuvres on the MMG model. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "core/units.h"
+#include "dynamics/calibrate.h"
+#include "dynamics/manoeuvre.h"
+
+static void help(void)
+{
+    printf(
+        "usage: fairway manoeuvre turning --ship NAME --speed KN --rudder DEG [--side starboard|port]\n"
+        "                                 [--json] [--csv FILE]\n"
+        "       fairway manoeuvre zigzag  --ship NAME --speed KN --angle DEG [--side starboard|port]\n"
+        "                                 [--json] [--csv FILE]\n"
+        "       fairway manoeuvre report  [--ship NAME] [--trial FILE] [--csv-dir DIR] [--json]\n"
+        "\n"
+        "Standard manoeuvres (IMO MSC.137(76)) on the ship's MMG model, from straight\n"
+        "steady running at the approach speed (propeller speed from surge balance).\n"
+        "\n"
+        "turning   helm to --rudder at t = 0; prints advance, transfer and tactical\n"
+        "          diameter (at 90 and 180 deg heading change; metres and ship lengths),\n"
+        "          times to 90 and 180 deg, steady turning rate and speed (mean over the\n"
+        "          last full circle of a 540 deg turn), and the IMO verdicts (advance\n"
+        "          <= 4.5 L, tactical diameter <= 5 L).\n"
+        "zigzag    helm --angle to --side (default starboard), reversed each time the\n"
+        "          heading change reaches --angle; prints first and second overshoots\n"
+        "          and the IMO verdicts (10/10: limits from L/V; 20/20: first <= 25 deg).\n"
+        "report    the ship's manoeuvring report: the sea-trial turns of its trial file\n"
+        "          (default scenarios/ships/NAME-trial.yaml) side by side with the trial\n"
+        "          and the other simulator, the 10/10 and 20/20 zig-zags at the first\n"
+        "          trial row's speed, and the IMO verdicts.  --csv-dir writes each\n"
+        "          manoeuvre's time history there.  Default ship: c3.\n"
+        "\n"
+        "--csv FILE  time history: t_s, east_m, north_m, heading_deg, u_mps, v_mps,\n"
+        "            r_degps, rudder_deg, helm_deg, propeller_rps (midship point, one\n"
+        "            row per 0.5 s, start at the origin heading north).\n"
+        "--json      one JSON object on stdout.  turning: ship, L_m, speed_kn,\n"
+        "            rudder_deg (signed, + starboard), propeller_rps, advance_m,\n"
+        "            advance_L, transfer_m, transfer_L, tactical_diameter_m,\n"
+        "            tactical_diameter_L, t90_s, t180_s, steady_rate_degps,\n"
+        "            steady_speed_kn, imo_advance_ok, imo_tactical_diameter_ok.\n"
+        "            zigzag: ship, speed_kn, angle_deg, side, propeller_rps,\n"
+        "            initial_turning_time_s, L_over_V_s, overshoot1_deg,\n"
+        "            overshoot2_deg, limit1_deg, limit2_deg (null: no limit), imo_ok1,\n"
+        "            imo_ok2.  report: {turns: [...turning objects with trial_* and\n"
+        "            sim_* fields], zigzags: [...], imo_ok}.\n"
+        "\n"
+        "Exit codes: 0 ok, 1 the simulation failed, 2 bad input.\n");
+}
+
+typedef struct opts {
+    const char *ship, *csv, *csv_dir, *trial, *side;
+    double speed, rudder, angle;
+    bool have_speed, have_rudder, have_angle, json;
+} opts;
+
+static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->side = "starboard";
+    fw_args a = {argc, argv, 0};
+    while (a.i < argc) {
+        const char *v = NULL;
+        fw_status st = FW_OK;
+        if (fw_args_flag(&a, "--json"))
+            o->json = true;
+        else if (fw_args_opt(&a, "--ship", &v, err))
+            o->ship = v;
+        else if (fw_args_opt(&a, "--csv", &v, err))
+            o->csv = v;
+        else if (fw_args_opt(&a, "--csv-dir", &v, err))
+            o->csv_dir = v;
+        else if (fw_args_opt(&a, "--trial", &v, err))
+            o->trial = v;
+        else if (fw_args_opt(&a, "--side", &v, err))
+            o->side = v;
+        else if (fw_args_opt(&a, "--speed", &v, err))
+            st = fw_parse_double("--speed", v, &o->speed, err), o->have_speed = true;
+        else if (fw_args_opt(&a, "--rudder", &v, err))
+            st = fw_parse_double("--rudder", v, &o->rudder, err), o->have_rudder = true;
+        else if (fw_args_opt(&a, "--angle", &v, err))
+            st = fw_parse_double("--angle", v, &o->angle, err), o->have_angle = true;
+        else
+            return fw_fail(err, FW_EINPUT, "manoeuvre: unknown option '%s' (see --help)",
+                           argv[a.i]);
+        if (err->status)
+            return err->status;
+        if (st)
+            return st;
+        (void)v;
+    }
+    if (o->side && strcmp(o->side, "starboard") && strcmp(o->side, "port"))
+        return fw_fail(err, FW_EINPUT, "--side: '%s' is not starboard or port", o->side);
+    if (o->have_speed && !(o->speed > 0.0))
+        return fw_fail(err, FW_EINPUT, "--speed: must be positive (got %g kn)", o->speed);
+    if (o->have_rudder && !(o->rudder > 0.0))
+        return fw_fail(err, FW_EINPUT,
+                       "--rudder: give the angle's size in degrees (> 0) and the side with --side");
+    if (o->have_angle && !(o->angle > 0.0))
+        return fw_fail(err, FW_EINPUT, "--angle: must be positive degrees");
+    return FW_OK;
+}
+
+static double side_sign(const char *side) { return strcmp(side, "port") == 0 ? -1.0 : 1.0; }
+
+static void print_turning_json(const fw_ship *s, double speed, double rudder,
+                               const fw_turning_result *r, const char *extra)
+{
+    printf("{\"ship\": \"%s\", \"L_m\": %.3f, \"speed_kn\": %.3f, \"rudder_deg\": %.2f, "
+           "\"propeller_rps\": %.4f, \"advance_m\": %.2f, \"advance_L\": %.4f, "
+           "\"transfer_m\": %.2f, \"transfer_L\": %.4f, \"tactical_diameter_m\": %.2f, "
+           "\"tactical_diameter_L\": %.4f, \"t90_s\": %.2f, \"t180_s\": %.2f, "
+           "\"steady_rate_degps\": %.5f, \"steady_speed_kn\": %.3f, \"imo_advance_ok\": %s, "
+           "\"imo_tactical_diameter_ok\": %s%s}",
+           s->name, s->L, fw_ms_to_kn(speed), fw_rad_to_deg(rudder), r->propeller, r->advance,
+           r->advance / s->L, r->transfer, r->transfer / s->L, r->tactical_diameter,
+           r->tactical_diameter / s->L, r->t90, r->t180, fw_rad_to_deg(r->steady_rate),
+           fw_ms_to_kn(r->steady_speed), r->advance_ok ? "true" : "false",
+           r->tactical_ok ? "true" : "false", extra ? extra : "");
+}
+
+static void print_turning_text(const fw_ship *s, double speed, double rudder,
+                               const fw_turning_result *r)
+{
+    printf("%s turning circle, %.0f deg %s at %.2f kn (propeller %.3f rev/s)\n", s->name,
+           fabs(fw_rad_to_deg(rudder)), rudder > 0 ? "starboard" : "port", fw_ms_to_kn(speed),
+           r->propeller);
+    printf("  advance            %8.1f m  %5.2f L   IMO <= 4.5 L: %s\n", r->advance,
+           r->advance / s->L, r->advance_ok ? "pass" : "FAIL");
+    printf("  transfer           %8.1f m  %5.2f L\n", r->transfer, r->transfer / s->L);
+    printf("  tactical diameter  %8.1f m  %5.2f L   IMO <= 5.0 L: %s\n", r->tactical_diameter,
+           r->tactical_diameter / s->L, r->tactical_ok ? "pass" : "FAIL");
+    printf("  time to 90 / 180   %8.1f s  %6.1f s\n", r->t90, r->t180);
+    printf("  steady turn        %8.3f deg/s at %.2f kn\n", fw_rad_to_deg(r->steady_rate),
+           fw_ms_to_kn(r->steady_speed));
+}
+
+static void print_zigzag_json(const fw_ship *s, const fw_zigzag_def *d, const fw_zigzag_result *r)
+{
+    char l2[32];
+    if (r->limit2 >= 0)
+        snprintf(l2, sizeof l2, "%.2f", fw_rad_to_deg(r->limit2));
+    else
+        snprintf(l2, sizeof l2, "null");
+    printf("{\"ship\": \"%s\", \"speed_kn\": %.3f, \"angle_deg\": %.2f, \"side\": \"%s\", "
+           "\"propeller_rps\": %.4f, \"initial_turning_time_s\": %.2f, \"L_over_V_s\": %.3f, "
+           "\"overshoot1_deg\": %.3f, \"overshoot2_deg\": %.3f, \"limit1_deg\": %.2f, "
+           "\"limit2_deg\": %s, \"imo_ok1\": %s, \"imo_ok2\": %s}",
+           s->name, fw_ms_to_kn(d->speed), fw_rad_to_deg(d->angle),
+           d->first_side > 0 ? "starboard" : "port", r->propeller, r->t_first_execute,
+           r->L_over_V, fw_rad_to_deg(r->overshoot1), fw_rad_to_deg(r->overshoot2),
+           fw_rad_to_deg(r->limit1), l2, r->ok1 ? "true" : "false", r->ok2 ? "true" : "false");
+}
+
+static void print_zigzag_text(const fw_ship *s, const fw_zigzag_def *d, const fw_zigzag_result *r)
+{
+    double a = fw_rad_to_deg(d->angle);
+    printf("%s zig-zag %.0f/%.0f %s first at %.2f kn (L/V = %.1f s)\n", s->name, a, a,
+           d->first_side > 0 ? "starboard" : "port", fw_ms_to_kn(d->speed), r->L_over_V);
+    printf("  initial turning time %6.1f s\n", r->t_first_execute);
+    printf("  first overshoot      %6.2f deg   IMO limit %.1f deg: %s\n",
+           fw_rad_to_deg(r->overshoot1), fw_rad_to_deg(r->limit1), r->ok1 ? "pass" : "FAIL");
+    if (r->limit2 >= 0)
+        printf("  second overshoot     %6.2f deg   IMO limit %.1f deg: %s\n",
+               fw_rad_to_deg(r->overshoot2), fw_rad_to_deg(r->limit2), r->ok2 ? "pass" : "FAIL");
+    else
+        printf("  second overshoot     %6.2f deg   (no IMO limit)\n", fw_rad_to_deg(r->overshoot2));
+}
+
+static int run_turning(const fw_ship *ship, const opts *o, fw_error *err)
+{
+    if (!o->have_speed || !o->have_rudder)
+        return fw_report((fw_fail(err, FW_EINPUT, "manoeuvre turning needs --speed and --rudder"), err));
+    fw_turning_def d = fw_default_turning_def();
+    d.speed = fw_kn_to_ms(o->speed);
+    d.rudder = side_sign(o->side) * fw_deg_to_rad(o->rudder);
+    d.max_turn = fw_deg_to_rad(540.0);
+    fw_turning_result r;
+    fw_history h = {0};
+    fw_status st = fw_turning_run(ship, &d, &r, o->csv ? &h : NULL, err);
+    if (!st && o->csv)
+        st = fw_history_write_csv(&h, o->csv, err);
+    fw_history_free(&h);
+    if (st)
+        return fw_report(err);
+    if (o->json) {
+        print_turning_json(ship, d.speed, d.rudder, &r, NULL);
+        printf("\n");
+    } else {
+        print_turning_text(ship, d.speed, d.rudder, &r);
+    }
+    return 0;
+}
+
+static int run_zigzag(const fw_ship *ship, const opts *o, fw_error *err)
+{
+    if (!o->have_speed || !o->have_angle)
+        return fw_report((fw_fail(err, FW_EINPUT, "manoeuvre zigzag needs --speed and --angle"), err));
+    fw_zigzag_def d = fw_default_zigzag_def();
+    d.speed = fw_kn_to_ms(o->speed);
+    d.angle = fw_deg_to_rad(o->angle);
+    d.first_side = (int)side_sign(o->side);
+    fw_zigzag_result r;
+    fw_history h = {0};
+    fw_status st = fw_zigzag_run(ship, &d, &r, o->csv ? &h : NULL, err);
+    if (!st && o->csv)
+        st = fw_history_write_csv(&h, o->csv, err);
+    fw_history_free(&h);
+    if (st)
+        return fw_report(err);
+    if (o->json) {
+        print_zigzag_json(ship, &d, &r);
+        printf("\n");
+    } else {
+        print_zigzag_text(ship, &d, &r);
+    }
+    return 0;
+}
+
+static void pct_row(const char *name, double trial, double sim, double ours, double unit)
+{
+    printf("  %-19s %9.1f", name, trial * unit);
+    if (sim > 0)
+        printf(" %9.1f (%+5.1f%%)", sim * unit, 100 * (sim / trial - 1));
+    else
+        printf(" %18s", "-");
+    printf(" %9.1f (%+5.1f%%)\n", ours * unit, 100 * (ours / trial - 1));
+}
+
+static void rate_row(double trial, double sim, double ours)
+{
+    printf("  %-19s %9.3f", "steady rate deg/s", fw_rad_to_deg(trial));
+    if (sim > 0)
+        printf(" %9.3f (%+5.1f%%)", fw_rad_to_deg(sim), 100 * (sim / trial - 1));
+    else
+        printf(" %18s", "-");
+    printf(" %9.3f (%+5.1f%%)\n", fw_rad_to_deg(ours), 100 * (ours / trial - 1));
+}
+
+static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
+{
+    char trial_path[600];
+    if (o->trial)
+        snprintf(trial_path, sizeof trial_path, "%s", o->trial);
+    else
+        snprintf(trial_path, sizeof trial_path, "%s/scenarios/ships/%s-trial.yaml", fw_data_root(),
+                 ship->name);
+    fw_trial trial;
+    if (fw_trial_load(trial_path, &trial, err))
+        return fw_report(err);
+    bool all_ok = true;
+    if (o->json)
+        printf("{\"ship\": \"%s\", \"turns\": [", ship->name);
+    else
+        printf("Manoeuvring report: %s (L = %.1f m), trial data %s\n\n", ship->name, ship->L,
+               trial_path);
+    for (int i = 0; i < trial.nturns; i++) {
+        const fw_trial_turn *t = &trial.turns[i];
+        fw_turning_def d = fw_default_turning_def();
+        d.speed = t->speed;
+        d.rudder = t->rudder;
+        d.max_turn = fw_deg_to_rad(540.0);
+        fw_turning_result r;
+        fw_history h = {0};
+        fw_status st = fw_turning_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
+        if (!st && o->csv_dir) {
+            char path[700];
+            snprintf(path, sizeof path, "%s/turning_%s_%.2fkn.csv", o->csv_dir,
+                     t->rudder > 0 ? "starboard" : "port", fw_ms_to_kn(t->speed));
+            st = fw_history_write_csv(&h, path, err);
+        }
+        fw_history_free(&h);
+        if (st)
+            return fw_report(err);
+        all_ok &= r.advance_ok && r.tactical_ok;
+        if (o->json) {
+            char extra[512];
+            snprintf(extra, sizeof extra,
+                     ", \"trial_advance_m\": %.1f, \"trial_transfer_m\": %.1f, "
+                     "\"trial_tactical_diameter_m\": %.1f, \"trial_steady_rate_degps\": %.4f, "
+                     "\"sim_advance_m\": %.1f, \"sim_transfer_m\": %.1f, "
+                     "\"sim_tactical_diameter_m\": %.1f, \"sim_steady_rate_degps\": %.4f",
+                     t->advance, t->transfer, t->tactical_diameter, fw_rad_to_deg(t->steady_rate),
+                     t->sim_advance, t->sim_transfer, t->sim_tactical_diameter,
+                     fw_rad_to_deg(t->sim_steady_rate));
+            printf("%s", i ? ", " : "");
+            print_turning_json(ship, d.speed, d.rudder, &r, extra);
+            continue;
+        }
+        print_turning_text(ship, d.speed, d.rudder, &r);
+        printf("\n  %-19s %9s %18s %18s\n", "against the trial", "trial", "other simulator",
+               "fairway");
+        pct_row("advance m", t->advance, t->sim_advance, r.advance, 1.0);
+        pct_row("transfer m", t->transfer, t->sim_transfer, r.transfer, 1.0);
+        pct_row("tactical diam. m", t->tactical_diameter, t->sim_tactical_diameter,
+                r.tactical_diameter, 1.0);
+        rate_row(t->steady_rate, t->sim_steady_rate, r.steady_rate);
+        printf("\n");
+    }
+    if (o->json)
+        printf("], \"zigzags\": [");
+    const double angles[2] = {10.0, 20.0};
+    for (int k = 0; k < 2; k++) {
+        fw_zigzag_def d = fw_default_zigzag_def();
+        d.speed = trial.turns[0].speed;
+        d.angle = fw_deg_to_rad(angles[k]);
+        fw_zigzag_result r;
+        fw_history h = {0};
+        fw_status st = fw_zigzag_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
+        if (!st && o->csv_dir) {
+            char path[700];
+            snprintf(path, sizeof path, "%s/zigzag_%.0f_%.2fkn.csv", o->csv_dir, angles[k],
+                     fw_ms_to_kn(d.speed));
+            st = fw_history_write_csv(&h, path, err);
+        }
+        fw_history_free(&h);
+        if (st)
+            return fw_report(err);
+        all_ok &= r.ok1 && r.ok2;
+        if (o->json) {
+            printf("%s", k ? ", " : "");
+            print_zigzag_json(ship, &d, &r);
+        } else {
+            print_zigzag_text(ship, &d, &r);
+            printf("\n");
+        }
+    }
+    if (o->json)
+        printf("], \"imo_ok\": %s}\n", all_ok ? "true" : "false");
+    else
+        printf("IMO MSC.137(76) manoeuvring standards: %s\n",
+               all_ok ? "all criteria met" : "NOT all criteria met");
+    return 0;
+}
+
+int fw_cmd_manoeuvre(int argc, char **argv)
+{
+    if (argc < 1 || fw_is_help(argv[0])) {
+        help();
+        return argc < 1 ? 2 : 0;
+    }
+    const char *kind = argv[0];
+    for (int i = 1; i < argc; i++)
+        if (fw_is_help(argv[i])) {
+            help();
+            return 0;
+        }
+    fw_error err = {0};
+    opts o;
+    if (parse(argc - 1, argv + 1, &o, &err))
+        return fw_report(&err);
+    bool report = strcmp(kind, "report") == 0;
+    if (!report && strcmp(kind, "turning") && strcmp(kind, "zigzag"))
+        return fw_report((fw_fail(&err, FW_EINPUT,
+                                  "manoeuvre: '%s' is not turning, zigzag or report", kind),
+                          &err));
+    if (!o.ship && !report)
+        return fw_report((fw_fail(&err, FW_EINPUT, "manoeuvre %s needs --ship", kind), &err));
+    fw_ship ship;
+    if (fw_ship_load(o.ship ? o.ship : "c3", &ship, &err))
+        return fw_report(&err);
+    if (o.have_rudder && fw_deg_to_rad(o.rudder) > ship.rudder_max * (1 + 1e-12))
+        return fw_report((fw_fail(&err, FW_EINPUT, "--rudder: %g deg is beyond %s's maximum of %g deg",
+                                  o.rudder, ship.name, fw_rad_to_deg(ship.rudder_max)), &err));
+    if (o.have_angle && fw_deg_to_rad(o.angle) > ship.rudder_max * (1 + 1e-12))
+        return fw_report((fw_fail(&err, FW_EINPUT, "--angle: %g deg is beyond %s's maximum rudder of %g deg",
+                                  o.angle, ship.name, fw_rad_to_deg(ship.rudder_max)), &err));
+    if (report)
+        return run_report(&ship, &o, &err);
+    if (strcmp(kind, "turning") == 0)
+        return run_turning(&ship, &o, &err);
+    return run_zigzag(&ship, &o, &err);
+}
