@@ -344,7 +344,9 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
             for (int i = 0; i < c->nh; i++) {
                 if ((st = fw_helm_track(c, sides[s], i, &tr, err)))
                     return st;
-                double cl = fw_track_clearance(&c->def, tr, t, n, 0.0, NULL);
+                /* branch and bound: a track is abandoned as soon as some
+                 * target comes closer than the best track's nearest one */
+                double cl = fw_track_clearance(&c->def, tr, t, n, best > 0.0 ? best : 0.0, NULL);
                 if (cl > best + 1e-9)
                     best = cl, pick = i, side = s;
             }
