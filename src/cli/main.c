@@ -16,6 +16,7 @@ static const command commands[] = {
     {"calibrate", fw_cmd_calibrate, "fit named MMG coefficients of a ship to its sea trial"},
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
     {"helm", fw_cmd_helm, "one avoidance decision (Nomoto helm search) for an own ship and targets"},
+    {"identify", fw_cmd_identify, "Nomoto indices and their regression from MMG turning tests"},
 };
 
 static void usage(FILE *out)
