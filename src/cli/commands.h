@@ -7,6 +7,8 @@
 #define FW_COMMANDS_H
 
 int fw_cmd_ship(int argc, char **argv);
+int fw_cmd_helm(int argc, char **argv);
+int fw_cmd_identify(int argc, char **argv);
 int fw_cmd_manoeuvre(int argc, char **argv);
 int fw_cmd_calibrate(int argc, char **argv);
 int fw_cmd_traffic(int argc, char **argv);

@@ -14,8 +14,10 @@ typedef struct command {
 static const command commands[] = {
     {"manoeuvre", fw_cmd_manoeuvre, "standard manoeuvres (turning circle, zig-zag) with IMO verdicts"},
     {"calibrate", fw_cmd_calibrate, "fit named MMG coefficients of a ship to its sea trial"},
-    {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
+    {"identify", fw_cmd_identify, "Nomoto indices and their regression from MMG turning tests"},
+    {"helm", fw_cmd_helm, "one avoidance decision (Nomoto helm search) for an own ship and targets"},
     {"traffic", fw_cmd_traffic, "run SUMO background traffic around a straight-running own ship"},
+    {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
 };
 
 static void usage(FILE *out)

@@ -1,0 +1,145 @@
+/* bench_helm - time per avoidance decision (assessment + helm search + action
+ * check) with 1, 10, 50 and 200 targets in range, against the cost of
+ * computing every candidate track (the precomputation the search avoids
+ * doing in full) measured in the same run.
+ *
+ * Scenes: own ship C-3 at 10 kn heading north at the origin; an aimed target
+ * heads for a random point within 800 m of the own ship's straight track at a
+ * random time 100-600 s ahead, from a random direction at 5-15 kn.  Mixed
+ * scenes aim 1 target in 10 (the rest anywhere within 3 nm, random courses);
+ * dense scenes aim all of them, which no helm clears beyond a few targets, so
+ * the search falls back to scoring every candidate track.  A fixed-seed generator keeps the
+ * scenes identical between runs. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "avoid/policy.h"
+#include "core/units.h"
+
+static unsigned long long rng = 88172645463325252ULL;
+static double uniform(void)
+{
+    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+    return (double)(rng >> 11) / 9007199254740992.0;
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+enum { SCENES = 200, REPS = 5 };
+
+int main(void)
+{
+    fw_error err = {0};
+    fw_ship ship;
+    if (fw_ship_load("c3", &ship, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return 1;
+    }
+    fw_helm_def hdef = fw_default_helm_def();
+    fw_policy_def pdef = fw_default_policy_def();
+    fw_helm_ctx *ctx;
+    if (fw_helm_ctx_create(&ship, &hdef, &ctx, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return 1;
+    }
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    static double times[SCENES], base[SCENES], one[SCENES];
+    printf("# fairway bench_helm: C-3 at 10 kn, %d scenes x %d repetitions, median per call\n",
+           SCENES, REPS);
+    printf("# horizon %.0f s, dt %.0f s, helms %.0f-%.0f deg step %.0f\n", hdef.track.horizon,
+           hdef.track.dt, hdef.min_helm_deg, hdef.max_helm_deg, hdef.step_deg);
+    /* baselines: one track, and all 2 x 26 candidates + keep (mirroring on) */
+    for (int s = 0; s < SCENES; s++) {
+        double t0 = now();
+        for (int r = 0; r < REPS; r++) {
+            fw_helm_begin(ctx, &own);
+            fw_helm_precompute(ctx, &err);
+        }
+        base[s] = (now() - t0) / REPS;
+        fw_own_state turning = own;
+        turning.r = 1e-4; /* not symmetric: every track computed */
+        t0 = now();
+        for (int r = 0; r < REPS; r++) {
+            fw_helm_begin(ctx, &turning);
+            fw_helm_precompute(ctx, &err);
+        }
+        one[s] = (now() - t0) / REPS / (2 * fw_helm_count(ctx) + 1);
+    }
+    printf("baseline one_track_us %.2f all_tracks_mirrored_us %.1f all_tracks_unmirrored_us %.1f\n",
+           1e6 * median(one, SCENES), 1e6 * median(base, SCENES),
+           1e6 * median(one, SCENES) * (2 * fw_helm_count(ctx) + 1));
+    static const int counts[] = {1, 10, 50, 200};
+    for (int mode = 0; mode < 2; mode++) {
+    printf("# %s\n", mode ? "dense: every target aimed within 800 m of the own track (stress)"
+                          : "mixed: 1 in 10 targets aimed, the rest anywhere within 3 nm on random courses");
+    printf("%8s %12s %12s %10s %10s %10s\n", "targets", "median_us", "p90_us", "threat_pct",
+           "tracks_avg", "feasible_pct");
+    for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+        int n = counts[c];
+        fw_target *tg = malloc(sizeof *tg * (size_t)n);
+        fw_assessment *as = malloc(sizeof *as * (size_t)n);
+        int *order = malloc(sizeof *order * 2 * (size_t)n);
+        int threats = 0, feasible = 0;
+        long tracks = 0;
+        for (int s = 0; s < SCENES; s++) {
+            for (int i = 0; i < n; i++) {
+                double tm = 100 + 500 * uniform(), off = 1600 * (uniform() - 0.5);
+                double course = 2 * FW_PI * uniform(), v = fw_kn_to_ms(5 + 10 * uniform());
+                double me = off, mn = own.U * tm + 1600 * (uniform() - 0.5);
+                if (mode == 0 && i % 10 != 0) {
+                    /* anywhere within 3 nm now */
+                    double rr = 3 * FW_NMILE * sqrt(uniform()), b = 2 * FW_PI * uniform();
+                    me = rr * sin(b) + v * sin(course) * tm;
+                    mn = rr * cos(b) + v * cos(course) * tm;
+                }
+                tg[i] = (fw_target){.east = me - v * sin(course) * tm,
+                                    .north = mn - v * cos(course) * tm,
+                                    .course = course, .speed = v,
+                                    .length = 100 + 200 * uniform(), .breadth = 30};
+            }
+            fw_decision d;
+            double t0 = now();
+            for (int r = 0; r < REPS; r++) {
+                fw_policy pol;
+                fw_policy_init(&pol, &pdef);
+                if (fw_policy_step(&pol, ctx, &hdef, 0.0, &own, tg, n, as, order, &d, &err)) {
+                    fprintf(stderr, "%s\n", err.msg);
+                    return 1;
+                }
+            }
+            times[s] = (now() - t0) / REPS;
+            threats += d.search.threat;
+            feasible += d.search.feasible;
+            tracks += fw_helm_tracks_computed(ctx);
+        }
+        double med = median(times, SCENES);
+        printf("%8d %12.1f %12.1f %10.0f %10.1f %10.0f\n", n, 1e6 * med,
+               1e6 * times[(int)(0.9 * SCENES)], 100.0 * threats / SCENES,
+               (double)tracks / SCENES, 100.0 * feasible / SCENES);
+        free(tg);
+        free(as);
+        free(order);
+    }
+    }
+    fw_helm_ctx_destroy(ctx);
+    return 0;
+}

@@ -1,0 +1,151 @@
+#include "avoid/encounter.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "core/units.h"
+
+fw_domain_def fw_default_domain_def(void)
+{
+    return (fw_domain_def){.size = 300.0, .fore_aft_ratio = 1.0};
+}
+
+fw_colregs_def fw_default_colregs_def(void)
+{
+    return (fw_colregs_def){.head_on_bearing_deg = 6.0, .head_on_course_tol_deg = 15.0,
+                            .overtake_sector_deg = 112.5};
+}
+
+const char *fw_situation_name(fw_situation s)
+{
+    switch (s) {
+    case FW_SIT_HEAD_ON: return "head-on";
+    case FW_SIT_OVERTAKING: return "overtaking";
+    case FW_SIT_OVERTAKEN: return "being overtaken";
+    case FW_SIT_GIVE_WAY: return "crossing give-way";
+    case FW_SIT_STAND_ON: return "crossing stand-on";
+    }
+    return "?";
+}
+
+/* Relative bearing in degrees [0, 360) of point (e, n) seen from (e0, n0) on heading h. */
+static double rel_bearing_deg(double e0, double n0, double h, double e, double n)
+{
+    double b = atan2(e - e0, n - n0) - h;
+    return fw_rad_to_deg(fw_wrap_2pi(b));
+}
+
+/* Angular distance in degrees of bearing b from dead ahead. */
+static double off_bow(double b) { return b <= 180.0 ? b : 360.0 - b; }
+
+fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
+                         const fw_target *t)
+{
+    double beta = rel_bearing_deg(own->east, own->north, own->psi, t->east, t->north);
+    double alpha = rel_bearing_deg(t->east, t->north, t->course, own->east, own->north);
+    double course_diff = fw_rad_to_deg(fabs(fw_wrap_pi(t->course - own->psi)));
+    if (off_bow(beta) <= def->head_on_bearing_deg && off_bow(alpha) <= def->head_on_bearing_deg &&
+        course_diff >= 180.0 - def->head_on_course_tol_deg)
+        return FW_SIT_HEAD_ON;
+    double sector = def->overtake_sector_deg;
+    if (alpha > sector && alpha < 360.0 - sector && own->U > t->speed)
+        return FW_SIT_OVERTAKING;
+    if (beta > sector && beta < 360.0 - sector && t->speed > own->U)
+        return FW_SIT_OVERTAKEN;
+    /* dead ahead counts as starboard: a crossing ship on the bow is given way to */
+    return beta < 180.0 ? FW_SIT_GIVE_WAY : FW_SIT_STAND_ON;
+}
+
+void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel,
+                    double sin_rel, double *a, double *b)
+{
+    double hl = 0.5 * t->length, hb = 0.5 * t->breadth;
+    double c = fabs(cos_rel), s = fabs(sin_rel);
+    *a = dom->size * dom->fore_aft_ratio + hl * c + hb * s;
+    *b = dom->size + hl * s + hb * c;
+}
+
+static bool more_dangerous(const fw_assessment *p, int i, const fw_assessment *q, int j)
+{
+    if (p->enters_domain != q->enters_domain)
+        return p->enters_domain;
+    if (p->enters_domain && p->t_enter != q->t_enter)
+        return p->t_enter < q->t_enter;
+    if (p->dcpa != q->dcpa)
+        return p->dcpa < q->dcpa;
+    if (p->range != q->range)
+        return p->range < q->range;
+    return i < j;
+}
+
+/* Stable merge sort of index array a (scratch b, same length) by danger. */
+static void merge_sort(int *a, int *b, int n, const fw_assessment *as)
+{
+    if (n < 2)
+        return;
+    int h = n / 2;
+    merge_sort(a, b, h, as);
+    merge_sort(a + h, b + h, n - h, as);
+    int i = 0, j = h, k = 0;
+    while (i < h && j < n)
+        b[k++] = more_dangerous(&as[a[j]], a[j], &as[a[i]], a[i]) ? a[j++] : a[i++];
+    while (i < h)
+        b[k++] = a[i++];
+    while (j < n)
+        b[k++] = a[j++];
+    for (k = 0; k < n; k++)
+        a[k] = b[k];
+}
+
+void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
+               const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
+               int *order)
+{
+    double so = sin(own->psi), co = cos(own->psi);
+    for (int i = 0; i < n; i++) {
+        fw_assessment *as = &out[i];
+        double dx = t[i].east - own->east, dy = t[i].north - own->north;
+        double vx = t[i].speed * sin(t[i].course) - own->U * so;
+        double vy = t[i].speed * cos(t[i].course) - own->U * co;
+        as->range = hypot(dx, dy);
+        as->bearing = fw_wrap_2pi(atan2(dx, dy));
+        as->rel_bearing = fw_wrap_2pi(as->bearing - own->psi);
+        double v2 = vx * vx + vy * vy;
+        as->tcpa = v2 > 1e-12 ? -(dx * vx + dy * vy) / v2 : 0.0;
+        as->dcpa = hypot(dx + vx * as->tcpa, dy + vy * as->tcpa);
+        as->situation = fw_classify(cdef, own, &t[i]);
+        /* Domain on the straight course: in the own body frame (fixed while both
+         * keep course) the target moves on a line, and lambda^2(t) is a quadratic. */
+        double a, b;
+        double rel = t[i].course - own->psi;
+        fw_domain_axes(dom, &t[i], cos(rel), sin(rel), &a, &b);
+        double x = dx * so + dy * co, y = dx * co - dy * so;
+        double ux = vx * so + vy * co, uy = vx * co - vy * so;
+        double A = ux * ux / (a * a) + uy * uy / (b * b);
+        double B = 2.0 * (x * ux / (a * a) + y * uy / (b * b));
+        double C = x * x / (a * a) + y * y / (b * b);
+        double tm = A > 0.0 ? -B / (2.0 * A) : 0.0;
+        if (tm < 0.0)
+            tm = 0.0;
+        if (tm > horizon)
+            tm = horizon;
+        as->min_lambda = sqrt(fmax(0.0, C + tm * (B + tm * A)));
+        as->t_enter = INFINITY;
+        if (C < 1.0) {
+            as->t_enter = 0.0;
+        } else if (A > 0.0 && B * B - 4.0 * A * (C - 1.0) >= 0.0) {
+            double te = (-B - sqrt(B * B - 4.0 * A * (C - 1.0))) / (2.0 * A);
+            if (te >= 0.0 && te <= horizon)
+                as->t_enter = te;
+        }
+        as->enters_domain = isfinite(as->t_enter);
+        as->rank = 0;
+    }
+    if (order) {
+        for (int i = 0; i < n; i++)
+            order[i] = i;
+        merge_sort(order, order + n, n, out);
+        for (int i = 0; i < n; i++)
+            out[order[i]].rank = i;
+    }
+}

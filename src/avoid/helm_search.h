@@ -1,0 +1,97 @@
+/* helm_search.h - the paper's helm search (its Figure 21) over predicted tracks.
+ *
+ * For each permitted side, the least helm from min_helm to max_helm (step
+ * 1 deg) whose Nomoto-predicted own track keeps every target (constant
+ * velocity) outside the own domain over the horizon.  Tracks depend only on
+ * the own state, so a context computes each at most once per decision, lazily
+ * (most decisions need the keep-course track and a few helms only), and
+ * mirrors the port tracks from the starboard ones when the start is symmetric.
+ * Each target-track check is culled chunk by chunk with bounding boxes in
+ * space and time before the exact per-segment ellipse test.
+ */
+#ifndef FW_HELM_SEARCH_H
+#define FW_HELM_SEARCH_H
+
+#include <stdbool.h>
+
+#include "avoid/encounter.h"
+#include "nomoto/track.h"
+#include "ship/ship.h"
+
+enum { FW_SIDE_PORT = -1, FW_SIDE_NONE = 0, FW_SIDE_STARBOARD = 1 };
+/* masks of permitted sides */
+enum { FW_ALLOW_STARBOARD = 1, FW_ALLOW_PORT = 2, FW_ALLOW_EITHER = 3 };
+
+typedef struct fw_helm_def {
+    double min_helm_deg;   /* 10: the paper's minimum effective avoidance helm */
+    double max_helm_deg;   /* 35: the ship's turning-test maximum */
+    double step_deg;       /* 1 */
+    int overtake_side;     /* overtaking: 0 = the side needing less helm (ties:
+                              starboard), FW_SIDE_STARBOARD or FW_SIDE_PORT */
+    fw_domain_def domain;
+    fw_colregs_def colregs;
+    fw_track_def track;
+} fw_helm_def;
+
+fw_helm_def fw_default_helm_def(void);
+
+typedef struct fw_helm_ctx fw_helm_ctx;
+
+/* The ship must outlive the context. */
+fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_helm_ctx **out,
+                             fw_error *err);
+void fw_helm_ctx_destroy(fw_helm_ctx *ctx);
+
+/* Starts a decision for this own state: forgets all tracks. */
+void fw_helm_begin(fw_helm_ctx *ctx, const fw_own_state *own);
+
+/* Number of candidate helms per side and the helm (rad, signed) of candidate i. */
+int fw_helm_count(const fw_helm_ctx *ctx);
+double fw_helm_value(const fw_helm_ctx *ctx, int side, int i);
+
+/* Candidate track (computed on first use), and the keep-course track (rudder
+ * ordered amidships from the present state). */
+fw_status fw_helm_track(fw_helm_ctx *ctx, int side, int i, const fw_track **tr, fw_error *err);
+fw_status fw_helm_keep_track(fw_helm_ctx *ctx, const fw_track **tr, fw_error *err);
+/* Computes every candidate track now (benchmark baseline). */
+fw_status fw_helm_precompute(fw_helm_ctx *ctx, fw_error *err);
+int fw_helm_tracks_computed(const fw_helm_ctx *ctx);
+
+/* Smallest normalised domain radius of any target along a track (>= 1: all
+ * outside); *limiting gets that target (-1 if n = 0).  With stop_below > 0 it
+ * returns as soon as a value below it is found (a fail/pass test). */
+double fw_track_clearance(const fw_helm_def *def, const fw_track *tr, const fw_target *t, int n,
+                          double stop_below, int *limiting);
+
+/* Closest centre distance to one target along a track, and when. */
+double fw_track_min_distance(const fw_track *tr, const fw_target *t, double *t_min);
+
+/* The sides COLREGs permit against the threats (targets whose assessment says
+ * they enter the domain): starboard only for head-on and give-way crossing
+ * (and for a stand-on ship against a target on its port side: rule 17 forbids
+ * a port turn then); overtaking per def->overtake_side; else either. */
+int fw_permitted_sides(const fw_helm_def *def, const fw_assessment *as, int n);
+
+typedef struct fw_helm_result {
+    bool threat;         /* keeping course lets some target into the domain */
+    bool feasible;       /* some helm on a permitted side keeps all targets out */
+    int allowed;         /* FW_ALLOW_* used */
+    int side;            /* chosen side, FW_SIDE_NONE if no threat */
+    double helm;         /* rad, signed order: the least clearing helm, or if none
+                            clears, the one with the largest clearance */
+    double clearance;    /* min normalised domain radius along the chosen track */
+    double keep_clearance; /* the same along the keep-course track */
+    int limiting;        /* target closest to the domain on the chosen track */
+    double side_helm[2]; /* rad, least clearing helm [0] starboard [1] port; NAN if none/not searched */
+} fw_helm_result;
+
+/* One decision: keep-course check, then the search on the allowed sides. */
+fw_status fw_helm_search(fw_helm_ctx *ctx, const fw_target *t, int n, int allowed,
+                         fw_helm_result *res, fw_error *err);
+
+/* Does a track with `helm` started after waiting `delay` s keep all targets
+ * out?  (For the action policy: would the minimum helm still do later?) */
+fw_status fw_helm_clears_after(fw_helm_ctx *ctx, const fw_target *t, int n, double helm,
+                               double delay, bool *clears, fw_error *err);
+
+#endif

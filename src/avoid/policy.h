@@ -1,0 +1,88 @@
+/* policy.h - when to act, how much, and how to come back: a state machine.
+ *
+ *   STANDBY   rudder amidships; every step: assess, search the helm, and act
+ *             (-> AVOID) when the policy below says so
+ *   AVOID     hold the avoidance helm (raised if the search asks for more) until
+ *             the domain is clear, keeping course would stay clear and the
+ *             target acted for has passed (TCPA < 0)
+ *   COUNTER   opposite helm of the same size (the paper's first return step)
+ *             until the yaw rate has reversed
+ *   AUTOPILOT PD on the heading error back to the original course, then STANDBY
+ *             (which from then on keeps that course with the same PD: without
+ *             disturbances its helm is near zero, the paper's "amidships")
+ *
+ * Point of action for a give-way (or head-on, overtaking) own ship, the first of:
+ *   - range to the threat <= act_range (the paper: act at least 1 nm before);
+ *   - the minimum effective helm, if the order waited act_lookahead seconds more,
+ *     would no longer keep every target out (so waiting longer would need more
+ *     than the minimum helm: act now, early and substantial, rule 16);
+ *   - no helm clears any more (take the best available action at once).
+ * For a stand-on own ship (rule 17: crossing target on the port side, or being
+ * overtaken) keep course and speed while the give-way ship may still act; act
+ * when the predicted domain entry is closer than standon_act_time or the range
+ * below standon_act_range, and never to port for a target on the port side.
+ */
+#ifndef FW_POLICY_H
+#define FW_POLICY_H
+
+#include "avoid/helm_search.h"
+
+typedef enum fw_policy_mode {
+    FW_MODE_STANDBY,
+    FW_MODE_AVOID,
+    FW_MODE_COUNTER,
+    FW_MODE_AUTOPILOT,
+} fw_policy_mode;
+
+const char *fw_policy_mode_name(fw_policy_mode m);
+
+typedef struct fw_policy_def {
+    double act_range;          /* m, 1852 (1 nm) */
+    double act_lookahead;      /* s, 10; <= 0 disables the minimum-helm trigger */
+    double standon_act_range;  /* m, 926 (0.5 nm) */
+    double standon_act_time;   /* s, 120: domain entry this close -> the give-way ship is late */
+    /* heading autopilot: helm = -kp * error - kd * r, limited to ap_max_helm.
+     * kp 1 deg per deg and kd 20 s: with the C-3's 10 kn indices (K 0.013 1/s,
+     * dominant lag T1 21 s, T2 and T3 nearly cancelling) the closed loop
+     * 21 s^2 + (1 + K kd) s + K kp has damping 1.2 and a 4 min time constant. */
+    double ap_kp;              /* rad of helm per rad of heading error */
+    double ap_kd;              /* s */
+    double ap_max_helm;        /* rad, 20 deg */
+    double ap_done_heading;    /* rad, 1 deg: back on course within this ... */
+    double ap_done_rate;       /* rad/s, ... and turning slower than 0.005 deg/s (the
+                                  rudder then goes amidships: a faster residual
+                                  turn would drift r (T1 + T2) off course) */
+} fw_policy_def;
+
+fw_policy_def fw_default_policy_def(void);
+
+typedef struct fw_policy {
+    fw_policy_def def;
+    fw_policy_mode mode;
+    double psi_ref;   /* rad, the course before the manoeuvre */
+    int side;         /* side of the current manoeuvre */
+    double helm;      /* rad, last order */
+    int primary;      /* target index the manoeuvre is for */
+    double t_mode;    /* s, when the present mode began */
+    bool course_set;  /* returned once: STANDBY keeps psi_ref by the autopilot */
+} fw_policy;
+
+void fw_policy_init(fw_policy *p, const fw_policy_def *def);
+
+/* What one step decided, and why. */
+typedef struct fw_decision {
+    fw_policy_mode mode;    /* after this step */
+    double helm;            /* rad, the order */
+    const char *reason;     /* static text */
+    bool acted;             /* this step started an avoidance */
+    int primary;            /* most dangerous target (-1 if none) */
+    fw_helm_result search;  /* the helm search of this step */
+} fw_decision;
+
+/* One step at time t: assess (into as[0..n-1], order needs 2 n ints), search,
+ * update the mode.  ctx is begun here with `own`. */
+fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef, double t,
+                         const fw_own_state *own, const fw_target *tg, int n,
+                         fw_assessment *as, int *order, fw_decision *d, fw_error *err);
+
+#endif

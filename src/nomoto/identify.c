@@ -1,0 +1,207 @@
+#include "nomoto/identify.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dynamics/stepper.h"
+
+fw_status fw_ident_turning(const fw_ship *ship, double U, double helm, double dt, int n,
+                           double *r, fw_error *err)
+{
+    double prop;
+    fw_status s = fw_mmg_propeller_for_speed(ship, U, &prop, err);
+    if (s)
+        return s;
+    fw_stepper_def def = fw_default_stepper_def();
+    fw_stepper *st;
+    if ((s = fw_stepper_create(ship, &def, &st, err)))
+        return s;
+    fw_mmg_state x0 = fw_mmg_straight(U, 0.0, 0.0, 0.0);
+    if ((s = fw_stepper_start(st, 0.0, &x0, prop, err)))
+        goto done;
+    fw_stepper_set_helm(st, helm);
+    r[0] = fw_stepper_state(st)->r;
+    for (int k = 1; k < n; k++) {
+        if ((s = fw_stepper_advance(st, dt, err)))
+            goto done;
+        r[k] = fw_stepper_state(st)->r;
+    }
+done:
+    fw_stepper_destroy(st);
+    return s;
+}
+
+void fw_ident_response(const fw_nomoto_indices *ix, double helm, double rate, double dt, int n,
+                       double *r)
+{
+    double t_ramp = fabs(helm) / rate, rho = helm > 0 ? rate : -rate;
+    fw_nomoto_piece ramp, hold;
+    fw_nomoto_piece_init(&ramp, ix, 0.0, rho, 0.0, 0.0);
+    double r1, v1;
+    fw_nomoto_piece_eval(&ramp, t_ramp, &r1, &v1, NULL);
+    fw_nomoto_piece_init(&hold, ix, helm, 0.0, r1, v1);
+    for (int k = 0; k < n; k++) {
+        double t = k * dt;
+        if (t < t_ramp)
+            fw_nomoto_piece_eval(&ramp, t, &r[k], NULL, NULL);
+        else
+            fw_nomoto_piece_eval(&hold, t - t_ramp, &r[k], NULL, NULL);
+    }
+}
+
+/* Solves the m x m system A x = b (A symmetric positive definite) by Cholesky; false if singular. */
+static bool chol_solve(double *A, double *b, int m)
+{
+    for (int j = 0; j < m; j++) {
+        double d = A[j * m + j];
+        for (int k = 0; k < j; k++)
+            d -= A[j * m + k] * A[j * m + k];
+        if (!(d > 0.0))
+            return false;
+        A[j * m + j] = sqrt(d);
+        for (int i = j + 1; i < m; i++) {
+            double v = A[i * m + j];
+            for (int k = 0; k < j; k++)
+                v -= A[i * m + k] * A[j * m + k];
+            A[i * m + j] = v / A[j * m + j];
+        }
+    }
+    for (int i = 0; i < m; i++) {
+        for (int k = 0; k < i; k++)
+            b[i] -= A[i * m + k] * b[k];
+        b[i] /= A[i * m + i];
+    }
+    for (int i = m - 1; i >= 0; i--) {
+        for (int k = i + 1; k < m; k++)
+            b[i] -= A[k * m + i] * b[k];
+        b[i] /= A[i * m + i];
+    }
+    return true;
+}
+
+static fw_nomoto_indices from_params(const double p[4])
+{
+    /* T1 and T2 as logarithms keep them positive; K, T3 free */
+    return (fw_nomoto_indices){.K = p[0], .T1 = exp(p[1]), .T2 = exp(p[2]), .T3 = p[3]};
+}
+
+static double sse(const double p[4], const double *r, int n, double dt, double helm,
+                  double rate, double *model)
+{
+    fw_nomoto_indices ix = from_params(p);
+    fw_ident_response(&ix, helm, rate, dt, n, model);
+    double s = 0.0;
+    for (int k = 0; k < n; k++)
+        s += (model[k] - r[k]) * (model[k] - r[k]);
+    return isfinite(s) ? s : INFINITY;
+}
+
+fw_status fw_ident_fit(const double *r, int n, double dt, double helm, double rate,
+                       fw_nomoto_indices *out, double *rms_rel, fw_error *err)
+{
+    double *model = malloc(sizeof(double) * 6 * (size_t)n);
+    if (!model)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    double *J = model + n; /* 4 columns of n, then a scratch model */
+    double *trial = model + 5 * n;
+    double r_end = r[n - 1];
+    /* start: steady gain from the last sample, T1 fast, T2 and T3 slow */
+    double p[4] = {r_end / helm, log(10.0), log(80.0), 60.0};
+    double f = sse(p, r, n, dt, helm, rate, model), lambda = 1e-3;
+    for (int it = 0; it < 300; it++) {
+        double h[4] = {1e-6 * fmax(fabs(p[0]), 1e-6), 1e-6, 1e-6, 1e-6 * fmax(fabs(p[3]), 1.0)};
+        for (int j = 0; j < 4; j++) {
+            double q[4] = {p[0], p[1], p[2], p[3]};
+            q[j] += h[j];
+            sse(q, r, n, dt, helm, rate, trial);
+            for (int k = 0; k < n; k++)
+                J[j * n + k] = (trial[k] - model[k]) / h[j];
+        }
+        double A[16], g[4];
+        for (int a = 0; a < 4; a++) {
+            g[a] = 0.0;
+            for (int k = 0; k < n; k++)
+                g[a] += J[a * n + k] * (r[k] - model[k]);
+            for (int b = 0; b < 4; b++) {
+                double s = 0.0;
+                for (int k = 0; k < n; k++)
+                    s += J[a * n + k] * J[b * n + k];
+                A[a * 4 + b] = s;
+            }
+        }
+        bool improved = false;
+        while (lambda < 1e12) {
+            double M[16], step[4];
+            memcpy(M, A, sizeof M);
+            memcpy(step, g, sizeof step);
+            for (int a = 0; a < 4; a++)
+                M[a * 4 + a] += lambda * (A[a * 4 + a] > 0 ? A[a * 4 + a] : 1e-30);
+            if (chol_solve(M, step, 4)) {
+                double q[4] = {p[0] + step[0], p[1] + step[1], p[2] + step[2], p[3] + step[3]};
+                double fq = sse(q, r, n, dt, helm, rate, trial);
+                if (fq < f) {
+                    bool tiny = f - fq < 1e-12 * f;
+                    memcpy(p, q, sizeof p);
+                    f = fq;
+                    memcpy(model, trial, sizeof(double) * (size_t)n);
+                    lambda = fmax(lambda * 0.3, 1e-9);
+                    improved = !tiny;
+                    break;
+                }
+            }
+            lambda *= 10.0;
+        }
+        if (!improved)
+            break;
+    }
+    *out = from_params(p);
+    if (out->T1 > out->T2) { /* eq 9 is symmetric: report T1 <= T2 as the paper does */
+        double t = out->T1;
+        out->T1 = out->T2;
+        out->T2 = t;
+    }
+    *rms_rel = sqrt(f / n) / fabs(r_end);
+    free(model);
+    if (!isfinite(*rms_rel))
+        return fw_fail(err, FW_ERUN, "Nomoto fit did not converge");
+    return FW_OK;
+}
+
+static double basis(fw_nomoto_basis b, double U, double d)
+{
+    fw_nomoto_index one = {.n = 1, .basis = {b}, .coef = {1.0}};
+    return fw_nomoto_index_eval(&one, U, d);
+}
+
+fw_status fw_ident_regress(fw_nomoto_index *ix, const double *U_kn, const double *d_deg,
+                           const double *value, int m, fw_error *err)
+{
+    int q = ix->n;
+    if (m < q)
+        return fw_fail(err, FW_EINPUT, "regression needs at least %d grid points, got %d", q, m);
+    /* normal equations on columns scaled to unit norm (the basis values span
+     * 1e-2 .. 1e3) */
+    double A[FW_NB_COUNT * FW_NB_COUNT] = {0}, b[FW_NB_COUNT] = {0}, sc[FW_NB_COUNT] = {0};
+    for (int j = 0; j < q; j++) {
+        for (int i = 0; i < m; i++)
+            sc[j] += pow(basis(ix->basis[j], U_kn[i], d_deg[i]), 2);
+        sc[j] = sc[j] > 0 ? 1.0 / sqrt(sc[j]) : 1.0;
+    }
+    for (int i = 0; i < m; i++) {
+        double x[FW_NB_COUNT];
+        for (int j = 0; j < q; j++)
+            x[j] = basis(ix->basis[j], U_kn[i], d_deg[i]) * sc[j];
+        for (int j = 0; j < q; j++) {
+            b[j] += x[j] * value[i];
+            for (int k = 0; k < q; k++)
+                A[j * q + k] += x[j] * x[k];
+        }
+    }
+    if (!chol_solve(A, b, q))
+        return fw_fail(err, FW_ERUN, "regression is singular: the grid does not determine "
+                                     "the %d terms (add speeds or rudder angles)", q);
+    for (int j = 0; j < q; j++)
+        ix->coef[j] = b[j] * sc[j];
+    return FW_OK;
+}

@@ -1,0 +1,35 @@
+/* identify.h - Nomoto indices from MMG turning tests, and their regression.
+ *
+ * A turning test starts in straight steady running at U (propeller from the
+ * surge balance), orders the helm, and samples the yaw rate every dt.  The
+ * fit is Levenberg-Marquardt on (K, T1, T2, T3) against the exact response of
+ * eq 8 to the rudder as it really moves (a ramp at the rudder rate, then
+ * held), not to a step: at 35 deg the ramp lasts 12 s, a third of T1.  The
+ * regression is linear least squares over the grid with the basis terms of
+ * eqs 10-13 (or of the ship file's own knowledge base).
+ */
+#ifndef FW_IDENTIFY_H
+#define FW_IDENTIFY_H
+
+#include "nomoto/nomoto.h"
+#include "ship/ship.h"
+
+/* Yaw rate (rad/s) at t = k dt, k = 0..n-1, of an MMG turning test. */
+fw_status fw_ident_turning(const fw_ship *ship, double U, double helm, double dt, int n,
+                           double *r, fw_error *err);
+
+/* Response of eq 8 from rest to a rudder ramped at `rate` to `helm` (rad). */
+void fw_ident_response(const fw_nomoto_indices *ix, double helm, double rate, double dt, int n,
+                       double *r);
+
+/* Fits ix (K, T1, T2, T3; T1 <= T2 on return) to r; *rms_rel = RMS error /
+ * |final rate|. */
+fw_status fw_ident_fit(const double *r, int n, double dt, double helm, double rate,
+                       fw_nomoto_indices *ix, double *rms_rel, fw_error *err);
+
+/* Least squares of one index over m grid points (U in knots, d in degrees):
+ * fills ix->coef for the basis terms already set in ix->basis[0..ix->n-1]. */
+fw_status fw_ident_regress(fw_nomoto_index *ix, const double *U_kn, const double *d_deg,
+                           const double *value, int m, fw_error *err);
+
+#endif

@@ -1,0 +1,62 @@
+/* track.h - the own ship's predicted track for one helm order (Nomoto model).
+ *
+ * From the present state (position, heading, speed, yaw rate, rudder angle)
+ * the rudder moves at the ship's rudder rate to the order and is held; the yaw
+ * rate follows eq 8 solved exactly piece by piece (hold, ramp, hold), sampled
+ * every dt.  Speed is kept constant (the paper keeps U; the speed loss of a
+ * 10-35 deg turn at 10 kn is a few percent over the first minutes, and it would
+ * only shorten the track, which a fixed U makes slightly conservative for the
+ * head-on geometry).  Positions integrate the heading at speed U.
+ */
+#ifndef FW_TRACK_H
+#define FW_TRACK_H
+
+#include "core/error.h"
+#include "ship/ship.h"
+
+/* What the predictor needs of the own ship, SI. */
+typedef struct fw_own_state {
+    double east, north;  /* m */
+    double psi;          /* rad, heading (navigational) */
+    double U;            /* m/s, speed over ground (constant in the prediction) */
+    double r;            /* rad/s, yaw rate */
+    double rdot;         /* rad/s^2, yaw acceleration; 0 if unknown (steady turn) */
+    double delta;        /* rad, actual rudder angle */
+} fw_own_state;
+
+typedef struct fw_track_def {
+    double dt;        /* s, sample interval; positions are exact to ~dt^2 r^2 / 12 */
+    double horizon;   /* s, last sample time */
+    double max_turn;  /* rad: once the heading has changed this much the prediction
+                         steadies on the new course (the manoeuvre would be ended by
+                         the return policy, not continued into a circle); 0 = never */
+    double delay;     /* s, rudder kept at its present angle this long first */
+} fw_track_def;
+
+/* dt 5 s, horizon 600 s (a 2 nm encounter at 10 kn closes in 360 s), max_turn
+ * 90 deg, no delay. */
+fw_track_def fw_default_track_def(void);
+
+typedef struct fw_track {
+    int n;          /* samples at t = k dt, k = 0..n-1 */
+    int cap;
+    double dt;
+    double helm;    /* rad, the order */
+    double *east, *north, *psi, *r, *rdot, *delta, *sin_psi, *cos_psi;
+} fw_track;
+
+int fw_track_samples(const fw_track_def *def);
+fw_status fw_track_alloc(fw_track *tr, int cap, fw_error *err);
+void fw_track_free(fw_track *tr);
+
+/* Predicts the track for helm order `helm` (rad, + = starboard, clamped to the
+ * ship's maximum).  Nomoto indices at (U, |helm|), see nomoto.h; out must hold
+ * fw_track_samples(def) samples. */
+fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
+                           double helm, fw_track *out, fw_error *err);
+
+/* The mirror image of src about the line of the initial heading: the track
+ * for -helm when the start is symmetric (r = rdot = delta = 0). */
+void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst);
+
+#endif

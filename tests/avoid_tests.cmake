@@ -1,0 +1,33 @@
+# Nomoto model, identification, encounter assessment, helm search, policy, `fairway helm`.
+fw_test(test_nomoto test_nomoto.c)
+fw_test(test_avoid test_avoid.c)
+fw_test(test_identify test_identify.c)
+
+# The paper's cases at its action times (own ship C-3 at 10 kn heading north
+# from (0,0), targets propagated straight): head-on t = 15 s (paper 20 deg),
+# crossing t = 163 s (17 deg), complex crossing t = 105 s (15 deg); within 3 deg.
+fw_cli_test(helm_paper_head_on 0 "required: starboard (1[7-9]|2[0-3]) deg"
+            helm --ship c3 --own 0,77.17,0,10 --target 0,1922.83,180,10)
+fw_cli_test(helm_paper_crossing 0 "required: starboard (1[4-9]|20) deg"
+            helm --ship c3 --own 0,838.5,0,10 --target 1161.5,2000,270,10)
+fw_cli_test(helm_paper_complex_crossing 0 "required: starboard (1[2-8]) deg"
+            helm --ship c3 --own 0,540.2,0,10 --target 0,2567.9,180,8 --target 1567.9,2000,270,8)
+fw_cli_test(helm_json 0 "\"side\": \"starboard\", \"helm_deg\": [0-9]+"
+            helm --ship c3 --own 0,0,0,10 --target 0,1800,180,10 --json)
+fw_cli_test(helm_clear 0 "no target enters the domain"
+            helm --ship c3 --own 0,0,0,10 --target 3000,0,0,10)
+fw_cli_test(helm_help 0 "usage: fairway helm" helm --help)
+fw_cli_test(helm_bad_number 2 "--own: '0,x,0,10' is not a number|--own: 'x' is not a number"
+            helm --ship c3 --own 0,x,0,10)
+fw_cli_test(helm_nan 2 "not a finite number" helm --ship c3 --own 0,0,0,10 --target 0,nan,180,10)
+fw_cli_test(helm_negative_speed 2 "speed -3 kn is negative" helm --ship c3 --own 0,0,0,10 --target 0,900,180,-3)
+fw_cli_test(helm_unknown_ship 2 "unknown ship 'nosuch'" helm --ship nosuch --own 0,0,0,10)
+fw_cli_test(helm_missing_own 2 "--own is required" helm --ship c3 --target 0,900,180,10)
+fw_cli_test(helm_short_target 2 "expected E,N,COURSE,SPEED" helm --ship c3 --own 0,0,0,10 --target 0,900,180)
+fw_cli_test(helm_bad_domain 2 "--domain: must be positive" helm --ship c3 --own 0,0,0,10 --domain -5)
+fw_cli_test(identify_small_grid 0 "^wrote .*c3-identified-test.yaml"
+            identify --ship c3 --speeds 14.55,20.12,26.7 --rudders 10,20,35 --sides starboard --duration 600
+            --out ${CMAKE_CURRENT_BINARY_DIR}/c3-identified-test.yaml)
+fw_cli_test(identify_bad_speed 2 "--speeds: 'x' is not a number" identify --ship c3 --speeds 10,x)
+fw_cli_test(identify_unknown_ship 2 "unknown ship 'nosuch'" identify --ship nosuch)
+fw_cli_test(identify_bad_rudder 2 "--rudders: 50 deg outside" identify --ship c3 --rudders 10,50)

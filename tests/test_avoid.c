@@ -1,0 +1,254 @@
+/* Encounter assessment, COLREGs classification, helm search, action policy. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "avoid/policy.h"
+#include "core/units.h"
+#include "nomoto/nomoto.h"
+#include "test.h"
+
+static fw_ship c3;
+
+static fw_target target_at(double rel_bearing_deg, double range, double course_deg, double kn)
+{
+    double b = fw_deg_to_rad(rel_bearing_deg);
+    return (fw_target){.east = range * sin(b), .north = range * cos(b),
+                       .course = fw_deg_to_rad(course_deg), .speed = fw_kn_to_ms(kn)};
+}
+
+static void test_classification_table(void)
+{
+    fw_colregs_def def = fw_default_colregs_def();
+    fw_own_state own = {.U = fw_kn_to_ms(10)}; /* at the origin, heading north */
+    static const struct {
+        double bearing, course, kn;
+        fw_situation want;
+    } rows[] = {
+        {0, 180, 10, FW_SIT_HEAD_ON},
+        {5.9, 180, 10, FW_SIT_HEAD_ON},         /* just inside the 6 deg head-on bearing */
+        {6.5, 180, 10, FW_SIT_GIVE_WAY},        /* just outside: crossing from starboard */
+        {354.1, 180, 10, FW_SIT_HEAD_ON},
+        {353.5, 180, 10, FW_SIT_STAND_ON},
+        {0, 175, 10, FW_SIT_HEAD_ON},           /* own ship 5 deg off the target's bow */
+        {0, 173, 10, FW_SIT_GIVE_WAY},          /* 7 deg off: a crossing ship dead ahead */
+        {0, 0, 6, FW_SIT_OVERTAKING},           /* slower ship dead ahead, same course */
+        {0, 0, 14, FW_SIT_GIVE_WAY},            /* faster ahead: opening, not overtaking */
+        {45, 270, 10, FW_SIT_GIVE_WAY},
+        {315, 90, 10, FW_SIT_STAND_ON},
+        {112.5, 0, 14, FW_SIT_GIVE_WAY},        /* exactly 22.5 abaft the beam: not "more than" */
+        {113.0, 0, 14, FW_SIT_OVERTAKEN},
+        {180, 0, 14, FW_SIT_OVERTAKEN},
+        {247.0, 0, 14, FW_SIT_OVERTAKEN},
+        {247.5, 0, 14, FW_SIT_STAND_ON},
+        {180, 0, 6, FW_SIT_STAND_ON},           /* slower astern: not overtaking us */
+        {90, 0, 10, FW_SIT_GIVE_WAY},
+        {270, 0, 10, FW_SIT_STAND_ON},
+    };
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        fw_target t = target_at(rows[i].bearing, 2000, rows[i].course, rows[i].kn);
+        fw_situation got = fw_classify(&def, &own, &t);
+        CHECK_MSG(got == rows[i].want, "bearing %.1f course %.0f %.0f kn: %s, want %s",
+                  rows[i].bearing, rows[i].course, rows[i].kn, fw_situation_name(got),
+                  fw_situation_name(rows[i].want));
+    }
+    /* own ship overtaking: own in the target's stern sector, own faster; the
+     * boundary is the target's 112.5 deg bearing to the own ship */
+    fw_target t = {.east = 2000 * sin(fw_deg_to_rad(67.4)), .north = 2000 * cos(fw_deg_to_rad(67.4)),
+                   .course = 0, .speed = fw_kn_to_ms(5)};
+    CHECK(fw_classify(&def, &own, &t) == FW_SIT_OVERTAKING);
+    t.east = 2000 * sin(fw_deg_to_rad(67.6)), t.north = 2000 * cos(fw_deg_to_rad(67.6));
+    CHECK(fw_classify(&def, &own, &t) == FW_SIT_GIVE_WAY);
+}
+
+static void test_assessment_and_ranking(void)
+{
+    fw_colregs_def cdef = fw_default_colregs_def();
+    fw_domain_def dom = fw_default_domain_def();
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    fw_target t[3] = {
+        target_at(45, 2000, 270, 8),  /* passes well clear */
+        {.east = 0, .north = 3000, .course = FW_PI, .speed = fw_kn_to_ms(8)}, /* head-on */
+        {.east = 0, .north = 1500, .course = FW_PI, .speed = fw_kn_to_ms(8)}, /* head-on, nearer */
+    };
+    t[0].east = 3000; /* crossing far off: DCPA large */
+    fw_assessment as[3];
+    int order[6];
+    fw_assess(&cdef, &dom, 600, &own, t, 3, as, order);
+    double closing = fw_kn_to_ms(18);
+    CHECK_NEAR(as[1].tcpa, 3000 / closing, 1e-9);
+    CHECK_NEAR(as[1].dcpa, 0, 1e-9);
+    CHECK_NEAR(as[1].t_enter, 2700 / closing, 1e-9);
+    CHECK_NEAR(as[2].t_enter, 1200 / closing, 1e-9);
+    CHECK(order[0] == 2 && order[1] == 1 && order[2] == 0);
+    CHECK(as[2].rank == 0 && as[0].rank == 2);
+    /* a target hull grows the domain: 300 m abeam + half its length when it lies
+     * across the own ship */
+    fw_target big = {.east = 0, .north = 0, .course = FW_PI / 2, .length = 200, .breadth = 30};
+    double a, b;
+    fw_domain_axes(&dom, &big, cos(big.course), sin(big.course), &a, &b);
+    CHECK_NEAR(a, 315, 1e-9);
+    CHECK_NEAR(b, 400, 1e-9);
+}
+
+static fw_helm_ctx *make_ctx(fw_helm_def *def)
+{
+    fw_helm_ctx *ctx;
+    fw_error err = {0};
+    CHECK_MSG(fw_helm_ctx_create(&c3, def, &ctx, &err) == FW_OK, "%s", err.msg);
+    return ctx;
+}
+
+static void test_more_helm_more_clearance(void)
+{
+    fw_helm_def def = fw_default_helm_def();
+    fw_helm_ctx *ctx = make_ctx(&def);
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    fw_target cases[3] = {
+        {.east = 0, .north = 1900, .course = FW_PI, .speed = fw_kn_to_ms(10)},
+        {.east = 1300, .north = 1900, .course = 1.5 * FW_PI, .speed = fw_kn_to_ms(10)},
+        {.east = 30, .north = 2500, .course = FW_PI, .speed = fw_kn_to_ms(8), .length = 300, .breadth = 40},
+    };
+    fw_helm_begin(ctx, &own);
+    for (int c = 0; c < 3; c++) {
+        double prev = 0, prev_d = 0;
+        for (int i = 0; i < fw_helm_count(ctx); i++) {
+            const fw_track *tr;
+            CHECK(fw_helm_track(ctx, FW_SIDE_STARBOARD, i, &tr, NULL) == FW_OK);
+            double cl = fw_track_clearance(&def, tr, &cases[c], 1, 0.0, NULL);
+            double d = fw_track_min_distance(tr, &cases[c], NULL);
+            /* Strictly non-decreasing up to just outside the domain.  Well outside
+             * it a tighter turn can pass a few tenths of a percent closer: it has
+             * less advance, so once the target is astern it lags less far behind
+             * it; that never turns a clearing helm into a failing one. */
+            if (prev < 1.1)
+                CHECK_MSG(cl >= prev - 1e-9, "case %d helm %d: clearance %.4f < %.4f", c, i, cl, prev);
+            else
+                CHECK_MSG(cl >= prev * 0.99, "case %d helm %d: clearance %.4f < %.4f", c, i, cl, prev);
+            CHECK_MSG(d >= prev_d * 0.99, "case %d helm %d: distance %.1f < %.1f", c, i, d, prev_d);
+            CHECK(!(prev >= 1.0 && cl < 1.0));
+            prev = cl, prev_d = d;
+        }
+    }
+    /* port tracks were mirrored, not computed: 26 starboard tracks only */
+    const fw_track *tr;
+    for (int i = 0; i < fw_helm_count(ctx); i++)
+        fw_helm_track(ctx, FW_SIDE_PORT, i, &tr, NULL);
+    CHECK(fw_helm_tracks_computed(ctx) == fw_helm_count(ctx));
+    fw_helm_ctx_destroy(ctx);
+}
+
+static void test_only_one_side_works(void)
+{
+    fw_helm_def def = fw_default_helm_def();
+    fw_helm_ctx *ctx = make_ctx(&def);
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    for (int mirror = 0; mirror < 2; mirror++) {
+        double sgn = mirror ? -1 : 1;
+        /* a slow ship ahead to overtake (either side allowed), and a ship
+         * meeting 500 m off on one side (no threat on the present course) that
+         * blocks a turn that way */
+        fw_target t[2] = {
+            {.east = 0, .north = 900, .course = 0, .speed = fw_kn_to_ms(3)},
+            {.east = -500 * sgn, .north = 2200, .course = FW_PI, .speed = fw_kn_to_ms(10)},
+        };
+        fw_assessment as[2];
+        int order[4];
+        fw_assess(&def.colregs, &def.domain, def.track.horizon, &own, t, 2, as, order);
+        CHECK(as[0].situation == FW_SIT_OVERTAKING && as[0].enters_domain);
+        CHECK(!as[1].enters_domain);
+        int allowed = fw_permitted_sides(&def, as, 2);
+        CHECK(allowed == FW_ALLOW_EITHER);
+        fw_helm_result r;
+        fw_helm_begin(ctx, &own);
+        CHECK(fw_helm_search(ctx, t, 2, allowed, &r, NULL) == FW_OK);
+        CHECK(r.threat && r.feasible);
+        CHECK_MSG(r.side == (mirror ? FW_SIDE_PORT : FW_SIDE_STARBOARD), "mirror %d side %d", mirror, r.side);
+        CHECK(r.clearance >= 1.0);
+        CHECK(isnan(r.side_helm[mirror ? 0 : 1]));
+        /* with starboard forced (mirror case), no helm clears: best action taken */
+        if (mirror) {
+            fw_helm_begin(ctx, &own);
+            CHECK(fw_helm_search(ctx, t, 2, FW_ALLOW_STARBOARD, &r, NULL) == FW_OK);
+            CHECK(!r.feasible && r.side == FW_SIDE_STARBOARD && r.clearance < 1.0);
+        }
+    }
+    /* two head-on ships 300 m apart: starboard is required; only a hard turn
+     * passes both (the paper's complex head-on case) */
+    fw_target two[2] = {
+        {.east = -150, .north = 1850, .course = FW_PI, .speed = fw_kn_to_ms(8)},
+        {.east = 150, .north = 1850, .course = FW_PI, .speed = fw_kn_to_ms(8)},
+    };
+    fw_assessment as[2];
+    int order[4];
+    fw_assess(&def.colregs, &def.domain, def.track.horizon, &own, two, 2, as, order);
+    CHECK(fw_permitted_sides(&def, as, 2) == FW_ALLOW_STARBOARD);
+    fw_helm_result r;
+    fw_helm_begin(ctx, &own);
+    CHECK(fw_helm_search(ctx, two, 2, FW_ALLOW_STARBOARD, &r, NULL) == FW_OK);
+    CHECK(r.feasible && r.side == FW_SIDE_STARBOARD && fw_rad_to_deg(r.helm) > 20);
+    fw_helm_ctx_destroy(ctx);
+}
+
+/* Closed loop on the Nomoto plant itself: the head-on case from t = 0. */
+static void test_policy_head_on_cycle(void)
+{
+    fw_helm_def hdef = fw_default_helm_def();
+    fw_helm_ctx *ctx = make_ctx(&hdef);
+    fw_policy_def pdef = fw_default_policy_def();
+    fw_policy pol;
+    fw_policy_init(&pol, &pdef);
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    fw_target t = {.east = 0, .north = 2000, .course = FW_PI, .speed = fw_kn_to_ms(10)};
+    fw_track_def one = {.dt = 1.0, .horizon = 1.0};
+    fw_track step;
+    fw_track_alloc(&step, 2, NULL);
+    double t_act = -1, t_counter = -1, t_done = -1, min_d = 1e9, max_psi = 0;
+    fw_assessment as[1];
+    int order[2];
+    for (int k = 0; k < 1500; k++) {
+        fw_decision d;
+        fw_target now = t;
+        now.east += t.speed * sin(t.course) * k;
+        now.north += t.speed * cos(t.course) * k;
+        fw_policy_mode before = pol.mode;
+        CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, &now, 1, as, order, &d, NULL) == FW_OK);
+        if (d.acted && t_act < 0)
+            t_act = k;
+        if (before == FW_MODE_AVOID && d.mode == FW_MODE_COUNTER)
+            t_counter = k;
+        if (before != FW_MODE_STANDBY && d.mode == FW_MODE_STANDBY && t_done < 0)
+            t_done = k;
+        min_d = fmin(min_d, hypot(now.east - own.east, now.north - own.north));
+        max_psi = fmax(max_psi, own.psi);
+        /* the plant: one second of the Nomoto model at the ordered helm */
+        fw_track_predict(&c3, &one, &own, d.helm, &step, NULL);
+        own.east = step.east[1], own.north = step.north[1], own.psi = step.psi[1];
+        own.r = step.r[1], own.delta = step.delta[1], own.rdot = step.rdot[1];
+    }
+    CHECK_MSG(t_act >= 0 && t_act <= 20, "acted at %.0f s", t_act);
+    CHECK_MSG(min_d >= 295, "closest approach %.0f m", min_d);
+    CHECK_MSG(t_counter > t_act && t_done > t_counter, "counter %.0f done %.0f", t_counter, t_done);
+    CHECK_NEAR(fw_wrap_pi(own.psi), 0.0, fw_deg_to_rad(1.5));
+    CHECK(max_psi > fw_deg_to_rad(20)); /* a substantial, readily apparent alteration */
+    CHECK(pol.mode == FW_MODE_STANDBY);
+    printf("  head-on closed loop: act %.0f s, counter %.0f s, back on course %.0f s, "
+           "closest %.0f m, max alteration %.0f deg\n",
+           t_act, t_counter, t_done, min_d, fw_rad_to_deg(max_psi));
+    fw_track_free(&step);
+    fw_helm_ctx_destroy(ctx);
+}
+
+int main(void)
+{
+    fw_error err = {0};
+    if (fw_ship_load("c3", &c3, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return 1;
+    }
+    TEST_RUN(test_classification_table);
+    TEST_RUN(test_assessment_and_ranking);
+    TEST_RUN(test_more_helm_more_clearance);
+    TEST_RUN(test_only_one_side_works);
+    TEST_RUN(test_policy_head_on_cycle);
+    return TEST_EXIT();
+}
