@@ -26,7 +26,7 @@ static void usage(FILE *out)
             "usage: fairway COMMAND [OPTIONS]\n"
             "\n"
             "Maritime traffic safety studies: the own ship stepped with the MMG model\n"
-            "(integrated by SUNDIALS CVODE), Nomoto-based collision avoidance, SUMO traffic.\n"
+            "(integrated by SUNDIALS ARKODE), Nomoto-based collision avoidance, SUMO traffic.\n"
             "\n"
             "commands:\n");
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
