@@ -1,6 +1,7 @@
 /* Encounter assessment, COLREGs classification, helm search, action policy. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "avoid/policy.h"
 #include "core/units.h"
@@ -238,6 +239,61 @@ static void test_policy_head_on_cycle(void)
     fw_helm_ctx_destroy(ctx);
 }
 
+/* The policy follows the target it acted for by id while the caller reorders
+ * the array every step (as a traffic layer may): it returns only once that
+ * target is passing (TCPA < 0), not when the ship now at its old index is. */
+static void test_policy_follows_target_id(void)
+{
+    fw_helm_def hdef = fw_default_helm_def();
+    fw_helm_ctx *ctx = make_ctx(&hdef);
+    fw_policy_def pdef = fw_default_policy_def();
+    fw_policy pol;
+    fw_policy_init(&pol, &pdef);
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    /* B: head-on; A: far off on the port quarter, opening (TCPA < 0 throughout) */
+    fw_target b = {.id = "veh.B", .east = 0, .north = 2000, .course = FW_PI, .speed = fw_kn_to_ms(10)};
+    fw_target a = {.id = "veh.A", .east = -4000, .north = -3000, .course = 1.5 * FW_PI,
+                   .speed = fw_kn_to_ms(12)};
+    fw_track_def one = {.dt = 1.0, .horizon = 1.0};
+    fw_track step;
+    fw_track_alloc(&step, 2, NULL);
+    fw_assessment as[2];
+    int order[4];
+    bool acted = false, countered = false;
+    for (int k = 0; k < 900 && !countered; k++) {
+        fw_target now[2] = {b, a};
+        for (int i = 0; i < 2; i++) {
+            now[i].east += now[i].speed * sin(now[i].course) * k;
+            now[i].north += now[i].speed * cos(now[i].course) * k;
+        }
+        if (k % 2) { /* swap the order every other step */
+            fw_target tmp = now[0];
+            now[0] = now[1], now[1] = tmp;
+        }
+        fw_decision d;
+        fw_policy_mode before = pol.mode;
+        CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, now, 2, as, order, &d, NULL) == FW_OK);
+        if (d.acted) {
+            acted = true;
+            CHECK_MSG(strcmp(now[d.primary].id, "veh.B") == 0, "acted for %s", now[d.primary].id);
+            CHECK(strcmp(pol.primary_id, "veh.B") == 0);
+        }
+        if (before == FW_MODE_AVOID && d.mode == FW_MODE_COUNTER) {
+            countered = true;
+            int ib = fw_target_find(now, 2, "veh.B");
+            CHECK(ib >= 0);
+            CHECK_MSG(as[ib].tcpa < 0.0, "returned at %d s with B's TCPA %.0f s", k, as[ib].tcpa);
+        }
+        fw_track_predict(&c3, &one, &own, d.helm, &step, NULL);
+        own.east = step.east[1], own.north = step.north[1], own.psi = step.psi[1];
+        own.r = step.r[1], own.delta = step.delta[1], own.rdot = step.rdot[1];
+    }
+    CHECK(acted && countered);
+    CHECK(fw_target_find(&a, 1, "") == -1 && fw_target_find(&a, 1, "veh.B") == -1);
+    fw_track_free(&step);
+    fw_helm_ctx_destroy(ctx);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -250,5 +306,6 @@ int main(void)
     TEST_RUN(test_more_helm_more_clearance);
     TEST_RUN(test_only_one_side_works);
     TEST_RUN(test_policy_head_on_cycle);
+    TEST_RUN(test_policy_follows_target_id);
     return TEST_EXIT();
 }

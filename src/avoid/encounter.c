@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/units.h"
 
@@ -148,4 +149,14 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
         for (int i = 0; i < n; i++)
             out[order[i]].rank = i;
     }
+}
+
+int fw_target_find(const fw_target *t, int n, const char *id)
+{
+    if (!id || !id[0])
+        return -1;
+    for (int i = 0; i < n; i++)
+        if (strcmp(t[i].id, id) == 0)
+            return i;
+    return -1;
 }

@@ -12,7 +12,17 @@
 
 #include "nomoto/track.h"
 
+/* Room for a target id with its terminating NUL. */
+enum { FW_TARGET_ID_MAX = 64 };
+
 typedef struct fw_target {
+    /* The caller's stable name for this ship (e.g. the SUMO vehicle id), the
+     * same from step to step while the array order may change: the policy
+     * remembers the target it is avoiding by it.  "" = no id (the policy then
+     * falls back to the array index, which is right only if the order is
+     * fixed).  Ids are compared whole: keep them unique and shorter than
+     * FW_TARGET_ID_MAX. */
+    char id[FW_TARGET_ID_MAX];
     double east, north; /* m */
     double course;      /* rad, navigational */
     double speed;       /* m/s */
@@ -84,6 +94,9 @@ void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel
  * half is scratch) it gets the target indices most dangerous first and each
  * out[i].rank is set: targets entering the domain first, earliest entry first,
  * then smallest DCPA, then smallest range. */
+/* Index of the target with this id in t[0..n-1], -1 if none or id is "". */
+int fw_target_find(const fw_target *t, int n, const char *id);
+
 void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
                const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
                int *order);

@@ -1,11 +1,14 @@
 #include "avoid/helm_search.h"
 
+#include "avoid/clearance.h"
+
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/units.h"
 
-enum { CHUNK = 8 }; /* segments per culling box: 40 s at the default dt */
 
 struct fw_helm_ctx {
     const fw_ship *ship;
@@ -17,6 +20,14 @@ struct fw_helm_ctx {
     bool *have;
     bool have_keep;
     int computed;
+    /* per-decision scratch over the targets (grown on demand): the order in
+     * which targets are checked, and each one's window of chunks that can
+     * reach the domain of any candidate track */
+    int cap;
+    int *idx;
+    short *jlo, *jhi;
+    fw_prep_target *prep;
+    fw_chunk_boxes *boxes; /* per track slot, made with the track */
 };
 
 fw_helm_def fw_default_helm_def(void)
@@ -53,7 +64,8 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     int ntr = 2 * c->nh + 2;
     c->tracks = calloc((size_t)ntr, sizeof *c->tracks);
     c->have = calloc((size_t)(2 * c->nh), sizeof *c->have);
-    if (!c->tracks || !c->have) {
+    c->boxes = calloc((size_t)ntr, sizeof *c->boxes);
+    if (!c->tracks || !c->have || !c->boxes) {
         fw_helm_ctx_destroy(c);
         return fw_fail(err, FW_ERUN, "out of memory");
     }
@@ -78,6 +90,11 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
             fw_track_free(&c->tracks[i]);
     free(c->tracks);
     free(c->have);
+    free(c->idx);
+    free(c->jlo);
+    free(c->jhi);
+    free(c->prep);
+    free(c->boxes);
     free(c);
 }
 
@@ -118,6 +135,7 @@ fw_status fw_helm_track(fw_helm_ctx *c, int side, int i, const fw_track **tr, fw
                 return st;
             c->computed++;
         }
+        fw_track_boxes(&c->tracks[slot], &c->boxes[slot]);
         c->have[slot] = true;
     }
     *tr = &c->tracks[slot];
@@ -131,6 +149,7 @@ fw_status fw_helm_keep_track(fw_helm_ctx *c, const fw_track **tr, fw_error *err)
         fw_status st = fw_track_predict(c->ship, &c->def.track, &c->own, 0.0, k, err);
         if (st)
             return st;
+        fw_track_boxes(k, &c->boxes[2 * c->nh]);
         c->have_keep = true;
         c->computed++;
     }
@@ -148,86 +167,43 @@ fw_status fw_helm_precompute(fw_helm_ctx *c, fw_error *err)
     return st;
 }
 
-/* Smallest lambda^2 = (x/a)^2 + (y/b)^2 on the segment from (x0, y0) to (x1, y1). */
-static double seg_min_lambda2(double x0, double y0, double x1, double y1, double a, double b)
+/* Clearance of a candidate track over the prepared targets c->idx[0..m-1] in
+ * that order (each within its chunk window if windows is set).  A target that
+ * stops the scan is moved to the front: neighbouring helms fail on the same
+ * target, so the next track finds it first. */
+static double clearance_idx(fw_helm_ctx *c, const fw_track *tr, int m, bool windows,
+                            double stop_below)
 {
-    double ia = 1.0 / (a * a), ib = 1.0 / (b * b);
-    double dx = x1 - x0, dy = y1 - y0;
-    double q = dx * dx * ia + dy * dy * ib;
-    double s = q > 0.0 ? -(x0 * dx * ia + y0 * dy * ib) / q : 0.0;
-    if (s < 0.0)
-        s = 0.0;
-    if (s > 1.0)
-        s = 1.0;
-    double x = x0 + s * dx, y = y0 + s * dy;
-    return x * x * ia + y * y * ib;
+    const fw_chunk_boxes *cb = &c->boxes[tr - c->tracks];
+    double best = INFINITY, stop2 = stop_below * stop_below;
+    for (int p = 0; p < m; p++) {
+        int i = c->idx[p];
+        int j0 = windows ? c->jlo[i] : 0, j1 = windows ? c->jhi[i] : INT_MAX / FW_CHUNK;
+        double m2 = fw_target_min2(&c->def.domain, tr, cb, &c->prep[i], j0, j1, stop2);
+        if (m2 < best)
+            best = m2;
+        if (best < stop2) {
+            memmove(c->idx + 1, c->idx, sizeof *c->idx * (size_t)p);
+            c->idx[0] = i;
+            break;
+        }
+    }
+    return sqrt(best);
 }
 
 double fw_track_clearance(const fw_helm_def *def, const fw_track *tr, const fw_target *t, int n,
                           double stop_below, int *limiting)
 {
-    /* bounding boxes of the own track per chunk of CHUNK segments */
-    int nseg = tr->n - 1;
-    int nch = (nseg + CHUNK - 1) / CHUNK;
-    double box[64][4];
-    if (nch > 64)
-        nch = 64; /* chunks beyond 64 are checked without culling */
-    for (int j = 0; j < nch; j++) {
-        int k0 = j * CHUNK, k1 = k0 + CHUNK < nseg ? k0 + CHUNK : nseg;
-        double e0 = tr->east[k0], e1 = e0, n0 = tr->north[k0], n1 = n0;
-        for (int k = k0 + 1; k <= k1; k++) {
-            e0 = fmin(e0, tr->east[k]);
-            e1 = fmax(e1, tr->east[k]);
-            n0 = fmin(n0, tr->north[k]);
-            n1 = fmax(n1, tr->north[k]);
-        }
-        box[j][0] = e0, box[j][1] = e1, box[j][2] = n0, box[j][3] = n1;
-    }
-    double best = INFINITY;
+    fw_chunk_boxes cb;
+    fw_track_boxes(tr, &cb);
+    double best = INFINITY, stop2 = stop_below * stop_below;
     int lim = -1;
-    double stop2 = stop_below * stop_below;
     for (int i = 0; i < n; i++) {
-        const fw_target *g = &t[i];
-        double ve = g->speed * sin(g->course), vn = g->speed * cos(g->course);
-        double sc = sin(g->course), cc = cos(g->course);
-        /* beyond this centre distance the target is outside the domain whatever
-         * the relative heading */
-        double reach = def->domain.size * fmax(1.0, def->domain.fore_aft_ratio) +
-                       0.5 * hypot(g->length, g->breadth);
-        double tmin2 = INFINITY;
-        for (int j = 0; j * CHUNK < nseg; j++) {
-            int k0 = j * CHUNK, k1 = k0 + CHUNK < nseg ? k0 + CHUNK : nseg;
-            if (j < nch) {
-                double ta = k0 * tr->dt, tb = k1 * tr->dt;
-                double ea = g->east + ve * ta, eb = g->east + ve * tb;
-                double na = g->north + vn * ta, nb = g->north + vn * tb;
-                if (fmin(ea, eb) - reach > box[j][1] || fmax(ea, eb) + reach < box[j][0] ||
-                    fmin(na, nb) - reach > box[j][3] || fmax(na, nb) + reach < box[j][2])
-                    continue;
-            }
-            double px = 0, py = 0, pa = 1, pb = 1;
-            for (int k = k0; k <= k1; k++) {
-                double tk = k * tr->dt;
-                double dx = g->east + ve * tk - tr->east[k];
-                double dy = g->north + vn * tk - tr->north[k];
-                double s = tr->sin_psi[k], c = tr->cos_psi[k];
-                double x = dx * s + dy * c, y = dx * c - dy * s;
-                double a, b;
-                fw_domain_axes(&def->domain, g, cc * c + sc * s, sc * c - cc * s, &a, &b);
-                if (k > k0) {
-                    /* body-frame offsets interpolated linearly over the segment:
-                     * the frame turns by r dt (about 1 deg), a sub-metre error */
-                    double l2 = seg_min_lambda2(px, py, x, y, 0.5 * (pa + a), 0.5 * (pb + b));
-                    if (l2 < tmin2)
-                        tmin2 = l2;
-                }
-                px = x, py = y, pa = a, pb = b;
-            }
-            if (tmin2 < stop2)
-                break;
-        }
-        if (tmin2 < best) {
-            best = tmin2;
+        fw_prep_target g;
+        fw_prep_targets(&def->domain, &t[i], 1, &g);
+        double m2 = fw_target_min2(&def->domain, tr, &cb, &g, 0, INT_MAX / FW_CHUNK, stop2);
+        if (m2 < best) {
+            best = m2;
             lim = i;
         }
         if (best < stop2)
@@ -293,20 +269,100 @@ int fw_permitted_sides(const fw_helm_def *def, const fw_assessment *as, int n)
     return allowed ? allowed : FW_ALLOW_STARBOARD;
 }
 
+static fw_status ensure_scratch(fw_helm_ctx *c, int n, fw_error *err)
+{
+    if (n <= c->cap)
+        return FW_OK;
+    int *idx = realloc(c->idx, sizeof *idx * (size_t)n);
+    if (idx)
+        c->idx = idx;
+    short *lo = realloc(c->jlo, sizeof *lo * (size_t)n);
+    if (lo)
+        c->jlo = lo;
+    short *hi = realloc(c->jhi, sizeof *hi * (size_t)n);
+    if (hi)
+        c->jhi = hi;
+    fw_prep_target *pr = realloc(c->prep, sizeof *pr * (size_t)n);
+    if (pr)
+        c->prep = pr;
+    if (!idx || !lo || !hi || !pr)
+        return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
+    c->cap = n;
+    return FW_OK;
+}
+
+/* Keeps in idx[0..*m-1] only the targets that can reach the domain of some
+ * candidate track (those of the allowed sides, all computed by now), each
+ * with its window of such chunks.  The test is the per-chunk culling test
+ * against the union of the candidates' chunk boxes, so a dropped target would
+ * have been culled on every candidate (its clearance is >= 1 on all of them)
+ * and each window holds every chunk not culled on some candidate. */
+static void prune_targets(fw_helm_ctx *c, int allowed, int *m)
+{
+    fw_chunk_boxes u;
+    bool first = true;
+    for (int s = 0; s < 2; s++) {
+        if (!(allowed & (s ? FW_ALLOW_PORT : FW_ALLOW_STARBOARD)))
+            continue;
+        for (int i = 0; i < c->nh; i++) {
+            const fw_chunk_boxes *cb = &c->boxes[s * c->nh + i];
+            if (first)
+                u = *cb;
+            else
+                fw_boxes_union(&u, cb);
+            first = false;
+        }
+    }
+    if (first || u.nch * FW_CHUNK < u.nseg)
+        return; /* chunks without boxes: no pruning */
+    int kept = 0;
+    for (int p = 0; p < *m; p++) {
+        int i = c->idx[p], lo = -1, hi = -1;
+        for (int j = 0; j < u.nch; j++)
+            if (!fw_chunk_misses(c->def.track.dt, &c->prep[i], j, u.nseg, u.b[j])) {
+                if (lo < 0)
+                    lo = j;
+                hi = j + 1;
+            }
+        if (lo < 0)
+            continue;
+        c->jlo[i] = (short)lo;
+        c->jhi[i] = (short)hi;
+        c->idx[kept++] = i;
+    }
+    *m = kept;
+}
+
 fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
                          fw_helm_result *res, fw_error *err)
 {
     const fw_track *tr;
     fw_status st = fw_helm_keep_track(c, &tr, err);
-    if (st)
+    if (st || (st = ensure_scratch(c, n, err)))
         return st;
     res->allowed = allowed;
-    res->keep_clearance = fw_track_clearance(&c->def, tr, t, n, 0.0, &res->limiting);
     res->side_helm[0] = res->side_helm[1] = NAN;
-    res->threat = res->keep_clearance < 1.0;
     res->feasible = true;
     res->side = FW_SIDE_NONE;
     res->helm = 0.0;
+    /* keep course, target by target: the threats (inside the domain on the
+     * keep track) are checked first on the candidates, the likeliest to fail */
+    fw_prep_targets(&c->def.domain, t, n, c->prep);
+    const fw_chunk_boxes *kb = &c->boxes[2 * c->nh];
+    double kbest = INFINITY;
+    int nthreat = 0;
+    res->limiting = -1;
+    for (int i = 0; i < n; i++) {
+        double m2 = fw_target_min2(&c->def.domain, tr, kb, &c->prep[i], 0, INT_MAX / FW_CHUNK, 0.0);
+        if (m2 < kbest)
+            kbest = m2, res->limiting = i;
+        c->jlo[i] = m2 < 1.0; /* scratch: threat flag, the windows come later */
+        nthreat += m2 < 1.0;
+    }
+    for (int i = 0, a = 0, b = nthreat; i < n; i++)
+        c->idx[c->jlo[i] ? a++ : b++] = i;
+    res->keep_clearance = sqrt(kbest);
+    res->threat = res->keep_clearance < 1.0;
     res->clearance = res->keep_clearance;
     if (!res->threat)
         return FW_OK;
@@ -319,7 +375,7 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
         for (int i = 0; i < c->nh; i++) {
             if ((st = fw_helm_track(c, sides[s], i, &tr, err)))
                 return st;
-            if (fw_track_clearance(&c->def, tr, t, n, 1.0, NULL) >= 1.0) {
+            if (clearance_idx(c, tr, n, false, 1.0) >= 1.0) {
                 found[s] = i;
                 res->side_helm[s] = fw_helm_value(c, sides[s], i);
                 break;
@@ -335,8 +391,12 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
     else if (found[1] >= 0)
         pick = found[1], side = 1;
     if (pick < 0) {
-        /* nothing clears: the helm that keeps the nearest target farthest out */
+        /* nothing clears: the helm that keeps the nearest target farthest out.
+         * Every candidate track exists now; only the targets that can reach
+         * some candidate's domain can be the nearest (all nearest are < 1). */
         res->feasible = false;
+        int m = n;
+        prune_targets(c, allowed, &m);
         double best = -1.0;
         for (int s = 0; s < 2; s++) {
             if (!(allowed & masks[s]))
@@ -345,8 +405,9 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
                 if ((st = fw_helm_track(c, sides[s], i, &tr, err)))
                     return st;
                 /* branch and bound: a track is abandoned as soon as some
-                 * target comes closer than the best track's nearest one */
-                double cl = fw_track_clearance(&c->def, tr, t, n, best > 0.0 ? best : 0.0, NULL);
+                 * target comes closer than the best track's nearest one; the
+                 * target that did it is tried first on the next track */
+                double cl = clearance_idx(c, tr, m, true, best > 0.0 ? best : 0.0);
                 if (cl > best + 1e-9)
                     best = cl, pick = i, side = s;
             }

@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #include "core/units.h"
 
@@ -37,6 +38,7 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->side = FW_SIDE_NONE;
     p->helm = 0.0;
     p->primary = -1;
+    p->primary_id[0] = '\0';
     p->t_mode = 0.0;
     p->course_set = false;
 }
@@ -141,12 +143,15 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
             p->side = res->side;
             p->helm = res->helm;
             p->primary = d->primary;
+            snprintf(p->primary_id, sizeof p->primary_id, "%s", tg[d->primary].id);
             set_mode(p, FW_MODE_AVOID, t);
         }
         break;
     }
     case FW_MODE_AVOID: {
-        const fw_assessment *a = p->primary >= 0 && p->primary < n ? &as[p->primary] : NULL;
+        int k = p->primary_id[0] ? fw_target_find(tg, n, p->primary_id)
+                                 : (p->primary < n ? p->primary : -1);
+        const fw_assessment *a = k >= 0 ? &as[k] : NULL;
         bool passed = !a || a->tcpa < 0.0;
         if (!res->threat && passed) {
             d->reason = "domain clear and target passing: opposite helm to return";

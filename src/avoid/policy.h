@@ -62,7 +62,12 @@ typedef struct fw_policy {
     double psi_ref;   /* rad, the course before the manoeuvre */
     int side;         /* side of the current manoeuvre */
     double helm;      /* rad, last order */
-    int primary;      /* target index the manoeuvre is for */
+    /* the target the manoeuvre is for: by its id (fw_target.id) when it has
+     * one, so that the caller may reorder, add and drop targets between steps
+     * (a target no longer in the list counts as passed); by its index in the
+     * array of the step that acted when the ids are "" */
+    char primary_id[FW_TARGET_ID_MAX];
+    int primary;
     double t_mode;    /* s, when the present mode began */
     bool course_set;  /* returned once: STANDBY keeps psi_ref by the autopilot */
 } fw_policy;
@@ -75,7 +80,8 @@ typedef struct fw_decision {
     double helm;            /* rad, the order */
     const char *reason;     /* static text */
     bool acted;             /* this step started an avoidance */
-    int primary;            /* most dangerous target (-1 if none) */
+    int primary;            /* most dangerous target this step: index into this
+                               step's array (-1 if none); its id is tg[primary].id */
     fw_helm_result search;  /* the helm search of this step */
 } fw_decision;
 

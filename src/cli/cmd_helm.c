@@ -122,8 +122,10 @@ int fw_cmd_helm(int argc, char **argv)
                 fw_fail(&err, FW_EINPUT, "--target: at most %d targets", MAX_TARGETS);
                 goto fail;
             }
-            tg[n++] = (fw_target){.east = v[0], .north = v[1], .course = fw_deg_to_rad(v[2]),
-                                  .speed = fw_kn_to_ms(v[3]), .length = v[4], .breadth = v[5]};
+            tg[n] = (fw_target){.east = v[0], .north = v[1], .course = fw_deg_to_rad(v[2]),
+                                .speed = fw_kn_to_ms(v[3]), .length = v[4], .breadth = v[5]};
+            snprintf(tg[n].id, sizeof tg[n].id, "%d", n + 1); /* numbered as given */
+            n++;
         } else if (fw_args_opt(&a, "--domain", &val, &err)) {
             if (err.status || fw_parse_double("--domain", val, &hdef.domain.size, &err))
                 goto fail;

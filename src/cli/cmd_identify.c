@@ -99,9 +99,14 @@ int fw_cmd_identify(int argc, char **argv)
         for (int j = 0; j < nr; j++)
             for (int s = side_lo; s <= side_hi; s++) {
                 double helm = fw_deg_to_rad(rudders[j]) * (s ? -1 : 1), rms;
-                fw_nomoto_indices ix;
+                fw_nomoto_indices ix, start, *pstart = NULL;
+                /* start on the knowledge base's branch (the paper's for the
+                 * C-3): see fw_ident_fit_from */
+                if (ship.nomoto.present &&
+                    !fw_nomoto_indices_at(&ship.nomoto, speeds[i], rudders[j], &start, NULL))
+                    pstart = &start;
                 if (fw_ident_turning(&ship, fw_kn_to_ms(speeds[i]), helm, 1.0, n, r, &err) ||
-                    fw_ident_fit(r, n, 1.0, helm, ship.rudder_rate, &ix, &rms, &err)) {
+                    fw_ident_fit_from(r, n, 1.0, helm, ship.rudder_rate, pstart, &ix, &rms, &err)) {
                     free(r), free(U);
                     return fw_report(&err);
                 }

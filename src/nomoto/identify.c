@@ -100,6 +100,13 @@ static double sse(const double p[4], const double *r, int n, double dt, double h
 fw_status fw_ident_fit(const double *r, int n, double dt, double helm, double rate,
                        fw_nomoto_indices *out, double *rms_rel, fw_error *err)
 {
+    return fw_ident_fit_from(r, n, dt, helm, rate, NULL, out, rms_rel, err);
+}
+
+fw_status fw_ident_fit_from(const double *r, int n, double dt, double helm, double rate,
+                            const fw_nomoto_indices *start, fw_nomoto_indices *out,
+                            double *rms_rel, fw_error *err)
+{
     double *model = malloc(sizeof(double) * 6 * (size_t)n);
     if (!model)
         return fw_fail(err, FW_ERUN, "out of memory");
@@ -108,6 +115,11 @@ fw_status fw_ident_fit(const double *r, int n, double dt, double helm, double ra
     double r_end = r[n - 1];
     /* start: steady gain from the last sample, T1 fast, T2 and T3 slow */
     double p[4] = {r_end / helm, log(10.0), log(80.0), 60.0};
+    if (start && start->T1 > 0.0 && start->T2 > 0.0 && start->T1 != start->T2) {
+        /* the given start's branch: K from the data (the start's gain may be
+         * another ship's), the time constants as given */
+        p[1] = log(start->T1), p[2] = log(start->T2), p[3] = start->T3;
+    }
     double f = sse(p, r, n, dt, helm, rate, model), lambda = 1e-3;
     for (int it = 0; it < 300; it++) {
         double h[4] = {1e-6 * fmax(fabs(p[0]), 1e-6), 1e-6, 1e-6, 1e-6 * fmax(fabs(p[3]), 1.0)};

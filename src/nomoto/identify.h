@@ -27,6 +27,15 @@ void fw_ident_response(const fw_nomoto_indices *ix, double helm, double rate, do
 fw_status fw_ident_fit(const double *r, int n, double dt, double helm, double rate,
                        fw_nomoto_indices *ix, double *rms_rel, fw_error *err);
 
+/* The same from a given start (NULL: the default).  The fit has two local
+ * minima of nearly equal error on these histories: a fast branch (T1 2-4 s,
+ * T3 < T2) and the paper's (T1 10-25 s, T3 a little above T2); Levenberg-
+ * Marquardt stays on the start's branch, so a start on one branch for the
+ * whole grid keeps the indices smooth for the regression. */
+fw_status fw_ident_fit_from(const double *r, int n, double dt, double helm, double rate,
+                            const fw_nomoto_indices *start, fw_nomoto_indices *out,
+                            double *rms_rel, fw_error *err);
+
 /* Least squares of one index over m grid points (U in knots, d in degrees):
  * fills ix->coef for the basis terms already set in ix->basis[0..ix->n-1]. */
 fw_status fw_ident_regress(fw_nomoto_index *ix, const double *U_kn, const double *d_deg,

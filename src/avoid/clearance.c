@@ -1,0 +1,110 @@
+#include "avoid/clearance.h"
+
+#include <math.h>
+
+/* fmin/fmax are library calls at -O2 (they must handle NaN); these are
+ * inlined, and the track and target data here are finite. */
+static inline double mn(double a, double b) { return a < b ? a : b; }
+static inline double mx(double a, double b) { return a > b ? a : b; }
+
+void fw_prep_targets(const fw_domain_def *dom, const fw_target *t, int n, fw_prep_target *out)
+{
+    for (int i = 0; i < n; i++) {
+        const fw_target *g = &t[i];
+        double s = sin(g->course), c = cos(g->course);
+        out[i] = (fw_prep_target){.east = g->east, .north = g->north,
+                                  .ve = g->speed * s, .vn = g->speed * c, .sc = s, .cc = c,
+                                  .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
+                                  .reach = dom->size * mx(1.0, dom->fore_aft_ratio) +
+                                           0.5 * hypot(g->length, g->breadth)};
+    }
+}
+
+void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
+{
+    cb->nseg = tr->n - 1;
+    cb->nch = (cb->nseg + FW_CHUNK - 1) / FW_CHUNK;
+    if (cb->nch > FW_MAX_CHUNKS)
+        cb->nch = FW_MAX_CHUNKS;
+    for (int j = 0; j < cb->nch; j++) {
+        int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
+        double e0 = tr->east[k0], e1 = e0, n0 = tr->north[k0], n1 = n0;
+        for (int k = k0 + 1; k <= k1; k++) {
+            e0 = mn(e0, tr->east[k]);
+            e1 = mx(e1, tr->east[k]);
+            n0 = mn(n0, tr->north[k]);
+            n1 = mx(n1, tr->north[k]);
+        }
+        cb->b[j][0] = e0, cb->b[j][1] = e1, cb->b[j][2] = n0, cb->b[j][3] = n1;
+    }
+}
+
+void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb)
+{
+    for (int j = 0; j < cb->nch && j < u->nch; j++) {
+        u->b[j][0] = mn(u->b[j][0], cb->b[j][0]);
+        u->b[j][1] = mx(u->b[j][1], cb->b[j][1]);
+        u->b[j][2] = mn(u->b[j][2], cb->b[j][2]);
+        u->b[j][3] = mx(u->b[j][3], cb->b[j][3]);
+    }
+}
+
+bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4])
+{
+    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
+    double ta = k0 * dt, tb = k1 * dt;
+    double ea = g->east + g->ve * ta, eb = g->east + g->ve * tb;
+    double na = g->north + g->vn * ta, nb = g->north + g->vn * tb;
+    double r = g->reach;
+    return mn(ea, eb) - r > b[1] || mx(ea, eb) + r < b[0] || mn(na, nb) - r > b[3] ||
+           mx(na, nb) + r < b[2];
+}
+
+/* Smallest lambda^2 = (x/a)^2 + (y/b)^2 on the segment from (x0, y0) to (x1, y1). */
+static double seg_min_lambda2(double x0, double y0, double x1, double y1, double a, double b)
+{
+    double ia = 1.0 / (a * a), ib = 1.0 / (b * b);
+    double dx = x1 - x0, dy = y1 - y0;
+    double q = dx * dx * ia + dy * dy * ib;
+    double s = q > 0.0 ? -(x0 * dx * ia + y0 * dy * ib) / q : 0.0;
+    if (s < 0.0)
+        s = 0.0;
+    if (s > 1.0)
+        s = 1.0;
+    double x = x0 + s * dx, y = y0 + s * dy;
+    return x * x * ia + y * y * ib;
+}
+
+double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
+                      const fw_prep_target *g, int j0, int j1, double stop2)
+{
+    double tmin2 = INFINITY;
+    double a0 = dom->size * dom->fore_aft_ratio, b0 = dom->size;
+    for (int j = j0; j < j1 && j * FW_CHUNK < cb->nseg; j++) {
+        int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
+        if (j < cb->nch && fw_chunk_misses(tr->dt, g, j, cb->nseg, cb->b[j]))
+            continue;
+        double px = 0, py = 0, pa = 1, pb = 1;
+        for (int k = k0; k <= k1; k++) {
+            double tk = k * tr->dt;
+            double dx = g->east + g->ve * tk - tr->east[k];
+            double dy = g->north + g->vn * tk - tr->north[k];
+            double s = tr->sin_psi[k], c = tr->cos_psi[k];
+            double x = dx * s + dy * c, y = dx * c - dy * s;
+            /* fw_domain_axes inlined: hull half-extents along the own axes */
+            double cr = fabs(g->cc * c + g->sc * s), sr = fabs(g->sc * c - g->cc * s);
+            double a = a0 + g->hl * cr + g->hb * sr, b = b0 + g->hl * sr + g->hb * cr;
+            if (k > k0) {
+                /* body-frame offsets interpolated linearly over the segment:
+                 * the frame turns by r dt (about 1 deg), a sub-metre error */
+                double l2 = seg_min_lambda2(px, py, x, y, 0.5 * (pa + a), 0.5 * (pb + b));
+                if (l2 < tmin2)
+                    tmin2 = l2;
+            }
+            px = x, py = y, pa = a, pb = b;
+        }
+        if (tmin2 < stop2)
+            break;
+    }
+    return tmin2;
+}
