@@ -358,7 +358,7 @@ fw_status yt_opt_number(const yt_doc *doc, const yt_node *map, const char *path,
         return FW_OK;
     char field[256];
     yt_path(field, sizeof field, path, key);
-    double v;
+    double v = 0.0;
     fw_status st = yt_number(doc, n, field, &v, err);
     if (st)
         return st;
