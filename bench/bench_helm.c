@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <time.h>
 
+#include "bench.h"
 #include "avoid/policy.h"
 #include "core/units.h"
 
@@ -23,25 +24,6 @@ static double uniform(void)
 {
     rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
     return (double)(rng >> 11) / 9007199254740992.0;
-}
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 enum { SCENES = 200, REPS = 5 };
@@ -114,7 +96,7 @@ static double time_search(fw_helm_ctx *ctx, const fw_helm_def *hdef, const fw_ow
                           const fw_target *tg, int n, int allowed, bool old, fw_helm_result *res)
 {
     fw_error err = {0};
-    double t0 = now();
+    double t0 = bench_now();
     for (int r = 0; r < REPS; r++) {
         fw_helm_begin(ctx, own);
         if (old)
@@ -122,7 +104,7 @@ static double time_search(fw_helm_ctx *ctx, const fw_helm_def *hdef, const fw_ow
         else
             fw_helm_search(ctx, tg, n, allowed, res, &err);
     }
-    return (now() - t0) / REPS;
+    return (bench_now() - t0) / REPS;
 }
 
 int main(void)
@@ -148,24 +130,24 @@ int main(void)
            hdef.track.dt, hdef.min_helm_deg, hdef.max_helm_deg, hdef.step_deg);
     /* baselines: one track, and all 2 x 26 candidates + keep (mirroring on) */
     for (int s = 0; s < SCENES; s++) {
-        double t0 = now();
+        double t0 = bench_now();
         for (int r = 0; r < REPS; r++) {
             fw_helm_begin(ctx, &own);
             fw_helm_precompute(ctx, &err);
         }
-        base[s] = (now() - t0) / REPS;
+        base[s] = (bench_now() - t0) / REPS;
         fw_own_state turning = own;
         turning.r = 1e-4; /* not symmetric: every track computed */
-        t0 = now();
+        t0 = bench_now();
         for (int r = 0; r < REPS; r++) {
             fw_helm_begin(ctx, &turning);
             fw_helm_precompute(ctx, &err);
         }
-        one[s] = (now() - t0) / REPS / (2 * fw_helm_count(ctx) + 1);
+        one[s] = (bench_now() - t0) / REPS / (2 * fw_helm_count(ctx) + 1);
     }
     printf("baseline one_track_us %.2f all_tracks_mirrored_us %.1f all_tracks_unmirrored_us %.1f\n",
-           1e6 * median(one, SCENES), 1e6 * median(base, SCENES),
-           1e6 * median(one, SCENES) * (2 * fw_helm_count(ctx) + 1));
+           1e6 * bench_median(one, SCENES), 1e6 * bench_median(base, SCENES),
+           1e6 * bench_median(one, SCENES) * (2 * fw_helm_count(ctx) + 1));
     static const int counts[] = {1, 10, 50, 200};
     for (int mode = 0; mode < 2; mode++) {
     printf("# %s\n", mode ? "dense: every target aimed within 800 m of the own track (stress)"
@@ -197,7 +179,7 @@ int main(void)
                                     .length = 100 + 200 * uniform(), .breadth = 30};
             }
             fw_decision d;
-            double t0 = now();
+            double t0 = bench_now();
             for (int r = 0; r < REPS; r++) {
                 fw_policy pol;
                 fw_policy_init(&pol, &pdef);
@@ -206,7 +188,7 @@ int main(void)
                     return 1;
                 }
             }
-            times[s] = (now() - t0) / REPS;
+            times[s] = (bench_now() - t0) / REPS;
             tracks += fw_helm_tracks_computed(ctx);
             /* the search alone, fast and as first written, on the same scene */
             int allowed = fw_permitted_sides(&hdef, as, n);
@@ -228,8 +210,8 @@ int main(void)
             threats += d.search.threat;
             feasible += d.search.feasible;
         }
-        double med = median(times, SCENES);
-        double mn = median(t_new, SCENES), mo = median(t_old, SCENES);
+        double med = bench_median(times, SCENES);
+        double mn = bench_median(t_new, SCENES), mo = bench_median(t_old, SCENES);
         printf("%8d %12.1f %12.1f %10.0f %10.1f %10.0f %10.1f %10.1f %10.1f %9.0f\n", n, 1e6 * med,
                1e6 * times[(int)(0.9 * SCENES)], 100.0 * threats / SCENES,
                (double)tracks / SCENES, 100.0 * feasible / SCENES, 1e6 * mn, 1e6 * mo, mo / mn,

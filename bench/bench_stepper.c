@@ -11,30 +11,12 @@
 #include <string.h>
 #include <time.h>
 
+#include "bench.h"
 #include "core/units.h"
 #include "dynamics/stepper.h"
 
 static const double orders[] = {20, -10, 35, 0, -35, 5, 15, -25, 0, 30, -5, -20};
 enum { HOUR = 3600, REPS = 15 };
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 static fw_mmg_state run_stepper(const fw_ship *s, const fw_stepper_def *def, double n, long *nfe)
 {
@@ -132,15 +114,15 @@ int main(int argc, char **argv)
     }
     double ts[REPS], tr[REPS];
     for (int i = 0; i < REPS; i++) {
-        double a = now();
+        double a = bench_now();
         run_stepper(&s, &def, n, NULL);
-        double b = now();
+        double b = bench_now();
         run_rk4(&s, n, h);
-        double c = now();
+        double c = bench_now();
         ts[i] = b - a;
         tr[i] = c - b;
     }
-    double ms_st = 1e3 * median(ts, REPS), ms_rk = 1e3 * median(tr, REPS);
+    double ms_st = 1e3 * bench_median(ts, REPS), ms_rk = 1e3 * bench_median(tr, REPS);
     char text[1024];
     snprintf(text, sizeof text,
              "one simulated hour, C-3 at 20 kn, 1 s control steps, helm order every 60 s\n"

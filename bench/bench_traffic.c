@@ -10,30 +10,12 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bench.h"
 #include "core/units.h"
 #include "traffic/demand.h"
 #include "traffic/traffic.h"
 
 enum { WARMUP = 30, STEPS = 300, RUNS = 5 };
-
-static double now_ms(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* One run: medians of full and step-only ms, mean ship count and in range. */
 static int one_run(int ships, int run, double out[4])
@@ -67,16 +49,16 @@ static int one_run(int ships, int run, double out[4])
     for (int k = 0; k < WARMUP + STEPS; k++) {
         const fw_traffic_ship *s;
         int n;
-        double t0 = now_ms();
+        double t0 = 1e3 * bench_now();
         if (fw_traffic_place(t, -19000.0 + U * k, 0.0, FW_PI / 2, U, &err))
             goto fail;
-        double t1 = now_ms();
+        double t1 = 1e3 * bench_now();
         if (fw_traffic_step(t, &err))
             goto fail;
-        double t2 = now_ms();
+        double t2 = 1e3 * bench_now();
         if (fw_traffic_around(t, &s, &n, &err))
             goto fail;
-        double t3 = now_ms();
+        double t3 = 1e3 * bench_now();
         if (k >= WARMUP) {
             full[k - WARMUP] = t3 - t0;
             step[k - WARMUP] = t2 - t1;
@@ -93,8 +75,8 @@ static int one_run(int ships, int run, double out[4])
     fw_traffic_close(t);
     remove(routes);
     remove(log);
-    out[0] = median(full, STEPS);
-    out[1] = median(step, STEPS);
+    out[0] = bench_median(full, STEPS);
+    out[1] = bench_median(step, STEPS);
     out[2] = count;
     out[3] = in_range / STEPS;
     return 0;
@@ -139,7 +121,7 @@ int main(int argc, char **argv)
             step[run] = r[run][1];
             ratio[run] = r[run][0] / r[run][1];
         }
-        double mf = median(full, RUNS), ms = median(step, RUNS), mr = median(ratio, RUNS);
+        double mf = bench_median(full, RUNS), ms = bench_median(step, RUNS), mr = bench_median(ratio, RUNS);
         printf("%6d %6.0f %8.1f %12.3f %12.3f %7.3f\n", sizes[i], r[0][2], r[0][3], mf, ms, mr);
         if (csv)
             fprintf(csv, "%d,%.0f,%.1f,%.4f,%.4f,%.4f,%d,%d\n", sizes[i], r[0][2], r[0][3], mf,
