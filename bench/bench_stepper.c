@@ -126,7 +126,7 @@ int main(int argc, char **argv)
     char text[1024];
     snprintf(text, sizeof text,
              "one simulated hour, C-3 at 20 kn, 1 s control steps, helm order every 60 s\n"
-             "  fairway stepper (ARKODE DP5, rtol %.0e): %8.3f ms  error %.4f m  (%ld RHS evaluations)\n"
+             "  fairway stepper (ARKODE ERK, rtol %.0e): %8.3f ms  error %.4f m  (%ld RHS evaluations)\n"
              "  fixed-step RK4, h = %.4g s            : %8.3f ms  error %.4f m  (%ld RHS evaluations)\n"
              "  ratio stepper / RK4 at equal accuracy : %8.2f\n"
              "  (medians of %d runs; error = final position against rtol 1e-12)\n",

@@ -3,6 +3,7 @@
 #include "dynamics/mmg.h"
 
 #include <math.h>
+#include <stdbool.h>
 
 #include "core/units.h"
 
@@ -11,7 +12,10 @@
  * meaningful; terms that divide by U are dropped (they vanish with U anyway). */
 #define FW_MMG_U_MIN 1e-6
 
-void fw_mmg_forces_eval(const fw_ship *s, const fw_mmg_state *x, double n, fw_mmg_forces *f)
+/* diag: also fill the diagnostic fields (alpha_R, J, K_T), which the
+ * equations of motion do not need and which cost an atan2. */
+static inline void forces(const fw_ship *s, const fw_mmg_state *x, double n, fw_mmg_forces *f,
+                          bool diag)
 {
     const double L = s->L, d = s->d, rho = s->rho;
     const double u = x->u, vm = x->vm, r = x->r, delta = x->delta;
@@ -44,8 +48,10 @@ void fw_mmg_forces_eval(const fw_ship *s, const fw_mmg_state *x, double n, fw_mm
     double D = s->D_P;
     double KTn2D2 = s->k0 * n * n * D * D + s->k1 * n * D * u_P + s->k2 * u_P * u_P;
     f->w_P = 1.0 - one_wP;
-    f->J = n > 0.0 ? u_P / (n * D) : INFINITY;
-    f->K_T = n > 0.0 ? KTn2D2 / (n * n * D * D) : 0.0;
+    if (diag) {
+        f->J = n > 0.0 ? u_P / (n * D) : INFINITY;
+        f->K_T = n > 0.0 ? KTn2D2 / (n * n * D * D) : 0.0;
+    }
     f->X_P = (1.0 - s->t_P) * rho * D * D * KTn2D2;
 
     /* Rudder, finite form of u_R (no division by J). */
@@ -59,22 +65,30 @@ void fw_mmg_forces_eval(const fw_ship *s, const fw_mmg_state *x, double n, fw_mm
     double Ubeta_R = U * beta - s->l_R * rL; /* U beta_R */
     double gamma_R = Ubeta_R < 0.0 ? s->gamma_R_minus : s->gamma_R_plus;
     double v_R = gamma_R * Ubeta_R;
-    double alpha_R = delta - atan2(v_R, u_R);
-    double UR2 = u_R * u_R + v_R * v_R;
-    double F_N = 0.5 * rho * s->A_R * UR2 * fw_ship_f_alpha(s) * sin(alpha_R);
+    /* U_R^2 sin(alpha_R) with alpha_R = delta - atan2(v_R, u_R), expanded:
+     * U_R (u_R sin(delta) - v_R cos(delta)); no inverse trigonometry. */
+    double sd = sin(delta), cd = cos(delta);
+    double UR = sqrt(u_R * u_R + v_R * v_R);
+    double F_N = 0.5 * rho * s->A_R * fw_ship_f_alpha(s) * UR * (u_R * sd - v_R * cd);
     f->u_R = u_R;
     f->v_R = v_R;
-    f->alpha_R = alpha_R;
+    if (diag)
+        f->alpha_R = delta - atan2(v_R, u_R);
     f->F_N = F_N;
-    f->X_R = -(1.0 - s->t_R) * F_N * sin(delta);
-    f->Y_R = -(1.0 + s->a_H) * F_N * cos(delta);
-    f->N_R = -(s->x_R + s->a_H * s->x_H) * L * F_N * cos(delta);
+    f->X_R = -(1.0 - s->t_R) * F_N * sd;
+    f->Y_R = -(1.0 + s->a_H) * F_N * cd;
+    f->N_R = -(s->x_R + s->a_H * s->x_H) * L * F_N * cd;
+}
+
+void fw_mmg_forces_eval(const fw_ship *s, const fw_mmg_state *x, double n, fw_mmg_forces *f)
+{
+    forces(s, x, n, f, true);
 }
 
 void fw_mmg_derivs(const fw_ship *s, const fw_mmg_state *x, double n, double out[6])
 {
     fw_mmg_forces f;
-    fw_mmg_forces_eval(s, x, n, &f);
+    forces(s, x, n, &f, false);
     const double L = s->L, d = s->d, rho = s->rho;
     const double m = rho * s->volume;
     const double scale = 0.5 * rho * L * L * d;
