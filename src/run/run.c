@@ -255,8 +255,10 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     if (st)
         return st;
     fw_network_files nf = {0};
-    snprintf(nodes, sizeof nodes, "%s/tracks.nod.xml", sumo);
-    snprintf(edges, sizeof edges, "%s/tracks.edg.xml", sumo);
+    /* netconvert runs in sumo/: relative names keep the net.xml independent
+     * of the (temporary) run directory's path */
+    snprintf(nodes, sizeof nodes, "tracks.nod.xml");
+    snprintf(edges, sizeof edges, "tracks.edg.xml");
     snprintf(routes, sizeof routes, "%s/targets.rou.xml", sumo);
     const char *types = NULL;
     char typ[1100] = "";
@@ -267,8 +269,8 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
         const char *root = fw_data_root();
         char pre[1024];
         snprintf(pre, sizeof pre, "%s/networks/%s/%s", root, s->network, s->network);
-        snprintf(nodes, sizeof nodes, "%s.nod.xml,%s/tracks.nod.xml", pre, sumo);
-        snprintf(edges, sizeof edges, "%s.edg.xml,%s/tracks.edg.xml", pre, sumo);
+        snprintf(nodes, sizeof nodes, "%s.nod.xml,tracks.nod.xml", pre);
+        snprintf(edges, sizeof edges, "%s.edg.xml,tracks.edg.xml", pre);
         snprintf(typ, sizeof typ, "%s.typ.xml", pre);
         types = typ;
         fw_demand dm;
@@ -290,7 +292,7 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     snprintf(net, sizeof net, "%s/run.net.xml", sumo);
     snprintf(nlog, sizeof nlog, "%s/netconvert.log", sumo);
     snprintf(slog, sizeof slog, "%s/sumo.log", sumo);
-    if ((st = fw_netconvert(nodes, edges, types, net, nlog, err)))
+    if ((st = fw_netconvert(sumo, nodes, edges, types, "run.net.xml", nlog, err)))
         return st;
     fw_traffic_def td = fw_default_traffic_def();
     td.mode = def->mode;

@@ -1,4 +1,5 @@
 /* netbuild.c - netconvert as a child process (see netbuild.h). */
+#define _GNU_SOURCE /* posix_spawn_file_actions_addchdir_np */
 #include <fcntl.h>
 #include <spawn.h>
 #include <stdio.h>
@@ -50,8 +51,8 @@ static fw_status strip_date(const char *path, fw_error *err)
     return fclose(f) == 0 ? FW_OK : fw_fail(err, FW_ERUN, "cannot write %s", path);
 }
 
-fw_status fw_netconvert(const char *nodes, const char *edges, const char *types, const char *out,
-                        const char *log, fw_error *err)
+fw_status fw_netconvert(const char *dir, const char *nodes, const char *edges, const char *types,
+                        const char *out, const char *log, fw_error *err)
 {
     const char *argv[20];
     int k = 0;
@@ -79,6 +80,7 @@ fw_status fw_netconvert(const char *nodes, const char *edges, const char *types,
     const char *sink = log ? log : "/dev/null";
     posix_spawn_file_actions_addopen(&fa, 1, sink, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&fa, 1, 2);
+    posix_spawn_file_actions_addchdir_np(&fa, dir);
     pid_t pid;
     int rc = posix_spawn(&pid, FW_NETCONVERT, &fa, NULL, (char *const *)argv, environ);
     posix_spawn_file_actions_destroy(&fa);
@@ -89,5 +91,7 @@ fw_status fw_netconvert(const char *nodes, const char *edges, const char *types,
         ;
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         return fw_fail(err, FW_ERUN, "netconvert failed building %s (messages in %s)", out, sink);
-    return strip_date(out, err);
+    char path[2048];
+    snprintf(path, sizeof path, "%s%s%s", out[0] == '/' ? "" : dir, out[0] == '/' ? "" : "/", out);
+    return strip_date(path, err);
 }
