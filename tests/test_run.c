@@ -103,9 +103,7 @@ static void check_case(const char *file)
            s.scenario, s.min_dist, s.domain_entered ? "in" : "out", s.t_act,
            s.act_side == FW_SIDE_STARBOARD ? "stbd" : "port", fw_rad_to_deg(fabs(s.act_helm)),
            fw_rad_to_deg(s.max_helm), s.t_return, s.path_lengthening, s.time_lost,
-           why ? "  (exception: " : "", why ? why : "");
-    if (why)
-        printf("  %26s )\n", "");
+           why ? "  exception: " : "", why ? why : "");
     free(e);
 }
 

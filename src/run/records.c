@@ -86,8 +86,9 @@ static bool action_ok(const char *situation, int side)
     /* head-on (rule 14) and give-way crossing (rules 15/16): to starboard;
      * stand-on (rule 17c): never to port for a crossing target on the port
      * side; overtaking and being overtaken: either side */
-    if (strcmp(situation, "head-on") == 0 || strcmp(situation, "give-way") == 0 ||
-        strcmp(situation, "stand-on") == 0)
+    if (strcmp(situation, fw_situation_name(FW_SIT_HEAD_ON)) == 0 ||
+        strcmp(situation, fw_situation_name(FW_SIT_GIVE_WAY)) == 0 ||
+        strcmp(situation, fw_situation_name(FW_SIT_STAND_ON)) == 0)
         return side == FW_SIDE_STARBOARD;
     return true;
 }
@@ -217,6 +218,9 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
             ind, s->path_length, s->along_track, s->path_lengthening, s->time_lost);
     fprintf(f, "%s  \"rudder_work_deg_s\": %.1f, \"helm_orders\": %d,\n", ind,
             fw_rad_to_deg(s->rudder_work), s->helm_orders);
+    fprintf(f, "%s  \"own_length_m\": %.1f, \"own_breadth_m\": %.1f, \"domain_m\": %.1f, "
+               "\"domain_fore_aft_ratio\": %.2f,\n",
+            ind, s->own_length, s->own_breadth, s->domain, s->domain_ratio);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {
         const fw_encounter *x = &e[i];
@@ -249,8 +253,9 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
         if (e->acted)
             e->colregs_ok = action_ok(e->act_situation, e->act_side);
         else
-            e->colregs_ok = !e->domain_entered || strcmp(e->situation, "stand-on") == 0 ||
-                            strcmp(e->situation, "overtaken") == 0;
+            e->colregs_ok = !e->domain_entered ||
+                            strcmp(e->situation, fw_situation_name(FW_SIT_STAND_ON)) == 0 ||
+                            strcmp(e->situation, fw_situation_name(FW_SIT_OVERTAKEN)) == 0;
         if (e->min_dist < sum->min_dist) {
             sum->min_dist = e->min_dist;
             snprintf(sum->min_dist_id, sizeof sum->min_dist_id, "%s", e->id);

@@ -244,6 +244,10 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     snprintf(sum->status, sizeof sum->status, "failed");
     sum->t_act = sum->t_return = sum->t_on_course = NAN;
     sum->min_dist = INFINITY;
+    sum->own_length = s->ship.Loa;
+    sum->own_breadth = s->ship.B;
+    sum->domain = s->helm.domain.size;
+    sum->domain_ratio = s->helm.domain.fore_aft_ratio;
     *enc = NULL;
     *n_enc = 0;
     loop_state L = {.s = s};

@@ -81,6 +81,8 @@ typedef struct fw_run_summary {
     double time_lost;       /* s, t_end - along_track / planned speed */
     double rudder_work;     /* rad s, integral of |rudder| */
     int helm_orders;        /* number of changes of the helm order */
+    double own_length, own_breadth; /* m, hull outline (for plots) */
+    double domain, domain_ratio;    /* m, transverse semi-axis; fore-aft / transverse */
 } fw_run_summary;
 
 typedef struct fw_run_def {
