@@ -12,5 +12,6 @@ int fw_cmd_identify(int argc, char **argv);
 int fw_cmd_manoeuvre(int argc, char **argv);
 int fw_cmd_calibrate(int argc, char **argv);
 int fw_cmd_traffic(int argc, char **argv);
+int fw_cmd_run(int argc, char **argv);
 
 #endif

@@ -17,6 +17,7 @@ static const command commands[] = {
     {"identify", fw_cmd_identify, "Nomoto indices and their regression from MMG turning tests"},
     {"helm", fw_cmd_helm, "one avoidance decision (Nomoto helm search) for an own ship and targets"},
     {"traffic", fw_cmd_traffic, "run SUMO background traffic around a straight-running own ship"},
+    {"run", fw_cmd_run, "run scenarios: SUMO traffic, MMG own ship, avoidance, full records"},
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
 };
 

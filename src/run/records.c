@@ -1,0 +1,292 @@
+/* records.c - time histories, the encounter book and the result files of a run.
+ *
+ * Numbers are printed with fixed formats (no %g, whose width depends on the
+ * value) and no clock time is written, so reruns are byte-identical.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "avoid/helm_search.h"
+#include "core/units.h"
+#include "run/run.h"
+
+struct fw_records {
+    const fw_scenario *s;
+    char dir[1024];
+    FILE *own, *tgt, *log;
+    fw_encounter *e;
+    int n, cap;
+};
+
+static FILE *open_in(const char *dir, const char *name, fw_error *err)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        fw_fail(err, FW_ERUN, "cannot write %s", path);
+    return f;
+}
+
+fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *dir, fw_error *err)
+{
+    fw_records *r = calloc(1, sizeof *r);
+    if (!r)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    r->s = s;
+    snprintf(r->dir, sizeof r->dir, "%s", dir);
+    *out = r;
+    if (!(r->own = open_in(dir, "own.csv", err)) || !(r->log = open_in(dir, "run.log", err)) ||
+        (s->targets_csv && !(r->tgt = open_in(dir, "targets.csv", err))))
+        return FW_ERUN;
+    fprintf(r->own, "t_s,east_m,north_m,heading_deg,u_ms,v_ms,r_degs,rudder_deg,helm_deg,"
+                    "propeller_rps,mode\n");
+    if (r->tgt)
+        fprintf(r->tgt, "t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,bearing_deg,"
+                        "dcpa_m,tcpa_s,situation\n");
+    return FW_OK;
+}
+
+void fw_records_close(fw_records *r)
+{
+    if (!r)
+        return;
+    if (r->own)
+        fclose(r->own);
+    if (r->tgt)
+        fclose(r->tgt);
+    if (r->log)
+        fclose(r->log);
+    free(r->e);
+    free(r);
+}
+
+FILE *fw_records_log(fw_records *r) { return r->log; }
+
+void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
+                    const char *mode)
+{
+    fprintf(r->own, "%.1f,%.2f,%.2f,%.3f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%s\n", t, x->east, x->north,
+            fw_heading_deg(x->psi), x->u, x->vm, fw_rad_to_deg(x->r), fw_rad_to_deg(x->delta),
+            fw_rad_to_deg(helm), n, mode);
+}
+
+static fw_encounter *find(fw_records *r, const char *id)
+{
+    for (int i = 0; i < r->n; i++)
+        if (strcmp(r->e[i].id, id) == 0)
+            return &r->e[i];
+    return NULL;
+}
+
+/* COLREGs reading of a first action (see fw_records_finish for no action). */
+static bool action_ok(const char *situation, int side)
+{
+    /* head-on (rule 14) and give-way crossing (rules 15/16): to starboard;
+     * stand-on (rule 17c): never to port for a crossing target on the port
+     * side; overtaking and being overtaken: either side */
+    if (strcmp(situation, fw_situation_name(FW_SIT_HEAD_ON)) == 0 ||
+        strcmp(situation, fw_situation_name(FW_SIT_GIVE_WAY)) == 0 ||
+        strcmp(situation, fw_situation_name(FW_SIT_STAND_ON)) == 0)
+        return side == FW_SIDE_STARBOARD;
+    return true;
+}
+
+void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts, const fw_mmg_state *own,
+                       const fw_assessment *as, bool record_row)
+{
+    fw_encounter *e = find(r, ts->id);
+    if (!e) {
+        if (r->n == r->cap) {
+            int cap = r->cap ? 2 * r->cap : 16;
+            fw_encounter *ne = realloc(r->e, sizeof *ne * (size_t)cap);
+            if (!ne)
+                return; /* out of memory: the book misses this ship, the run goes on */
+            r->e = ne;
+            r->cap = cap;
+        }
+        e = &r->e[r->n++];
+        memset(e, 0, sizeof *e);
+        snprintf(e->id, sizeof e->id, "%s", ts->id);
+        snprintf(e->type, sizeof e->type, "%s", ts->type);
+        /* an explicit target: the scenario's label, not the generated vType id */
+        for (int i = 0; i < r->s->n_targets; i++)
+            if (strcmp(r->s->targets[i].id, ts->id) == 0)
+                snprintf(e->type, sizeof e->type, "%s", r->s->targets[i].type);
+        e->length = ts->length;
+        e->breadth = ts->width;
+        e->situation = fw_situation_name(as->situation);
+        e->t_detect = t;
+        e->dcpa0 = as->dcpa;
+        e->tcpa0 = as->tcpa;
+        e->min_dist = INFINITY;
+        e->min_lambda = INFINITY;
+        e->t_act = NAN;
+    }
+    if (as->enters_domain)
+        e->threat = true;
+    double de = ts->x - own->east, dn = ts->y - own->north;
+    double d = hypot(de, dn);
+    if (d < e->min_dist) {
+        e->min_dist = d;
+        e->t_min = t;
+    }
+    /* where the target actually is against the own domain (same ellipse as
+     * the assessment, grown by the target's hull) */
+    fw_target tg = {.east = ts->x, .north = ts->y, .course = ts->heading, .speed = ts->speed,
+                    .length = ts->length, .breadth = ts->width};
+    double rel = ts->heading - own->psi, a, b;
+    fw_domain_axes(&r->s->helm.domain, &tg, cos(rel), sin(rel), &a, &b);
+    double so = sin(own->psi), co = cos(own->psi);
+    double x = de * so + dn * co, y = de * co - dn * so;
+    double lam = sqrt((x / a) * (x / a) + (y / b) * (y / b));
+    if (lam < e->min_lambda)
+        e->min_lambda = lam;
+    if (lam < 1.0)
+        e->domain_entered = true;
+    if (fw_hulls_overlap(own->east, own->north, own->psi, r->s->ship.Loa, r->s->ship.B, ts->x,
+                         ts->y, ts->heading, ts->length, ts->width))
+        e->collision = true;
+    if (record_row && r->tgt)
+        fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s\n", t, ts->id, ts->x,
+                ts->y, fw_heading_deg(ts->heading), fw_ms_to_kn(ts->speed), d,
+                fw_heading_deg(as->bearing), as->dcpa, as->tcpa,
+                fw_situation_name(as->situation));
+}
+
+void fw_records_action(fw_records *r, double t, int side, double helm, const char *primary_id,
+                       const char *const *threat_ids, const fw_assessment *const *threat_as,
+                       int n_threats)
+{
+    for (int i = 0; i < n_threats; i++) {
+        fw_encounter *e = find(r, threat_ids[i]);
+        if (!e || e->acted)
+            continue;
+        e->acted = true;
+        e->t_act = t;
+        e->act_side = side;
+        e->act_helm = helm;
+        e->act_situation = fw_situation_name(threat_as[i]->situation);
+        e->primary = primary_id && strcmp(primary_id, e->id) == 0;
+    }
+}
+
+fw_encounter *fw_records_encounters(fw_records *r, int *n)
+{
+    *n = r->n;
+    return r->e;
+}
+
+static const char *side_name(int side)
+{
+    return side == FW_SIDE_STARBOARD ? "starboard" : side == FW_SIDE_PORT ? "port" : "none";
+}
+
+static void num(FILE *f, const char *fmt, double v)
+{
+    if (isfinite(v))
+        fprintf(f, fmt, v);
+    else
+        fputs("null", f);
+}
+
+void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, int n,
+                     const char *ind)
+{
+    fprintf(f, "%s{\n", ind);
+    fprintf(f, "%s  \"scenario\": \"%s\", \"status\": \"%s\", \"t_end_s\": %.1f,\n", ind,
+            s->scenario, s->status, s->t_end);
+    fprintf(f, "%s  \"min_distance_m\": ", ind);
+    num(f, "%.1f", s->min_dist);
+    fprintf(f, ", \"closest_target\": \"%s\",\n", s->min_dist_id);
+    fprintf(f, "%s  \"domain_entered\": %s, \"collision\": %s, \"colregs_ok\": %s,\n", ind,
+            s->domain_entered ? "true" : "false", s->collision ? "true" : "false",
+            s->colregs_ok ? "true" : "false");
+    fprintf(f, "%s  \"first_action\": {\"acted\": %s, \"t_s\": ", ind, s->acted ? "true" : "false");
+    num(f, "%.1f", s->t_act);
+    fprintf(f, ", \"side\": \"%s\", \"helm_deg\": %.1f},\n", side_name(s->act_side),
+            fw_rad_to_deg(fabs(s->act_helm)));
+    fprintf(f, "%s  \"max_helm_deg\": %.1f, \"t_return_s\": ", ind, fw_rad_to_deg(s->max_helm));
+    num(f, "%.1f", s->t_return);
+    fprintf(f, ", \"t_on_course_s\": ");
+    num(f, "%.1f", s->t_on_course);
+    fprintf(f, ",\n%s  \"final_heading_error_deg\": %.2f, \"final_cross_track_m\": %.1f,\n", ind,
+            fw_rad_to_deg(s->heading_error), s->cross_track);
+    fprintf(f, "%s  \"path_length_m\": %.1f, \"along_track_m\": %.1f, "
+               "\"path_lengthening_m\": %.1f, \"time_lost_s\": %.1f,\n",
+            ind, s->path_length, s->along_track, s->path_lengthening, s->time_lost);
+    fprintf(f, "%s  \"rudder_work_deg_s\": %.1f, \"helm_orders\": %d,\n", ind,
+            fw_rad_to_deg(s->rudder_work), s->helm_orders);
+    fprintf(f, "%s  \"own_length_m\": %.1f, \"own_breadth_m\": %.1f, \"domain_m\": %.1f, "
+               "\"domain_fore_aft_ratio\": %.2f,\n",
+            ind, s->own_length, s->own_breadth, s->domain, s->domain_ratio);
+    fprintf(f, "%s  \"encounters\": [", ind);
+    for (int i = 0; i < n; i++) {
+        const fw_encounter *x = &e[i];
+        fprintf(f, "%s\n%s    {\"id\": \"%s\", \"type\": \"%s\", \"situation\": \"%s\", "
+                   "\"t_detect_s\": %.1f, \"dcpa_m\": %.1f, \"tcpa_s\": %.1f, \"threat\": %s, ",
+                i ? "," : "", ind, x->id, x->type, x->situation, x->t_detect, x->dcpa0, x->tcpa0,
+                x->threat ? "true" : "false");
+        fprintf(f, "\"t_act_s\": ");
+        num(f, "%.1f", x->t_act);
+        fprintf(f, ", \"act_side\": \"%s\", \"act_helm_deg\": %.1f, \"primary\": %s, "
+                   "\"min_distance_m\": %.1f, \"t_min_s\": %.1f, \"min_domain_ratio\": %.3f, "
+                   "\"domain_entered\": %s, \"collision\": %s, \"colregs_ok\": %s}",
+                side_name(x->act_side), fw_rad_to_deg(fabs(x->act_helm)),
+                x->primary ? "true" : "false", x->min_dist, x->t_min, x->min_lambda,
+                x->domain_entered ? "true" : "false", x->collision ? "true" : "false",
+                x->colregs_ok ? "true" : "false");
+    }
+    fprintf(f, "%s]\n%s}", n ? "\n  " : "", ind);
+}
+
+fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
+{
+    sum->n_encounters = r->n;
+    sum->min_dist = INFINITY;
+    sum->colregs_ok = true;
+    for (int i = 0; i < r->n; i++) {
+        fw_encounter *e = &r->e[i];
+        /* no action: right when no action was needed (the target stayed out of
+         * the domain) or when the own ship stood on against it */
+        if (e->acted)
+            e->colregs_ok = action_ok(e->act_situation, e->act_side);
+        else
+            e->colregs_ok = !e->domain_entered ||
+                            strcmp(e->situation, fw_situation_name(FW_SIT_STAND_ON)) == 0 ||
+                            strcmp(e->situation, fw_situation_name(FW_SIT_OVERTAKEN)) == 0;
+        if (e->min_dist < sum->min_dist) {
+            sum->min_dist = e->min_dist;
+            snprintf(sum->min_dist_id, sizeof sum->min_dist_id, "%s", e->id);
+        }
+        sum->domain_entered |= e->domain_entered;
+        sum->collision |= e->collision;
+        sum->colregs_ok &= e->colregs_ok;
+    }
+    FILE *f = open_in(r->dir, "encounters.csv", err);
+    if (!f)
+        return FW_ERUN;
+    fprintf(f, "id,type,length_m,breadth_m,situation,t_detect_s,dcpa_m,tcpa_s,threat,t_act_s,"
+               "act_side,act_helm_deg,primary,min_distance_m,t_min_s,min_domain_ratio,"
+               "domain_entered,collision,colregs_ok\n");
+    for (int i = 0; i < r->n; i++) {
+        const fw_encounter *e = &r->e[i];
+        fprintf(f, "%s,%s,%.1f,%.1f,%s,%.1f,%.1f,%.1f,%d,", e->id, e->type, e->length, e->breadth,
+                e->situation, e->t_detect, e->dcpa0, e->tcpa0, e->threat);
+        num(f, "%.1f", e->t_act);
+        fprintf(f, ",%s,%.1f,%d,%.1f,%.1f,%.3f,%d,%d,%d\n", side_name(e->act_side),
+                fw_rad_to_deg(fabs(e->act_helm)), e->primary, e->min_dist, e->t_min,
+                e->min_lambda, e->domain_entered, e->collision, e->colregs_ok);
+    }
+    if (fclose(f) != 0)
+        return fw_fail(err, FW_ERUN, "cannot write %s/encounters.csv", r->dir);
+    f = open_in(r->dir, "summary.json", err);
+    if (!f)
+        return FW_ERUN;
+    fw_summary_json(f, sum, r->e, r->n, "");
+    fputc('\n', f);
+    if (fclose(f) != 0)
+        return fw_fail(err, FW_ERUN, "cannot write %s/summary.json", r->dir);
+    return FW_OK;
+}

@@ -1,0 +1,316 @@
+/* Scenario files: the schema, checked field by field (see scenario.h). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/units.h"
+#include "scenario/scenario.h"
+#include "traffic/demand.h"
+#include "yaml/yaml_tree.h"
+
+static bool name_ok(const char *s)
+{
+    size_t n = strlen(s);
+    return n > 0 && n < 64 &&
+           strspn(s, "abcdefghijklmnopqrstuvwxyz"
+                     "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;
+}
+
+bool fw_hulls_overlap(double e1, double n1, double psi1, double l1, double b1, double e2,
+                      double n2, double psi2, double l2, double b2)
+{
+    /* unit axes (east, north) along and across each hull */
+    double ax[4][2] = {{sin(psi1), cos(psi1)}, {cos(psi1), -sin(psi1)},
+                       {sin(psi2), cos(psi2)}, {cos(psi2), -sin(psi2)}};
+    double de = e2 - e1, dn = n2 - n1;
+    for (int k = 0; k < 4; k++) {
+        double ue = ax[k][0], un = ax[k][1];
+        double r1 = 0.5 * l1 * fabs(ax[0][0] * ue + ax[0][1] * un) +
+                    0.5 * b1 * fabs(ax[1][0] * ue + ax[1][1] * un);
+        double r2 = 0.5 * l2 * fabs(ax[2][0] * ue + ax[2][1] * un) +
+                    0.5 * b2 * fabs(ax[3][0] * ue + ax[3][1] * un);
+        if (fabs(de * ue + dn * un) > r1 + r2)
+            return false;
+    }
+    return true;
+}
+
+static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
+{
+    static const char *const keys[] = {"ship", "east_m", "north_m", "course_deg", "speed_kn",
+                                       "leg_nm", "destination", NULL};
+    const yt_node *own;
+    fw_status st;
+    char ship[512];
+    if ((st = yt_req_map(doc, root, "", "own_ship", &own, err)) ||
+        (st = yt_check_keys(doc, own, "own_ship", keys, err)) ||
+        (st = yt_req_string(doc, own, "own_ship", "ship", ship, sizeof ship, err)))
+        return st;
+    double course_deg, speed_kn;
+    if ((st = yt_req_number(doc, own, "own_ship", "east_m", -1e6, 1e6, &s->east, err)) ||
+        (st = yt_req_number(doc, own, "own_ship", "north_m", -1e6, 1e6, &s->north, err)) ||
+        (st = yt_req_number(doc, own, "own_ship", "course_deg", 0, 360, &course_deg, err)) ||
+        (st = yt_req_number(doc, own, "own_ship", "speed_kn", 1, 40, &speed_kn, err)))
+        return st;
+    s->course = fw_deg_to_rad(course_deg);
+    s->speed = fw_kn_to_ms(speed_kn);
+    /* where it is going: a leg length along the course or a destination on it */
+    const yt_node *dest = yt_get(own, "destination");
+    bool has_leg = yt_get(own, "leg_nm") != NULL;
+    if (has_leg == (dest != NULL))
+        return fw_fail_at(err, doc->file, yt_key_line(root, "own_ship"), "own_ship",
+                          "give exactly one of leg_nm or destination");
+    if (has_leg) {
+        double leg_nm;
+        if ((st = yt_req_number(doc, own, "own_ship", "leg_nm", 0.1, 500, &leg_nm, err)))
+            return st;
+        s->leg = fw_nm_to_m(leg_nm);
+    } else {
+        static const char *const dkeys[] = {"east_m", "north_m", NULL};
+        double e, n;
+        const yt_node *d;
+        if ((st = yt_req_map(doc, own, "own_ship", "destination", &d, err)) ||
+            (st = yt_check_keys(doc, d, "own_ship.destination", dkeys, err)) ||
+            (st = yt_req_number(doc, d, "own_ship.destination", "east_m", -1e6, 1e6, &e, err)) ||
+            (st = yt_req_number(doc, d, "own_ship.destination", "north_m", -1e6, 1e6, &n, err)))
+            return st;
+        double de = e - s->east, dn = n - s->north, leg = hypot(de, dn);
+        /* the planned track is the course line: the destination must lie on it */
+        if (leg < 185.2 || fabs(de * cos(s->course) - dn * sin(s->course)) > 0.01 * leg ||
+            de * sin(s->course) + dn * cos(s->course) <= 0)
+            return fw_fail_at(err, doc->file, yt_key_line(own, "destination"),
+                              "own_ship.destination",
+                              "must lie ahead on the course line, at least 0.1 nm away");
+        s->leg = leg;
+    }
+    fw_error serr = {0};
+    if ((st = fw_ship_load(ship, &s->ship, &serr)))
+        return fw_fail_at(err, doc->file, yt_key_line(own, "ship"), "own_ship.ship", "%s",
+                          serr.msg);
+    return FW_OK;
+}
+
+static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *path,
+                             fw_scn_target *o, fw_error *err)
+{
+    static const char *const keys[] = {"id", "type", "east_m", "north_m", "course_deg",
+                                       "speed_kn", "length_m", "breadth_m", NULL};
+    fw_status st;
+    if (t->kind != YT_MAP)
+        return fw_fail_at(err, doc->file, t->line, path, "expected a map (id, east_m, ...)");
+    double c, v;
+    snprintf(o->type, sizeof o->type, "cargo");
+    if ((st = yt_check_keys(doc, t, path, keys, err)) ||
+        (st = yt_req_string(doc, t, path, "id", o->id, sizeof o->id, err)) ||
+        (st = yt_opt_string(doc, t, path, "type", o->type, sizeof o->type, err)) ||
+        (st = yt_req_number(doc, t, path, "east_m", -1e6, 1e6, &o->east, err)) ||
+        (st = yt_req_number(doc, t, path, "north_m", -1e6, 1e6, &o->north, err)) ||
+        (st = yt_req_number(doc, t, path, "course_deg", 0, 360, &c, err)) ||
+        (st = yt_req_number(doc, t, path, "speed_kn", 0.5, 40, &v, err)) ||
+        (st = yt_req_number(doc, t, path, "length_m", 5, 500, &o->length, err)) ||
+        (st = yt_req_number(doc, t, path, "breadth_m", 1, 80, &o->breadth, err)))
+        return st;
+    char f[96];
+    if (!name_ok(o->id) || strlen(o->id) > 24)
+        return fw_fail_at(err, doc->file, yt_key_line(t, "id"), yt_path(f, sizeof f, path, "id"),
+                          "'%s': use up to 24 letters, digits, '-' or '_'", o->id);
+    if (!name_ok(o->type))
+        return fw_fail_at(err, doc->file, yt_key_line(t, "type"),
+                          yt_path(f, sizeof f, path, "type"),
+                          "'%s': use letters, digits, '-' or '_'", o->type);
+    if (o->breadth > o->length)
+        return fw_fail_at(err, doc->file, yt_key_line(t, "breadth_m"),
+                          yt_path(f, sizeof f, path, "breadth_m"), "%g m exceeds the length %g m",
+                          o->breadth, o->length);
+    o->course = fw_deg_to_rad(c);
+    o->speed = fw_kn_to_ms(v);
+    return FW_OK;
+}
+
+static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenario *s,
+                              fw_error *err)
+{
+    static const char *const keys[] = {"network", "density", "fill", "targets", NULL};
+    const yt_node *tr, *seq = NULL;
+    fw_status st;
+    if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
+        (st = yt_check_keys(doc, tr, "traffic", keys, err)) ||
+        (st = yt_opt_string(doc, tr, "traffic", "network", s->network, sizeof s->network, err)) ||
+        (st = yt_opt_number(doc, tr, "traffic", "density", 0, 100, &s->density, err)) ||
+        (st = yt_opt_seq(doc, tr, "traffic", "targets", &seq, err)))
+        return st;
+    long fill = 0;
+    if ((st = yt_opt_int(doc, tr, "traffic", "fill", 0, 10000, &fill, err)))
+        return st;
+    s->fill = (int)fill;
+    if (s->network[0]) {
+        fw_network_files nf;
+        fw_error nerr = {0};
+        if (fw_network_find(s->network, &nf, &nerr))
+            return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",
+                              "%s", nerr.msg);
+    }
+    if (seq) {
+        if (seq->n > FW_SCN_MAX_TARGETS)
+            return fw_fail_at(err, doc->file, seq->line, "traffic.targets",
+                              "%zu targets, at most %d", seq->n, FW_SCN_MAX_TARGETS);
+        for (size_t i = 0; i < seq->n; i++) {
+            char path[64];
+            snprintf(path, sizeof path, "traffic.targets[%zu]", i);
+            fw_scn_target *o = &s->targets[i];
+            if ((st = load_target(doc, seq->items[i], path, o, err)))
+                return st;
+            for (size_t j = 0; j < i; j++)
+                if (strcmp(s->targets[j].id, o->id) == 0)
+                    return fw_fail_at(err, doc->file, yt_key_line(seq->items[i], "id"), path,
+                                      "id '%s' used twice", o->id);
+            /* a target inside the own hull (or touching it) is no encounter */
+            if (fw_hulls_overlap(s->east, s->north, s->course, s->ship.Loa, s->ship.B, o->east,
+                                 o->north, o->course, o->length, o->breadth))
+                return fw_fail_at(err, doc->file, seq->items[i]->line, path,
+                                  "target '%s' starts overlapping the own ship's hull", o->id);
+            s->n_targets++;
+        }
+    }
+    if (!s->network[0] && s->n_targets == 0)
+        return fw_fail_at(err, doc->file, yt_key_line(root, "traffic"), "traffic",
+                          "needs a network or at least one target");
+    return FW_OK;
+}
+
+static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scenario *s,
+                                fw_error *err)
+{
+    static const char *const keys[] = {"domain_m", "fore_aft_ratio", "min_helm_deg",
+                                       "max_helm_deg", "horizon_s", "act_range_nm",
+                                       "act_lookahead_s", "standon_act_range_nm",
+                                       "standon_act_time_s", "overtake_side", "radius_nm", NULL};
+    const yt_node *a = NULL;
+    fw_status st;
+    if ((st = yt_opt_map(doc, root, "", "avoidance", &a, err)))
+        return st;
+    if (!a)
+        return FW_OK; /* every setting has the paper's default */
+    double act = fw_m_to_nm(s->policy.act_range), so = fw_m_to_nm(s->policy.standon_act_range);
+    double radius = fw_m_to_nm(s->radius);
+    const char *P = "avoidance";
+    if ((st = yt_check_keys(doc, a, P, keys, err)) ||
+        (st = yt_opt_number(doc, a, P, "domain_m", 10, 5000, &s->helm.domain.size, err)) ||
+        (st = yt_opt_number(doc, a, P, "fore_aft_ratio", 0.2, 10, &s->helm.domain.fore_aft_ratio,
+                            err)) ||
+        (st = yt_opt_number(doc, a, P, "min_helm_deg", 1, 35, &s->helm.min_helm_deg, err)) ||
+        (st = yt_opt_number(doc, a, P, "max_helm_deg", 1, 45, &s->helm.max_helm_deg, err)) ||
+        (st = yt_opt_number(doc, a, P, "horizon_s", 60, 3600, &s->helm.track.horizon, err)) ||
+        (st = yt_opt_number(doc, a, P, "act_range_nm", 0.1, 20, &act, err)) ||
+        (st = yt_opt_number(doc, a, P, "act_lookahead_s", 0, 600, &s->policy.act_lookahead,
+                            err)) ||
+        (st = yt_opt_number(doc, a, P, "standon_act_range_nm", 0.05, 20, &so, err)) ||
+        (st = yt_opt_number(doc, a, P, "standon_act_time_s", 0, 3600, &s->policy.standon_act_time,
+                            err)) ||
+        (st = yt_opt_number(doc, a, P, "radius_nm", 0.5, 50, &radius, err)))
+        return st;
+    char side[16] = "";
+    if ((st = yt_opt_string(doc, a, P, "overtake_side", side, sizeof side, err)))
+        return st;
+    if (side[0]) {
+        if (strcmp(side, "either") == 0)
+            s->helm.overtake_side = 0;
+        else if (strcmp(side, "starboard") == 0)
+            s->helm.overtake_side = 1;
+        else if (strcmp(side, "port") == 0)
+            s->helm.overtake_side = -1;
+        else
+            return fw_fail_at(err, doc->file, yt_key_line(a, "overtake_side"),
+                              "avoidance.overtake_side", "'%s': expected either, starboard or port",
+                              side);
+    }
+    if (s->helm.min_helm_deg > s->helm.max_helm_deg)
+        return fw_fail_at(err, doc->file, yt_key_line(a, "min_helm_deg"), "avoidance.min_helm_deg",
+                          "%g deg exceeds max_helm_deg %g", s->helm.min_helm_deg,
+                          s->helm.max_helm_deg);
+    if (s->helm.max_helm_deg > fw_rad_to_deg(s->ship.rudder_max) + 1e-9)
+        return fw_fail_at(err, doc->file, yt_key_line(a, "max_helm_deg"), "avoidance.max_helm_deg",
+                          "%g deg exceeds the ship's rudder limit %g deg", s->helm.max_helm_deg,
+                          fw_rad_to_deg(s->ship.rudder_max));
+    s->policy.act_range = fw_nm_to_m(act);
+    s->policy.standon_act_range = fw_nm_to_m(so);
+    s->radius = fw_nm_to_m(radius);
+    return FW_OK;
+}
+
+static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
+{
+    static const char *const keys[] = {"duration_s", "step_s", "seed", NULL};
+    static const char *const okeys[] = {"targets_csv", "record_every_s", NULL};
+    const yt_node *r, *o = NULL;
+    long seed = 1;
+    fw_status st;
+    if ((st = yt_req_map(doc, root, "", "run", &r, err)) ||
+        (st = yt_check_keys(doc, r, "run", keys, err)) ||
+        (st = yt_req_number(doc, r, "run", "duration_s", 1, 86400, &s->duration, err)) ||
+        (st = yt_opt_number(doc, r, "run", "step_s", 0.1, 10, &s->step, err)) ||
+        (st = yt_opt_int(doc, r, "run", "seed", 0, 2147483647L, &seed, err)))
+        return st;
+    s->seed = (unsigned long)seed;
+    /* SUMO's clock counts milliseconds: a step that is not a whole number of
+     * them would drift against fairway's */
+    if (fabs(s->step * 1000 - round(s->step * 1000)) > 1e-6)
+        return fw_fail_at(err, doc->file, yt_key_line(r, "step_s"), "run.step_s",
+                          "%g s is not a whole number of milliseconds", s->step);
+    if ((st = yt_opt_map(doc, root, "", "outputs", &o, err)))
+        return st;
+    s->record_every = s->step;
+    if (o && ((st = yt_check_keys(doc, o, "outputs", okeys, err)) ||
+              (st = yt_opt_bool(doc, o, "outputs", "targets_csv", &s->targets_csv, err)) ||
+              (st = yt_opt_number(doc, o, "outputs", "record_every_s", s->step, 3600,
+                                  &s->record_every, err))))
+        return st;
+    double k = s->record_every / s->step;
+    if (fabs(k - round(k)) > 1e-6)
+        return fw_fail_at(err, doc->file, yt_key_line(o, "record_every_s"),
+                          "outputs.record_every_s", "%g s is not a multiple of run.step_s %g s",
+                          s->record_every, s->step);
+    return FW_OK;
+}
+
+fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
+{
+    static const char *const keys[] = {"name", "description", "own_ship", "traffic",
+                                       "avoidance", "run", "outputs", NULL};
+    memset(s, 0, sizeof *s);
+    snprintf(s->file, sizeof s->file, "%s", path);
+    s->density = 1.0;
+    s->helm = fw_default_helm_def();
+    s->policy = fw_default_policy_def();
+    s->radius = fw_nm_to_m(8.0); /* Imazu targets start 6 nm off: see them from the start */
+    s->step = 1.0;
+    s->seed = 1;
+    s->targets_csv = true;
+    yt_doc *doc = NULL;
+    fw_status st = yt_load_file(path, &doc, err);
+    if (st)
+        return st;
+    const yt_node *root = doc->root;
+    if (!root || root->kind != YT_MAP) {
+        st = fw_fail_at(err, doc->file, root ? root->line : 1, "(top)",
+                        "expected a map with name, own_ship, traffic, run");
+        goto out;
+    }
+    if ((st = yt_check_keys(doc, root, "", keys, err)) ||
+        (st = yt_req_string(doc, root, "", "name", s->name, sizeof s->name, err)) ||
+        (st = yt_opt_string(doc, root, "", "description", s->description, sizeof s->description,
+                            err)))
+        goto out;
+    if (!name_ok(s->name)) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "name"), "name",
+                        "'%s': use letters, digits, '-' or '_' (it names the output directory)",
+                        s->name);
+        goto out;
+    }
+    if ((st = load_own(doc, root, s, err)) || (st = load_traffic(doc, root, s, err)) ||
+        (st = load_avoidance(doc, root, s, err)) || (st = load_run(doc, root, s, err)))
+        goto out;
+out:
+    yt_free(doc);
+    return st;
+}

@@ -1,0 +1,71 @@
+/* scenario.h - one encounter or traffic scenario, loaded from YAML and checked.
+ *
+ * A scenario names the own ship (ship file, start, course, speed, leg), the
+ * traffic (a network from networks/ with a demand density, and/or explicit
+ * target ships), the avoidance settings, the run (duration, step, seed) and
+ * the outputs.  Everything is validated at load time, so a run never starts
+ * (and never creates an output directory) from a bad file: errors are
+ * "FILE:LINE: FIELD: problem" with status FW_EINPUT.
+ *
+ * File units are the ones people use (m, kn, deg, nm, s); the struct is SI.
+ * Frame: metres east/north of the scenario origin, navigational headings.
+ */
+#ifndef FW_SCENARIO_H
+#define FW_SCENARIO_H
+
+#include <stdbool.h>
+
+#include "avoid/policy.h"
+#include "core/error.h"
+#include "ship/ship.h"
+
+#define FW_SCN_MAX_TARGETS 32
+
+typedef struct fw_scn_target {
+    char id[32];
+    char type[32];     /* a label ("cargo", "tanker"...) kept in the records */
+    double east, north; /* m, hull centre at t = 0 */
+    double course;     /* rad */
+    double speed;      /* m/s */
+    double length;     /* m */
+    double breadth;    /* m */
+} fw_scn_target;
+
+typedef struct fw_scenario {
+    char file[512];
+    char name[64];       /* letters, digits, '-', '_': names the output directory */
+    char description[256];
+    /* own ship */
+    fw_ship ship;
+    double east, north;  /* m */
+    double course;       /* rad */
+    double speed;        /* m/s */
+    double leg;          /* m, planned straight leg along the course */
+    /* traffic */
+    char network[64];    /* "" = none */
+    double density;      /* demand scale of the network's streams */
+    int fill;            /* network ships placed along the routes at t = 0 */
+    int n_targets;
+    fw_scn_target targets[FW_SCN_MAX_TARGETS];
+    /* avoidance */
+    fw_helm_def helm;
+    fw_policy_def policy;
+    double radius;       /* m, range within which targets are seen */
+    /* run */
+    double duration;     /* s */
+    double step;         /* s */
+    unsigned long seed;
+    /* outputs */
+    bool targets_csv;
+    double record_every; /* s, time-history sampling (a multiple of step) */
+} fw_scenario;
+
+/* Loads and checks path.  s is large (a ship inside): callers heap-allocate. */
+fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err);
+
+/* Oriented rectangles (centre, heading, length, breadth) overlap?  Separating
+ * axis test on the four hull axes: the collision criterion of fairway. */
+bool fw_hulls_overlap(double e1, double n1, double psi1, double l1, double b1, double e2,
+                      double n2, double psi2, double l2, double b2);
+
+#endif

@@ -1,0 +1,20 @@
+# Scenario runs (src/run, src/scenario, `fairway run`): the paper's five cases
+# and the 22 Imazu cases end to end through libsumo, determinism, bad files.
+fw_test(test_run test_run.c)
+target_link_libraries(test_run PRIVATE fairway_run)
+set_tests_properties(test_run PROPERTIES TIMEOUT 180
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
+# The command: a run with a table row, --json, help, and bad input that leaves
+# no output directory behind (run_bad.sh checks the directory).
+fw_cli_test(cli_run_paper 0 "paper-3-crossing +[0-9]+ +no +no" run
+            ${CMAKE_SOURCE_DIR}/scenarios/paper/3-crossing.yaml --out ${CMAKE_CURRENT_BINARY_DIR}/cli-runs)
+fw_cli_test(cli_run_json 0 "\"scenario\": \"imazu-02\", \"status\": \"ok\"" run
+            ${CMAKE_SOURCE_DIR}/scenarios/imazu/imazu-02.yaml --out ${CMAKE_CURRENT_BINARY_DIR}/cli-runs --json)
+fw_cli_test(cli_run_help 0 "usage: fairway run" run --help)
+fw_cli_test(cli_run_none 2 "no scenario given" run)
+fw_cli_test(cli_run_bad_mode 2 "expected embedded, gui or remote:HOST:PORT" run x.yaml --sumo tcp)
+fw_script_test(cli_run_bad_file 0 "ok: no output" run_bad.sh)
+foreach(t cli_run_paper cli_run_json cli_run_help cli_run_none cli_run_bad_mode cli_run_bad_file)
+  set_tests_properties(${t} PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 60)
+endforeach()
