@@ -151,10 +151,13 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
         /* converted once, here; sorted by id so the order never depends on SUMO's */
         memcpy(ships, raw, sizeof *ships * (size_t)n);
         qsort(ships, (size_t)n, sizeof *ships, cmp_ship);
-        for (int i = 0; i < n; i++)
+        for (int i = 0; i < n; i++) {
             tg[i] = (fw_target){.east = ships[i].x, .north = ships[i].y,
                                 .course = ships[i].heading, .speed = ships[i].speed,
                                 .length = ships[i].length, .breadth = ships[i].width};
+            /* the policy remembers the ship it avoids by this id */
+            snprintf(tg[i].id, sizeof tg[i].id, "%s", ships[i].id);
+        }
         fw_own_state own = {.east = x->east, .north = x->north, .psi = x->psi,
                             .U = hypot(x->u, x->vm), .r = x->r,
                             .rdot = k ? (x->r - r_prev) / s->step : 0.0, .delta = x->delta};
