@@ -2,7 +2,9 @@
 # quickstart.sh main|test - install what is missing, build, then run the main job or the tests.
 #
 #   main  prints the C-3 manoeuvring report (turning circles against the sea trial,
-#         zig-zags, IMO verdicts) and draws its plots into out/manoeuvres/
+#         zig-zags, IMO verdicts) and draws its plots into out/manoeuvres/, then runs
+#         the paper's five encounter cases and the 22 Imazu cases into out/runs/ and
+#         draws them
 #   test  builds twice (plain, and with AddressSanitizer + UndefinedBehaviorSanitizer)
 #         and runs the whole ctest suite on both builds
 set -euo pipefail
@@ -38,7 +40,11 @@ case "$mode" in
     mkdir -p out/manoeuvres
     ./build/fairway manoeuvre report --ship c3 --csv-dir out/manoeuvres
     /usr/bin/python3 analysis/plot_manoeuvre.py out/manoeuvres/*.csv --trial c3 --out out/manoeuvres
-    echo "plots: out/manoeuvres/*.png"
+    # the paper's five encounters and the 22 Imazu cases, with SUMO moving the targets
+    ./build/fairway run scenarios/paper/*.yaml scenarios/imazu/*.yaml --out out/runs
+    for run in out/runs/paper-*; do /usr/bin/python3 analysis/plot_run.py "$run" > /dev/null; done
+    /usr/bin/python3 analysis/plot_imazu.py out/runs --out out/imazu.png
+    echo "plots: out/manoeuvres/*.png, out/runs/paper-*/*.png, out/imazu.png"
     ;;
   test)
     build build
