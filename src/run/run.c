@@ -149,8 +149,10 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
             }
         }
         /* converted once, here; sorted by id so the order never depends on SUMO's */
-        memcpy(ships, raw, sizeof *ships * (size_t)n);
-        qsort(ships, (size_t)n, sizeof *ships, cmp_ship);
+        if (n > 0) { /* no ship in range yet: the arrays may still be NULL */
+            memcpy(ships, raw, sizeof *ships * (size_t)n);
+            qsort(ships, (size_t)n, sizeof *ships, cmp_ship);
+        }
         for (int i = 0; i < n; i++) {
             tg[i] = (fw_target){.east = ships[i].x, .north = ships[i].y,
                                 .course = ships[i].heading, .speed = ships[i].speed,
