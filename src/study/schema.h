@@ -1,0 +1,76 @@
+/* schema.h - the SQLite schema of a study database (fairway sweep writes it,
+ * fairway report and analysis/ read it).
+ *
+ * One row in `runs` per (domain, density, replication) of the study's run
+ * list; a run and all its rows are committed in one transaction, so a run is
+ * either wholly in the database or not at all.  Units are in the column names
+ * (m, s, deg); flags are 0/1.  `meta` holds the study's settings as text
+ * (schema_version, study_name, study_file, study_digest, scenario, duration_s,
+ * near_miss_m, survey_range_m, survey_dcpa_m, survey_tcpa_s, ...).
+ *
+ * Own-ship encounters use fairway's situation names (fw_situation_name):
+ * "head-on", "overtaking", "being overtaken", "crossing give-way",
+ * "crossing stand-on".  Traffic-level encounters (all pairs of ships in the
+ * survey area, the own ship included and flagged) use "head-on", "overtaking",
+ * "crossing".
+ *
+ * Exposure: the own ship sails sim_s seconds per run; traffic_ship_s is the
+ * sum over steps of the ships in the survey area times the step (ship-seconds).
+ */
+#ifndef FW_STUDY_SCHEMA_H
+#define FW_STUDY_SCHEMA_H
+
+#define FW_SCHEMA_VERSION "1"
+
+#define FW_SCHEMA_SQL                                                                   \
+    "CREATE TABLE IF NOT EXISTS meta(\n"                                                \
+    "  key TEXT PRIMARY KEY,\n"                                                         \
+    "  value TEXT NOT NULL);\n"                                                         \
+    "CREATE TABLE IF NOT EXISTS runs(\n"                                                \
+    "  run_id INTEGER PRIMARY KEY,\n"    /* index in the study's run list */            \
+    "  domain_m REAL NOT NULL,\n"        /* transverse semi-axis of the domain */       \
+    "  density REAL NOT NULL,\n"         /* demand scale of the network */              \
+    "  replication INTEGER NOT NULL,\n"  /* 0-based; same traffic for every domain */   \
+    "  seed INTEGER NOT NULL,\n"         /* SUMO and demand seed of the replication */  \
+    "  status TEXT NOT NULL CHECK(status IN ('ok','failed')),\n"                        \
+    "  reason TEXT NOT NULL DEFAULT '',\n" /* why it failed */                          \
+    "  sim_s REAL,\n"                    /* simulated time */                           \
+    "  wall_s REAL,\n"                   /* wall-clock time of the run */               \
+    "  sumo_s REAL,\n"                   /* of which inside SUMO's step */              \
+    "  n_encounters INTEGER,\n"                                                         \
+    "  n_actions INTEGER,\n"             /* avoidance manoeuvres begun */               \
+    "  min_dist_m REAL,\n"               /* NULL: no target met */                      \
+    "  domain_entered INTEGER,\n"                                                       \
+    "  near_miss INTEGER,\n"                                                            \
+    "  collision INTEGER,\n"                                                            \
+    "  colregs_ok INTEGER,\n"                                                           \
+    "  max_helm_deg REAL,\n"                                                            \
+    "  path_length_m REAL,\n"                                                           \
+    "  path_lengthening_m REAL,\n"                                                      \
+    "  time_lost_s REAL,\n"                                                             \
+    "  rudder_work_deg_s REAL,\n"                                                       \
+    "  helm_orders INTEGER,\n"                                                          \
+    "  traffic_ship_s REAL,\n"                                                          \
+    "  UNIQUE(domain_m, density, replication));\n"                                      \
+    "CREATE TABLE IF NOT EXISTS encounters(\n"                                          \
+    "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \
+    "  target TEXT NOT NULL,\n"                                                         \
+    "  target_type TEXT NOT NULL,\n"                                                    \
+    "  situation TEXT NOT NULL,\n"                                                      \
+    "  t_detect_s REAL, dcpa0_m REAL, tcpa0_s REAL,\n"                                  \
+    "  threat INTEGER, acted INTEGER,\n"                                                \
+    "  t_act_s REAL, act_side TEXT, act_helm_deg REAL,\n"                               \
+    "  min_dist_m REAL, t_min_s REAL, min_lambda REAL,\n"                               \
+    "  domain_entered INTEGER, near_miss INTEGER, collision INTEGER,\n"                 \
+    "  colregs_ok INTEGER,\n"                                                           \
+    "  PRIMARY KEY(run_id, target));\n"                                                 \
+    "CREATE TABLE IF NOT EXISTS traffic_encounters(\n"                                  \
+    "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \
+    "  ship_a TEXT NOT NULL, ship_b TEXT NOT NULL,\n" /* ship_a < ship_b */             \
+    "  type TEXT NOT NULL,\n"            /* head-on, overtaking, crossing */            \
+    "  own INTEGER NOT NULL,\n"          /* one of the pair is the own ship */          \
+    "  t_first_s REAL NOT NULL, range0_m REAL, dcpa0_m REAL, tcpa0_s REAL,\n"           \
+    "  min_dist_m REAL, t_min_s REAL,\n"                                                \
+    "  PRIMARY KEY(run_id, ship_a, ship_b, t_first_s));\n"
+
+#endif
