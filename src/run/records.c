@@ -216,8 +216,8 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     fprintf(f, "%s  \"path_length_m\": %.1f, \"along_track_m\": %.1f, "
                "\"path_lengthening_m\": %.1f, \"time_lost_s\": %.1f,\n",
             ind, s->path_length, s->along_track, s->path_lengthening, s->time_lost);
-    fprintf(f, "%s  \"rudder_work_deg_s\": %.1f, \"helm_orders\": %d,\n", ind,
-            fw_rad_to_deg(s->rudder_work), s->helm_orders);
+    fprintf(f, "%s  \"rudder_work_deg_s\": %.1f, \"helm_orders\": %d, \"actions\": %d,\n", ind,
+            fw_rad_to_deg(s->rudder_work), s->helm_orders, s->n_actions);
     fprintf(f, "%s  \"own_length_m\": %.1f, \"own_breadth_m\": %.1f, \"domain_m\": %.1f, "
                "\"domain_fore_aft_ratio\": %.2f,\n",
             ind, s->own_length, s->own_breadth, s->domain, s->domain_ratio);

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 
 #include "avoid/policy.h"
 #include "core/units.h"
@@ -88,6 +89,13 @@ static fw_status write_tracks(const fw_scenario *s, const char *sumo, fw_error *
     fprintf(rf, "</routes>\n");
     int bad = fclose(nf) | fclose(ef) | fclose(rf);
     return bad ? fw_fail(err, FW_ERUN, "cannot write the track network in %s", sumo) : FW_OK;
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 static int cmp_ship(const void *a, const void *b)
@@ -180,6 +188,7 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
                 }
             const char *pid = d.primary >= 0 && d.primary < n ? ships[d.primary].id : NULL;
             fw_records_action(L->rec, t, d.search.side, d.helm, pid, tid, tas, m);
+            sum->n_actions++;
             if (!sum->acted) {
                 sum->acted = true;
                 sum->t_act = t;
@@ -220,8 +229,12 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
         sum->path_length += hypot(x->east - e_prev, x->north - n_prev);
         e_prev = x->east;
         n_prev = x->north;
-        if ((stt = fw_traffic_place(L->tr, x->east, x->north, x->psi, hypot(x->u, x->vm), err)) ||
-            (stt = fw_traffic_step(L->tr, err)))
+        if ((stt = fw_traffic_place(L->tr, x->east, x->north, x->psi, hypot(x->u, x->vm), err)))
+            break;
+        double t0 = now_s();
+        stt = fw_traffic_step(L->tr, err);
+        sum->sumo_s += now_s() - t0;
+        if (stt)
             break;
     }
     const fw_mmg_state *x = fw_stepper_state(L->st);
@@ -244,6 +257,7 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
                           int *n_enc, fw_error *err)
 {
     const fw_scenario *s = def->scenario;
+    double wall0 = now_s();
     memset(sum, 0, sizeof *sum);
     snprintf(sum->scenario, sizeof sum->scenario, "%s", s->name);
     snprintf(sum->status, sizeof sum->status, "failed");
@@ -361,6 +375,7 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     }
 out:
     fw_traffic_close(L.tr);
+    sum->wall_s = now_s() - wall0;
     fw_helm_ctx_destroy(L.ctx);
     fw_stepper_destroy(L.st);
     fw_records_close(L.rec);

@@ -81,6 +81,11 @@ typedef struct fw_run_summary {
     double time_lost;       /* s, t_end - along_track / planned speed */
     double rudder_work;     /* rad s, integral of |rudder| */
     int helm_orders;        /* number of changes of the helm order */
+    int n_actions;          /* avoidance manoeuvres begun */
+    /* Wall-clock seconds of the run and of it inside SUMO's step: for the
+     * benchmarks and the study database only, never written to the run's
+     * files (they must be identical from run to run). */
+    double wall_s, sumo_s;
     double own_length, own_breadth; /* m, hull outline (for plots) */
     double domain, domain_ratio;    /* m, transverse semi-axis; fore-aft / transverse */
 } fw_run_summary;
