@@ -274,7 +274,11 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     snprintf(sumo, sizeof sumo, "%s/sumo", def->dir);
     if (mkdir(sumo, 0777) != 0)
         return fw_fail(err, FW_ERUN, "cannot create %s", sumo);
-    fw_status st = write_tracks(s, sumo, err);
+    /* Traffic on a network alone needs no track edges (moveToXY places the own
+     * ship anywhere): the built network is used as it is, which spares a
+     * netconvert per run in a sweep. */
+    bool tracks = s->n_targets > 0 || !s->network[0];
+    fw_status st = tracks ? write_tracks(s, sumo, err) : FW_OK;
     if (st)
         return st;
     fw_network_files nf = {0};
@@ -315,7 +319,9 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     snprintf(net, sizeof net, "%s/run.net.xml", sumo);
     snprintf(nlog, sizeof nlog, "%s/netconvert.log", sumo);
     snprintf(slog, sizeof slog, "%s/sumo.log", sumo);
-    if ((st = fw_netconvert(sumo, nodes, edges, types, "run.net.xml", nlog, err)))
+    if (!tracks)
+        snprintf(net, sizeof net, "%s", nf.net);
+    else if ((st = fw_netconvert(sumo, nodes, edges, types, "run.net.xml", nlog, err)))
         return st;
     fw_traffic_def td = fw_default_traffic_def();
     td.mode = def->mode;
@@ -328,7 +334,7 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     td.own_id = "fw_own";
     td.own_length = s->ship.Loa;
     td.own_width = s->ship.B;
-    td.own_edge = "fw_own";
+    td.own_edge = tracks ? "fw_own" : NULL;
     td.radius = s->radius;
     fw_mmg_state x0 = fw_mmg_straight(s->speed, s->east, s->north, s->course);
     fw_stepper_def sd = fw_default_stepper_def();

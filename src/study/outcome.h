@@ -1,0 +1,62 @@
+/* outcome.h - what one study run hands back: its status, its aggregates, its
+ * own-ship encounters and its traffic-level encounters, flat, with no
+ * pointers into the run, so it can cross a pipe or an MPI message as bytes.
+ *
+ * A target counts as an own-ship encounter when it passed within the study's
+ * encounter range or the own ship predicted it to enter its domain (a
+ * "threat"); the ships merely seen on the radar are not kept.
+ */
+#ifndef FW_STUDY_OUTCOME_H
+#define FW_STUDY_OUTCOME_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "core/error.h"
+#include "run/run.h"
+#include "study/study.h"
+
+typedef struct fw_outcome_encounter {
+    char target[64], target_type[64], situation[32], act_side[16];
+    double t_detect, dcpa0, tcpa0;  /* s, m, s */
+    int threat, acted;
+    double t_act, act_helm_deg;     /* NAN when it never acted */
+    double min_dist, t_min, min_lambda;
+    int domain_entered, near_miss, collision, colregs_ok;
+} fw_outcome_encounter;
+
+typedef struct fw_outcome_traffic {
+    char ship_a[64], ship_b[64], type[16];
+    int own;
+    double t_first, range0, dcpa0, tcpa0, min_dist, t_min;
+} fw_outcome_traffic;
+
+typedef struct fw_outcome {
+    int run_id;
+    char status[16];   /* "ok" or "failed" */
+    char reason[512];  /* why it failed */
+    double sim_s, wall_s, sumo_s;
+    int n_actions;
+    double min_dist;   /* m, NAN when no target was met */
+    int domain_entered, near_miss, collision, colregs_ok;
+    double max_helm_deg, path_length, path_lengthening, time_lost, rudder_work_deg_s;
+    int helm_orders;
+    double traffic_ship_s;
+    int n_enc, n_traffic;
+    fw_outcome_encounter *enc;   /* owned */
+    fw_outcome_traffic *traffic; /* owned */
+} fw_outcome;
+
+/* A failed run: status "failed" and the reason. */
+void fw_outcome_failed(fw_outcome *o, int run_id, const char *reason);
+/* From a finished run's summary and encounter book. */
+fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
+                              const fw_run_summary *sum, const fw_encounter *e, int n,
+                              fw_error *err);
+void fw_outcome_free(fw_outcome *o);
+
+/* Bytes and back.  Both ends are the same fairway build. */
+fw_status fw_outcome_pack(const fw_outcome *o, unsigned char **buf, size_t *n, fw_error *err);
+fw_status fw_outcome_unpack(const unsigned char *buf, size_t n, fw_outcome *o, fw_error *err);
+
+#endif

@@ -1,0 +1,34 @@
+/* store.h - the study database a sweep writes (SQLite, schema in schema.h).
+ *
+ * One process writes it.  Each run is committed in one transaction with all
+ * its rows, in WAL mode, so a process killed at any moment (even SIGKILL)
+ * leaves every earlier run intact and no half run.  The database remembers the
+ * study's digest: resuming with a changed study or scenario is refused rather
+ * than mixing results of two different studies.
+ */
+#ifndef FW_STUDY_STORE_H
+#define FW_STUDY_STORE_H
+
+#include <stdbool.h>
+
+#include "core/error.h"
+#include "study/outcome.h"
+#include "study/study.h"
+
+typedef struct fw_store fw_store;
+
+/* Opens (creating if needed) path for study s. */
+fw_status fw_store_open(const char *path, const fw_study *s, fw_store **out, fw_error *err);
+void fw_store_close(fw_store *st);
+
+/* done[run_id] = the run is in the database (ok, or failed when
+ * count_failed); done has fw_study_run_count entries. */
+fw_status fw_store_finished(fw_store *st, bool count_failed, bool *done, int n, fw_error *err);
+
+/* Deletes a failed run so it can be run again (--retry-failed). */
+fw_status fw_store_forget_failed(fw_store *st, fw_error *err);
+
+/* Commits one run and its rows in one transaction. */
+fw_status fw_store_commit(fw_store *st, const fw_study *s, const fw_outcome *o, fw_error *err);
+
+#endif

@@ -1,0 +1,232 @@
+/* study.c - study files and the run list (see study.h). */
+#include <libgen.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "study/study.h"
+#include "yaml/yaml_tree.h"
+
+uint64_t fw_fnv1a(uint64_t h, const void *data, size_t n)
+{
+    const unsigned char *p = data;
+    for (size_t i = 0; i < n; i++) {
+        h ^= p[i];
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+/* splitmix64: a well-mixed value per (seed, stream, replication), the same on
+ * every machine, so a replication's traffic never depends on who runs it. */
+static uint64_t mix(uint64_t x)
+{
+    x += 0x9e3779b97f4a7c15ull;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+static double uniform_pm(uint64_t h) /* in [-1, 1) */
+{
+    return (double)(h >> 11) * 0x1.0p-53 * 2.0 - 1.0;
+}
+
+static fw_status read_levels(const yt_doc *doc, const yt_node *root, const char *key, double lo,
+                             double hi, bool required, double *out, int *n, fw_error *err)
+{
+    const yt_node *seq = NULL;
+    fw_status st = required ? yt_req_seq(doc, root, "", key, &seq, err)
+                            : yt_opt_seq(doc, root, "", key, &seq, err);
+    if (st || !seq)
+        return st;
+    if (seq->n == 0 || seq->n > FW_STUDY_MAX_LEVELS)
+        return fw_fail_at(err, doc->file, seq->line, key, "give 1 to %d values, not %zu",
+                          FW_STUDY_MAX_LEVELS, seq->n);
+    for (size_t i = 0; i < seq->n; i++) {
+        char field[64];
+        snprintf(field, sizeof field, "%s[%zu]", key, i);
+        if ((st = yt_number(doc, seq->items[i], field, &out[i], err)))
+            return st;
+        if (!(out[i] >= lo && out[i] <= hi))
+            return fw_fail_at(err, doc->file, seq->items[i]->line, field,
+                              "%g is outside [%g, %g]", out[i], lo, hi);
+        for (size_t j = 0; j < i; j++)
+            if (out[j] == out[i])
+                return fw_fail_at(err, doc->file, seq->items[i]->line, field,
+                                  "%g is listed twice", out[i]);
+    }
+    *n = (int)seq->n;
+    return FW_OK;
+}
+
+/* The scenario path is relative to the study file's directory. */
+static void resolve(const char *study_file, const char *rel, char *out, size_t outsz)
+{
+    if (rel[0] == '/') {
+        snprintf(out, outsz, "%s", rel);
+        return;
+    }
+    char tmp[512];
+    snprintf(tmp, sizeof tmp, "%s", study_file);
+    snprintf(out, outsz, "%s/%s", dirname(tmp), rel);
+}
+
+static uint64_t file_digest(uint64_t h, const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return h;
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        h = fw_fnv1a(h, buf, n);
+    fclose(f);
+    return h;
+}
+
+static uint64_t digest(const fw_study *s)
+{
+    /* the settings that decide the results, printed exactly, and the bytes of
+     * the scenario and ship files: a resumed sweep must be the same study */
+    char text[4096];
+    int k = snprintf(text, sizeof text, "%s|%d|%lu|%.17g|%.17g|%.17g|%.17g|%.17g|", s->name,
+                     s->replications, s->seed, s->duration, s->start_along, s->start_across,
+                     s->encounter_range, s->near_miss);
+    for (int i = 0; i < s->n_domains && k < (int)sizeof text - 32; i++)
+        k += snprintf(text + k, sizeof text - (size_t)k, "d%.17g|", s->domains[i]);
+    for (int i = 0; i < s->n_densities && k < (int)sizeof text - 32; i++)
+        k += snprintf(text + k, sizeof text - (size_t)k, "r%.17g|", s->densities[i]);
+    uint64_t h = fw_fnv1a(FW_FNV_INIT, text, strlen(text));
+    h = file_digest(h, s->scenario_file);
+    return file_digest(h, s->base.ship.file);
+}
+
+fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
+{
+    static const char *const keys[] = {"name", "description", "scenario", "replications", "seed",
+                                       "domains_m", "densities", "duration_s", "start",
+                                       "encounter_m", "near_miss_m", NULL};
+    memset(s, 0, sizeof *s);
+    snprintf(s->file, sizeof s->file, "%s", path);
+    s->encounter_range = 1852.0;
+    s->near_miss = 185.2;
+    yt_doc *doc = NULL;
+    fw_status st = yt_load_file(path, &doc, err);
+    if (st)
+        return st;
+    const yt_node *root = doc->root, *start = NULL;
+    char scen[512] = "";
+    long reps = 0, seed = 1;
+    if (!root || root->kind != YT_MAP) {
+        st = fw_fail_at(err, doc->file, root ? root->line : 1, "(top)",
+                        "expected a map with name, scenario, replications, domains_m");
+        goto out;
+    }
+    if ((st = yt_check_keys(doc, root, "", keys, err)) ||
+        (st = yt_req_string(doc, root, "", "name", s->name, sizeof s->name, err)) ||
+        (st = yt_opt_string(doc, root, "", "description", s->description, sizeof s->description,
+                            err)) ||
+        (st = yt_req_string(doc, root, "", "scenario", scen, sizeof scen, err)) ||
+        (st = yt_req_int(doc, root, "", "replications", 1, 100000, &reps, err)) ||
+        (st = yt_opt_int(doc, root, "", "seed", 0, 2147483647L, &seed, err)) ||
+        (st = read_levels(doc, root, "domains_m", 10.0, 20000.0, true, s->domains, &s->n_domains,
+                          err)) ||
+        (st = read_levels(doc, root, "densities", 0.0, 100.0, false, s->densities,
+                          &s->n_densities, err)) ||
+        (st = yt_opt_number(doc, root, "", "encounter_m", 1.0, 1e6, &s->encounter_range, err)) ||
+        (st = yt_opt_number(doc, root, "", "near_miss_m", 0.0, 1e6, &s->near_miss, err)) ||
+        (st = yt_opt_map(doc, root, "", "start", &start, err)))
+        goto out;
+    if (strspn(s->name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
+        strlen(s->name)) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "name"), "name",
+                        "'%s': use letters, digits, '-' or '_'", s->name);
+        goto out;
+    }
+    if (start) {
+        static const char *const skeys[] = {"along_m", "across_m", NULL};
+        if ((st = yt_check_keys(doc, start, "start", skeys, err)) ||
+            (st = yt_opt_number(doc, start, "start", "along_m", 0.0, 1e5, &s->start_along,
+                                err)) ||
+            (st = yt_opt_number(doc, start, "start", "across_m", 0.0, 1e5, &s->start_across,
+                                err)))
+            goto out;
+    }
+    s->replications = (int)reps;
+    s->seed = (unsigned long)seed;
+    if ((long)s->replications * s->n_domains * (s->n_densities ? s->n_densities : 1) > 10000000L) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "replications"), "replications",
+                        "more than 10 million runs");
+        goto out;
+    }
+    resolve(path, scen, s->scenario_file, sizeof s->scenario_file);
+    if ((st = fw_scenario_load(s->scenario_file, &s->base, err))) {
+        /* the scenario's own FILE:LINE message, with where it was named */
+        char msg[sizeof err->msg];
+        snprintf(msg, sizeof msg, "%s", err ? err->msg : "");
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "scenario"), "scenario", "%s", msg);
+        goto out;
+    }
+    if (s->base.n_targets == 0 && !s->base.network[0]) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "scenario"), "scenario",
+                        "%s has no traffic (no network and no targets)", s->scenario_file);
+        goto out;
+    }
+    if (s->n_densities == 0) {
+        s->n_densities = 1;
+        s->densities[0] = s->base.density;
+    } else if (!s->base.network[0]) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "densities"), "densities",
+                        "the scenario has no network whose demand they could scale");
+        goto out;
+    }
+    s->duration = s->base.duration;
+    if ((st = yt_opt_number(doc, root, "", "duration_s", 1.0, 30.0 * 86400.0, &s->duration, err)))
+        goto out;
+    if (fabs(s->duration / s->base.step - round(s->duration / s->base.step)) > 1e-9) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "duration_s"), "duration_s",
+                        "%g s is not a whole number of steps of %g s", s->duration,
+                        s->base.step);
+        goto out;
+    }
+    s->digest = digest(s);
+out:
+    yt_free(doc);
+    return st;
+}
+
+int fw_study_run_count(const fw_study *s)
+{
+    return s->n_densities * s->replications * s->n_domains;
+}
+
+fw_study_run fw_study_run_at(const fw_study *s, int run_id)
+{
+    fw_study_run r = {.run_id = run_id};
+    r.domain_index = run_id % s->n_domains;
+    r.replication = (run_id / s->n_domains) % s->replications;
+    r.density_index = run_id / (s->n_domains * s->replications);
+    r.domain = s->domains[r.domain_index];
+    r.density = s->densities[r.density_index];
+    /* the replication alone decides seed and start: common random numbers */
+    uint64_t base = mix((uint64_t)s->seed * 0x100000001b3ull + (uint64_t)r.replication);
+    r.seed = 1 + (unsigned long)(base % 2147483646ull);
+    r.d_along = s->start_along * uniform_pm(mix(base ^ 0xa1a1a1a1ull));
+    r.d_across = s->start_across * uniform_pm(mix(base ^ 0xc3c3c3c3ull));
+    return r;
+}
+
+void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *out)
+{
+    *out = s->base;
+    snprintf(out->name, sizeof out->name, "%.40s-%06d", s->name, r->run_id);
+    out->helm.domain.size = r->domain;
+    out->density = r->density;
+    out->seed = r->seed;
+    out->duration = s->duration;
+    double se = sin(out->course), ce = cos(out->course);
+    out->east += r->d_along * se + r->d_across * ce;
+    out->north += r->d_along * ce - r->d_across * se;
+}

@@ -1,0 +1,78 @@
+/* study.h - a Monte Carlo study: a base scenario, the domain sizes, densities
+ * and replications to sweep, and the run list they make.
+ *
+ * Common random numbers: replication i has one seed (SUMO's and the demand's)
+ * and one own-ship start for every domain size and density, so differences
+ * between domain sizes are paired.  The run list is ordered replication-major
+ * (all domains of replication 0, then of replication 1, ...), so a sweep cut
+ * short still holds complete paired sets.  run_id is the index in that list.
+ *
+ * A study file (YAML, units in the key names; errors "FILE:LINE: FIELD: ..."):
+ *
+ *   name: strait-domain
+ *   scenario: ../traffic/strait-crossing.yaml  # relative to the study file
+ *   replications: 10
+ *   seed: 1
+ *   domains_m: [150, 300, 600, 1000]
+ *   densities: [1, 2]            # optional: the scenario's density
+ *   duration_s: 3600             # optional: the scenario's duration
+ *   start: {along_m: 1000, across_m: 300}  # optional: own-ship start spread
+ *   encounter_m: 1852            # optional: a target passing closer is an encounter
+ *   near_miss_m: 185.2           # optional: closer is a near miss
+ */
+#ifndef FW_STUDY_H
+#define FW_STUDY_H
+
+#include <stdint.h>
+
+#include "core/error.h"
+#include "scenario/scenario.h"
+
+#define FW_STUDY_MAX_LEVELS 32
+
+typedef struct fw_study {
+    char file[512];
+    char name[64];
+    char description[256];
+    char scenario_file[1024];
+    fw_scenario base;        /* the loaded base scenario */
+    int replications;
+    unsigned long seed;
+    int n_domains;
+    double domains[FW_STUDY_MAX_LEVELS];   /* m */
+    int n_densities;
+    double densities[FW_STUDY_MAX_LEVELS];
+    double duration;         /* s */
+    double start_along;      /* m, uniform spread of the start along the course */
+    double start_across;     /* m, and across it */
+    double encounter_range;  /* m */
+    double near_miss;        /* m */
+    uint64_t digest;         /* of the settings and the scenario file: resume guard */
+} fw_study;
+
+typedef struct fw_study_run {
+    int run_id;
+    int replication;
+    int domain_index, density_index;
+    double domain;           /* m */
+    double density;
+    unsigned long seed;
+    double d_along, d_across; /* m, start offset of this replication */
+} fw_study_run;
+
+/* Loads and checks path (and the scenario it names).  s is large: callers
+ * heap-allocate it. */
+fw_status fw_study_load(const char *path, fw_study *s, fw_error *err);
+
+int fw_study_run_count(const fw_study *s);
+/* Run run_id (0 <= run_id < fw_study_run_count). */
+fw_study_run fw_study_run_at(const fw_study *s, int run_id);
+/* The scenario of one run: the base with the run's domain, density, seed,
+ * duration and start, named "<study>-<run_id>". */
+void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *out);
+
+/* 64-bit FNV-1a, chained through h (start with FW_FNV_INIT). */
+#define FW_FNV_INIT 0xcbf29ce484222325ull
+uint64_t fw_fnv1a(uint64_t h, const void *data, size_t n);
+
+#endif

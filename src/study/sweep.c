@@ -1,0 +1,189 @@
+/* sweep.c - the local sweep: worker processes and the one database writer. */
+#include <errno.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "study/store.h"
+#include "study/sweep.h"
+
+fw_sweep_def fw_default_sweep_def(void)
+{
+    fw_sweep_def d = {0};
+    d.mode.kind = FW_TRAFFIC_EMBEDDED;
+    d.progress = FW_PROGRESS_AUTO;
+    return d;
+}
+
+static volatile sig_atomic_t g_stop;
+
+static void on_signal(int sig)
+{
+    g_stop = sig;
+}
+
+typedef struct sig_guard {
+    struct sigaction old_int, old_term;
+} sig_guard;
+
+static void guard_signals(sig_guard *g)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal; /* no SA_RESTART: poll returns at once */
+    sigemptyset(&sa.sa_mask);
+    g_stop = 0;
+    sigaction(SIGINT, &sa, &g->old_int);
+    sigaction(SIGTERM, &sa, &g->old_term);
+}
+
+static void release_signals(sig_guard *g)
+{
+    sigaction(SIGINT, &g->old_int, NULL);
+    sigaction(SIGTERM, &g->old_term, NULL);
+}
+
+static int default_jobs(int jobs)
+{
+    if (jobs > 0)
+        return jobs;
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n > 0 ? (int)n : 1;
+}
+
+/* The pending run ids, ascending; *n_pending and counts filled. */
+static fw_status pending_runs(fw_store *st, const fw_sweep_def *def, fw_sweep_result *res,
+                              int **pending, int *n_pending, fw_error *err)
+{
+    int total = fw_study_run_count(def->study);
+    bool *done = calloc((size_t)total, sizeof *done), *any = calloc((size_t)total, sizeof *any);
+    *pending = malloc(sizeof **pending * (size_t)total);
+    if (!done || !any || !*pending) {
+        free(done);
+        free(any);
+        free(*pending);
+        *pending = NULL;
+        return fw_fail(err, FW_ERUN, "out of memory");
+    }
+    fw_status r;
+    if (def->retry_failed && (r = fw_store_forget_failed(st, err)))
+        goto out;
+    if ((r = fw_store_finished(st, false, done, total, err)) ||
+        (r = fw_store_finished(st, true, any, total, err)))
+        goto out;
+    res->total = total;
+    *n_pending = 0;
+    for (int i = 0; i < total; i++) {
+        if (any[i]) {
+            res->skipped++;
+            res->failed_before += !done[i];
+        } else if (def->limit <= 0 || *n_pending < def->limit) {
+            (*pending)[(*n_pending)++] = i;
+        }
+    }
+out:
+    free(done);
+    free(any);
+    return r;
+}
+
+fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error *err)
+{
+    memset(res, 0, sizeof *res);
+    double t0 = fw_sweep_now();
+    const fw_study *s = def->study;
+    fw_store *st = NULL;
+    fw_status r = fw_store_open(def->db, s, &st, err);
+    if (r)
+        return r;
+    int *pending = NULL, n_pending = 0;
+    if ((r = pending_runs(st, def, res, &pending, &n_pending, err))) {
+        fw_store_close(st);
+        return r;
+    }
+    char work[1024];
+    if ((r = fw_sweep_workdir(def, work, sizeof work, err))) {
+        free(pending);
+        fw_store_close(st);
+        return r;
+    }
+    int jobs = default_jobs(def->jobs);
+    if (jobs > n_pending)
+        jobs = n_pending > 0 ? n_pending : 1;
+    fw_child *kids = calloc((size_t)jobs, sizeof *kids);
+    struct pollfd *pfd = calloc((size_t)jobs, sizeof *pfd);
+    if (!kids || !pfd) {
+        r = fw_fail(err, FW_ERUN, "out of memory");
+        goto out;
+    }
+    for (int i = 0; i < jobs; i++)
+        kids[i].pid = kids[i].fd = -1;
+    sig_guard guard;
+    guard_signals(&guard);
+    fw_progress *prog = fw_progress_start(def, n_pending, res->total, res->skipped);
+    int next = 0, running = 0;
+    while ((next < n_pending || running > 0) && !g_stop && !r) {
+        for (int i = 0; i < jobs && next < n_pending && !g_stop; i++) {
+            if (kids[i].pid > 0)
+                continue;
+            if ((r = fw_sweep_spawn(s, pending[next], work, def->keep_dir != NULL, &def->mode,
+                                    &kids[i], err)))
+                break;
+            fcntl(kids[i].fd, F_SETFL, O_NONBLOCK);
+            next++;
+            running++;
+        }
+        if (r)
+            break;
+        int m = 0;
+        for (int i = 0; i < jobs; i++)
+            pfd[i] = (struct pollfd){.fd = kids[i].pid > 0 ? kids[i].fd : -1, .events = POLLIN};
+        int k = poll(pfd, (nfds_t)jobs, 1000);
+        if (k < 0 && errno != EINTR) {
+            r = fw_fail(err, FW_ERUN, "poll: %s", strerror(errno));
+            break;
+        }
+        for (int i = 0; i < jobs && k > 0; i++) {
+            if (kids[i].pid <= 0 || !(pfd[i].revents & (POLLIN | POLLHUP | POLLERR)))
+                continue;
+            if (!fw_sweep_read(&kids[i]))
+                continue;
+            fw_outcome o;
+            fw_sweep_collect(&kids[i], &o);
+            running--;
+            m++;
+            /* the one writer: a run is wholly in the database or not at all */
+            if ((r = fw_store_commit(st, s, &o, err))) {
+                fw_outcome_free(&o);
+                break;
+            }
+            if (strcmp(o.status, "ok") == 0)
+                res->done++;
+            else
+                res->failed++;
+            fw_progress_run(prog, s, &o, res->done, res->failed);
+            fw_outcome_free(&o);
+        }
+        if (!m)
+            fw_progress_tick(prog, res->done, res->failed, running);
+    }
+    if (g_stop || r) {
+        res->interrupted = g_stop != 0;
+        for (int i = 0; i < jobs; i++)
+            fw_sweep_kill(&kids[i]);
+    }
+    fw_progress_end(prog, res->done, res->failed);
+    release_signals(&guard);
+out:
+    free(kids);
+    free(pfd);
+    free(pending);
+    fw_store_close(st);
+    if (!def->keep_dir)
+        fw_remove_tree(work);
+    res->wall_s = fw_sweep_now() - t0;
+    return r;
+}

@@ -1,0 +1,214 @@
+/* sweep_mpi.c - the sweep over MPI ranks (see sweep.h).
+ *
+ * Rank 0 opens the database, hands out one run id at a time and commits each
+ * result as it arrives; ranks 1..K-1 run them (each in a forked child, as a
+ * local sweep does, so a crashing run costs one run).  Messages: WORK carries
+ * a run id (-1 = stop), RESULT the outcome's bytes.  With one rank the sweep
+ * is local.  Built only when CMake finds MPI (FAIRWAY_MPI).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "study/store.h"
+#include "study/sweep.h"
+
+#ifndef FAIRWAY_MPI
+
+bool fw_sweep_under_mpi(void)
+{
+    return false;
+}
+
+fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_root,
+                       fw_error *err)
+{
+    (void)def;
+    (void)res;
+    *is_root = true;
+    return fw_fail(err, FW_EINPUT, "this fairway was built without MPI");
+}
+
+#else
+
+#include <mpi.h>
+
+enum { TAG_WORK = 1, TAG_RESULT = 2 };
+
+bool fw_sweep_under_mpi(void)
+{
+    /* set by Open MPI's and MPICH's launchers for every rank */
+    return getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMI_SIZE") || getenv("PMIX_RANK");
+}
+
+static void send_run(int rank, int run_id)
+{
+    MPI_Send(&run_id, 1, MPI_INT, rank, TAG_WORK, MPI_COMM_WORLD);
+}
+
+/* Ranks 1..: run what rank 0 sends until it sends -1. */
+static void worker(const fw_sweep_def *def, const char *work)
+{
+    for (;;) {
+        int run_id;
+        MPI_Recv(&run_id, 1, MPI_INT, 0, TAG_WORK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (run_id < 0)
+            return;
+        fw_child c;
+        fw_outcome o;
+        fw_error err = {0};
+        if (fw_sweep_spawn(def->study, run_id, work, def->keep_dir != NULL, &def->mode, &c,
+                           &err)) {
+            fw_outcome_failed(&o, run_id, err.msg);
+        } else {
+            while (!fw_sweep_read(&c))
+                ;
+            fw_sweep_collect(&c, &o);
+        }
+        unsigned char *buf = NULL;
+        size_t n = 0;
+        if (fw_outcome_pack(&o, &buf, &n, &err)) {
+            fw_outcome_free(&o);
+            fw_outcome_failed(&o, run_id, err.msg);
+            fw_outcome_pack(&o, &buf, &n, NULL);
+        }
+        MPI_Send(buf, (int)n, MPI_BYTE, 0, TAG_RESULT, MPI_COMM_WORLD);
+        free(buf);
+        fw_outcome_free(&o);
+    }
+}
+
+/* Rank 0: hand out the pending runs, commit what comes back. */
+static fw_status root(const fw_sweep_def *def, fw_store *st, const int *pending, int n_pending,
+                      int size, fw_sweep_result *res, fw_error *err)
+{
+    const fw_study *s = def->study;
+    int next = 0, busy = 0;
+    fw_status r = FW_OK;
+    fw_progress *prog = fw_progress_start(def, n_pending, res->total, res->skipped);
+    for (int rank = 1; rank < size; rank++) {
+        if (next < n_pending) {
+            send_run(rank, pending[next++]);
+            busy++;
+        } else {
+            send_run(rank, -1);
+        }
+    }
+    while (busy > 0) {
+        MPI_Status stt;
+        int n = 0;
+        MPI_Probe(MPI_ANY_SOURCE, TAG_RESULT, MPI_COMM_WORLD, &stt);
+        MPI_Get_count(&stt, MPI_BYTE, &n);
+        unsigned char *buf = malloc(n > 0 ? (size_t)n : 1);
+        if (!buf)
+            MPI_Abort(MPI_COMM_WORLD, 1);
+        MPI_Recv(buf, n, MPI_BYTE, stt.MPI_SOURCE, TAG_RESULT, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        busy--;
+        fw_outcome o;
+        fw_error uerr = {0};
+        bool unpacked = fw_outcome_unpack(buf, (size_t)n, &o, &uerr) == FW_OK;
+        free(buf);
+        /* after an error, no new work: every rank is told to stop */
+        if (!r && next < n_pending) {
+            send_run(stt.MPI_SOURCE, pending[next++]);
+            busy++;
+        } else {
+            send_run(stt.MPI_SOURCE, -1);
+        }
+        if (!unpacked) {
+            if (!r)
+                r = fw_fail(err, FW_ERUN, "rank %d: %s", stt.MPI_SOURCE, uerr.msg);
+            continue;
+        }
+        if (!r && !(r = fw_store_commit(st, s, &o, err))) {
+            if (strcmp(o.status, "ok") == 0)
+                res->done++;
+            else
+                res->failed++;
+            fw_progress_run(prog, s, &o, res->done, res->failed);
+        }
+        fw_outcome_free(&o);
+    }
+    fw_progress_end(prog, res->done, res->failed);
+    return r;
+}
+
+fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_root,
+                       fw_error *err)
+{
+    int argc = 0;
+    char **argv = NULL;
+    MPI_Init(&argc, &argv);
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    *is_root = rank == 0;
+    memset(res, 0, sizeof *res);
+    fw_status r = FW_OK;
+    if (size == 1) {
+        r = fw_sweep_local(def, res, err);
+        MPI_Finalize();
+        return r;
+    }
+    double t0 = fw_sweep_now();
+    fw_store *st = NULL;
+    int *pending = NULL, n_pending = 0;
+    char work[1024] = "";
+    if (rank == 0) {
+        int total = fw_study_run_count(def->study);
+        bool *any = calloc((size_t)total, sizeof *any), *ok = calloc((size_t)total, sizeof *ok);
+        pending = malloc(sizeof *pending * (size_t)total);
+        if (!any || !ok || !pending)
+            r = fw_fail(err, FW_ERUN, "out of memory");
+        if (!r)
+            r = fw_store_open(def->db, def->study, &st, err);
+        if (!r && def->retry_failed)
+            r = fw_store_forget_failed(st, err);
+        if (!r && !(r = fw_store_finished(st, true, any, total, err)))
+            r = fw_store_finished(st, false, ok, total, err);
+        res->total = total;
+        for (int i = 0; !r && i < total; i++) {
+            if (any[i]) {
+                res->skipped++;
+                res->failed_before += !ok[i];
+            } else if (def->limit <= 0 || n_pending < def->limit) {
+                pending[n_pending++] = i;
+            }
+        }
+        free(any);
+        free(ok);
+    }
+    /* every rank learns whether rank 0 could start */
+    int go = r == FW_OK;
+    MPI_Bcast(&go, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (go && rank != 0 && (r = fw_sweep_workdir(def, work, sizeof work, err)))
+        work[0] = '\0';
+    if (go) {
+        if (rank == 0)
+            r = root(def, st, pending, n_pending, size, res, err);
+        else if (work[0])
+            worker(def, work);
+        else /* no work directory: answer every run as failed */
+            for (;;) {
+                int run_id;
+                MPI_Recv(&run_id, 1, MPI_INT, 0, TAG_WORK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+                if (run_id < 0)
+                    break;
+                fw_outcome o;
+                unsigned char *buf = NULL;
+                size_t n = 0;
+                fw_outcome_failed(&o, run_id, err ? err->msg : "no work directory");
+                fw_outcome_pack(&o, &buf, &n, NULL);
+                MPI_Send(buf, (int)n, MPI_BYTE, 0, TAG_RESULT, MPI_COMM_WORLD);
+                free(buf);
+            }
+    }
+    if (rank != 0 && work[0] && !def->keep_dir)
+        fw_remove_tree(work);
+    fw_store_close(st);
+    free(pending);
+    res->wall_s = fw_sweep_now() - t0;
+    MPI_Finalize();
+    return rank == 0 ? r : FW_OK;
+}
+
+#endif

@@ -1,0 +1,40 @@
+# Monte Carlo sweeps (src/study, `fairway sweep`): the run list and common random
+# numbers, the database, parallel and MPI sweeps agreeing, SIGKILL and resume.
+fw_test(test_study test_study.c)
+target_link_libraries(test_study PRIVATE fairway_study)
+
+fw_script_test(sweep_parallel 0 "jobs 1 and 2 agree" sweep_parallel.sh)
+fw_script_test(sweep_kill 0 "same results: 10 runs" sweep_kill.sh)
+set(fw_sweep_tests test_study sweep_parallel sweep_kill)
+find_program(FW_MPIRUN mpirun)
+if(FW_MPIRUN AND MPI_C_FOUND)
+  fw_script_test(sweep_mpi 0 "same results: 10 runs" sweep_mpi.sh)
+  # Open MPI's own allocations would be reported as leaks
+  set_tests_properties(sweep_mpi PROPERTIES LABELS no_sanitize TIMEOUT 300)
+endif()
+
+fw_cli_test(cli_sweep_help 0 "usage: fairway sweep" sweep --help)
+fw_cli_test(cli_sweep_no_db 2 "--db FILE is required" sweep ${CMAKE_SOURCE_DIR}/tests/data/study/small.yaml)
+fw_cli_test(cli_sweep_jobs 2 "--jobs 0: give 1 to 1024" sweep x.yaml --db x.db --jobs 0)
+fw_cli_test(cli_sweep_gui 2 "a sweep runs without windows" sweep x.yaml --db x.db --sumo gui)
+fw_cli_test(cli_sweep_dry 0 "^study small .*10 runs" sweep ${CMAKE_SOURCE_DIR}/tests/data/study/small.yaml --dry-run)
+foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
+            "key:5: replicas: unknown field"
+            "missing:1: replications: required field is missing"
+            "nan:4: domains_m\\[1\\]: '.nan' is not a number"
+            "twice:4: domains_m\\[1\\]: 300 is listed twice"
+            "duration:5: duration_s: 10.5 s is not a whole number of steps"
+            "scenario:2: scenario: .*nowhere.yaml: cannot open")
+  string(REGEX MATCH "^[a-z]+" name "${bad}")
+  string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
+  fw_script_test(cli_sweep_bad_${name} 0 "ok: no database" sweep_bad.sh
+                 ${CMAKE_SOURCE_DIR}/tests/data/study/bad-${name}.yaml "bad-${name}.yaml${pattern}")
+  list(APPEND fw_sweep_tests cli_sweep_bad_${name})
+endforeach()
+fw_script_test(cli_sweep_not_db 0 "ok: refused" sweep_not_db.sh)
+list(APPEND fw_sweep_tests cli_sweep_help cli_sweep_no_db cli_sweep_jobs cli_sweep_gui
+     cli_sweep_dry cli_sweep_not_db)
+foreach(t ${fw_sweep_tests})
+  set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+endforeach()
+set_tests_properties(sweep_parallel sweep_kill PROPERTIES TIMEOUT 300)
