@@ -12,7 +12,8 @@ cd "$(dirname "$0")/.."
 
 mode=${1:-main}
 packages=(build-essential cmake pkg-config libyaml-dev libsundials-dev libsqlite3-dev sqlite3
-          sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy python3-yaml)
+          sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy python3-yaml
+          libopenmpi-dev openmpi-bin)
 
 missing=()
 for p in "${packages[@]}"; do
