@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # quickstart.sh main|test - install what is missing, build, then run the main job or the tests.
 #
-#   main  prints the C-3 manoeuvring report (turning circles against the sea trial,
-#         zig-zags, IMO verdicts) and draws its plots into out/manoeuvres/, then runs
-#         the paper's five encounter cases and the 22 Imazu cases into out/runs/ and
-#         draws them
+#   main  runs the default Monte Carlo study (scenarios/studies/strait-domain.yaml:
+#         the C-3 crossing the strait in heavy traffic, 4 domain sizes x 20
+#         replications of one simulated hour) into out/strait-domain.db and writes its
+#         report (CSV, PNG, Markdown) into out/strait-domain-report/; before that it
+#         prints the C-3 manoeuvring report (out/manoeuvres/) and runs the paper's five
+#         encounter cases and the 22 Imazu cases (out/runs/, out/imazu.png)
 #   test  builds twice (plain, and with AddressSanitizer + UndefinedBehaviorSanitizer)
 #         and runs the whole ctest suite on both builds
 set -euo pipefail
@@ -45,7 +47,20 @@ case "$mode" in
     ./build/fairway run scenarios/paper/*.yaml scenarios/imazu/*.yaml --out out/runs
     for run in out/runs/paper-*; do /usr/bin/python3 analysis/plot_run.py "$run" > /dev/null; done
     /usr/bin/python3 analysis/plot_imazu.py out/runs --out out/imazu.png
+    # the default study: resumes if out/strait-domain.db already holds some runs
+    study=(./build/fairway sweep scenarios/studies/strait-domain.yaml --db out/strait-domain.db)
+    rc=0; "${study[@]}" || rc=$?
+    if [ $rc -eq 2 ] && [ -f out/strait-domain.db ]; then
+      # a database of an older version of the study cannot be resumed: keep it aside, start anew
+      mv -f out/strait-domain.db out/strait-domain.db.old
+      rm -f out/strait-domain.db-wal out/strait-domain.db-shm
+      rc=0; "${study[@]}" || rc=$?
+    fi
+    [ $rc -ne 2 ] || exit 2
+    [ $rc -eq 0 ] || echo "some runs failed (reasons in out/strait-domain.db, table runs); the report covers the others"
+    ./build/fairway report out/strait-domain.db --out out/strait-domain-report
     echo "plots: out/manoeuvres/*.png, out/runs/paper-*/*.png, out/imazu.png"
+    echo "study: out/strait-domain.db, report out/strait-domain-report/report.md"
     ;;
   test)
     build build
