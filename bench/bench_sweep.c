@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "core/files.h"
 #include "study/sweep.h"
 #include "traffic/demand.h"
 #include "traffic/traffic.h"

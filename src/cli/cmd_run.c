@@ -4,8 +4,6 @@
  * bad file leaves no output behind.  Each run writes into a hidden temporary
  * directory next to its final place and is renamed into place at the end.
  */
-#define _XOPEN_SOURCE 700
-#include <ftw.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +14,7 @@
 #include "avoid/helm_search.h"
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "core/files.h"
 #include "core/units.h"
 #include "run/run.h"
 #include "scenario/scenario.h"
@@ -40,39 +39,6 @@ static void help(void)
            "\n"
            "The same scenario and seed give byte-identical result files.\n"
            "Exit codes: 0 ok, 1 a run failed, 2 bad input (nothing is written).\n");
-}
-
-static int rm_one(const char *path, const struct stat *sb, int flag, struct FTW *ftw)
-{
-    (void)sb;
-    (void)flag;
-    (void)ftw;
-    return remove(path);
-}
-
-static void rm_tree(const char *path)
-{
-    struct stat sb;
-    if (lstat(path, &sb) == 0)
-        nftw(path, rm_one, 16, FTW_DEPTH | FTW_PHYS);
-}
-
-static fw_status mkdirs(const char *dir, fw_error *err)
-{
-    char buf[1024];
-    snprintf(buf, sizeof buf, "%s", dir);
-    for (char *p = buf + 1; *p; p++)
-        if (*p == '/') {
-            *p = '\0';
-            mkdir(buf, 0777);
-            *p = '/';
-        }
-    if (mkdir(buf, 0777) != 0) {
-        struct stat sb;
-        if (stat(buf, &sb) != 0 || !S_ISDIR(sb.st_mode))
-            return fw_fail(err, FW_EINPUT, "--out %s: cannot create the directory", dir);
-    }
-    return FW_OK;
 }
 
 static void row(const fw_run_summary *s)
@@ -147,7 +113,7 @@ int fw_cmd_run(int argc, char **argv)
                 rc = fw_report(&err);
             }
     }
-    if (!rc && (strlen(out) > 700 || mkdirs(out, &err)))
+    if (!rc && (strlen(out) > 700 || fw_mkdirs(out, "--out", &err)))
         rc = fw_report(err.status ? &err : (fw_fail(&err, FW_EINPUT, "--out: path too long"), &err));
     if (!rc && !json)
         printf("%-24s %8s %-6s %-9s %-17s %8s %7s %9s %9s  %s\n", "scenario", "min_d_m", "domain",
@@ -160,7 +126,7 @@ int fw_cmd_run(int argc, char **argv)
         char tmp[1024], dst[1024];
         snprintf(tmp, sizeof tmp, "%s/.%s.tmp.%ld", out, scn[i]->name, (long)getpid());
         snprintf(dst, sizeof dst, "%s/%s", out, scn[i]->name);
-        rm_tree(tmp);
+        fw_remove_tree(tmp);
         if (mkdir(tmp, 0777) != 0) {
             rc = fw_report((fw_fail(&err, FW_ERUN, "cannot create %s", tmp), &err));
             break;
@@ -172,15 +138,15 @@ int fw_cmd_run(int argc, char **argv)
         int ne = 0;
         fw_status st = fw_run_scenario(&def, &sum, &enc, &ne, &err);
         if (st == FW_EINPUT) {
-            rm_tree(tmp);
+            fw_remove_tree(tmp);
             free(enc);
             rc = fw_report(&err);
             break;
         }
         /* a failed run keeps its directory: the log says what happened */
-        rm_tree(dst);
+        fw_remove_tree(dst);
         if (rename(tmp, dst) != 0) {
-            rm_tree(tmp);
+            fw_remove_tree(tmp);
             free(enc);
             rc = fw_report((fw_fail(&err, FW_ERUN, "cannot rename %s to %s", tmp, dst), &err));
             break;

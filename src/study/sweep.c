@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/files.h"
 #include "study/store.h"
 #include "study/sweep.h"
 

@@ -86,9 +86,8 @@ bool fw_sweep_read(fw_child *c);
 void fw_sweep_collect(fw_child *c, fw_outcome *out);
 void fw_sweep_kill(fw_child *c);
 
-/* A fresh work directory for run directories (mkdtemp), and its removal. */
+/* A fresh work directory for run directories (mkdtemp; --keep: that one). */
 fw_status fw_sweep_workdir(const fw_sweep_def *def, char *out, size_t outsz, fw_error *err);
-void fw_remove_tree(const char *path);
 
 /* Progress reporting (progress.c). */
 typedef struct fw_progress fw_progress;

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/files.h"
 #include "study/store.h"
 #include "study/sweep.h"
 

@@ -1,0 +1,45 @@
+/* files.c - see files.h. */
+#define _XOPEN_SOURCE 700
+#include <errno.h>
+#include <ftw.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "core/files.h"
+
+static int remove_entry(const char *path, const struct stat *sb, int flag, struct FTW *ftw)
+{
+    (void)sb;
+    (void)flag;
+    (void)ftw;
+    remove(path);
+    return 0;
+}
+
+void fw_remove_tree(const char *path)
+{
+    struct stat sb;
+    if (lstat(path, &sb) == 0)
+        nftw(path, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+}
+
+fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err)
+{
+    char buf[1024];
+    if (snprintf(buf, sizeof buf, "%s", dir) >= (int)sizeof buf)
+        return fw_fail(err, FW_EINPUT, "%s %s: path too long", what, dir);
+    for (char *p = buf + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            mkdir(buf, 0777);
+            *p = '/';
+        }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+        return fw_fail(err, FW_EINPUT, "%s %s: cannot create the directory: %s", what, dir,
+                       strerror(errno));
+    struct stat sb;
+    if (stat(buf, &sb) != 0 || !S_ISDIR(sb.st_mode))
+        return fw_fail(err, FW_EINPUT, "%s %s: not a directory", what, dir);
+    return FW_OK;
+}

@@ -1,0 +1,15 @@
+/* files.h - the few file-system operations several commands share. */
+#ifndef FW_FILES_H
+#define FW_FILES_H
+
+#include "core/error.h"
+
+/* Removes path and everything under it (no symlinks followed); quiet when it
+ * does not exist. */
+void fw_remove_tree(const char *path);
+
+/* Creates dir and its missing parents; an existing directory is fine.
+ * what names the option or field in the error ("--out"). */
+fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err);
+
+#endif
