@@ -12,6 +12,9 @@
  * centre; fairway by the hull centre (midship, Loa/2 abaft the bow):
  * fw_traffic_to_sumo / fw_traffic_from_sumo are the one conversion.
  *
+ * The own ship is kept off SUMO's lanes, so SUMO's ships never react to it:
+ * they keep their lanes and speeds, and all avoidance is the own ship's.
+ *
  * libsumo holds one simulation per process and is not thread-safe: at most one
  * embedded fw_traffic may be open in a process at a time.
  */
