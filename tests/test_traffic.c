@@ -172,9 +172,76 @@ static fw_status write_channel_demand(fw_traffic_def *d, fw_network_files *nf, c
     d->add_file = nf->types;
     d->seed = 7;
     d->radius = 3000.0; /* small enough that ships are both in and out of range */
+    d->area_radius = 4000.0; /* wider: the subscription grows, around must filter */
     d->own_length = 180.0;
     d->own_width = 30.0;
     return FW_OK;
+}
+
+/* The area query against the getters: every ship whose hull centre is within
+ * area_r of the own ship's (x, y), the own ship as placed, sorted by id. */
+static void check_area(const fw_traffic_ship *area, int n_area, const fw_traffic_ship *all,
+                       int n_all, double x, double y, double psi, int k, int counts[3])
+{
+    const double area_r = 4000.0;
+    int expected = 0, owns = 0;
+    for (int j = 1; j < n_area; j++)
+        CHECK_MSG(strcmp(area[j - 1].id, area[j].id) < 0, "step %d: area not sorted by id", k);
+    for (int j = 0; j < n_area; j++) {
+        if (!area[j].own)
+            continue;
+        owns++;
+        CHECK(strcmp(area[j].id, "own") == 0);
+        CHECK(strcmp(area[j].type, FW_TRAFFIC_OWN_TYPE) == 0);
+        CHECK_NEAR(area[j].x, x, 1e-9);
+        CHECK_NEAR(area[j].y, y, 1e-9);
+        CHECK_NEAR(fw_wrap_pi(area[j].heading - psi), 0.0, 1e-12);
+        CHECK_NEAR(area[j].speed, 6.0, 1e-12);
+        CHECK_NEAR(area[j].length, 180.0, 1e-12);
+        CHECK_NEAR(area[j].width, 30.0, 1e-12);
+    }
+    CHECK_MSG(owns == 1, "step %d: own ship %d times in the area", k, owns);
+    for (int i = 0; i < n_all; i++) {
+        const fw_traffic_ship *s = &all[i];
+        if (strcmp(s->id, "own") == 0) {
+            CHECK(s->own);
+            continue;
+        }
+        CHECK(!s->own);
+        double d = hypot(s->x - x, s->y - y); /* hull centre to hull centre */
+        int found = -1;
+        for (int j = 0; j < n_area; j++)
+            if (strcmp(area[j].id, s->id) == 0)
+                found = j;
+        if (fabs(d - area_r) < 1e-3) {
+            expected += found >= 0; /* too close to the edge to call */
+            continue;
+        }
+        if (d <= area_r) {
+            expected++;
+            counts[0]++;
+            double fx, fy, a;
+            fw_traffic_to_sumo(s->x, s->y, s->heading, s->length, &fx, &fy, &a);
+            if (hypot(fx - x, fy - y) > area_r)
+                counts[2]++; /* in by its centre, out by its bumper: the widened query */
+            CHECK_MSG(found >= 0, "step %d: %s at %.1f m missing from the area", k, s->id, d);
+            if (found >= 0) {
+                CHECK(!area[found].own);
+                CHECK_NEAR(area[found].x, s->x, 1e-6);
+                CHECK_NEAR(area[found].y, s->y, 1e-6);
+                CHECK_NEAR(area[found].heading, s->heading, 1e-9);
+                CHECK_NEAR(area[found].speed, s->speed, 1e-9);
+                CHECK_NEAR(area[found].length, s->length, 1e-9);
+                CHECK_NEAR(area[found].width, s->width, 1e-9);
+                CHECK(strcmp(area[found].type, s->type) == 0);
+            }
+        } else {
+            counts[1]++;
+            CHECK_MSG(found < 0, "step %d: %s at %.1f m reported in the area", k, s->id, d);
+        }
+    }
+    CHECK_MSG(n_area == expected + 1, "step %d: %d in the area, expected %d + own", k, n_area,
+              expected);
 }
 
 static void run_channel(fw_traffic *t, int check_every)
@@ -182,6 +249,7 @@ static void run_channel(fw_traffic *t, int check_every)
     fw_error err = {0};
     const double radius = 3000.0;
     int in_range = 0, out_range = 0, steps = 0, max_seen = 0;
+    int area_counts[3] = {0, 0, 0}; /* in, out, in by centre only */
     for (int k = 0; k < 600; k++) {
         double x, y, psi;
         own_pose(k, &x, &y, &psi);
@@ -197,15 +265,17 @@ static void run_channel(fw_traffic *t, int check_every)
         CHECK_NEAR(fw_rad_to_deg(fw_wrap_pi(own.heading - psi)), 0.0, 0.01);
         CHECK_NEAR(own.length, 180.0, 1e-9);
         CHECK_NEAR(own.width, 30.0, 1e-9);
-        const fw_traffic_ship *near, *all;
-        int n_near, n_all;
+        const fw_traffic_ship *near, *all, *area;
+        int n_near, n_all, n_area;
         CHECK(fw_traffic_around(t, &near, &n_near, &err) == FW_OK);
+        CHECK(fw_traffic_area(t, &area, &n_area, &err) == FW_OK);
         if (k % check_every)
             continue;
         /* copy: fw_traffic_all reuses the buffer */
         fw_traffic_ship *nc = malloc(sizeof *nc * (size_t)(n_near + 1));
         memcpy(nc, near, sizeof *nc * (size_t)n_near);
         CHECK(fw_traffic_all(t, &all, &n_all, &err) == FW_OK);
+        check_area(area, n_area, all, n_all, x, y, psi, k, area_counts);
         if (n_all > max_seen)
             max_seen = n_all;
         int expected = 0;
@@ -250,6 +320,11 @@ static void run_channel(fw_traffic *t, int check_every)
     CHECK_NEAR(fw_traffic_time(t), 600.0, 1e-9);
     /* the check saw both sides of the radius, and real traffic */
     CHECK_MSG(in_range > 50 && out_range > 50, "in %d, out %d", in_range, out_range);
+    printf("area: %d in, %d out, %d in by the centre only; range: %d in\n", area_counts[0],
+           area_counts[1], area_counts[2], in_range);
+    CHECK_MSG(area_counts[0] > in_range && area_counts[1] > 50 && area_counts[2] > 0,
+              "area: in %d (range %d), out %d, in by the centre only %d", area_counts[0],
+              in_range, area_counts[1], area_counts[2]);
     CHECK_MSG(max_seen > 30, "only %d ships", max_seen);
 }
 

@@ -221,6 +221,14 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     fprintf(f, "%s  \"own_length_m\": %.1f, \"own_breadth_m\": %.1f, \"domain_m\": %.1f, "
                "\"domain_fore_aft_ratio\": %.2f,\n",
             ind, s->own_length, s->own_breadth, s->domain, s->domain_ratio);
+    if (s->survey)
+        fprintf(f, "%s  \"survey\": {\"traffic_ship_s\": %.1f, \"encounters\": %d, \"head_on\": %d, "
+                   "\"overtaking\": %d, \"crossing\": %d, \"with_own\": %d},\n",
+                ind, s->traffic_ship_s, s->n_traffic, s->traffic_by_type[FW_SURVEY_HEAD_ON],
+                s->traffic_by_type[FW_SURVEY_OVERTAKING], s->traffic_by_type[FW_SURVEY_CROSSING],
+                s->n_traffic_own);
+    else
+        fprintf(f, "%s  \"survey\": null,\n", ind);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {
         const fw_encounter *x = &e[i];
@@ -239,6 +247,26 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
                 x->colregs_ok ? "true" : "false");
     }
     fprintf(f, "%s]\n%s}", n ? "\n  " : "", ind);
+}
+
+fw_status fw_records_survey(fw_records *r, const fw_survey_record *rec, int n, fw_error *err)
+{
+    FILE *f = open_in(r->dir, "traffic_encounters.csv", err);
+    if (!f)
+        return FW_ERUN;
+    /* times to the millisecond: steps are whole milliseconds */
+    fprintf(f, "ship_a,ship_b,type,own,t_first_s,range0_m,dcpa0_m,tcpa0_s,min_dist_m,t_min_s,"
+               "length_a_m,breadth_a_m,length_b_m,breadth_b_m\n");
+    for (int i = 0; i < n; i++) {
+        const fw_survey_record *e = &rec[i];
+        fprintf(f, "%s,%s,%s,%d,%.3f,%.1f,%.1f,%.1f,%.1f,%.3f,%.1f,%.1f,%.1f,%.1f\n", e->ship_a,
+                e->ship_b, fw_survey_type_name(e->type), e->own, e->t_first, e->range0, e->dcpa0,
+                e->tcpa0, e->min_dist, e->t_min, e->length_a, e->breadth_a, e->length_b,
+                e->breadth_b);
+    }
+    if (fclose(f) != 0)
+        return fw_fail(err, FW_ERUN, "cannot write %s/traffic_encounters.csv", r->dir);
+    return FW_OK;
 }
 
 fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)

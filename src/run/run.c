@@ -110,7 +110,63 @@ typedef struct loop_state {
     fw_helm_ctx *ctx;
     fw_records *rec;
     double n_prop;
+    fw_survey *sv;              /* NULL: no survey */
+    fw_survey_ship *sships;
+    int scap;
 } loop_state;
+
+/* The survey's step: every ship in the area, the own ship included. */
+static fw_status survey_step(loop_state *L, double t, fw_error *err)
+{
+    const fw_traffic_ship *a;
+    int n;
+    fw_status st = fw_traffic_area(L->tr, &a, &n, err);
+    if (st)
+        return st;
+    if (n > L->scap) {
+        void *p = realloc(L->sships, sizeof *L->sships * (size_t)(2 * n));
+        if (!p)
+            return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
+        L->sships = p;
+        L->scap = 2 * n;
+    }
+    for (int i = 0; i < n; i++)
+        L->sships[i] = (fw_survey_ship){.id = a[i].id, .east = a[i].x, .north = a[i].y,
+                                        .heading = a[i].heading, .speed = a[i].speed,
+                                        .length = a[i].length, .breadth = a[i].width,
+                                        .own = a[i].own};
+    return fw_survey_step(L->sv, t, L->sships, n, err);
+}
+
+/* Survey totals into the summary, its records into the run directory and to
+ * the caller; run.log gets the counts. */
+static fw_status survey_finish(loop_state *L, const fw_run_def *def, fw_run_summary *sum,
+                               fw_error *err)
+{
+    fw_survey_totals tot;
+    fw_survey_finish(L->sv, &tot);
+    sum->survey = true;
+    sum->traffic_ship_s = tot.ship_s;
+    sum->n_traffic = tot.n;
+    for (int k = 0; k < FW_SURVEY_NTYPES; k++)
+        sum->traffic_by_type[k] = tot.by_type[k];
+    sum->n_traffic_own = tot.n_own;
+    fprintf(fw_records_log(L->rec),
+            "survey: %d traffic encounters (%d head-on, %d overtaking, %d crossing; %d with the "
+            "own ship) in %.1f ship-hours\n",
+            tot.n, tot.by_type[FW_SURVEY_HEAD_ON], tot.by_type[FW_SURVEY_OVERTAKING],
+            tot.by_type[FW_SURVEY_CROSSING], tot.n_own, tot.ship_s / 3600.0);
+    int n;
+    const fw_survey_record *r = fw_survey_records(L->sv, &n);
+    if (def->survey_out && n > 0) {
+        *def->survey_out = malloc(sizeof **def->survey_out * (size_t)n);
+        if (!*def->survey_out)
+            return fw_fail(err, FW_ERUN, "out of memory for %d survey records", n);
+        memcpy(*def->survey_out, r, sizeof **def->survey_out * (size_t)n);
+        *def->n_survey_out = n;
+    }
+    return fw_records_survey(L->rec, r, n, err);
+}
 
 static const char *side_word(int side)
 {
@@ -142,6 +198,8 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
         const fw_traffic_ship *raw;
         int n;
         if ((stt = fw_traffic_around(L->tr, &raw, &n, err)))
+            break;
+        if (L->sv && (stt = survey_step(L, t, err)))
             break;
         if (n > cap) {
             cap = n * 2;
@@ -269,6 +327,10 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     sum->domain_ratio = s->helm.domain.fore_aft_ratio;
     *enc = NULL;
     *n_enc = 0;
+    if (def->survey_out) {
+        *def->survey_out = NULL;
+        *def->n_survey_out = 0;
+    }
     loop_state L = {.s = s};
     char sumo[1100], net[1200], routes[2600], slog[1200], nlog[1200], nodes[2400], edges[2400];
     snprintf(sumo, sizeof sumo, "%s/sumo", def->dir);
@@ -336,6 +398,7 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     td.own_width = s->ship.B;
     td.own_edge = tracks ? "fw_own" : NULL;
     td.radius = s->radius;
+    td.area_radius = s->survey ? s->survey_radius : 0.0;
     fw_mmg_state x0 = fw_mmg_straight(s->speed, s->east, s->north, s->course);
     fw_stepper_def sd = fw_default_stepper_def();
     if ((st = fw_records_open(&L.rec, s, def->dir, err)) ||
@@ -343,6 +406,7 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
         (st = fw_stepper_create(&s->ship, &sd, &L.st, err)) ||
         (st = fw_stepper_start(L.st, 0.0, &x0, L.n_prop, err)) ||
         (st = fw_helm_ctx_create(&s->ship, &s->helm, &L.ctx, err)) ||
+        (s->survey && (st = fw_survey_create(&s->survey_def, &L.sv, err))) ||
         (st = fw_traffic_open(&td, &L.tr, err)))
         goto out;
     fprintf(fw_records_log(L.rec),
@@ -363,8 +427,14 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     else
         snprintf(sum->status, sizeof sum->status, "ok");
     {
-        fw_error ferr = {0};
-        fw_status fst = fw_records_finish(L.rec, sum, &ferr);
+        fw_error ferr = {0}, rerr = {0};
+        /* the survey first: summary.json carries its totals */
+        fw_status fst = L.sv ? survey_finish(&L, def, sum, &ferr) : FW_OK;
+        fw_status rst = fw_records_finish(L.rec, sum, &rerr);
+        if (!fst && rst) {
+            fst = rst;
+            ferr = rerr;
+        }
         if (!st && fst) {
             st = fst;
             if (err)
@@ -381,6 +451,8 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     }
 out:
     fw_traffic_close(L.tr);
+    fw_survey_destroy(L.sv);
+    free(L.sships);
     sum->wall_s = now_s() - wall0;
     fw_helm_ctx_destroy(L.ctx);
     fw_stepper_destroy(L.st);

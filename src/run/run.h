@@ -7,6 +7,9 @@
  *   advance             helm order to the MMG stepper, integrate dt
  *   place               the own ship moved in SUMO (moveToXY)
  *   records             time histories and the per-target encounter book
+ *   survey              (scenario survey: section) every ship within the survey
+ *                       radius, the own ship included, to fw_survey_step: the
+ *                       encounters among all ships, by type
  *
  * Explicit targets become SUMO vehicles on a run-specific network: one straight
  * one-lane edge along each target's track (and one along the own ship's planned
@@ -20,6 +23,7 @@
  *   own.csv         t, east, north, heading, u, v, r, rudder, helm order, propeller, mode
  *   targets.csv     t, id, east, north, heading, speed, range, bearing (outputs.targets_csv)
  *   encounters.csv  one row per target met
+ *   traffic_encounters.csv  one row per pair episode of the survey (only with one)
  *   summary.json    the run's measures and the encounter rows
  *   run.log         decisions and mode changes
  *   sumo/           the generated network, routes and SUMO's messages
@@ -34,6 +38,7 @@
 #include "core/error.h"
 #include "dynamics/mmg.h"
 #include "scenario/scenario.h"
+#include "survey/survey.h"
 #include "traffic/traffic.h"
 
 /* What the encounter book keeps per target. */
@@ -88,12 +93,24 @@ typedef struct fw_run_summary {
     double wall_s, sumo_s;
     double own_length, own_breadth; /* m, hull outline (for plots) */
     double domain, domain_ratio;    /* m, transverse semi-axis; fore-aft / transverse */
+    /* The traffic survey (all zero without one). */
+    bool survey;
+    double traffic_ship_s;          /* ship-seconds in the survey area */
+    int n_traffic;                  /* traffic encounters (pair episodes) */
+    int traffic_by_type[FW_SURVEY_NTYPES]; /* indexed by fw_survey_type */
+    int n_traffic_own;              /* of which with the own ship */
 } fw_run_summary;
 
 typedef struct fw_run_def {
     const fw_scenario *scenario;
     const char *dir;          /* the run directory (created by the caller) */
     fw_traffic_mode mode;     /* SUMO back end */
+    /* Optional: the survey's records, sorted by (t_first, ship_a, ship_b), as
+     * a malloc'd array the caller frees.  NULL = not wanted.  Set (to NULL,
+     * 0 when the scenario has no survey) whenever fw_run_scenario returns,
+     * also after a failure part way (the records up to then). */
+    fw_survey_record **survey_out;
+    int *n_survey_out;
 } fw_run_def;
 
 fw_run_def fw_default_run_def(void);
@@ -120,6 +137,8 @@ void fw_records_action(fw_records *r, double t, int side, double helm, const cha
                        const char *const *threat_ids, const fw_assessment *const *threat_as,
                        int n_threats);
 fw_encounter *fw_records_encounters(fw_records *r, int *n);
+/* traffic_encounters.csv: the survey's records. */
+fw_status fw_records_survey(fw_records *r, const fw_survey_record *rec, int n, fw_error *err);
 fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err);
 
 /* summary.json of one run (also used for the --json output). */

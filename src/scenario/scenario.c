@@ -238,6 +238,32 @@ static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scena
     return FW_OK;
 }
 
+static fw_status load_survey(const yt_doc *doc, const yt_node *root, fw_scenario *s,
+                             fw_error *err)
+{
+    static const char *const keys[] = {"radius_nm", "range_m", "dcpa_m", "tcpa_s",
+                                       "hysteresis_m", NULL};
+    const yt_node *v = NULL;
+    fw_status st;
+    if ((st = yt_opt_map(doc, root, "", "survey", &v, err)))
+        return st;
+    if (!v)
+        return FW_OK; /* no section: no survey */
+    fw_survey_def *d = &s->survey_def;
+    double radius = fw_m_to_nm(s->survey_radius);
+    const char *P = "survey";
+    if ((st = yt_check_keys(doc, v, P, keys, err)) ||
+        (st = yt_opt_number(doc, v, P, "radius_nm", 0.5, 50, &radius, err)) ||
+        (st = yt_opt_number(doc, v, P, "range_m", 10, 20000, &d->range, err)) ||
+        (st = yt_opt_number(doc, v, P, "dcpa_m", 1, 20000, &d->dcpa, err)) ||
+        (st = yt_opt_number(doc, v, P, "tcpa_s", 1, 7200, &d->tcpa, err)) ||
+        (st = yt_opt_number(doc, v, P, "hysteresis_m", 0, 20000, &d->hysteresis, err)))
+        return st;
+    s->survey = true;
+    s->survey_radius = fw_nm_to_m(radius);
+    return FW_OK;
+}
+
 static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"duration_s", "step_s", "seed", NULL};
@@ -276,13 +302,15 @@ static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"name", "description", "own_ship", "traffic",
-                                       "avoidance", "run", "outputs", NULL};
+                                       "avoidance", "survey", "run", "outputs", NULL};
     memset(s, 0, sizeof *s);
     snprintf(s->file, sizeof s->file, "%s", path);
     s->density = 1.0;
     s->helm = fw_default_helm_def();
     s->policy = fw_default_policy_def();
     s->radius = fw_nm_to_m(8.0); /* Imazu targets start 6 nm off: see them from the start */
+    s->survey_radius = fw_nm_to_m(6.0);
+    s->survey_def = fw_default_survey_def();
     s->step = 1.0;
     s->seed = 1;
     s->targets_csv = true;
@@ -308,7 +336,8 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
         goto out;
     }
     if ((st = load_own(doc, root, s, err)) || (st = load_traffic(doc, root, s, err)) ||
-        (st = load_avoidance(doc, root, s, err)) || (st = load_run(doc, root, s, err)))
+        (st = load_avoidance(doc, root, s, err)) || (st = load_survey(doc, root, s, err)) ||
+        (st = load_run(doc, root, s, err)))
         goto out;
 out:
     yt_free(doc);

@@ -2,8 +2,9 @@
  *
  * A scenario names the own ship (ship file, start, course, speed, leg), the
  * traffic (a network from networks/ with a demand density, and/or explicit
- * target ships), the avoidance settings, the run (duration, step, seed) and
- * the outputs.  Everything is validated at load time, so a run never starts
+ * target ships), the avoidance settings, optionally a traffic survey (the
+ * encounters among all ships around the own ship), the run (duration, step,
+ * seed) and the outputs.  Everything is validated at load time, so a run never starts
  * (and never creates an output directory) from a bad file: errors are
  * "FILE:LINE: FIELD: problem" with status FW_EINPUT.
  *
@@ -18,6 +19,7 @@
 #include "avoid/policy.h"
 #include "core/error.h"
 #include "ship/ship.h"
+#include "survey/survey.h"
 
 #define FW_SCN_MAX_TARGETS 32
 
@@ -51,6 +53,10 @@ typedef struct fw_scenario {
     fw_helm_def helm;
     fw_policy_def policy;
     double radius;       /* m, range within which targets are seen */
+    /* traffic-level survey (src/survey): every pair of ships in the area */
+    bool survey;         /* the file has a survey: section */
+    double survey_radius;/* m, area around the own ship's hull centre */
+    fw_survey_def survey_def;
     /* run */
     double duration;     /* s */
     double step;         /* s */

@@ -21,10 +21,22 @@ struct fw_traffic {
     pid_t child; /* sumo-gui started here, or 0 */
     bool placed, dead;
     double time;
-    fw_sumo_list raw;
+    long steps;
+    double query_radius;   /* m, of the context subscription */
+    double own_x, own_y, own_heading, own_speed; /* as last placed: the query's centre */
+    fw_sumo_list raw;      /* fw_traffic_all */
+    fw_sumo_list ctx;      /* the context results of step ctx_step */
+    long ctx_step;
     fw_traffic_ship *ships;
     int ships_cap;
+    fw_traffic_ship *area;
+    int area_cap;
 };
+
+/* m, half the length of the longest ship there is (a 400 m ULCV, with room):
+ * a ship whose hull centre is within the area has its front bumper, SUMO's
+ * position, within area_radius + this. */
+static const double kHalfLengthMax = 500.0;
 
 static bool embedded_open = false; /* libsumo: one simulation per process */
 
@@ -160,6 +172,9 @@ static fw_status check_def(const fw_traffic_def *d, fw_error *err)
         return fw_fail(err, FW_EINPUT, "traffic step %g s: must be in (0, 60]", d->step);
     if (!(d->radius > 0.0 && isfinite(d->radius)))
         return fw_fail(err, FW_EINPUT, "traffic radius %g m: must be positive", d->radius);
+    if (!(d->area_radius >= 0.0 && isfinite(d->area_radius)))
+        return fw_fail(err, FW_EINPUT, "traffic area radius %g m: must be 0 (none) or positive",
+                       d->area_radius);
     if (!(d->own_length > 0.0 && d->own_width > 0.0))
         return fw_fail(err, FW_EINPUT, "own ship %g x %g m: length and width must be positive",
                        d->own_length, d->own_width);
@@ -278,8 +293,13 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
         return fw_fail(err, FW_EINPUT, "SUMO's step length is %g s, the controller's %g s",
                        dt, def->step);
     }
+    /* one subscription serves both queries */
+    t->query_radius = def->radius;
+    if (def->area_radius > 0.0)
+        t->query_radius = fmax(def->radius, def->area_radius + kHalfLengthMax);
+    t->ctx_step = -1;
     if ((st = t->be->add_own(t->own_id, def->own_length, def->own_width, def->own_edge,
-                             def->radius, err))) {
+                             t->query_radius, err))) {
         fw_traffic_close(t);
         return st;
     }
@@ -299,7 +319,9 @@ void fw_traffic_close(fw_traffic *t)
     if (t->child > 0)
         fw_traffic_stop_child(t->child);
     free(t->raw.v);
+    free(t->ctx.v);
     free(t->ships);
+    free(t->area);
     free(t);
 }
 
@@ -313,7 +335,8 @@ static fw_status alive(const fw_traffic *t, fw_error *err)
 fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, double speed,
                            fw_error *err)
 {
-    (void)speed; /* SUMO derives the own ship's speed from the distance moved */
+    /* SUMO derives the own ship's speed from the distance moved; the given
+     * speed is kept for fw_traffic_area only */
     if (alive(t, err))
         return FW_ERUN;
     if (!isfinite(x) || !isfinite(y) || !isfinite(heading))
@@ -321,10 +344,15 @@ fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, do
     double fx, fy, a;
     fw_traffic_to_sumo(x, y, heading, t->def.own_length, &fx, &fy, &a);
     fw_status st = t->be->place(t->own_id, fx, fy, a, x, y, err);
-    if (st)
+    if (st) {
         t->dead = true;
-    else
+    } else {
         t->placed = true;
+        t->own_x = x;
+        t->own_y = y;
+        t->own_heading = fw_wrap_2pi(heading);
+        t->own_speed = speed;
+    }
     return st;
 }
 
@@ -337,35 +365,58 @@ fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
     fw_status st = t->be->step(&t->time, err);
     if (st)
         t->dead = true;
+    else
+        t->steps++;
     return st;
 }
 
 double fw_traffic_time(const fw_traffic *t) { return t->time; }
 
 /* Raw SUMO values to fairway's frame: the one place this happens. */
+static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_traffic_ship *s)
+{
+    memcpy(s->id, r->id, sizeof s->id);
+    memcpy(s->type, r->type, sizeof s->type);
+    fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->x, &s->y, &s->heading);
+    s->speed = r->speed;
+    s->length = r->length;
+    s->width = r->width;
+    s->own = strcmp(r->id, own_id) == 0;
+}
+
+static fw_status room(fw_traffic_ship **v, int *cap, int n, fw_error *err)
+{
+    if (n <= *cap)
+        return FW_OK;
+    void *p = realloc(*v, sizeof **v * (size_t)(2 * n));
+    if (!p)
+        return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
+    *v = p;
+    *cap = 2 * n;
+    return FW_OK;
+}
+
 static fw_status convert(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
 {
-    if (t->raw.n > t->ships_cap) {
-        int cap = t->raw.n * 2;
-        void *p = realloc(t->ships, sizeof *t->ships * (size_t)cap);
-        if (!p)
-            return fw_fail(err, FW_ERUN, "out of memory for %d ships", t->raw.n);
-        t->ships = p;
-        t->ships_cap = cap;
-    }
-    for (int i = 0; i < t->raw.n; i++) {
-        const fw_sumo_raw *r = &t->raw.v[i];
-        fw_traffic_ship *s = &t->ships[i];
-        memcpy(s->id, r->id, sizeof s->id);
-        memcpy(s->type, r->type, sizeof s->type);
-        fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->x, &s->y, &s->heading);
-        s->speed = r->speed;
-        s->length = r->length;
-        s->width = r->width;
-    }
+    fw_status st = room(&t->ships, &t->ships_cap, t->raw.n, err);
+    if (st)
+        return st;
+    for (int i = 0; i < t->raw.n; i++)
+        convert_one(&t->raw.v[i], t->own_id, &t->ships[i]);
     *ships = t->ships;
     *n = t->raw.n;
     return FW_OK;
+}
+
+/* The context results of the last step, asked of SUMO once per step. */
+static fw_status context(fw_traffic *t, fw_error *err)
+{
+    if (t->ctx_step == t->steps)
+        return FW_OK;
+    fw_status st = t->be->context(&t->ctx, err);
+    if (!st)
+        t->ctx_step = t->steps;
+    return st;
 }
 
 fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
@@ -373,8 +424,68 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n
     *n = 0;
     if (alive(t, err))
         return FW_ERUN;
-    fw_status st = t->be->context(&t->raw, err);
-    return st ? st : convert(t, ships, n, err);
+    fw_status st = context(t, err);
+    if (!st)
+        st = room(&t->ships, &t->ships_cap, t->ctx.n, err);
+    if (st)
+        return st;
+    /* a subscription widened for the area holds more than SUMO's range test
+     * would give: apply that test (front bumper within radius) here */
+    bool filter = t->query_radius > t->def.radius;
+    int m = 0;
+    for (int i = 0; i < t->ctx.n; i++) {
+        const fw_sumo_raw *r = &t->ctx.v[i];
+        if (filter && hypot(r->x - t->own_x, r->y - t->own_y) > t->def.radius)
+            continue;
+        convert_one(r, t->own_id, &t->ships[m++]);
+    }
+    *ships = t->ships;
+    *n = m;
+    return FW_OK;
+}
+
+static int cmp_id(const void *a, const void *b)
+{
+    return strcmp(((const fw_traffic_ship *)a)->id, ((const fw_traffic_ship *)b)->id);
+}
+
+fw_status fw_traffic_area(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    if (alive(t, err))
+        return FW_ERUN;
+    if (!(t->def.area_radius > 0.0))
+        return fw_fail(err, FW_ERUN, "no area query: the traffic def has no area_radius");
+    if (!t->placed)
+        return fw_fail(err, FW_ERUN, "no area before the own ship is placed");
+    fw_status st = context(t, err);
+    if (!st)
+        st = room(&t->area, &t->area_cap, t->ctx.n + 1, err);
+    if (st)
+        return st;
+    int m = 0;
+    for (int i = 0; i < t->ctx.n; i++) {
+        fw_traffic_ship *s = &t->area[m];
+        convert_one(&t->ctx.v[i], t->own_id, s);
+        if (!s->own && hypot(s->x - t->own_x, s->y - t->own_y) <= t->def.area_radius)
+            m++;
+    }
+    /* the own ship as placed: SUMO may not list a vehicle moved off its lanes */
+    fw_traffic_ship *o = &t->area[m++];
+    memset(o, 0, sizeof *o);
+    snprintf(o->id, sizeof o->id, "%s", t->own_id);
+    snprintf(o->type, sizeof o->type, "%s", FW_TRAFFIC_OWN_TYPE);
+    o->x = t->own_x;
+    o->y = t->own_y;
+    o->heading = t->own_heading;
+    o->speed = t->own_speed;
+    o->length = t->def.own_length;
+    o->width = t->def.own_width;
+    o->own = true;
+    qsort(t->area, (size_t)m, sizeof *t->area, cmp_id);
+    *ships = t->area;
+    *n = m;
+    return FW_OK;
 }
 
 fw_status fw_traffic_all(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
@@ -394,11 +505,6 @@ fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_traffic_ship *ship, f
     fw_status st = t->be->get(id, &r, err);
     if (st)
         return st;
-    memcpy(ship->id, r.id, sizeof ship->id);
-    memcpy(ship->type, r.type, sizeof ship->type);
-    fw_traffic_from_sumo(r.x, r.y, r.angle_deg, r.length, &ship->x, &ship->y, &ship->heading);
-    ship->speed = r.speed;
-    ship->length = r.length;
-    ship->width = r.width;
+    convert_one(&r, t->own_id, ship);
     return FW_OK;
 }

@@ -57,11 +57,12 @@ typedef struct fw_traffic_def {
     double own_length;       /* m, Loa */
     double own_width;        /* m, B */
     const char *own_edge;    /* NULL: the first edge that allows ships */
-    /* The query. */
-    double radius;           /* m, around the own ship's hull centre */
+    /* The queries. */
+    double radius;           /* m, fw_traffic_around: own hull centre to front bumpers (SUMO) */
+    double area_radius;      /* m, fw_traffic_area: hull centre to hull centre; 0 = no area */
 } fw_traffic_def;
 
-/* embedded, step 1 s, seed 1, radius 6 nm, own ship "own" 100 x 16 m. */
+/* embedded, step 1 s, seed 1, radius 6 nm, no area, own ship "own" 100 x 16 m. */
 fw_traffic_def fw_default_traffic_def(void);
 
 /* One ship as fairway sees it. */
@@ -73,6 +74,7 @@ typedef struct fw_traffic_ship {
     double speed;   /* m/s */
     double length;  /* m */
     double width;   /* m */
+    bool own;       /* the own ship (only fw_traffic_area and fw_traffic_all list it) */
 } fw_traffic_ship;
 
 /* Hull centre and heading <-> SUMO front bumper and angle (degrees). */
@@ -83,8 +85,13 @@ void fw_traffic_from_sumo(double fx, double fy, double angle_deg, double length,
 
 typedef struct fw_traffic fw_traffic;
 
+/* The SUMO vehicle type of the own ship. */
+#define FW_TRAFFIC_OWN_TYPE "fw_own_type"
+
 /* Starts or connects to SUMO, adds the own ship's type, route and vehicle and
- * the range query.  Call fw_traffic_place before the first step. */
+ * the range query: one context subscription of radius max(radius, area_radius
+ * + the half length of the longest ship), which both queries filter.  Call
+ * fw_traffic_place before the first step. */
 fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error *err);
 /* Ends the simulation (or the connection), stops a sumo-gui started here and
  * frees t.  Safe on NULL and after errors. */
@@ -99,6 +106,13 @@ fw_status fw_traffic_step(fw_traffic *t, fw_error *err);
  * excluded.  *ships points into t and stays valid until the next step. */
 fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n,
                             fw_error *err);
+/* Every ship whose hull centre is within area_radius of the own ship's hull
+ * centre after the last step, the own ship included (flagged own, as placed:
+ * position, heading, the speed given to fw_traffic_place, type
+ * FW_TRAFFIC_OWN_TYPE), sorted by id.  The same context results as
+ * fw_traffic_around (one query per step); *ships points into t and stays
+ * valid until the next step.  FW_ERUN if the def has no area_radius. */
+fw_status fw_traffic_area(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err);
 double fw_traffic_time(const fw_traffic *t); /* s, SUMO time after the last step */
 
 /* For checks, not for the step loop (one SUMO call per ship and variable):

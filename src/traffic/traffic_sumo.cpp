@@ -27,12 +27,13 @@ namespace S = libsumo;
 
 extern "C" {
 #include "traffic/backend.h"
+#include "traffic/traffic.h"
 }
 
 namespace {
 
 // Ids of what fairway adds to SUMO next to the own vehicle.
-const char *const kOwnType = "fw_own_type";
+const char *const kOwnType = FW_TRAFFIC_OWN_TYPE;
 const char *const kOwnRoute = "fw_own_route";
 const char *const kRangePoi = "fw_own_range";
 
