@@ -32,7 +32,7 @@ static const char *side_name(int side)
 
 fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
                               const fw_run_summary *sum, const fw_encounter *e, int n,
-                              fw_error *err)
+                              const fw_survey_record *sv, int n_sv, fw_error *err)
 {
     memset(o, 0, sizeof *o);
     o->run_id = run_id;
@@ -52,9 +52,29 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
     o->rudder_work_deg_s = fw_rad_to_deg(sum->rudder_work);
     o->helm_orders = sum->helm_orders;
     o->near_miss = isfinite(sum->min_dist) && sum->min_dist < s->near_miss;
-    o->enc = n > 0 ? calloc((size_t)n, sizeof *o->enc) : NULL;
-    if (n > 0 && !o->enc)
+    o->traffic_ship_s = sum->survey ? sum->traffic_ship_s : NAN;
+    o->traffic = n_sv > 0 ? calloc((size_t)n_sv, sizeof *o->traffic) : NULL;
+    if (n_sv > 0 && !o->traffic)
         return fw_fail(err, FW_ERUN, "out of memory");
+    o->n_traffic = n_sv;
+    for (int i = 0; i < n_sv; i++) {
+        fw_outcome_traffic *y = &o->traffic[i];
+        snprintf(y->ship_a, sizeof y->ship_a, "%s", sv[i].ship_a);
+        snprintf(y->ship_b, sizeof y->ship_b, "%s", sv[i].ship_b);
+        snprintf(y->type, sizeof y->type, "%s", fw_survey_type_name(sv[i].type));
+        y->own = sv[i].own;
+        y->t_first = sv[i].t_first;
+        y->range0 = sv[i].range0;
+        y->dcpa0 = sv[i].dcpa0;
+        y->tcpa0 = sv[i].tcpa0;
+        y->min_dist = sv[i].min_dist;
+        y->t_min = sv[i].t_min;
+    }
+    o->enc = n > 0 ? calloc((size_t)n, sizeof *o->enc) : NULL;
+    if (n > 0 && !o->enc) {
+        fw_outcome_free(o);
+        return fw_fail(err, FW_ERUN, "out of memory");
+    }
     for (int i = 0; i < n; i++) {
         const fw_encounter *x = &e[i];
         if (!(x->min_dist < s->encounter_range || x->threat))

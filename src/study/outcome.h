@@ -49,10 +49,10 @@ typedef struct fw_outcome {
 
 /* A failed run: status "failed" and the reason. */
 void fw_outcome_failed(fw_outcome *o, int run_id, const char *reason);
-/* From a finished run's summary and encounter book. */
+/* From a finished run's summary, encounter book and survey records. */
 fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
                               const fw_run_summary *sum, const fw_encounter *e, int n,
-                              fw_error *err);
+                              const fw_survey_record *sv, int n_sv, fw_error *err);
 void fw_outcome_free(fw_outcome *o);
 
 /* Bytes and back.  Both ends are the same fairway build. */

@@ -98,6 +98,13 @@ static fw_status write_meta(fw_store *st, const fw_study *s, const char *digest,
     PUTNUM("encounter_m", "%.3f", s->encounter_range);
     PUTNUM("near_miss_m", "%.3f", s->near_miss);
     PUTNUM("runs", "%d", fw_study_run_count(s));
+    PUTNUM("survey", "%d", s->base.survey ? 1 : 0);
+    if (s->base.survey) {
+        PUTNUM("survey_radius_m", "%.1f", s->base.survey_radius);
+        PUTNUM("survey_range_m", "%.1f", s->base.survey_def.range);
+        PUTNUM("survey_dcpa_m", "%.1f", s->base.survey_def.dcpa);
+        PUTNUM("survey_tcpa_s", "%.1f", s->base.survey_def.tcpa);
+    }
 #undef PUTNUM
     return FW_OK;
 }

@@ -69,15 +69,19 @@ void fw_sweep_exec(const fw_study *s, int run_id, const char *work_dir, bool kee
     d.mode = *mode;
     fw_run_summary sum;
     fw_encounter *e = NULL;
-    int n = 0;
+    fw_survey_record *sv = NULL;
+    int n = 0, n_sv = 0;
+    d.survey_out = &sv;
+    d.n_survey_out = &n_sv;
     fw_status st = fw_run_scenario(&d, &sum, &e, &n, &err);
     if (st)
         fw_outcome_failed(out, run_id, err.msg);
     else if (!summary_finite(&sum))
         fw_outcome_failed(out, run_id, "the run produced a NaN or infinite measure");
-    else if ((st = fw_outcome_from_run(out, s, run_id, &sum, e, n, &err)))
+    else if ((st = fw_outcome_from_run(out, s, run_id, &sum, e, n, sv, n_sv, &err)))
         fw_outcome_failed(out, run_id, err.msg);
     free(e);
+    free(sv);
     free(scn);
     if (!keep)
         fw_remove_tree(dir);
