@@ -17,6 +17,11 @@ struct fw_records {
     FILE *own, *tgt, *log;
     fw_encounter *e;
     int n, cap;
+    /* id -> index into e: open addressing, -1 empty, at most half full.  A
+     * heavy-traffic hour meets hundreds of ships and every step looks up
+     * each one in range. */
+    int *slot;
+    unsigned nslot;
 };
 
 static FILE *open_in(const char *dir, const char *name, fw_error *err)
@@ -59,6 +64,7 @@ void fw_records_close(fw_records *r)
     if (r->log)
         fclose(r->log);
     free(r->e);
+    free(r->slot);
     free(r);
 }
 
@@ -72,12 +78,48 @@ void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm,
             fw_rad_to_deg(helm), n, mode);
 }
 
+static unsigned id_hash(const char *id)
+{
+    unsigned h = 2166136261u;
+    for (; *id; id++)
+        h = (h ^ (unsigned char)*id) * 16777619u;
+    return h;
+}
+
 static fw_encounter *find(fw_records *r, const char *id)
 {
-    for (int i = 0; i < r->n; i++)
-        if (strcmp(r->e[i].id, id) == 0)
-            return &r->e[i];
-    return NULL;
+    if (!r->nslot)
+        return NULL;
+    for (unsigned k = id_hash(id) & (r->nslot - 1);; k = (k + 1) & (r->nslot - 1)) {
+        if (r->slot[k] < 0)
+            return NULL;
+        if (strcmp(r->e[r->slot[k]].id, id) == 0)
+            return &r->e[r->slot[k]];
+    }
+}
+
+/* Indexes e[i]; grows the table first when it would pass half full. */
+static bool index_add(fw_records *r, int i)
+{
+    if (2u * (unsigned)(r->n + 1) > r->nslot) {
+        unsigned ns = r->nslot ? 2 * r->nslot : 64;
+        int *sl = malloc(sizeof *sl * ns);
+        if (!sl)
+            return false;
+        for (unsigned k = 0; k < ns; k++)
+            sl[k] = -1;
+        free(r->slot);
+        r->slot = sl;
+        r->nslot = ns;
+        for (int j = 0; j < r->n; j++)
+            if (j != i)
+                index_add(r, j);
+    }
+    unsigned k = id_hash(r->e[i].id) & (r->nslot - 1);
+    while (r->slot[k] >= 0)
+        k = (k + 1) & (r->nslot - 1);
+    r->slot[k] = i;
+    return true;
 }
 
 /* COLREGs reading of a first action (see fw_records_finish for no action). */
@@ -106,9 +148,12 @@ void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts, const
             r->e = ne;
             r->cap = cap;
         }
-        e = &r->e[r->n++];
+        e = &r->e[r->n];
         memset(e, 0, sizeof *e);
         snprintf(e->id, sizeof e->id, "%s", ts->id);
+        if (!index_add(r, r->n))
+            return;
+        r->n++;
         snprintf(e->type, sizeof e->type, "%s", ts->type);
         /* an explicit target: the scenario's label, not the generated vType id */
         for (int i = 0; i < r->s->n_targets; i++)
@@ -145,8 +190,11 @@ void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts, const
         e->min_lambda = lam;
     if (lam < 1.0)
         e->domain_entered = true;
-    if (fw_hulls_overlap(own->east, own->north, own->psi, r->s->ship.Loa, r->s->ship.B, ts->x,
-                         ts->y, ts->heading, ts->length, ts->width))
+    /* hulls can only touch within half the sum of their diagonals */
+    double reach = 0.5 * (hypot(r->s->ship.Loa, r->s->ship.B) + hypot(ts->length, ts->width));
+    if (d <= reach && fw_hulls_overlap(own->east, own->north, own->psi, r->s->ship.Loa,
+                                       r->s->ship.B, ts->x, ts->y, ts->heading, ts->length,
+                                       ts->width))
         e->collision = true;
     if (record_row && r->tgt)
         fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s\n", t, ts->id, ts->x,
