@@ -18,6 +18,7 @@ static const command commands[] = {
     {"helm", fw_cmd_helm, "one avoidance decision (Nomoto helm search) for an own ship and targets"},
     {"traffic", fw_cmd_traffic, "run SUMO background traffic around a straight-running own ship"},
     {"run", fw_cmd_run, "run scenarios: SUMO traffic, MMG own ship, avoidance, full records"},
+    {"report", fw_cmd_report, "statistics, tables, plots and a summary of a study database"},
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
 };
 
