@@ -1,0 +1,185 @@
+/* report_csv.c - the report's tables, one CSV per question.
+ *
+ *   runs.csv       one row per finished run: every per-run measure (the raw
+ *                  material of all the others, for checking and re-analysis)
+ *   summary.csv    own-ship measures per (density, domain): mean, 95% interval
+ *   traffic.csv    traffic-level encounters per 1000 ship-hours by type
+ *   paired.csv     differences from the reference domain, same replications
+ *   cpa.csv        pooled CPA percentiles per setting and encounter type
+ *   cpa_hist.csv   CPA histograms on one set of bins per own/traffic
+ *
+ * Long format (one row per setting and measure) so a new measure is a new
+ * row, not a new column.  A missing number is an empty field.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "study/report_data.h"
+
+typedef struct csv {
+    FILE *f;
+    char path[1100];
+} csv;
+
+static fw_status csv_open(csv *c, const char *dir, const char *name, const char *header,
+                          fw_error *err)
+{
+    snprintf(c->path, sizeof c->path, "%s/%s", dir, name);
+    c->f = fopen(c->path, "w");
+    if (!c->f)
+        return fw_fail(err, FW_ERUN, "cannot create %s", c->path);
+    fprintf(c->f, "%s\n", header);
+    return FW_OK;
+}
+
+static fw_status csv_close(csv *c, fw_error *err)
+{
+    int bad = ferror(c->f);
+    if (fclose(c->f) != 0 || bad)
+        return fw_fail(err, FW_ERUN, "cannot write %s", c->path);
+    return FW_OK;
+}
+
+/* ",x" to 12 significant digits, well past any interval's width; "," for NaN. */
+static void num(FILE *f, double x)
+{
+    if (isnan(x))
+        fputc(',', f);
+    else
+        fprintf(f, ",%.12g", x);
+}
+
+static void estimate(FILE *f, const fw_estimate *e)
+{
+    fprintf(f, ",%d", e->n);
+    num(f, e->mean);
+    num(f, e->sd);
+    num(f, e->lo);
+    num(f, e->hi);
+}
+
+static fw_status write_runs(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    csv c;
+    char header[2048];
+    int k = snprintf(header, sizeof header, "run_id,density,domain_m,replication,seed,sim_h");
+    for (int m = 0; m < FW_NMEASURES && k < (int)sizeof header; m++)
+        k += snprintf(header + k, sizeof header - (size_t)k, ",%s", fw_measures[m].name);
+    if (csv_open(&c, dir, "runs.csv", header, err))
+        return err->status;
+    for (int i = 0; i < rep->n_runs; i++) {
+        const fw_rep_run *r = &rep->runs[i];
+        fprintf(c.f, "%lld,%.12g,%.12g,%d,%lld", r->run_id, r->density, r->domain, r->replication,
+                r->seed);
+        num(c.f, r->sim_s / 3600.0);
+        for (int m = 0; m < FW_NMEASURES; m++)
+            num(c.f, r->m[m]);
+        fputc('\n', c.f);
+    }
+    return csv_close(&c, err);
+}
+
+static fw_status write_summary(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    csv c;
+    if (csv_open(&c, dir, "summary.csv", "density,domain_m,measure,n,mean,sd,ci_low,ci_high", err))
+        return err->status;
+    for (int g = 0; g < rep->n_groups; g++)
+        for (int m = 0; m < FW_NMEASURES; m++) {
+            if (fw_measures[m].traffic)
+                continue;
+            const fw_rep_group *G = &rep->groups[g];
+            fprintf(c.f, "%.12g,%.12g,%s", G->density, G->domain, fw_measures[m].name);
+            estimate(c.f, &G->est[m]);
+            fputc('\n', c.f);
+        }
+    return csv_close(&c, err);
+}
+
+static fw_status write_traffic(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    csv c;
+    if (csv_open(&c, dir, "traffic.csv",
+                 "density,domain_m,type,n,encounters,traffic_ship_h,mean_per_1000_ship_h,sd,"
+                 "ci_low,ci_high",
+                 err))
+        return err->status;
+    for (int g = 0; g < rep->n_groups; g++)
+        for (int t = 0; t < FW_REP_NTYPE; t++) {
+            const fw_rep_group *G = &rep->groups[g];
+            const fw_estimate *e = &G->est[FW_M_TRAFFIC_ALL + t];
+            fprintf(c.f, "%.12g,%.12g,%s,%d,%lld", G->density, G->domain, fw_rep_type_names[t],
+                    e->n, G->traffic_count[t]);
+            num(c.f, G->traffic_ship_s / 3600.0);
+            num(c.f, e->mean);
+            num(c.f, e->sd);
+            num(c.f, e->lo);
+            num(c.f, e->hi);
+            fputc('\n', c.f);
+        }
+    return csv_close(&c, err);
+}
+
+static fw_status write_paired(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    csv c;
+    if (csv_open(&c, dir, "paired.csv",
+                 "density,domain_m,reference_m,measure,n,mean,sd,ci_low,ci_high,significant", err))
+        return err->status;
+    for (int i = 0; i < rep->n_pairs; i++) {
+        const fw_rep_pair *p = &rep->pairs[i];
+        const fw_rep_group *G = &rep->groups[p->group];
+        fprintf(c.f, "%.12g,%.12g,%.12g,%s", G->density, G->domain, rep->groups[p->ref_group].domain,
+                fw_measures[p->measure].name);
+        estimate(c.f, &p->est);
+        /* the interval excludes zero: the difference is significant at the level */
+        fprintf(c.f, ",%d\n", p->est.lo > 0.0 || p->est.hi < 0.0);
+    }
+    return csv_close(&c, err);
+}
+
+static const double cpa_q[] = {0.05, 0.25, 0.50, 0.75, 0.95};
+
+static fw_status write_cpa(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    csv c;
+    if (csv_open(&c, dir, "cpa.csv", "density,domain_m,set,type,n,p5_m,p25_m,p50_m,p75_m,p95_m", err))
+        return err->status;
+    for (int g = 0; g < rep->n_groups; g++)
+        for (int s = 0; s < FW_REP_NSET; s++)
+            for (int t = 0; t < FW_REP_NTYPE; t++) {
+                const fw_rep_group *G = &rep->groups[g];
+                const fw_rep_values *v = &G->cpa[s][t];
+                fprintf(c.f, "%.12g,%.12g,%s,%s,%d", G->density, G->domain, fw_rep_set_names[s],
+                        fw_rep_type_names[t], v->n);
+                for (size_t q = 0; q < sizeof cpa_q / sizeof cpa_q[0]; q++)
+                    num(c.f, fw_quantile_sorted(v->v, v->n, cpa_q[q]));
+                fputc('\n', c.f);
+            }
+    return csv_close(&c, err);
+}
+
+static fw_status write_hist(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    csv c;
+    if (csv_open(&c, dir, "cpa_hist.csv", "density,domain_m,set,bin_low_m,bin_high_m,count", err))
+        return err->status;
+    for (int g = 0; g < rep->n_groups; g++)
+        for (int s = 0; s < FW_REP_NSET; s++) {
+            const fw_rep_group *G = &rep->groups[g];
+            for (int b = 0; b < rep->n_bins[s]; b++)
+                fprintf(c.f, "%.12g,%.12g,%s,%.12g,%.12g,%d\n", G->density, G->domain,
+                        fw_rep_set_names[s], b * rep->bin_w[s], (b + 1) * rep->bin_w[s],
+                        G->hist[s][b]);
+        }
+    return csv_close(&c, err);
+}
+
+fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    if (write_runs(rep, dir, err) || write_summary(rep, dir, err) ||
+        write_traffic(rep, dir, err) || write_paired(rep, dir, err) || write_cpa(rep, dir, err) ||
+        write_hist(rep, dir, err))
+        return err->status;
+    return FW_OK;
+}

@@ -1,0 +1,161 @@
+/* report_data.h - what fairway report holds in memory (internal to src/study).
+ *
+ * The measures are one table (fw_measures) so the per-run values, the group
+ * estimates, the paired differences, the CSVs and the JSON all walk the same
+ * list and cannot disagree about a name.  report_load.c fills the runs and the
+ * raw CPA values from the database; report_stats.c derives the rest.
+ */
+#ifndef FW_STUDY_REPORT_DATA_H
+#define FW_STUDY_REPORT_DATA_H
+
+#include "study/report.h"
+#include "study/stats.h"
+
+/* Own-ship situations as fw_situation_name spells them. */
+typedef enum fw_rep_situation {
+    FW_REP_HEAD_ON,
+    FW_REP_OVERTAKING,
+    FW_REP_OVERTAKEN,
+    FW_REP_GIVE_WAY,
+    FW_REP_STAND_ON,
+    FW_REP_NSIT
+} fw_rep_situation;
+
+/* Encounter types, own-ship situations folded into the traffic-level ones:
+ * overtaking = overtaking + being overtaken, crossing = give-way + stand-on. */
+typedef enum fw_rep_type { FW_REP_ALL, FW_REP_T_HEAD_ON, FW_REP_T_OVERTAKING, FW_REP_T_CROSSING, FW_REP_NTYPE } fw_rep_type;
+
+extern const char *const fw_rep_situation_names[FW_REP_NSIT];
+extern const char *const fw_rep_type_names[FW_REP_NTYPE];   /* "all", "head-on", ... */
+
+typedef enum fw_measure_id {
+    FW_M_ENCOUNTERS,
+    FW_M_HEAD_ON,
+    FW_M_OVERTAKING,
+    FW_M_CROSSING,
+    FW_M_SIT_OVERTAKING,
+    FW_M_SIT_OVERTAKEN,
+    FW_M_SIT_GIVE_WAY,
+    FW_M_SIT_STAND_ON,
+    FW_M_DOMAIN,
+    FW_M_DOMAIN_FRACTION,
+    FW_M_NEAR_MISS,
+    FW_M_COLLISION,
+    FW_M_NEAR_MISS_RUNS,
+    FW_M_COLLISION_RUNS,
+    FW_M_MIN_CPA,
+    FW_M_MANOEUVRES,
+    FW_M_MAX_HELM,
+    FW_M_HELM_ORDERS,
+    FW_M_PATH,
+    FW_M_TIME_LOST,
+    FW_M_TRAFFIC_ALL,     /* traffic-level, per 1000 traffic ship-hours */
+    FW_M_TRAFFIC_HEAD_ON,
+    FW_M_TRAFFIC_OVERTAKING,
+    FW_M_TRAFFIC_CROSSING,
+    FW_NMEASURES
+} fw_measure_id;
+
+typedef struct fw_measure {
+    const char *name;     /* CSV name, unit in it */
+    const char *label;    /* for people */
+    bool share;           /* a 0/1 outcome per run: Wilson interval over runs */
+    bool traffic;         /* traffic.csv rather than summary.csv */
+} fw_measure;
+
+extern const fw_measure fw_measures[FW_NMEASURES];
+
+/* One finished run: its columns and its encounter counts. */
+typedef struct fw_rep_run {
+    long long run_id, seed;
+    double domain, density;
+    int replication;
+    double sim_s, traffic_ship_s;           /* exposure; traffic NAN if not recorded */
+    double n_actions, helm_orders;          /* NAN if NULL */
+    double min_dist, max_helm_deg, path_lengthening, time_lost;
+    double near_miss_flag, collision_flag;  /* runs columns, 0/1, NAN if NULL */
+    long long n_encounters_col;             /* runs.n_encounters, -1 if NULL */
+    int n_sit[FW_REP_NSIT];
+    int n_domain, n_near, n_collision;      /* encounters with the flag set */
+    int n_traffic[FW_REP_NTYPE];
+    int group;
+    double m[FW_NMEASURES];                 /* the per-run measures */
+} fw_rep_run;
+
+/* A growable array of CPA values. */
+typedef struct fw_rep_values {
+    double *v;
+    int n, cap;
+} fw_rep_values;
+
+enum { FW_REP_OWN, FW_REP_TRAFFIC, FW_REP_NSET };
+extern const char *const fw_rep_set_names[FW_REP_NSET];
+
+typedef struct fw_rep_group {
+    double density, domain;
+    int n_runs;
+    fw_estimate est[FW_NMEASURES];
+    fw_rep_values cpa[FW_REP_NSET][FW_REP_NTYPE];  /* sorted after loading */
+    long long traffic_count[FW_REP_NTYPE];          /* pooled over the runs */
+    double traffic_ship_s;
+    int *hist[FW_REP_NSET];                          /* CPA histogram of the type "all" */
+} fw_rep_group;
+
+/* Paired difference of one measure: group minus the reference of its density. */
+typedef struct fw_rep_pair {
+    int group, ref_group;
+    fw_measure_id measure;
+    fw_estimate est;
+} fw_rep_pair;
+
+typedef struct fw_rep_count {
+    char *text;
+    int count;
+} fw_rep_count;
+
+struct fw_study_report {
+    char db[1024];
+    double level;
+    fw_rep_count *meta;            /* text "key = value", count unused */
+    int n_meta;
+    char study_name[128];
+    int n_total, n_failed;         /* rows of runs; of which failed */
+    fw_rep_count *reasons;         /* failure reasons with their counts */
+    int n_reasons;
+    fw_rep_count *warnings;        /* inconsistencies noticed while reading */
+    int n_warnings;
+    fw_rep_run *runs;              /* finished runs, sorted by run_id */
+    int n_runs;
+    int n_reps;                    /* largest replication + 1 */
+    fw_rep_group *groups;          /* sorted by density, then domain */
+    int n_groups;
+    double reference_m;
+    fw_rep_pair *pairs;
+    int n_pairs;
+    double bin_w[FW_REP_NSET];     /* CPA histogram bins [k w, (k + 1) w) */
+    int n_bins[FW_REP_NSET];
+};
+
+/* report_load.c */
+fw_status fw_rep_load(fw_study_report *rep, const char *db, fw_error *err);
+int fw_rep_values_push(fw_rep_values *a, double v);
+int fw_rep_note(fw_rep_count **list, int *n, const char *text);
+
+/* report_stats.c: per-run measures, group estimates, CPA, paired differences. */
+fw_status fw_rep_compute(fw_study_report *rep, double reference_m, fw_error *err);
+
+/* report_csv.c */
+fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_error *err);
+
+/* report_md.c */
+fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_result *res,
+                          const char *dir, fw_error *err);
+/* Numbers for people: about three significant figures, "-" for NaN. */
+const char *fw_rep_fmt(char *buf, double x);
+
+/* The PNGs analysis/plot_study.py draws, in the order report.md shows them. */
+extern const char *const fw_rep_plots[];
+extern const char *const fw_rep_plot_titles[];
+extern const int fw_rep_n_plots;
+
+#endif

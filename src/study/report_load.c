@@ -1,0 +1,403 @@
+/* report_load.c - reads a study database for fairway report.
+ *
+ * Everything is read inside one read transaction, so a sweep still writing
+ * the database is seen at one instant: a run is either wholly there or not.
+ * Only runs with status ok count; a failed run's reason is tallied, and any
+ * rows it may have left are skipped.  Names the database does not define
+ * (situations, types) are refused rather than guessed.
+ */
+#include <math.h>
+#include <sqlite3.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "study/report_data.h"
+#include "study/schema.h"
+
+const char *const fw_rep_situation_names[FW_REP_NSIT] = {
+    "head-on", "overtaking", "being overtaken", "crossing give-way", "crossing stand-on"};
+const char *const fw_rep_type_names[FW_REP_NTYPE] = {"all", "head-on", "overtaking", "crossing"};
+const char *const fw_rep_set_names[FW_REP_NSET] = {"own", "traffic"};
+
+/* The traffic-level type an own-ship situation belongs to. */
+static const fw_rep_type sit_type[FW_REP_NSIT] = {FW_REP_T_HEAD_ON, FW_REP_T_OVERTAKING,
+                                                  FW_REP_T_OVERTAKING, FW_REP_T_CROSSING,
+                                                  FW_REP_T_CROSSING};
+
+int fw_rep_values_push(fw_rep_values *a, double v)
+{
+    if (a->n == a->cap) {
+        int cap = a->cap ? 2 * a->cap : 64;
+        double *p = realloc(a->v, (size_t)cap * sizeof *p);
+        if (!p)
+            return -1;
+        a->v = p;
+        a->cap = cap;
+    }
+    a->v[a->n++] = v;
+    return 0;
+}
+
+/* Adds text to a tally (count + 1 if already there). */
+int fw_rep_note(fw_rep_count **list, int *n, const char *text)
+{
+    for (int i = 0; i < *n; i++)
+        if (strcmp((*list)[i].text, text) == 0) {
+            (*list)[i].count++;
+            return 0;
+        }
+    fw_rep_count *p = realloc(*list, (size_t)(*n + 1) * sizeof *p);
+    if (!p)
+        return -1;
+    *list = p;
+    p[*n].text = strdup(text);
+    p[*n].count = 1;
+    if (!p[*n].text)
+        return -1;
+    (*n)++;
+    return 0;
+}
+
+static double col_num(sqlite3_stmt *st, int i)
+{
+    return sqlite3_column_type(st, i) == SQLITE_NULL ? NAN : sqlite3_column_double(st, i);
+}
+
+static const char *col_text(sqlite3_stmt *st, int i)
+{
+    const unsigned char *t = sqlite3_column_text(st, i);
+    return t ? (const char *)t : "";
+}
+
+static int cmp_run_id(const void *a, const void *b)
+{
+    long long x = *(const long long *)a, y = ((const fw_rep_run *)b)->run_id;
+    return (x > y) - (x < y);
+}
+
+static fw_rep_run *find_run(fw_study_report *rep, long long id)
+{
+    return bsearch(&id, rep->runs, (size_t)rep->n_runs, sizeof *rep->runs, cmp_run_id);
+}
+
+static int cmp_group(const void *pa, const void *pb)
+{
+    const fw_rep_group *a = pa, *b = pb;
+    if (a->density != b->density)
+        return a->density < b->density ? -1 : 1;
+    return (a->domain > b->domain) - (a->domain < b->domain);
+}
+
+typedef struct loader {
+    fw_study_report *rep;
+    sqlite3 *db;
+    const char *file;
+    fw_error *err;
+} loader;
+
+static fw_status prepare(loader *L, const char *sql, sqlite3_stmt **st)
+{
+    if (sqlite3_prepare_v2(L->db, sql, -1, st, NULL) != SQLITE_OK)
+        return fw_fail(L->err, FW_EINPUT, "%s: not a fairway study database (%s)", L->file,
+                       sqlite3_errmsg(L->db));
+    return FW_OK;
+}
+
+static fw_status step_done(loader *L, sqlite3_stmt *st, int rc)
+{
+    sqlite3_finalize(st);
+    if (rc != SQLITE_DONE)
+        return fw_fail(L->err, FW_EINPUT, "%s: cannot read the database (%s)", L->file,
+                       sqlite3_errmsg(L->db));
+    return FW_OK;
+}
+
+static fw_status oom(loader *L)
+{
+    return fw_fail(L->err, FW_ERUN, "%s: out of memory", L->file);
+}
+
+static fw_status read_meta(loader *L)
+{
+    sqlite3_stmt *st;
+    if (prepare(L, "SELECT key, value FROM meta ORDER BY key", &st))
+        return L->err->status;
+    const char *version = NULL;
+    char vbuf[64] = "";
+    int rc;
+    while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
+        const char *k = col_text(st, 0), *v = col_text(st, 1);
+        if (strcmp(k, "schema_version") == 0) {
+            snprintf(vbuf, sizeof vbuf, "%s", v);
+            version = vbuf;
+            continue;
+        }
+        if (strcmp(k, "study_name") == 0)
+            snprintf(L->rep->study_name, sizeof L->rep->study_name, "%s", v);
+        char line[256];
+        snprintf(line, sizeof line, "%s = %.*s%s", k, 80, v, strlen(v) > 80 ? "..." : "");
+        if (fw_rep_note(&L->rep->meta, &L->rep->n_meta, line)) {
+            sqlite3_finalize(st);
+            return oom(L);
+        }
+    }
+    if (step_done(L, st, rc))
+        return L->err->status;
+    if (!version)
+        return fw_fail(L->err, FW_EINPUT, "%s: not a fairway study database (no schema_version in meta)",
+                       L->file);
+    if (strcmp(version, FW_SCHEMA_VERSION) != 0)
+        return fw_fail(L->err, FW_EINPUT,
+                       "%s: study database schema version %s, this fairway reads version %s",
+                       L->file, version, FW_SCHEMA_VERSION);
+    return FW_OK;
+}
+
+static fw_status read_failed(loader *L)
+{
+    sqlite3_stmt *st;
+    if (prepare(L,
+                "SELECT status, reason, COUNT(*) FROM runs GROUP BY status, reason "
+                "ORDER BY COUNT(*) DESC, reason",
+                &st))
+        return L->err->status;
+    int rc;
+    while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
+        int n = sqlite3_column_int(st, 2);
+        L->rep->n_total += n;
+        if (strcmp(col_text(st, 0), "ok") == 0)
+            continue;
+        L->rep->n_failed += n;
+        const char *why = col_text(st, 1);
+        if (fw_rep_note(&L->rep->reasons, &L->rep->n_reasons, why[0] ? why : "(no reason given)")) {
+            sqlite3_finalize(st);
+            return oom(L);
+        }
+        L->rep->reasons[L->rep->n_reasons - 1].count = n;
+    }
+    return step_done(L, st, rc);
+}
+
+static fw_status read_runs(loader *L)
+{
+    fw_study_report *rep = L->rep;
+    sqlite3_stmt *st;
+    if (prepare(L,
+                "SELECT run_id, domain_m, density, replication, seed, sim_s, n_actions, "
+                "min_dist_m, near_miss, collision, max_helm_deg, path_lengthening_m, "
+                "time_lost_s, helm_orders, traffic_ship_s, n_encounters "
+                "FROM runs WHERE status = 'ok' ORDER BY run_id",
+                &st))
+        return L->err->status;
+    int rc, cap = 0;
+    while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
+        if (rep->n_runs == cap) {
+            cap = cap ? 2 * cap : 64;
+            fw_rep_run *p = realloc(rep->runs, (size_t)cap * sizeof *p);
+            if (!p) {
+                sqlite3_finalize(st);
+                return oom(L);
+            }
+            rep->runs = p;
+        }
+        fw_rep_run *r = &rep->runs[rep->n_runs];
+        memset(r, 0, sizeof *r);
+        r->run_id = sqlite3_column_int64(st, 0);
+        r->domain = col_num(st, 1);
+        r->density = col_num(st, 2);
+        r->replication = sqlite3_column_int(st, 3);
+        r->seed = sqlite3_column_int64(st, 4);
+        r->sim_s = col_num(st, 5);
+        r->n_actions = col_num(st, 6);
+        r->min_dist = col_num(st, 7);
+        r->near_miss_flag = col_num(st, 8);
+        r->collision_flag = col_num(st, 9);
+        r->max_helm_deg = col_num(st, 10);
+        r->path_lengthening = col_num(st, 11);
+        r->time_lost = col_num(st, 12);
+        r->helm_orders = col_num(st, 13);
+        r->traffic_ship_s = col_num(st, 14);
+        r->n_encounters_col = sqlite3_column_type(st, 15) == SQLITE_NULL ? -1 : sqlite3_column_int64(st, 15);
+        /* without its exposure a run has no rates at all: the writer broke the contract */
+        if (!(r->sim_s > 0.0) || !isfinite(r->sim_s) || !isfinite(r->domain) ||
+            !isfinite(r->density) || r->replication < 0 || r->replication > 1000000) {
+            sqlite3_finalize(st);
+            return fw_fail(L->err, FW_EINPUT,
+                           "%s: run %lld has status ok but sim_s, domain_m, density or "
+                           "replication is missing or out of range",
+                           L->file, r->run_id);
+        }
+        if (r->replication + 1 > rep->n_reps)
+            rep->n_reps = r->replication + 1;
+        rep->n_runs++;
+    }
+    return step_done(L, st, rc);
+}
+
+static fw_status make_groups(loader *L)
+{
+    fw_study_report *rep = L->rep;
+    rep->groups = calloc((size_t)rep->n_runs, sizeof *rep->groups);
+    if (!rep->groups)
+        return oom(L);
+    for (int i = 0; i < rep->n_runs; i++) {
+        fw_rep_run *r = &rep->runs[i];
+        int g = 0;
+        while (g < rep->n_groups &&
+               !(rep->groups[g].density == r->density && rep->groups[g].domain == r->domain))
+            g++;
+        if (g == rep->n_groups) {
+            rep->groups[g].density = r->density;
+            rep->groups[g].domain = r->domain;
+            rep->n_groups++;
+        }
+    }
+    qsort(rep->groups, (size_t)rep->n_groups, sizeof *rep->groups, cmp_group);
+    for (int i = 0; i < rep->n_runs; i++) {
+        fw_rep_run *r = &rep->runs[i];
+        fw_rep_group key = {.density = r->density, .domain = r->domain};
+        fw_rep_group *g = bsearch(&key, rep->groups, (size_t)rep->n_groups, sizeof key, cmp_group);
+        r->group = (int)(g - rep->groups);
+        g->n_runs++;
+    }
+    return FW_OK;
+}
+
+static int name_index(const char *const *names, int n, const char *s)
+{
+    for (int i = 0; i < n; i++)
+        if (strcmp(names[i], s) == 0)
+            return i;
+    return -1;
+}
+
+static fw_status read_encounters(loader *L)
+{
+    fw_study_report *rep = L->rep;
+    sqlite3_stmt *st;
+    if (prepare(L,
+                "SELECT run_id, situation, min_dist_m, domain_entered, near_miss, collision "
+                "FROM encounters",
+                &st))
+        return L->err->status;
+    int rc;
+    while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
+        fw_rep_run *r = find_run(rep, sqlite3_column_int64(st, 0));
+        if (!r)
+            continue; /* a failed run's rows */
+        const char *sit = col_text(st, 1);
+        int s = name_index(fw_rep_situation_names, FW_REP_NSIT, sit);
+        if (s < 0) {
+            fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown encounter situation '%s'", L->file,
+                    r->run_id, sit);
+            sqlite3_finalize(st);
+            return FW_EINPUT;
+        }
+        r->n_sit[s]++;
+        r->n_domain += sqlite3_column_int(st, 3) != 0;
+        r->n_near += sqlite3_column_int(st, 4) != 0;
+        r->n_collision += sqlite3_column_int(st, 5) != 0;
+        double d = col_num(st, 2);
+        fw_rep_group *g = &rep->groups[r->group];
+        if (!isnan(d) && (fw_rep_values_push(&g->cpa[FW_REP_OWN][FW_REP_ALL], d) ||
+                          fw_rep_values_push(&g->cpa[FW_REP_OWN][sit_type[s]], d))) {
+            sqlite3_finalize(st);
+            return oom(L);
+        }
+    }
+    if (step_done(L, st, rc))
+        return L->err->status;
+    /* the rows are what the report counts; a different total in runs means
+     * the writer and this reader disagree about what an encounter is */
+    int bad = 0;
+    for (int i = 0; i < rep->n_runs; i++) {
+        const fw_rep_run *r = &rep->runs[i];
+        int n = 0;
+        for (int s = 0; s < FW_REP_NSIT; s++)
+            n += r->n_sit[s];
+        bad += r->n_encounters_col >= 0 && r->n_encounters_col != n;
+    }
+    if (bad) {
+        char msg[200];
+        snprintf(msg, sizeof msg,
+                 "%d run%s with runs.n_encounters different from %s encounter rows (the rows are "
+                 "counted)", bad, bad == 1 ? "" : "s", bad == 1 ? "its" : "their");
+        if (fw_rep_note(&rep->warnings, &rep->n_warnings, msg))
+            return oom(L);
+    }
+    return FW_OK;
+}
+
+static fw_status read_traffic(loader *L)
+{
+    fw_study_report *rep = L->rep;
+    sqlite3_stmt *st;
+    if (prepare(L, "SELECT run_id, type, min_dist_m FROM traffic_encounters", &st))
+        return L->err->status;
+    int rc;
+    while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
+        fw_rep_run *r = find_run(rep, sqlite3_column_int64(st, 0));
+        if (!r)
+            continue;
+        const char *type = col_text(st, 1);
+        int t = name_index(fw_rep_type_names + 1, FW_REP_NTYPE - 1, type) + 1;
+        if (t <= 0) {
+            fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown traffic encounter type '%s'", L->file,
+                    r->run_id, type);
+            sqlite3_finalize(st);
+            return FW_EINPUT;
+        }
+        r->n_traffic[FW_REP_ALL]++;
+        r->n_traffic[t]++;
+        double d = col_num(st, 2);
+        fw_rep_group *g = &rep->groups[r->group];
+        if (!isnan(d) && (fw_rep_values_push(&g->cpa[FW_REP_TRAFFIC][FW_REP_ALL], d) ||
+                          fw_rep_values_push(&g->cpa[FW_REP_TRAFFIC][t], d))) {
+            sqlite3_finalize(st);
+            return oom(L);
+        }
+    }
+    return step_done(L, st, rc);
+}
+
+static fw_status read_all(loader *L)
+{
+    if (read_meta(L) || read_failed(L) || read_runs(L))
+        return L->err->status;
+    if (L->rep->n_runs == 0) {
+        if (L->rep->n_failed)
+            return fw_fail(L->err, FW_EINPUT, "%s: no finished runs (%d failed, e.g. \"%s\")",
+                           L->file, L->rep->n_failed, L->rep->reasons[0].text);
+        return fw_fail(L->err, FW_EINPUT, "%s: no finished runs", L->file);
+    }
+    if (make_groups(L) || read_encounters(L) || read_traffic(L))
+        return L->err->status;
+    return FW_OK;
+}
+
+fw_status fw_rep_load(fw_study_report *rep, const char *file, fw_error *err)
+{
+    struct stat sb;
+    if (stat(file, &sb) != 0)
+        return fw_fail(err, FW_EINPUT, "%s: no such file", file);
+    if (!S_ISREG(sb.st_mode))
+        return fw_fail(err, FW_EINPUT, "%s: not a file", file);
+    snprintf(rep->db, sizeof rep->db, "%s", file);
+    loader L = {rep, NULL, file, err};
+    if (sqlite3_open_v2(file, &L.db, SQLITE_OPEN_READONLY, NULL) != SQLITE_OK) {
+        fw_fail(err, FW_EINPUT, "%s: cannot open (%s)", file, L.db ? sqlite3_errmsg(L.db) : "?");
+        sqlite3_close(L.db);
+        return FW_EINPUT;
+    }
+    /* a sweep may be committing a run right now: wait for it rather than fail */
+    sqlite3_busy_timeout(L.db, 10000);
+    fw_status st = FW_OK;
+    if (sqlite3_exec(L.db, "BEGIN", NULL, NULL, NULL) != SQLITE_OK)
+        st = fw_fail(err, FW_EINPUT, "%s: cannot read (%s)", file, sqlite3_errmsg(L.db));
+    else
+        st = read_all(&L);
+    sqlite3_exec(L.db, "COMMIT", NULL, NULL, NULL);
+    sqlite3_close(L.db);
+    return st;
+}

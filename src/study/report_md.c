@@ -1,0 +1,341 @@
+/* report_md.c - the report for people: report.md, the terminal table, JSON.
+ *
+ * report.md is one page: what was run, how many runs count, the key measures
+ * with intervals against domain size, the paired differences that are
+ * significant, and the plots.  Everything else is in the CSVs it points to.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "study/report_data.h"
+
+/* The measures of the compact tables, in column order. */
+static const fw_measure_id key[] = {FW_M_ENCOUNTERS, FW_M_DOMAIN,   FW_M_NEAR_MISS,
+                                    FW_M_COLLISION_RUNS, FW_M_MANOEUVRES, FW_M_PATH,
+                                    FW_M_TIME_LOST};
+static const char *const key_head[] = {"encounters /h", "domain violations /h", "near misses /h",
+                                       "runs with a collision", "manoeuvres /h",
+                                       "path lengthening m/h", "time lost s/h"};
+enum { NKEY = sizeof key / sizeof key[0] };
+
+const char *const fw_rep_plots[] = {"rates.png", "encounter_types.png", "cpa_hist.png",
+                                    "traffic.png", "paired.png"};
+const char *const fw_rep_plot_titles[] = {
+    "Rates against domain size", "Own-ship encounters by type", "CPA distribution per domain size",
+    "Traffic-level encounters", "Paired differences from the reference domain"};
+const int fw_rep_n_plots = sizeof fw_rep_plots / sizeof fw_rep_plots[0];
+
+const char *fw_rep_fmt(char *buf, double x)
+{
+    double a = fabs(x);
+    if (isnan(x))
+        return strcpy(buf, "-");
+    if (x == 0.0)
+        snprintf(buf, 32, "0");
+    else if (a >= 100.0)
+        snprintf(buf, 32, "%.0f", x);
+    else if (a >= 10.0)
+        snprintf(buf, 32, "%.1f", x);
+    else if (a >= 0.1)
+        snprintf(buf, 32, "%.2f", x);
+    else
+        snprintf(buf, 32, "%.2g", x);
+    return buf;
+}
+
+/* "mean [lo, hi]"; a run share as "k/n [lo, hi]". */
+static const char *cell(char *out, size_t sz, const fw_estimate *e, bool share)
+{
+    char m[32], lo[32], hi[32];
+    if (share && e->n > 0)
+        snprintf(m, sizeof m, "%d/%d", (int)lround(e->mean * e->n), e->n);
+    else
+        fw_rep_fmt(m, e->mean);
+    if (isnan(e->lo))
+        snprintf(out, sz, "%s", m);
+    else
+        snprintf(out, sz, "%s [%s, %s]", m, fw_rep_fmt(lo, e->lo), fw_rep_fmt(hi, e->hi));
+    return out;
+}
+
+static double cpa_median(const fw_rep_group *G)
+{
+    const fw_rep_values *v = &G->cpa[FW_REP_OWN][FW_REP_ALL];
+    return fw_quantile_sorted(v->v, v->n, 0.5);
+}
+
+static const char *stem(const char *path, char *buf, size_t sz)
+{
+    const char *b = strrchr(path, '/');
+    snprintf(buf, sz, "%.200s", b ? b + 1 : path);
+    char *dot = strrchr(buf, '.');
+    if (dot && dot != buf)
+        *dot = '\0';
+    return buf;
+}
+
+static void md_runs(FILE *f, const fw_study_report *rep)
+{
+    int nd = 0, nn = 0;
+    for (int g = 0; g < rep->n_groups; g++) {
+        bool d = true, n = true;
+        for (int h = 0; h < g; h++) {
+            d &= rep->groups[h].domain != rep->groups[g].domain;
+            n &= rep->groups[h].density != rep->groups[g].density;
+        }
+        nd += d;
+        nn += n;
+    }
+    fprintf(f, "**Runs:** %d finished and counted, %d failed, %d in the database; %d domain size%s x "
+               "%d densit%s, up to %d replication%s each.\n",
+            rep->n_runs, rep->n_failed, rep->n_total, nd, nd == 1 ? "" : "s", nn,
+            nn == 1 ? "y" : "ies", rep->n_reps, rep->n_reps == 1 ? "" : "s");
+    if (rep->n_reasons) {
+        fprintf(f, "Failed runs (not counted):");
+        for (int i = 0; i < rep->n_reasons; i++)
+            fprintf(f, "%s %d x \"%s\"", i ? ";" : "", rep->reasons[i].count, rep->reasons[i].text);
+        fprintf(f, ".\n");
+    }
+    for (int i = 0; i < rep->n_warnings; i++)
+        fprintf(f, "Warning: %s.\n", rep->warnings[i].text);
+    fprintf(f, "\n");
+}
+
+static void md_key_table(FILE *f, const fw_study_report *rep)
+{
+    char c[96], m[32];
+    fprintf(f, "## Key measures\n\nMean over replications with its %.0f%% confidence interval "
+               "(Student t across replications, symmetric, so it can reach below zero for rare "
+               "events; runs with a collision: Wilson). Rates are per own-ship hour; CPA is the "
+               "closest centre distance of an encounter, pooled over replications.\n\n",
+            100 * rep->level);
+    fprintf(f, "| density | domain (m) | runs |");
+    for (int k = 0; k < NKEY; k++)
+        fprintf(f, " %s |", key_head[k]);
+    fprintf(f, " CPA median (m) |\n|---|---|---|");
+    for (int k = 0; k <= NKEY; k++)
+        fprintf(f, "---|");
+    fprintf(f, "\n");
+    for (int g = 0; g < rep->n_groups; g++) {
+        const fw_rep_group *G = &rep->groups[g];
+        fprintf(f, "| %g | %g | %d |", G->density, G->domain, G->n_runs);
+        for (int k = 0; k < NKEY; k++)
+            fprintf(f, " %s |", cell(c, sizeof c, &G->est[key[k]], fw_measures[key[k]].share));
+        fprintf(f, " %s |\n", fw_rep_fmt(m, cpa_median(G)));
+    }
+    fprintf(f, "\nTraffic level (all ships in the survey area), encounters per 1000 ship-hours:\n\n"
+               "| density | domain (m) |");
+    for (int t = 0; t < FW_REP_NTYPE; t++)
+        fprintf(f, " %s |", fw_rep_type_names[t]);
+    fprintf(f, "\n|---|---|---|---|---|---|\n");
+    for (int g = 0; g < rep->n_groups; g++) {
+        const fw_rep_group *G = &rep->groups[g];
+        fprintf(f, "| %g | %g |", G->density, G->domain);
+        for (int t = 0; t < FW_REP_NTYPE; t++)
+            fprintf(f, " %s |", cell(c, sizeof c, &G->est[FW_M_TRAFFIC_ALL + t], false));
+        fprintf(f, "\n");
+    }
+    fprintf(f, "\n");
+}
+
+static bool significant(const fw_estimate *e)
+{
+    return e->lo > 0.0 || e->hi < 0.0;
+}
+
+/* One row per compared setting, one column per key measure: the significant
+ * differences in bold with their interval, the others as a dash, so the page
+ * shows at a glance what the domain size changes. */
+static void md_paired(FILE *f, const fw_study_report *rep)
+{
+    char c[96];
+    fprintf(f, "## Paired differences from the %g m domain\n\n", rep->reference_m);
+    if (rep->n_pairs == 0) {
+        fprintf(f, "Only one domain size: nothing to compare.\n\n");
+        return;
+    }
+    int n_sig = 0;
+    for (int i = 0; i < rep->n_pairs; i++)
+        n_sig += significant(&rep->pairs[i].est);
+    fprintf(f, "Replication i of every domain size sailed the same traffic, so each difference "
+               "(domain minus %g m) is taken within a replication. Shown: the differences whose "
+               "%.0f%% interval excludes zero; - marks one that does not. %d of %d differences "
+               "over all measures are significant; paired.csv has them all.\n\n",
+            rep->reference_m, 100 * rep->level, n_sig, rep->n_pairs);
+    fprintf(f, "| density | domain (m) | pairs |");
+    for (int k = 0; k < NKEY; k++)
+        fprintf(f, " %s |", key_head[k]);
+    fprintf(f, "\n|---|---|---|");
+    for (int k = 0; k < NKEY; k++)
+        fprintf(f, "---|");
+    fprintf(f, "\n");
+    for (int i = 0; i < rep->n_pairs; i += FW_NMEASURES) {
+        /* fw_rep_compute stores the pairs of a setting together, in measure order */
+        const fw_rep_pair *p = &rep->pairs[i];
+        const fw_rep_group *G = &rep->groups[p->group];
+        fprintf(f, "| %g | %g | %d |", G->density, G->domain, p[FW_M_ENCOUNTERS].est.n);
+        for (int k = 0; k < NKEY; k++) {
+            const fw_estimate *e = &p[key[k]].est;
+            if (significant(e))
+                fprintf(f, " **%s** |", cell(c, sizeof c, e, false));
+            else
+                fprintf(f, " - |");
+        }
+        fprintf(f, "\n");
+    }
+    /* the other measures, named once if any of their differences is significant */
+    bool first = true;
+    for (int m = 0; m < FW_NMEASURES; m++) {
+        bool is_key = false, sig = false;
+        for (int k = 0; k < NKEY; k++)
+            is_key |= key[k] == (fw_measure_id)m;
+        for (int i = 0; i < rep->n_pairs && !is_key; i++)
+            sig |= rep->pairs[i].measure == (fw_measure_id)m && significant(&rep->pairs[i].est);
+        if (sig) {
+            fprintf(f, "%s%s", first ? "\nAlso significant somewhere: " : "; ", fw_measures[m].label);
+            first = false;
+        }
+    }
+    fprintf(f, "%s\n", first ? "" : ".\n");
+}
+
+fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_result *res,
+                          const char *dir, fw_error *err)
+{
+    char path[1100], name[256];
+    snprintf(path, sizeof path, "%s/report.md", dir);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return fw_fail(err, FW_ERUN, "cannot create %s", path);
+    fprintf(f, "# Study report: %s\n\n",
+            rep->study_name[0] ? rep->study_name : stem(rep->db, name, sizeof name));
+    fprintf(f, "Database `%s`. Settings:", rep->db);
+    for (int i = 0; i < rep->n_meta; i++)
+        fprintf(f, "%s %s", i ? ";" : "", rep->meta[i].text);
+    fprintf(f, "%s\n\n", rep->n_meta ? "." : " none recorded.");
+    md_runs(f, rep);
+    md_key_table(f, rep);
+    md_paired(f, rep);
+    fprintf(f, "## Plots\n\n");
+    if (res->plots == FW_PLOTS_DRAWN)
+        for (int i = 0; i < fw_rep_n_plots; i++)
+            fprintf(f, "![%s](%s)\n\n", fw_rep_plot_titles[i], fw_rep_plots[i]);
+    else if (res->plots == FW_PLOTS_SKIPPED)
+        fprintf(f, "Not drawn (--no-plots).\n\n");
+    else
+        fprintf(f, "**Plotting failed:** %s. The tables above and the CSVs are complete.\n\n",
+                res->plot_msg);
+    fprintf(f, "Tables: summary.csv (every own-ship measure), traffic.csv, paired.csv, cpa.csv "
+               "(CPA percentiles by type), cpa_hist.csv, runs.csv (per run).\n");
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad)
+        return fw_fail(err, FW_ERUN, "cannot write %s", path);
+    return FW_OK;
+}
+
+/* JSON */
+
+static void jnum(FILE *f, double x)
+{
+    if (isfinite(x))
+        fprintf(f, "%.10g", x);
+    else
+        fputs("null", f);
+}
+
+static void jstr(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\')
+            fprintf(f, "\\%c", *s);
+        else if ((unsigned char)*s < 0x20)
+            fprintf(f, "\\u%04x", *s);
+        else
+            fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static void jest(FILE *f, const fw_estimate *e)
+{
+    fprintf(f, "{\"n\": %d, \"mean\": ", e->n);
+    jnum(f, e->mean);
+    fputs(", \"ci_low\": ", f);
+    jnum(f, e->lo);
+    fputs(", \"ci_high\": ", f);
+    jnum(f, e->hi);
+    fputs("}", f);
+}
+
+static void print_json(FILE *f, const fw_study_report *rep, const fw_study_report_result *res)
+{
+    static const char *const plots[] = {"skipped", "drawn", "failed"};
+    fputs("{\"database\": ", f);
+    jstr(f, rep->db);
+    fputs(", \"out\": ", f);
+    jstr(f, res->out);
+    fprintf(f, ", \"runs_ok\": %d, \"runs_failed\": %d, \"runs_total\": %d, \"level\": %g, "
+               "\"reference_m\": ",
+            rep->n_runs, rep->n_failed, rep->n_total, rep->level);
+    jnum(f, rep->reference_m);
+    fprintf(f, ", \"plots\": \"%s\", \"warnings\": [", plots[res->plots]);
+    for (int i = 0; i < rep->n_warnings; i++) {
+        fputs(i ? ", " : "", f);
+        jstr(f, rep->warnings[i].text);
+    }
+    fputs("],\n \"groups\": [", f);
+    for (int g = 0; g < rep->n_groups; g++) {
+        const fw_rep_group *G = &rep->groups[g];
+        fprintf(f, "%s\n  {\"density\": %.10g, \"domain_m\": %.10g, \"runs\": %d", g ? "," : "",
+                G->density, G->domain, G->n_runs);
+        for (int m = 0; m < FW_NMEASURES; m++) {
+            fprintf(f, ",\n   \"%s\": ", fw_measures[m].name);
+            jest(f, &G->est[m]);
+        }
+        fputs(",\n   \"cpa_median_m\": ", f);
+        jnum(f, cpa_median(G));
+        fputs("}", f);
+    }
+    fputs("],\n \"paired\": [", f);
+    for (int i = 0; i < rep->n_pairs; i++) {
+        const fw_rep_pair *p = &rep->pairs[i];
+        const fw_rep_group *G = &rep->groups[p->group];
+        fprintf(f, "%s\n  {\"density\": %.10g, \"domain_m\": %.10g, \"measure\": \"%s\", \"diff\": ",
+                i ? "," : "", G->density, G->domain, fw_measures[p->measure].name);
+        jest(f, &p->est);
+        fprintf(f, ", \"significant\": %s}", significant(&p->est) ? "true" : "false");
+    }
+    fputs("]}\n", f);
+}
+
+void fw_study_report_print(FILE *f, const fw_study_report *rep, const fw_study_report_result *res,
+                           bool json)
+{
+    if (json) {
+        print_json(f, rep, res);
+        return;
+    }
+    char c[96], m[32];
+    fprintf(f, "%d runs counted, %d failed; reference domain %g m; mean [%.0f%% CI] across "
+               "replications\n",
+            rep->n_runs, rep->n_failed, rep->reference_m, 100 * rep->level);
+    fprintf(f, "%-8s %8s %5s", "density", "domain_m", "runs");
+    for (int k = 0; k < NKEY; k++)
+        fprintf(f, "  %-22.22s", key_head[k]);
+    fprintf(f, "  %s\n", "CPA p50 m");
+    for (int g = 0; g < rep->n_groups; g++) {
+        const fw_rep_group *G = &rep->groups[g];
+        fprintf(f, "%-8g %8g %5d", G->density, G->domain, G->n_runs);
+        for (int k = 0; k < NKEY; k++)
+            fprintf(f, "  %-22s", cell(c, sizeof c, &G->est[key[k]], fw_measures[key[k]].share));
+        fprintf(f, "  %s\n", fw_rep_fmt(m, cpa_median(G)));
+    }
+    for (int i = 0; i < rep->n_warnings; i++)
+        fprintf(f, "warning: %s\n", rep->warnings[i].text);
+    const char *plots = res->plots == FW_PLOTS_DRAWN     ? ", plots"
+                        : res->plots == FW_PLOTS_SKIPPED ? ", no plots"
+                                                         : ", plots FAILED";
+    fprintf(f, "wrote %s (report.md, CSVs%s)\n", res->out, plots);
+}

@@ -1,0 +1,235 @@
+/* report_stats.c - from runs to the report's numbers.
+ *
+ * Each run gives one value of each measure (a rate per own-ship hour, a
+ * fraction, a largest value); a setting's estimate is the mean over its
+ * replications with a Student-t interval, because replications are the
+ * independent units - encounters within one run share the run's traffic and
+ * are not.  Yes/no outcomes per run (a collision happened) get a Wilson
+ * interval instead, which does not collapse to [0, 0] when none happened.
+ * Paired differences use replication i of both settings: same traffic, so
+ * most of the traffic's variation cancels.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "study/report_data.h"
+
+const fw_measure fw_measures[FW_NMEASURES] = {
+    [FW_M_ENCOUNTERS] = {"encounters_per_h", "own-ship encounters per hour", false, false},
+    [FW_M_HEAD_ON] = {"head_on_per_h", "head-on encounters per hour", false, false},
+    [FW_M_OVERTAKING] = {"overtaking_per_h", "overtaking encounters (either way) per hour", false, false},
+    [FW_M_CROSSING] = {"crossing_per_h", "crossing encounters (give-way or stand-on) per hour", false, false},
+    [FW_M_SIT_OVERTAKING] = {"overtaking_own_per_h", "own ship overtaking per hour", false, false},
+    [FW_M_SIT_OVERTAKEN] = {"being_overtaken_per_h", "own ship being overtaken per hour", false, false},
+    [FW_M_SIT_GIVE_WAY] = {"crossing_give_way_per_h", "crossing, own ship gives way, per hour", false, false},
+    [FW_M_SIT_STAND_ON] = {"crossing_stand_on_per_h", "crossing, own ship stands on, per hour", false, false},
+    [FW_M_DOMAIN] = {"domain_violations_per_h", "domain violations per hour", false, false},
+    [FW_M_DOMAIN_FRACTION] = {"domain_violation_fraction", "share of encounters entering the domain", false, false},
+    [FW_M_NEAR_MISS] = {"near_misses_per_h", "near misses per hour", false, false},
+    [FW_M_COLLISION] = {"collisions_per_h", "collisions per hour", false, false},
+    [FW_M_NEAR_MISS_RUNS] = {"near_miss_run_fraction", "share of runs with a near miss", true, false},
+    [FW_M_COLLISION_RUNS] = {"collision_run_fraction", "share of runs with a collision", true, false},
+    [FW_M_MIN_CPA] = {"min_cpa_m", "closest approach of the run (m)", false, false},
+    [FW_M_MANOEUVRES] = {"manoeuvres_per_h", "avoidance manoeuvres per hour", false, false},
+    [FW_M_MAX_HELM] = {"max_helm_deg", "largest helm (deg)", false, false},
+    [FW_M_HELM_ORDERS] = {"helm_orders_per_h", "helm orders per hour", false, false},
+    [FW_M_PATH] = {"path_lengthening_m_per_h", "path lengthening (m per hour)", false, false},
+    [FW_M_TIME_LOST] = {"time_lost_s_per_h", "time lost (s per hour)", false, false},
+    [FW_M_TRAFFIC_ALL] = {"traffic_encounters_per_1000_ship_h", "traffic encounters per 1000 ship-hours", false, true},
+    [FW_M_TRAFFIC_HEAD_ON] = {"traffic_head_on_per_1000_ship_h", "traffic head-on per 1000 ship-hours", false, true},
+    [FW_M_TRAFFIC_OVERTAKING] = {"traffic_overtaking_per_1000_ship_h", "traffic overtaking per 1000 ship-hours", false, true},
+    [FW_M_TRAFFIC_CROSSING] = {"traffic_crossing_per_1000_ship_h", "traffic crossing per 1000 ship-hours", false, true},
+};
+
+static double flag(double v)
+{
+    return isnan(v) ? NAN : (v != 0.0);
+}
+
+static void run_measures(fw_rep_run *r)
+{
+    double h = r->sim_s / 3600.0, *m = r->m;
+    int *s = r->n_sit;
+    int n = s[FW_REP_HEAD_ON] + s[FW_REP_OVERTAKING] + s[FW_REP_OVERTAKEN] + s[FW_REP_GIVE_WAY] +
+            s[FW_REP_STAND_ON];
+    m[FW_M_ENCOUNTERS] = n / h;
+    m[FW_M_HEAD_ON] = s[FW_REP_HEAD_ON] / h;
+    m[FW_M_OVERTAKING] = (s[FW_REP_OVERTAKING] + s[FW_REP_OVERTAKEN]) / h;
+    m[FW_M_CROSSING] = (s[FW_REP_GIVE_WAY] + s[FW_REP_STAND_ON]) / h;
+    m[FW_M_SIT_OVERTAKING] = s[FW_REP_OVERTAKING] / h;
+    m[FW_M_SIT_OVERTAKEN] = s[FW_REP_OVERTAKEN] / h;
+    m[FW_M_SIT_GIVE_WAY] = s[FW_REP_GIVE_WAY] / h;
+    m[FW_M_SIT_STAND_ON] = s[FW_REP_STAND_ON] / h;
+    m[FW_M_DOMAIN] = r->n_domain / h;
+    /* a run without encounters has no share: missing, not zero */
+    m[FW_M_DOMAIN_FRACTION] = n ? (double)r->n_domain / n : NAN;
+    m[FW_M_NEAR_MISS] = r->n_near / h;
+    m[FW_M_COLLISION] = r->n_collision / h;
+    m[FW_M_NEAR_MISS_RUNS] = flag(r->near_miss_flag);
+    m[FW_M_COLLISION_RUNS] = flag(r->collision_flag);
+    m[FW_M_MIN_CPA] = r->min_dist;
+    m[FW_M_MANOEUVRES] = r->n_actions / h;
+    m[FW_M_MAX_HELM] = r->max_helm_deg;
+    m[FW_M_HELM_ORDERS] = r->helm_orders / h;
+    m[FW_M_PATH] = r->path_lengthening / h;
+    m[FW_M_TIME_LOST] = r->time_lost / h;
+    double kh = r->traffic_ship_s > 0.0 ? r->traffic_ship_s / 3600.0 / 1000.0 : NAN;
+    for (int t = 0; t < FW_REP_NTYPE; t++)
+        m[FW_M_TRAFFIC_ALL + t] = r->n_traffic[t] / kh;
+}
+
+static fw_estimate group_estimate(const fw_study_report *rep, int g, fw_measure_id id, double *buf)
+{
+    int n = 0, k = 0, ok = 0;
+    for (int i = 0; i < rep->n_runs; i++)
+        if (rep->runs[i].group == g) {
+            double v = rep->runs[i].m[id];
+            buf[n++] = v;
+            if (!isnan(v)) {
+                ok++;
+                k += v != 0.0;
+            }
+        }
+    if (fw_measures[id].share)
+        return fw_wilson(k, ok, rep->level);
+    return fw_mean_ci(buf, n, rep->level);
+}
+
+/* A round bin width near x: 1, 2, 2.5 or 5 times a power of ten. */
+static double nice_width(double x)
+{
+    double p = pow(10.0, floor(log10(x))), f = x / p;
+    return p * (f <= 1.0 ? 1.0 : f <= 2.0 ? 2.0 : f <= 2.5 ? 2.5 : f <= 5.0 ? 5.0 : 10.0);
+}
+
+/* One set of bins for every setting, so the histograms can be compared. */
+static fw_status histograms(fw_study_report *rep, fw_error *err)
+{
+    for (int s = 0; s < FW_REP_NSET; s++) {
+        double top = 0.0;
+        for (int g = 0; g < rep->n_groups; g++) {
+            const fw_rep_values *v = &rep->groups[g].cpa[s][FW_REP_ALL];
+            if (v->n)
+                top = fmax(top, v->v[v->n - 1]);
+        }
+        if (!(top > 0.0))
+            continue;
+        rep->bin_w[s] = nice_width(top / 25.0);
+        rep->n_bins[s] = (int)floor(top / rep->bin_w[s]) + 1;
+        for (int g = 0; g < rep->n_groups; g++) {
+            const fw_rep_values *v = &rep->groups[g].cpa[s][FW_REP_ALL];
+            int *h = calloc((size_t)rep->n_bins[s], sizeof *h);
+            if (!h)
+                return fw_fail(err, FW_ERUN, "out of memory");
+            rep->groups[g].hist[s] = h;
+            for (int i = 0; i < v->n; i++) {
+                int b = (int)floor(v->v[i] / rep->bin_w[s]);
+                h[b < 0 ? 0 : b >= rep->n_bins[s] ? rep->n_bins[s] - 1 : b]++;
+            }
+        }
+    }
+    return FW_OK;
+}
+
+static fw_status paired(fw_study_report *rep, fw_error *err)
+{
+    int nr = rep->n_reps > 0 ? rep->n_reps : 1;
+    double *a = malloc((size_t)nr * sizeof *a), *b = malloc((size_t)nr * sizeof *b);
+    rep->pairs = malloc((size_t)rep->n_groups * FW_NMEASURES * sizeof *rep->pairs);
+    if (!a || !b || !rep->pairs) {
+        free(a);
+        free(b);
+        return fw_fail(err, FW_ERUN, "out of memory");
+    }
+    for (int g = 0; g < rep->n_groups; g++) {
+        const fw_rep_group *G = &rep->groups[g];
+        if (G->domain == rep->reference_m)
+            continue;
+        int ref = -1;
+        for (int h = 0; h < rep->n_groups; h++)
+            if (rep->groups[h].density == G->density && rep->groups[h].domain == rep->reference_m)
+                ref = h;
+        if (ref < 0) {
+            char msg[200];
+            snprintf(msg, sizeof msg,
+                     "density %g has no finished runs with the reference domain: no paired "
+                     "differences for it", G->density);
+            if (fw_rep_note(&rep->warnings, &rep->n_warnings, msg))
+                return free(a), free(b), fw_fail(err, FW_ERUN, "out of memory");
+            continue;
+        }
+        for (int m = 0; m < FW_NMEASURES; m++) {
+            for (int i = 0; i < nr; i++)
+                a[i] = b[i] = NAN;
+            for (int i = 0; i < rep->n_runs; i++) {
+                const fw_rep_run *r = &rep->runs[i];
+                if (r->group == g)
+                    a[r->replication] = r->m[m];
+                else if (r->group == ref)
+                    b[r->replication] = r->m[m];
+            }
+            fw_rep_pair *p = &rep->pairs[rep->n_pairs++];
+            p->group = g;
+            p->ref_group = ref;
+            p->measure = (fw_measure_id)m;
+            p->est = fw_paired_ci(a, b, nr, rep->level);
+        }
+    }
+    free(a);
+    free(b);
+    return FW_OK;
+}
+
+fw_status fw_rep_compute(fw_study_report *rep, double reference_m, fw_error *err)
+{
+    /* the reference must be a domain size that has finished runs */
+    double smallest = INFINITY;
+    bool found = isnan(reference_m);
+    char sizes[256] = "";
+    for (int g = 0; g < rep->n_groups; g++) {
+        double d = rep->groups[g].domain;
+        smallest = fmin(smallest, d);
+        if (!found && fabs(d - reference_m) <= 1e-9 * fmax(1.0, fabs(d))) {
+            found = true;
+            reference_m = d;
+        }
+        bool seen = false;
+        for (int h = 0; h < g; h++)
+            seen |= rep->groups[h].domain == d;
+        if (!seen && strlen(sizes) < sizeof sizes - 24)
+            snprintf(sizes + strlen(sizes), sizeof sizes - strlen(sizes), "%s%g", sizes[0] ? ", " : "", d);
+    }
+    if (!found)
+        return fw_fail(err, FW_EINPUT,
+                       "--reference %g: no finished runs with that domain size in %s (domain sizes: %s m)",
+                       reference_m, rep->db, sizes);
+    rep->reference_m = isnan(reference_m) ? smallest : reference_m;
+
+    for (int i = 0; i < rep->n_runs; i++)
+        run_measures(&rep->runs[i]);
+    double *buf = malloc((size_t)rep->n_runs * sizeof *buf);
+    if (!buf)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    for (int g = 0; g < rep->n_groups; g++) {
+        fw_rep_group *G = &rep->groups[g];
+        for (int m = 0; m < FW_NMEASURES; m++)
+            G->est[m] = group_estimate(rep, g, (fw_measure_id)m, buf);
+        for (int s = 0; s < FW_REP_NSET; s++)
+            for (int t = 0; t < FW_REP_NTYPE; t++)
+                fw_sort(G->cpa[s][t].v, G->cpa[s][t].n);
+    }
+    free(buf);
+    for (int i = 0; i < rep->n_runs; i++) {
+        const fw_rep_run *r = &rep->runs[i];
+        fw_rep_group *G = &rep->groups[r->group];
+        if (!(r->traffic_ship_s > 0.0))
+            continue;
+        G->traffic_ship_s += r->traffic_ship_s;
+        for (int t = 0; t < FW_REP_NTYPE; t++)
+            G->traffic_count[t] += r->n_traffic[t];
+    }
+    if (histograms(rep, err) || paired(rep, err))
+        return err->status;
+    return FW_OK;
+}
