@@ -215,7 +215,7 @@ static void test_policy_head_on_cycle(void)
         CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, &now, 1, as, order, &d, NULL) == FW_OK);
         if (d.acted && t_act < 0)
             t_act = k;
-        if (before == FW_MODE_AVOID && d.mode == FW_MODE_COUNTER)
+        if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) && d.mode == FW_MODE_COUNTER)
             t_counter = k;
         if (before != FW_MODE_STANDBY && d.mode == FW_MODE_STANDBY && t_done < 0)
             t_done = k;
@@ -278,7 +278,7 @@ static void test_policy_follows_target_id(void)
             CHECK_MSG(strcmp(now[d.primary].id, "veh.B") == 0, "acted for %s", now[d.primary].id);
             CHECK(strcmp(pol.primary_id, "veh.B") == 0);
         }
-        if (before == FW_MODE_AVOID && d.mode == FW_MODE_COUNTER) {
+        if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) && d.mode == FW_MODE_COUNTER) {
             countered = true;
             int ib = fw_target_find(now, 2, "veh.B");
             CHECK(ib >= 0);

@@ -3,7 +3,9 @@
 #include <stdlib.h>
 
 #include "core/units.h"
+#include "dynamics/stepper.h"
 #include "nomoto/identify.h"
+#include "nomoto/track.h"
 #include "test.h"
 
 static fw_ship c3;
@@ -44,6 +46,93 @@ static void test_fit_mmg_histories(void)
     free(r);
 }
 
+/* Largest distance between the predicted track and the MMG ship over the
+ * first `until` seconds of a turn from straight running. */
+static double track_error(const fw_ship *ship, double U_kn, double helm_deg, double until)
+{
+    fw_error err = {0};
+    double U = fw_kn_to_ms(U_kn), prop;
+    fw_stepper *st = NULL;
+    fw_stepper_def sd = fw_default_stepper_def();
+    fw_mmg_state x0 = fw_mmg_straight(U, 0.0, 0.0, 0.0);
+    fw_track_def td = fw_default_track_def();
+    td.max_turn = 0.0;
+    fw_track tr = {0};
+    fw_own_state own = {.U = U};
+    double worst = INFINITY;
+    if (fw_mmg_propeller_for_speed(ship, U, &prop, &err) ||
+        fw_stepper_create(ship, &sd, &st, &err) || fw_stepper_start(st, 0.0, &x0, prop, &err) ||
+        fw_track_alloc(&tr, fw_track_samples(&td), &err) ||
+        fw_track_predict(ship, &td, &own, fw_deg_to_rad(helm_deg), &tr, &err)) {
+        CHECK_MSG(0, "%s", err.msg);
+        goto out;
+    }
+    fw_stepper_set_helm(st, fw_deg_to_rad(helm_deg));
+    worst = 0.0;
+    for (int k = 1; k * tr.dt <= until; k++) {
+        if (fw_stepper_advance(st, tr.dt, &err)) {
+            CHECK_MSG(0, "%s", err.msg);
+            break;
+        }
+        const fw_mmg_state *x = fw_stepper_state(st);
+        worst = fmax(worst, hypot(x->east - tr.east[k], x->north - tr.north[k]));
+    }
+out:
+    fw_stepper_destroy(st);
+    fw_track_free(&tr);
+    return worst;
+}
+
+static void test_slip_terms_bring_the_track_to_the_mmg_ship(void)
+{
+    /* the C-3 with the knowledge base identified from its MMG model: with the
+     * drift and speed-loss terms the predicted track stays within 40 m of the
+     * MMG ship for 3 minutes and 80 m for 5 (the decisions that matter are
+     * made 2-6 minutes before the closest approach); without them it is off
+     * by 90-600 m at 5 minutes */
+    fw_ship ship, bare;
+    fw_error err = {0};
+    CHECK_MSG(fw_ship_load("c3-mmg", &ship, &err) == FW_OK, "%s", err.msg);
+    CHECK(ship.nomoto.drift > 0.3 && ship.nomoto.speed_loss > 0.3);
+    bare = ship;
+    bare.nomoto.drift = bare.nomoto.speed_loss = 0.0;
+    static const double grid[][2] = {{10, 10}, {10, 20}, {10, 35}, {12, 10}, {12, 20}, {12, 35}};
+    for (size_t i = 0; i < sizeof grid / sizeof grid[0]; i++) {
+        double e3 = track_error(&ship, grid[i][0], grid[i][1], 180.0);
+        double e5 = track_error(&ship, grid[i][0], grid[i][1], 300.0);
+        double b5 = track_error(&bare, grid[i][0], grid[i][1], 300.0);
+        CHECK_MSG(e3 < 40.0 && e5 < 80.0, "%.0f kn %.0f deg: %.0f m at 3 min, %.0f m at 5 min",
+                  grid[i][0], grid[i][1], e3, e5);
+        CHECK_MSG(b5 > 80.0 && b5 > 2.5 * e5, "%.0f kn %.0f deg: without slip %.0f m", grid[i][0],
+                  grid[i][1], b5);
+        printf("  %2.0f kn %2.0f deg: track vs MMG %3.0f m at 3 min, %3.0f m at 5 min "
+               "(without drift and speed loss %3.0f m)\n",
+               grid[i][0], grid[i][1], e3, e5, b5);
+    }
+}
+
+static void test_slip_fit_recovers_the_ship_file(void)
+{
+    /* identification is deterministic: a smaller grid of the same tests gives
+     * the file's values within a few percent */
+    const double U[] = {fw_kn_to_ms(10), fw_kn_to_ms(12), fw_kn_to_ms(12)};
+    const double h[] = {fw_deg_to_rad(20), fw_deg_to_rad(10), fw_deg_to_rad(35)};
+    fw_ship ship;
+    fw_error err = {0};
+    CHECK_MSG(fw_ship_load("c3-mmg", &ship, &err) == FW_OK, "%s", err.msg);
+    fw_nomoto_kb kb = {0};
+    double rb, ru;
+    CHECK_MSG(fw_ident_slip(&ship, U, h, 3, 1.0, 901, &kb, &rb, &ru, &err) == FW_OK, "%s", err.msg);
+    CHECK_REL(kb.drift, ship.nomoto.drift, 0.1);
+    CHECK_REL(kb.speed_loss, ship.nomoto.speed_loss, 0.1);
+    CHECK(fabs(kb.drift_lag_s - ship.nomoto.drift_lag_s) < 10.0);
+    CHECK(fabs(kb.speed_lag_s - ship.nomoto.speed_lag_s) < 40.0);
+    CHECK(fw_rad_to_deg(rb) < 1.5 && fw_ms_to_kn(ru) < 0.4);
+    printf("  drift %.3f lag %.1f s, speed loss %.3f lag %.0f s (file %.3f %.1f %.3f %.0f)\n",
+           kb.drift, kb.drift_lag_s, kb.speed_loss, kb.speed_lag_s, ship.nomoto.drift,
+           ship.nomoto.drift_lag_s, ship.nomoto.speed_loss, ship.nomoto.speed_lag_s);
+}
+
 static void test_regression_reproduces_paper(void)
 {
     /* regressing the paper's own equations sampled on its grid returns them */
@@ -75,5 +164,7 @@ int main(void)
     TEST_RUN(test_fit_recovers_known_indices);
     TEST_RUN(test_fit_mmg_histories);
     TEST_RUN(test_regression_reproduces_paper);
+    TEST_RUN(test_slip_terms_bring_the_track_to_the_mmg_ship);
+    TEST_RUN(test_slip_fit_recovers_the_ship_file);
     return TEST_EXIT();
 }

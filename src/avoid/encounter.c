@@ -66,6 +66,17 @@ void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel
     *b = dom->size + hl * s + hb * c;
 }
 
+double fw_domain_lambda(const fw_domain_def *dom, double east, double north, double psi,
+                        const fw_target *t)
+{
+    double rel = t->course - psi, a, b;
+    fw_domain_axes(dom, t, cos(rel), sin(rel), &a, &b);
+    double de = t->east - east, dn = t->north - north;
+    double so = sin(psi), co = cos(psi);
+    double x = de * so + dn * co, y = de * co - dn * so;
+    return sqrt((x / a) * (x / a) + (y / b) * (y / b));
+}
+
 static bool more_dangerous(const fw_assessment *p, int i, const fw_assessment *q, int j)
 {
     if (p->enters_domain != q->enters_domain)

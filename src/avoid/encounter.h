@@ -90,6 +90,11 @@ fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
 void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel,
                     double sin_rel, double *a, double *b);
 
+/* Normalised domain radius of target t now, for an own ship at (east, north)
+ * heading psi: < 1 inside the (hull-grown) domain. */
+double fw_domain_lambda(const fw_domain_def *dom, double east, double north, double psi,
+                        const fw_target *t);
+
 /* Fills out[0..n-1].  If order is not NULL (room for 2 n ints: the second
  * half is scratch) it gets the target indices most dangerous first and each
  * out[i].rank is set: targets entering the domain first, earliest entry first,

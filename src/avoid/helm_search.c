@@ -101,7 +101,7 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
 void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
 {
     c->own = *own;
-    c->symmetric = own->r == 0.0 && own->rdot == 0.0 && own->delta == 0.0;
+    c->symmetric = own->r == 0.0 && own->rdot == 0.0 && own->delta == 0.0 && own->beta == 0.0;
     for (int i = 0; i < 2 * c->nh; i++)
         c->have[i] = false;
     c->have_keep = false;
@@ -432,5 +432,25 @@ fw_status fw_helm_clears_after(fw_helm_ctx *c, const fw_target *t, int n, double
         return st;
     c->computed++;
     *clears = fw_track_clearance(&c->def, spare, t, n, 1.0, NULL) >= 1.0;
+    return FW_OK;
+}
+
+fw_status fw_helm_turn_clearance(fw_helm_ctx *c, const fw_target *t, int n, double helm,
+                                 double turn, double *clearance, fw_error *err)
+{
+    fw_track_def d = c->def.track;
+    /* steadying is instantaneous in the prediction once the heading has
+     * changed by max_turn; for a turn of under half a degree that is at the
+     * first sample, with the rudder amidships on the way */
+    double min_turn = fw_deg_to_rad(0.5);
+    if (fabs(turn) < min_turn)
+        helm = 0.0, turn = min_turn;
+    d.max_turn = fabs(turn);
+    fw_track *spare = &c->tracks[2 * c->nh + 1];
+    fw_status st = fw_track_predict(c->ship, &d, &c->own, copysign(fabs(helm), turn), spare, err);
+    if (st)
+        return st;
+    c->computed++;
+    *clearance = fw_track_clearance(&c->def, spare, t, n, 0.0, NULL);
     return FW_OK;
 }

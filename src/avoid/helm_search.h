@@ -94,4 +94,12 @@ fw_status fw_helm_search(fw_helm_ctx *ctx, const fw_target *t, int n, int allowe
 fw_status fw_helm_clears_after(fw_helm_ctx *ctx, const fw_target *t, int n, double helm,
                                double delay, bool *clears, fw_error *err);
 
+/* Clearance (smallest normalised domain radius, >= 1: all out) of turning
+ * by `turn` rad (signed, + = to starboard) with `helm` (rad, toward it) and
+ * then steadying; turn 0: of steadying on the present heading now.  (For
+ * the policy: whether to steady, and whether the return to the original
+ * course is safe.) */
+fw_status fw_helm_turn_clearance(fw_helm_ctx *ctx, const fw_target *t, int n, double helm,
+                                 double turn, double *clearance, fw_error *err);
+
 #endif

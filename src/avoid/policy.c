@@ -12,6 +12,10 @@ fw_policy_def fw_default_policy_def(void)
                            .act_lookahead = 10.0,
                            .standon_act_range = 0.5 * FW_NMILE,
                            .standon_act_time = 120.0,
+                           .steady_margin = 1.1,
+                           .min_alteration = fw_deg_to_rad(20.0),
+                           .blocked_time = 120.0,
+                           .reopen_step = fw_deg_to_rad(30.0),
                            .ap_kp = 1.0,
                            .ap_kd = 20.0,
                            .ap_max_helm = fw_deg_to_rad(20.0),
@@ -24,6 +28,7 @@ const char *fw_policy_mode_name(fw_policy_mode m)
     switch (m) {
     case FW_MODE_STANDBY: return "standby";
     case FW_MODE_AVOID: return "avoid";
+    case FW_MODE_STEADY: return "steady";
     case FW_MODE_COUNTER: return "counter";
     case FW_MODE_AUTOPILOT: return "autopilot";
     }
@@ -35,11 +40,14 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->def = *def;
     p->mode = FW_MODE_STANDBY;
     p->psi_ref = 0.0;
+    p->psi_hold = 0.0;
     p->side = FW_SIDE_NONE;
     p->helm = 0.0;
+    p->avoid_helm = 0.0;
     p->primary = -1;
     p->primary_id[0] = '\0';
     p->t_mode = 0.0;
+    p->t_blocked = -1.0;
     p->course_set = false;
 }
 
@@ -60,7 +68,9 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
                             bool *act, const char **why, fw_error *err)
 {
     *act = false;
-    bool give_way = false;
+    /* in the middle of its own manoeuvre the own ship is no stand-on ship:
+     * its turn may have put the target it gives way to on its port side */
+    bool give_way = p->mode == FW_MODE_STEADY;
     for (int i = 0; i < n; i++)
         if (as[i].enters_domain && gives_way(as[i].situation))
             give_way = true;
@@ -98,6 +108,47 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
     return FW_OK;
 }
 
+/* PD on the heading error to psi, limited. */
+static double autopilot(const fw_policy *p, const fw_own_state *own, double psi)
+{
+    double h = -p->def.ap_kp * fw_wrap_pi(own->psi - psi) - p->def.ap_kd * own->r;
+    return fmax(-p->def.ap_max_helm, fmin(p->def.ap_max_helm, h));
+}
+
+/* STANDBY and STEADY: act against the threats if the rules say so. */
+static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_own_state *own,
+                           const fw_target *tg, int n, const fw_assessment *as,
+                           fw_decision *d, fw_error *err)
+{
+    bool act;
+    fw_status st = should_act(p, ctx, tg, n, as, d->primary, &d->search, &act, &d->reason, err);
+    if (st || !act)
+        return st;
+    d->acted = true;
+    p->t_blocked = -1.0;
+    if (p->mode == FW_MODE_STANDBY && !p->course_set)
+        p->psi_ref = own->psi;
+    p->side = d->search.side;
+    p->helm = d->search.helm;
+    p->avoid_helm = fabs(p->helm);
+    p->primary = d->primary;
+    snprintf(p->primary_id, sizeof p->primary_id, "%s", tg[d->primary].id);
+    set_mode(p, FW_MODE_AVOID, t);
+    return FW_OK;
+}
+
+/* Is the return from here to psi_ref safe (nothing to return from: yes)? */
+static fw_status return_safe(fw_policy *p, fw_helm_ctx *ctx, const fw_own_state *own,
+                             const fw_target *tg, int n, double need, bool *safe, fw_error *err)
+{
+    double turn = fw_wrap_pi(p->psi_ref - own->psi), cl = INFINITY;
+    fw_status st = FW_OK;
+    if (fabs(turn) >= p->def.ap_done_heading)
+        st = fw_helm_turn_clearance(ctx, tg, n, p->def.ap_max_helm, turn, &cl, err);
+    *safe = cl >= need;
+    return st;
+}
+
 fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef, double t,
                          const fw_own_state *own, const fw_target *tg, int n,
                          fw_assessment *as, int *order, fw_decision *d, fw_error *err)
@@ -114,56 +165,103 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
     d->reason = "";
     double err_psi = fw_wrap_pi(own->psi - p->psi_ref);
 
-    /* a threat while returning: back to avoiding if it is close */
-    if ((p->mode == FW_MODE_COUNTER || p->mode == FW_MODE_AUTOPILOT) && res->threat &&
-        d->primary >= 0 && as[d->primary].range <= p->def.act_range) {
-        set_mode(p, FW_MODE_STANDBY, t);
+    /* returning: on only while the rest of the return keeps every target out */
+    if (p->mode == FW_MODE_COUNTER || p->mode == FW_MODE_AUTOPILOT) {
+        bool safe;
+        if ((st = return_safe(p, ctx, own, tg, n, 1.0, &safe, err)))
+            return st;
+        if (!safe) {
+            p->psi_hold = own->psi;
+            if (p->t_blocked < 0.0)
+                p->t_blocked = t;
+            set_mode(p, FW_MODE_STEADY, t);
+            d->reason = "the rest of the return would let a target in: steadying";
+        }
     }
     switch (p->mode) {
-    case FW_MODE_STANDBY: {
-        p->helm = 0.0;
-        if (p->course_set) {
-            /* after a return the autopilot keeps the course: with the rudder
-             * amidships the residual yaw would drift about r (T1 + T2) */
-            double h = -p->def.ap_kp * err_psi - p->def.ap_kd * own->r;
-            p->helm = fmax(-p->def.ap_max_helm, fmin(p->def.ap_max_helm, h));
-        }
+    case FW_MODE_STANDBY:
+        p->helm = p->course_set ? autopilot(p, own, p->psi_ref) : 0.0;
         if (!res->threat) {
             d->reason = p->course_set ? "no target enters the domain: keeping the course"
                                       : "no target enters the domain on the present course";
             break;
         }
-        bool act;
-        if ((st = should_act(p, ctx, tg, n, as, d->primary, res, &act, &d->reason, err)))
+        if ((st = maybe_act(p, ctx, t, own, tg, n, as, d, err)))
             return st;
-        if (act) {
-            d->acted = true;
-            if (p->side == FW_SIDE_NONE && !p->course_set)
-                p->psi_ref = own->psi;
-            p->side = res->side;
-            p->helm = res->helm;
-            p->primary = d->primary;
-            snprintf(p->primary_id, sizeof p->primary_id, "%s", tg[d->primary].id);
-            set_mode(p, FW_MODE_AVOID, t);
-        }
         break;
-    }
     case FW_MODE_AVOID: {
+        double turned = fabs(fw_wrap_pi(own->psi - p->psi_ref)), hold;
+        bool far_enough = hdef->track.max_turn > 0.0 && turned >= hdef->track.max_turn;
+        /* rule 8(b): one alteration large enough to be readily apparent,
+         * not a succession of small ones; less only once the target passes */
         int k = p->primary_id[0] ? fw_target_find(tg, n, p->primary_id)
                                  : (p->primary < n ? p->primary : -1);
-        const fw_assessment *a = k >= 0 ? &as[k] : NULL;
-        bool passed = !a || a->tcpa < 0.0;
-        if (!res->threat && passed) {
-            d->reason = "domain clear and target passing: opposite helm to return";
-            p->helm = -p->helm;
-            set_mode(p, FW_MODE_COUNTER, t);
+        bool apparent = turned >= p->def.min_alteration || k < 0 || as[k].tcpa < 0.0;
+        if ((st = fw_helm_turn_clearance(ctx, tg, n, 0.0, 0.0, &hold, err)))
+            return st;
+        if ((apparent && hold >= p->def.steady_margin) || (hold >= 1.0 && far_enough)) {
+            d->reason = "steadying on this heading keeps every target out: steadying";
+            p->psi_hold = own->psi;
+            p->helm = autopilot(p, own, p->psi_hold);
+            set_mode(p, FW_MODE_STEADY, t);
         } else {
             d->reason = "avoiding: holding the helm";
             if (res->side == p->side && fabs(res->helm) > fabs(p->helm)) {
                 p->helm = res->helm;
+                p->avoid_helm = fabs(p->helm);
                 d->reason = "avoiding: the search asks for more helm";
             }
         }
+        break;
+    }
+    case FW_MODE_STEADY: {
+        p->helm = autopilot(p, own, p->psi_hold);
+        double hold;
+        if ((st = fw_helm_turn_clearance(ctx, tg, n, 0.0, 0.0, &hold, err)))
+            return st;
+        if (hold < 1.0) {
+            d->reason = "steady: a target would enter the domain";
+            if ((st = maybe_act(p, ctx, t, own, tg, n, as, d, err)))
+                return st;
+            break;
+        }
+        /* no wait for TCPA < 0 here: a ship that keeps pacing the own ship
+         * may never pass, and the return is checked against every target
+         * over the horizon.  The margin: a return that only just clears would be abandoned at
+         * the next step's slightly different prediction */
+        bool safe;
+        if ((st = return_safe(p, ctx, own, tg, n, p->def.steady_margin, &safe, err)))
+            return st;
+        if (!safe) {
+            d->reason = "steady: returning now would let a target in";
+            if (p->t_blocked < 0.0)
+                p->t_blocked = t;
+            /* a ship pacing the own ship on a converging course blocks the
+             * return for as long as it stays: open the range by altering
+             * further away (while that is clear and within max_turn) */
+            double turn = fw_wrap_pi(p->psi_ref - p->psi_hold);
+            if (t - p->t_blocked >= p->def.blocked_time && fabs(turn) > 0.0) {
+                double more = -copysign(p->def.reopen_step, turn), cl = 0.0;
+                bool within = hdef->track.max_turn <= 0.0 ||
+                              fabs(turn - more) <= hdef->track.max_turn;
+                if (within &&
+                    (st = fw_helm_turn_clearance(ctx, tg, n, p->def.ap_max_helm,
+                                                 fw_wrap_pi(p->psi_hold + more - own->psi), &cl,
+                                                 err)))
+                    return st;
+                if (within && cl >= p->def.steady_margin) {
+                    p->psi_hold = fw_wrap_pi(p->psi_hold + more);
+                    p->t_blocked = t;
+                    d->reason = "steady: the return stays blocked: altering further to open the range";
+                }
+            }
+            break;
+        }
+        d->reason = "the return is clear: opposite helm to return";
+        /* the helm the return was predicted with (return_safe) */
+        p->helm = copysign(p->def.ap_max_helm, fw_wrap_pi(p->psi_ref - own->psi));
+        p->side = p->helm >= 0.0 ? FW_SIDE_PORT : FW_SIDE_STARBOARD; /* the avoiding side */
+        set_mode(p, FW_MODE_COUNTER, t);
         break;
     }
     case FW_MODE_COUNTER:
@@ -175,19 +273,17 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
             break;
         }
         /* fall through */
-    case FW_MODE_AUTOPILOT: {
+    case FW_MODE_AUTOPILOT:
         d->reason = "returning: heading autopilot";
-        double h = -p->def.ap_kp * err_psi - p->def.ap_kd * own->r;
-        h = fmax(-p->def.ap_max_helm, fmin(p->def.ap_max_helm, h));
-        p->helm = h;
+        p->helm = autopilot(p, own, p->psi_ref);
         if (fabs(err_psi) < p->def.ap_done_heading && fabs(own->r) < p->def.ap_done_rate) {
             d->reason = "back on the original course";
+            p->t_blocked = -1.0;
             p->side = FW_SIDE_NONE;
             p->course_set = true;
             set_mode(p, FW_MODE_STANDBY, t);
         }
         break;
-    }
     }
     d->mode = p->mode;
     d->helm = p->helm;

@@ -3,13 +3,24 @@
  *   STANDBY   rudder amidships; every step: assess, search the helm, and act
  *             (-> AVOID) when the policy below says so
  *   AVOID     hold the avoidance helm (raised if the search asks for more) until
- *             the domain is clear, keeping course would stay clear and the
- *             target acted for has passed (TCPA < 0)
+ *             steadying on the present heading would keep every target out
+ *             with steady_margin to spare (or the turn reaches the
+ *             prediction's max_turn with every target out)
+ *   STEADY    hold the heading reached (the autopilot below on it) until the
+ *             predicted return to the original course keeps every target out
+ *             with steady_margin to spare; act again (->
+ *             AVOID) by the STANDBY rules if a new threat calls for it.
+ *             A return blocked for blocked_time alters reopen_step further
+ *             away, up to the prediction's max_turn in all: a ship pacing the
+ *             own ship on a converging course would otherwise block it for
+ *             good, and coming back part of the way only invites it again
+ *             (the rule 8(b) succession of small alterations)
  *   COUNTER   opposite helm of the same size (the paper's first return step)
  *             until the yaw rate has reversed
  *   AUTOPILOT PD on the heading error back to the original course, then STANDBY
  *             (which from then on keeps that course with the same PD: without
- *             disturbances its helm is near zero, the paper's "amidships")
+ *             disturbances its helm is near zero, the paper's "amidships").
+ *             If the rest of the return stops being safe, back to STEADY.
  *
  * Point of action for a give-way (or head-on, overtaking) own ship, the first of:
  *   - range to the threat <= act_range (the paper: act at least 1 nm before);
@@ -30,6 +41,7 @@
 typedef enum fw_policy_mode {
     FW_MODE_STANDBY,
     FW_MODE_AVOID,
+    FW_MODE_STEADY,
     FW_MODE_COUNTER,
     FW_MODE_AUTOPILOT,
 } fw_policy_mode;
@@ -41,6 +53,12 @@ typedef struct fw_policy_def {
     double act_lookahead;      /* s, 10; <= 0 disables the minimum-helm trigger */
     double standon_act_range;  /* m, 926 (0.5 nm) */
     double standon_act_time;   /* s, 120: domain entry this close -> the give-way ship is late */
+    double steady_margin;      /* 1.1: AVOID -> STEADY once steadying keeps every target
+                                  this far out (normalised domain radius) ... */
+    double min_alteration;     /* rad, 20 deg: ... and the heading has changed this much
+                                  (rule 8(b)) or the target has passed */
+    double blocked_time;       /* s, 120: a return blocked this long in STEADY ... */
+    double reopen_step;        /* rad, 30 deg: ... alters this much further away */
     /* heading autopilot: helm = -kp * error - kd * r, limited to ap_max_helm.
      * kp 1 deg per deg and kd 20 s: with the C-3's 10 kn indices (K 0.013 1/s,
      * dominant lag T1 21 s, T2 and T3 nearly cancelling) the closed loop
@@ -60,8 +78,10 @@ typedef struct fw_policy {
     fw_policy_def def;
     fw_policy_mode mode;
     double psi_ref;   /* rad, the course before the manoeuvre */
+    double psi_hold;  /* rad, the heading STEADY keeps */
     int side;         /* side of the current manoeuvre */
     double helm;      /* rad, last order */
+    double avoid_helm; /* rad, size of the avoidance helm (the counter helm's) */
     /* the target the manoeuvre is for: by its id (fw_target.id) when it has
      * one, so that the caller may reorder, add and drop targets between steps
      * (a target no longer in the list counts as passed); by its index in the
@@ -69,6 +89,7 @@ typedef struct fw_policy {
     char primary_id[FW_TARGET_ID_MAX];
     int primary;
     double t_mode;    /* s, when the present mode began */
+    double t_blocked; /* s, since when the return has been blocked (< 0: it is not) */
     bool course_set;  /* returned once: STANDBY keeps psi_ref by the autopilot */
 } fw_policy;
 

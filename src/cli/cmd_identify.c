@@ -91,7 +91,7 @@ int fw_cmd_identify(int argc, char **argv)
     int n = (int)duration + 1, m = 0;
     double *r = malloc(sizeof(double) * (size_t)n);
     int cap = ns * nr * 2;
-    double *U = malloc(sizeof(double) * 6 * (size_t)cap), *D = U + cap, *V[4] = {D + cap, D + 2 * cap, D + 3 * cap, D + 4 * cap};
+    double *U = malloc(sizeof(double) * 8 * (size_t)cap), *D = U + cap, *UM = D + 5 * cap, *HM = D + 6 * cap, *V[4] = {D + cap, D + 2 * cap, D + 3 * cap, D + 4 * cap};
     double worst = 0.0;
     printf("# MMG turning tests of %s, %.0f s each; fit of eq 8 to the ramp response\n", ship.name, duration);
     printf("%8s %6s %10s %8s %8s %8s %10s %8s\n", "U_kn", "helm", "K", "T1", "T2", "T3", "Kd_deg_s", "rms_pct");
@@ -113,7 +113,7 @@ int fw_cmd_identify(int argc, char **argv)
                 printf("%8.2f %+6.0f %10.5f %8.2f %8.2f %8.2f %10.4f %8.2f\n", speeds[i],
                        fw_rad_to_deg(helm), ix.K, ix.T1, ix.T2, ix.T3, ix.K * rudders[j], 100 * rms);
                 worst = fmax(worst, rms);
-                U[m] = speeds[i], D[m] = rudders[j];
+                U[m] = speeds[i], D[m] = rudders[j], UM[m] = fw_kn_to_ms(speeds[i]), HM[m] = helm;
                 V[0][m] = ix.K, V[1][m] = ix.T1, V[2][m] = ix.T2, V[3][m++] = ix.T3;
             }
     printf("worst RMS error: %.2f%% of the final rate (floor 5%%)\n", 100 * worst);
@@ -133,6 +133,16 @@ int fw_cmd_identify(int argc, char **argv)
             free(r), free(U);
             return fw_report(&err);
         }
+    /* drift and speed loss in turns (track.h), from the same tests */
+    double rms_b, rms_u;
+    if (fw_ident_slip(&ship, UM, HM, m, 1.0, n, &kb, &rms_b, &rms_u, &err)) {
+        free(r), free(U);
+        return fw_report(&err);
+    }
+    printf("drift %.4f rad per unit r', lag %.1f s (RMS %.2f deg); speed loss %.4f per unit |r'|, "
+           "lag %.1f s (RMS %.3f kn)\n",
+           kb.drift, kb.drift_lag_s, fw_rad_to_deg(rms_b), kb.speed_loss, kb.speed_lag_s,
+           fw_ms_to_kn(rms_u));
     double smin = speeds[0], smax = speeds[0], dmin = rudders[0], dmax = rudders[0];
     for (int i = 0; i < ns; i++)
         smin = fmin(smin, speeds[i]), smax = fmax(smax, speeds[i]);
@@ -186,6 +196,11 @@ int fw_cmd_identify(int argc, char **argv)
     write_index(f, "T1", &kb.T1);
     write_index(f, "T2", &kb.T2);
     write_index(f, "T3", &kb.T3);
+    fprintf(f, "  drift: %.6g        # rad of drift angle per unit r' = r L / U\n"
+               "  drift_lag_s: %.4g\n"
+               "  speed_loss: %.6g   # fraction of the straight-course speed per unit |r'|\n"
+               "  speed_lag_s: %.4g\n",
+            kb.drift, kb.drift_lag_s, kb.speed_loss, kb.speed_lag_s);
     fclose(f);
     fw_status st = fw_yaml_replace_block(out_path, "nomoto", text, &err);
     free(text);

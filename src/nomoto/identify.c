@@ -9,6 +9,12 @@
 fw_status fw_ident_turning(const fw_ship *ship, double U, double helm, double dt, int n,
                            double *r, fw_error *err)
 {
+    return fw_ident_turning_full(ship, U, helm, dt, n, r, NULL, NULL, err);
+}
+
+fw_status fw_ident_turning_full(const fw_ship *ship, double U, double helm, double dt, int n,
+                                double *r, double *speed, double *beta, fw_error *err)
+{
     double prop;
     fw_status s = fw_mmg_propeller_for_speed(ship, U, &prop, err);
     if (s)
@@ -21,14 +27,89 @@ fw_status fw_ident_turning(const fw_ship *ship, double U, double helm, double dt
     if ((s = fw_stepper_start(st, 0.0, &x0, prop, err)))
         goto done;
     fw_stepper_set_helm(st, helm);
-    r[0] = fw_stepper_state(st)->r;
-    for (int k = 1; k < n; k++) {
-        if ((s = fw_stepper_advance(st, dt, err)))
+    for (int k = 0; k < n; k++) {
+        if (k > 0 && (s = fw_stepper_advance(st, dt, err)))
             goto done;
-        r[k] = fw_stepper_state(st)->r;
+        const fw_mmg_state *x = fw_stepper_state(st);
+        r[k] = x->r;
+        if (speed)
+            speed[k] = hypot(x->u, x->vm);
+        if (beta)
+            beta[k] = atan2(-x->vm, x->u);
     }
 done:
     fw_stepper_destroy(st);
+    return s;
+}
+
+/* One first-order lag, T, of input in[] (held over each sample), from 0. */
+static void lag(const double *in, int n, double dt, double T, double *out)
+{
+    double E = T > 0.0 ? exp(-dt / T) : 0.0, y = 0.0;
+    out[0] = 0.0;
+    for (int k = 1; k < n; k++)
+        out[k] = y = in[k] + (y - in[k]) * E;
+}
+
+/* Best gain c and lag T (grid 0..300 s by 0.5 s) for y ~ c lag_T(x), over
+ * m histories of n samples each; returns the RMS residual. */
+static double fit_gain_lag(const double *x, const double *y, int m, int n, double dt,
+                           double *c_out, double *T_out, double *buf)
+{
+    double best = INFINITY;
+    for (double T = 0.0; T <= 300.0; T += 0.5) {
+        double sxy = 0.0, sxx = 0.0, syy = 0.0;
+        for (int j = 0; j < m; j++) {
+            lag(x + (size_t)j * n, n, dt, T, buf);
+            for (int k = 0; k < n; k++) {
+                double yk = y[(size_t)j * n + k];
+                sxy += buf[k] * yk, sxx += buf[k] * buf[k], syy += yk * yk;
+            }
+        }
+        if (!(sxx > 0.0))
+            continue;
+        double c = sxy / sxx, sse = syy - c * sxy;
+        if (sse < best)
+            best = sse, *c_out = c, *T_out = T;
+    }
+    return sqrt(fmax(best, 0.0) / (double)(m * n));
+}
+
+fw_status fw_ident_slip(const fw_ship *ship, const double *U, const double *helm, int m,
+                        double dt, int n, fw_nomoto_kb *kb, double *rms_beta, double *rms_speed,
+                        fw_error *err)
+{
+    if (m < 1 || n < 2)
+        return fw_fail(err, FW_EINPUT, "slip fit: need at least one test of two samples");
+    size_t mn = (size_t)m * (size_t)n;
+    double *r = malloc(sizeof *r * mn), *sp = malloc(sizeof *sp * mn);
+    double *be = malloc(sizeof *be * mn), *x = malloc(sizeof *x * mn);
+    double *y = malloc(sizeof *y * mn), *buf = malloc(sizeof *buf * (size_t)n);
+    fw_status s = FW_OK;
+    if (!r || !sp || !be || !x || !y || !buf) {
+        s = fw_fail(err, FW_ERUN, "out of memory for %d turning tests", m);
+        goto done;
+    }
+    for (int j = 0; j < m && !s; j++)
+        s = fw_ident_turning_full(ship, U[j], helm[j], dt, n, r + (size_t)j * n,
+                                  sp + (size_t)j * n, be + (size_t)j * n, err);
+    if (s)
+        goto done;
+    /* inputs are the MMG's own r' (so the fit sees only the lags, not the
+     * yaw error of the Nomoto model); drift: beta ~ drift lag(r') */
+    for (size_t i = 0; i < mn; i++)
+        x[i] = r[i] * ship->L / sp[i], y[i] = be[i];
+    *rms_beta = fit_gain_lag(x, y, m, n, dt, &kb->drift, &kb->drift_lag_s, buf);
+    /* speed: U0 - U ~ speed_loss U0 lag(|r'|) */
+    for (int j = 0; j < m; j++)
+        for (int k = 0; k < n; k++) {
+            size_t i = (size_t)j * n + k;
+            x[i] = U[j] * fabs(r[i] * ship->L / sp[i]);
+            y[i] = U[j] - sp[i];
+        }
+    *rms_speed = fit_gain_lag(x, y, m, n, dt, &kb->speed_loss, &kb->speed_lag_s, buf);
+done:
+    free(r), free(sp), free(be), free(x), free(y), free(buf);
     return s;
 }
 

@@ -18,6 +18,21 @@
 fw_status fw_ident_turning(const fw_ship *ship, double U, double helm, double dt, int n,
                            double *r, fw_error *err);
 
+/* The same with the speed over ground (m/s) and drift angle (rad, + when the
+ * hull slides to port in a starboard turn) at each sample; either may be NULL. */
+fw_status fw_ident_turning_full(const fw_ship *ship, double U, double helm, double dt, int n,
+                                double *r, double *speed, double *beta, fw_error *err);
+
+/* The knowledge base's drift and speed-loss terms (ship.h) from m MMG turning
+ * tests (speed U[j] m/s, helm[j] rad), n samples dt apart: for each, the gain
+ * by linear least squares at every lag on a 0.5 s grid up to 300 s, driven by
+ * the MMG's own r' so the yaw model's error stays out of the fit.  Fills
+ * kb->drift, drift_lag_s, speed_loss, speed_lag_s; *rms_beta (rad) and
+ * *rms_speed (m/s) are the residuals. */
+fw_status fw_ident_slip(const fw_ship *ship, const double *U, const double *helm, int m,
+                        double dt, int n, fw_nomoto_kb *kb, double *rms_beta, double *rms_speed,
+                        fw_error *err);
+
 /* Response of eq 8 from rest to a rudder ramped at `rate` to `helm` (rad). */
 void fw_ident_response(const fw_nomoto_indices *ix, double helm, double rate, double dt, int n,
                        double *r);

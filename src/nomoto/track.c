@@ -92,6 +92,15 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
     double sn = sin(s->psi), cs = cos(s->psi);
     double east = s->east, north = s->north, prev_turn = 0.0;
     bool steadied = false;
+    /* drift and speed: the lags are solved exactly for an input held over a
+     * sample (the yaw rate at its end), a first-order hold would gain nothing
+     * at dt = 5 s against lags of a minute and more */
+    const fw_nomoto_kb *kb = &ship->nomoto;
+    bool slip = kb->drift > 0.0 || kb->speed_loss > 0.0;
+    double Ud = s->U > 0.0 ? s->U : 0.0, U0 = s->U0 > 0.0 ? s->U0 : Ud, beta = s->beta;
+    double Eb = kb->drift_lag_s > 0.0 ? exp(-dt / kb->drift_lag_s) : 0.0;
+    double Eu = kb->speed_lag_s > 0.0 ? exp(-dt / kb->speed_lag_s) : 0.0;
+    double cse = sin(s->psi - beta), csn = cos(s->psi - beta); /* course over ground */
     int k = 0;
     for (int p = 0; p < 3 && k < n; p++) {
         double t_end = p < 2 ? piece_start[p + 1] : INFINITY;
@@ -127,13 +136,25 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
                     r = rd = 0.0;
                     dl = 0.0;
                 }
-                if (k > 0) {
+                if (k > 0 && !slip) {
                     /* trapezoid on the unit vectors: direction exact for a
                      * constant rate, length short by (d psi)^2/12 (< 1e-4) */
                     double ps = sn, pcs = cs;
                     rotate(&sn, &cs, turn - prev_turn);
                     east += 0.5 * s->U * dt * (ps + sn);
                     north += 0.5 * s->U * dt * (pcs + cs);
+                } else if (k > 0) {
+                    rotate(&sn, &cs, turn - prev_turn);
+                    double rn = Ud > 0.1 ? r * ship->L / Ud : 0.0; /* r' */
+                    double b_ss = kb->drift * rn;
+                    double u_ss = U0 * (1.0 - fmin(kb->speed_loss * fabs(rn), 0.9));
+                    double U1 = u_ss + (Ud - u_ss) * Eu;
+                    beta = b_ss + (beta - b_ss) * Eb;
+                    double cb = cos(beta), sb = sin(beta);
+                    double ce1 = sn * cb - cs * sb, cn1 = cs * cb + sn * sb;
+                    east += 0.5 * dt * (Ud * cse + U1 * ce1);
+                    north += 0.5 * dt * (Ud * csn + U1 * cn1);
+                    Ud = U1, cse = ce1, csn = cn1;
                 }
                 prev_turn = turn;
                 out->east[k] = east;

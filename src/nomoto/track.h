@@ -3,10 +3,13 @@
  * From the present state (position, heading, speed, yaw rate, rudder angle)
  * the rudder moves at the ship's rudder rate to the order and is held; the yaw
  * rate follows eq 8 solved exactly piece by piece (hold, ramp, hold), sampled
- * every dt.  Speed is kept constant (the paper keeps U; the speed loss of a
- * 10-35 deg turn at 10 kn is a few percent over the first minutes, and it would
- * only shorten the track, which a fixed U makes slightly conservative for the
- * head-on geometry).  Positions integrate the heading at speed U.
+ * every dt.  The paper keeps U and moves the ship along its heading; the MMG
+ * ship does neither: in a 20 deg turn at 10 kn it drifts 10 deg outwards and
+ * loses a fifth of its speed within three minutes, and a track without them is
+ * 110 m off by then (300 m at 35 deg).  When the knowledge base has them
+ * (ship.h: drift, speed_loss and their lags) the drift angle and the speed
+ * follow the predicted yaw rate through first-order lags, and positions
+ * integrate the course over ground (heading - drift) at that speed.
  */
 #ifndef FW_TRACK_H
 #define FW_TRACK_H
@@ -18,7 +21,9 @@
 typedef struct fw_own_state {
     double east, north;  /* m */
     double psi;          /* rad, heading (navigational) */
-    double U;            /* m/s, speed over ground (constant in the prediction) */
+    double U;            /* m/s, speed over ground now */
+    double U0;           /* m/s, speed on a straight course (the propeller's); 0 = U */
+    double beta;         /* rad, drift angle now: course over ground = psi - beta */
     double r;            /* rad/s, yaw rate */
     double rdot;         /* rad/s^2, yaw acceleration; 0 if unknown (steady turn) */
     double delta;        /* rad, actual rudder angle */

@@ -181,11 +181,7 @@ void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts, const
      * the assessment, grown by the target's hull) */
     fw_target tg = {.east = ts->x, .north = ts->y, .course = ts->heading, .speed = ts->speed,
                     .length = ts->length, .breadth = ts->width};
-    double rel = ts->heading - own->psi, a, b;
-    fw_domain_axes(&r->s->helm.domain, &tg, cos(rel), sin(rel), &a, &b);
-    double so = sin(own->psi), co = cos(own->psi);
-    double x = de * so + dn * co, y = de * co - dn * so;
-    double lam = sqrt((x / a) * (x / a) + (y / b) * (y / b));
+    double lam = fw_domain_lambda(&r->s->helm.domain, own->east, own->north, own->psi, &tg);
     if (lam < e->min_lambda)
         e->min_lambda = lam;
     if (lam < 1.0)

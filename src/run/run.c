@@ -227,7 +227,8 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
             snprintf(tg[i].id, sizeof tg[i].id, "%s", ships[i].id);
         }
         fw_own_state own = {.east = x->east, .north = x->north, .psi = x->psi,
-                            .U = hypot(x->u, x->vm), .r = x->r,
+                            .U = hypot(x->u, x->vm), .U0 = s->speed,
+                            .beta = atan2(-x->vm, x->u), .r = x->r,
                             .rdot = k ? (x->r - r_prev) / s->step : 0.0, .delta = x->delta};
         fw_decision d;
         if ((stt = fw_policy_step(&pol, L->ctx, &s->helm, t, &own, tg, n, as, order, &d, err)))

@@ -48,6 +48,17 @@ typedef struct fw_nomoto_kb {
     fw_nomoto_index T3; /* s */
     double speed_min_kn, speed_max_kn;  /* range the regression was fitted over */
     double rudder_min_deg, rudder_max_deg;
+    /* What Nomoto's yaw equation leaves out of the track (optional, 0 = none):
+     * in a turn the hull slides outwards at the drift angle beta (course over
+     * ground = heading - beta) and slows down.  Steady values follow the
+     * non-dimensional yaw rate r' = r L / U: beta = drift r', U = U0 (1 -
+     * speed_loss |r'|); both approach them with first-order lags.  Without
+     * them a 20 deg turn of the C-3 at 10 kn is predicted 110 m off after
+     * 3 minutes. */
+    double drift;        /* rad of drift per unit r' */
+    double drift_lag_s;  /* s */
+    double speed_loss;   /* fraction of U0 lost per unit |r'| */
+    double speed_lag_s;  /* s */
 } fw_nomoto_kb;
 
 typedef struct fw_ship {

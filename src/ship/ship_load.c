@@ -130,7 +130,8 @@ static fw_status read_nomoto(const yt_doc *doc, const yt_node *root, fw_nomoto_k
         return st;
     static const char *const allowed[] = {"source", "speed_min_kn", "speed_max_kn",
                                           "rudder_min_deg", "rudder_max_deg", "K", "T1", "T2",
-                                          "T3", NULL};
+                                          "T3", "drift", "drift_lag_s", "speed_loss",
+                                          "speed_lag_s", NULL};
     if ((st = yt_check_keys(doc, map, "nomoto", allowed, err)))
         return st;
     char source[256];
@@ -151,6 +152,12 @@ static fw_status read_nomoto(const yt_doc *doc, const yt_node *root, fw_nomoto_k
         (st = read_index(doc, map, "T1", &kb->T1, err)) ||
         (st = read_index(doc, map, "T2", &kb->T2, err)) ||
         (st = read_index(doc, map, "T3", &kb->T3, err)))
+        return st;
+    kb->drift = kb->drift_lag_s = kb->speed_loss = kb->speed_lag_s = 0.0;
+    if ((st = yt_opt_number(doc, map, "nomoto", "drift", 0.0, 5.0, &kb->drift, err)) ||
+        (st = yt_opt_number(doc, map, "nomoto", "drift_lag_s", 0.0, 3600.0, &kb->drift_lag_s, err)) ||
+        (st = yt_opt_number(doc, map, "nomoto", "speed_loss", 0.0, 2.0, &kb->speed_loss, err)) ||
+        (st = yt_opt_number(doc, map, "nomoto", "speed_lag_s", 0.0, 3600.0, &kb->speed_lag_s, err)))
         return st;
     kb->present = true;
     return FW_OK;
