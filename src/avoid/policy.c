@@ -12,8 +12,9 @@ fw_policy_def fw_default_policy_def(void)
                            .act_lookahead = 10.0,
                            .standon_act_range = 0.5 * FW_NMILE,
                            .standon_act_time = 120.0,
+                           .standon_lookahead = 120.0,
                            .steady_margin = 1.1,
-                           .min_alteration = fw_deg_to_rad(20.0),
+                           .min_alteration = fw_deg_to_rad(30.0),
                            .blocked_time = 120.0,
                            .reopen_step = fw_deg_to_rad(30.0),
                            .ap_kp = 1.0,
@@ -76,10 +77,23 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
             give_way = true;
     const fw_assessment *a = &as[primary];
     if (!give_way) {
+        bool last = false;
+        if (res->feasible && p->def.standon_lookahead > 0.0) {
+            /* rule 17(b): the last moment the own ship's action alone still
+             * avoids it, with the largest helm, lookahead s from now */
+            double h = fw_helm_value(ctx, res->side, fw_helm_count(ctx) - 1);
+            bool later;
+            fw_status st = fw_helm_clears_after(ctx, tg, n, h, p->def.standon_lookahead, &later, err);
+            if (st)
+                return st;
+            last = !later;
+        }
         if (a->range <= p->def.standon_act_range) {
             *act = true, *why = "stand-on: give-way ship has not acted, range below the stand-on limit";
         } else if (a->t_enter <= p->def.standon_act_time) {
             *act = true, *why = "stand-on: give-way ship has not acted, domain entry imminent";
+        } else if (!res->feasible || last) {
+            *act = true, *why = "stand-on: give-way ship has not acted, the own ship alone must act now (rule 17(b))";
         } else {
             *why = "stand-on: keeping course and speed (rule 17)";
         }

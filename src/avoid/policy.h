@@ -30,8 +30,11 @@
  *   - no helm clears any more (take the best available action at once).
  * For a stand-on own ship (rule 17: crossing target on the port side, or being
  * overtaken) keep course and speed while the give-way ship may still act; act
- * when the predicted domain entry is closer than standon_act_time or the range
- * below standon_act_range, and never to port for a target on the port side.
+ * when the predicted domain entry is closer than standon_act_time, the range
+ * below standon_act_range, or the largest helm ordered standon_lookahead s
+ * later would no longer keep every target out (rule 17(b): the own ship's
+ * action alone must then avoid it, and a 333 m ship needs minutes), and never
+ * to port for a target on the port side.
  */
 #ifndef FW_POLICY_H
 #define FW_POLICY_H
@@ -53,9 +56,11 @@ typedef struct fw_policy_def {
     double act_lookahead;      /* s, 10; <= 0 disables the minimum-helm trigger */
     double standon_act_range;  /* m, 926 (0.5 nm) */
     double standon_act_time;   /* s, 120: domain entry this close -> the give-way ship is late */
+    double standon_lookahead;  /* s, 120: ... or the largest helm would no longer keep every
+                                  target out if the order waited this long (0: off) */
     double steady_margin;      /* 1.1: AVOID -> STEADY once steadying keeps every target
                                   this far out (normalised domain radius) ... */
-    double min_alteration;     /* rad, 20 deg: ... and the heading has changed this much
+    double min_alteration;     /* rad, 30 deg (Woerner's "readily apparent"): ... and the heading has changed this much
                                   (rule 8(b)) or the target has passed */
     double blocked_time;       /* s, 120: a return blocked this long in STEADY ... */
     double reopen_step;        /* rad, 30 deg: ... alters this much further away */

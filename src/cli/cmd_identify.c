@@ -25,7 +25,10 @@ static void help(void)
            "to the final rate, fits the regression forms of the ship file's knowledge\n"
            "base (default: the paper's equations 10-13) by linear least squares over\n"
            "all points (both sides pooled), compares it with the knowledge base in the\n"
-           "ship file, and writes a copy of the ship file with the new nomoto: block\n"
+           "ship file, fits the drift angle and speed loss in turns that the track\n"
+           "prediction adds to Nomoto's model (drift and speed_loss per unit r' = r L / U,\n"
+           "each with a first-order lag, from the same tests), and writes a copy of the\n"
+           "ship file with the new nomoto: block\n"
            "(default FILE: NAME-identified.yaml in the current directory).\n");
 }
 
