@@ -88,7 +88,17 @@ fail:
 int main(int argc, char **argv)
 {
     const int sizes[3] = {50, 200, 1000};
+    if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {
+        fprintf(stderr, "usage: bench_traffic [CSV_FILE]\n"
+                        "libsumo stepping and querying 50, 200 and 1000 ships; medians printed,\n"
+                        "and written to CSV_FILE if given\n");
+        return argc == 2 && strcmp(argv[1], "--help") == 0 ? 0 : 2;
+    }
     FILE *csv = argc > 1 ? fopen(argv[1], "w") : NULL;
+    if (argc > 1 && !csv) {
+        fprintf(stderr, "bench_traffic: cannot write %s\n", argv[1]);
+        return 2;
+    }
     if (csv)
         fprintf(csv, "ships_target,ships_end,in_range,ms_full,ms_step,ratio,runs,steps\n");
     printf("libsumo, sea grid, 1 s steps, %d steps after %d warm-up, median of %d runs\n", STEPS,
