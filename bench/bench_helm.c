@@ -148,6 +148,35 @@ int main(void)
     printf("baseline one_track_us %.2f all_tracks_mirrored_us %.1f all_tracks_unmirrored_us %.1f\n",
            1e6 * bench_median(one, SCENES), 1e6 * bench_median(base, SCENES),
            1e6 * bench_median(one, SCENES) * (2 * fw_helm_count(ctx) + 1));
+    /* the drift and speed-loss terms (c3-mmg has them, c3 not): one track each */
+    fw_ship slip;
+    if (fw_ship_load("c3-mmg", &slip, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return 1;
+    }
+    {
+        fw_track tr;
+        static double plain[SCENES], slipped[SCENES];
+        if (fw_track_alloc(&tr, fw_track_samples(&hdef.track), &err)) {
+            fprintf(stderr, "%s\n", err.msg);
+            return 1;
+        }
+        for (int s = 0; s < SCENES; s++) {
+            double h = fw_deg_to_rad(10.0 + s % 26);
+            double t0 = bench_now();
+            for (int r = 0; r < 20 * REPS; r++)
+                fw_track_predict(&ship, &hdef.track, &own, h, &tr, &err);
+            plain[s] = (bench_now() - t0) / (20 * REPS);
+            t0 = bench_now();
+            for (int r = 0; r < 20 * REPS; r++)
+                fw_track_predict(&slip, &hdef.track, &own, h, &tr, &err);
+            slipped[s] = (bench_now() - t0) / (20 * REPS);
+        }
+        double a = bench_median(plain, SCENES), b = bench_median(slipped, SCENES);
+        printf("track_us without drift and speed loss %.2f, with %.2f (ratio %.2f)\n", 1e6 * a,
+               1e6 * b, b / a);
+        fw_track_free(&tr);
+    }
     static const int counts[] = {1, 10, 50, 200};
     for (int mode = 0; mode < 2; mode++) {
     printf("# %s\n", mode ? "dense: every target aimed within 800 m of the own track (stress)"

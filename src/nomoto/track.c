@@ -101,6 +101,7 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
     double Eb = kb->drift_lag_s > 0.0 ? exp(-dt / kb->drift_lag_s) : 0.0;
     double Eu = kb->speed_lag_s > 0.0 ? exp(-dt / kb->speed_lag_s) : 0.0;
     double cse = sin(s->psi - beta), csn = cos(s->psi - beta); /* course over ground */
+    double sb = sin(beta), cb = cos(beta); /* kept by rotation: beta moves slowly */
     int k = 0;
     for (int p = 0; p < 3 && k < n; p++) {
         double t_end = p < 2 ? piece_start[p + 1] : INFINITY;
@@ -149,8 +150,9 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
                     double b_ss = kb->drift * rn;
                     double u_ss = U0 * (1.0 - fmin(kb->speed_loss * fabs(rn), 0.9));
                     double U1 = u_ss + (Ud - u_ss) * Eu;
-                    beta = b_ss + (beta - b_ss) * Eb;
-                    double cb = cos(beta), sb = sin(beta);
+                    double b1 = b_ss + (beta - b_ss) * Eb;
+                    rotate(&sb, &cb, b1 - beta);
+                    beta = b1;
                     double ce1 = sn * cb - cs * sb, cn1 = cs * cb + sn * sb;
                     east += 0.5 * dt * (Ud * cse + U1 * ce1);
                     north += 0.5 * dt * (Ud * csn + U1 * cn1);
