@@ -58,6 +58,11 @@ def ellipse(e, n, heading_deg, a, b):
     return e + ahead * math.sin(h) + stbd * math.cos(h), n + ahead * math.cos(h) - stbd * math.sin(h)
 
 
+# the own ship is always orange; targets never are
+TARGET_COLORS = ["tab:blue", "tab:green", "tab:purple", "tab:brown", "tab:pink", "tab:gray",
+                 "tab:olive", "tab:cyan", "tab:red"]
+
+
 def plot_track(own, tgt, s, every, path):
     fig, ax = plt.subplots(figsize=(8, 8))
     ax.plot(own.east_m, own.north_m, color="tab:orange", lw=1.5, label="own ship")
@@ -68,10 +73,9 @@ def plot_track(own, tgt, s, every, path):
                 color="tab:orange", alpha=0.5)
         ax.annotate(f"{r.t_s:.0f}", (r.east_m, r.north_m), fontsize=6, xytext=(4, 4),
                     textcoords="offset points")
-    colors = plt.cm.tab10(np.linspace(0, 1, 10))
     enc = {e["id"]: e for e in s["encounters"]}
     for k, (tid, g) in enumerate(tgt.groupby("id", sort=True) if len(tgt) else []):
-        c = colors[k % 10]
+        c = TARGET_COLORS[k % len(TARGET_COLORS)]
         e = enc.get(tid, {})
         ax.plot(g.east_m, g.north_m, color=c, lw=1, label=f"{tid} ({e.get('situation', '')})")
         for _, r in g.iloc[::step].iterrows():
@@ -124,8 +128,8 @@ def plot_helm(own, s, path):
 
 def plot_distance(tgt, s, path):
     fig, ax = plt.subplots(figsize=(9, 4))
-    for tid, g in (tgt.groupby("id", sort=True) if len(tgt) else []):
-        ax.plot(g.t_s, g.range_m, label=tid, lw=1.2)
+    for k, (tid, g) in enumerate(tgt.groupby("id", sort=True) if len(tgt) else []):
+        ax.plot(g.t_s, g.range_m, label=tid, lw=1.2, color=TARGET_COLORS[k % len(TARGET_COLORS)])
     ax.axhline(s["domain_m"], color="k", ls="--", lw=1, label=f"domain {s['domain_m']:.0f} m")
     ax.set_yscale("log")
     ax.set_xlabel("t (s)")
