@@ -215,7 +215,7 @@ static void test_policy_head_on_cycle(void)
         CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, &now, 1, as, order, &d, NULL) == FW_OK);
         if (d.acted && t_act < 0)
             t_act = k;
-        if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) && d.mode == FW_MODE_COUNTER)
+        if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) && d.mode == FW_MODE_AUTOPILOT)
             t_counter = k;
         if (before != FW_MODE_STANDBY && d.mode == FW_MODE_STANDBY && t_done < 0)
             t_done = k;
@@ -278,7 +278,7 @@ static void test_policy_follows_target_id(void)
             CHECK_MSG(strcmp(now[d.primary].id, "veh.B") == 0, "acted for %s", now[d.primary].id);
             CHECK(strcmp(pol.primary_id, "veh.B") == 0);
         }
-        if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) && d.mode == FW_MODE_COUNTER) {
+        if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) && d.mode == FW_MODE_AUTOPILOT) {
             countered = true;
             int ib = fw_target_find(now, 2, "veh.B");
             CHECK(ib >= 0);
@@ -294,6 +294,99 @@ static void test_policy_follows_target_id(void)
     fw_helm_ctx_destroy(ctx);
 }
 
+/* The policy in closed loop with the Nomoto plant (one second per step) and
+ * constant-velocity targets; what a scenario test asserts, without SUMO. */
+typedef struct loop_out {
+    double t_act, t_back, min_lambda, final_psi;
+    int first_side, acts;
+    fw_situation first_sit;
+} loop_out;
+
+static loop_out closed_loop(const fw_target *t0, int n, int seconds)
+{
+    fw_helm_def hdef = fw_default_helm_def();
+    fw_helm_ctx *ctx = make_ctx(&hdef);
+    fw_policy_def pdef = fw_default_policy_def();
+    fw_policy pol;
+    fw_policy_init(&pol, &pdef);
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    fw_track_def one = {.dt = 1.0, .horizon = 1.0};
+    fw_track step;
+    fw_track_alloc(&step, 2, NULL);
+    fw_target now[4];
+    fw_assessment as[4];
+    int order[8];
+    loop_out o = {.t_act = -1, .t_back = -1, .min_lambda = INFINITY};
+    for (int k = 0; k < seconds; k++) {
+        for (int i = 0; i < n; i++) {
+            now[i] = t0[i];
+            now[i].east += t0[i].speed * sin(t0[i].course) * k;
+            now[i].north += t0[i].speed * cos(t0[i].course) * k;
+            o.min_lambda = fmin(o.min_lambda,
+                                fw_domain_lambda(&hdef.domain, own.east, own.north, own.psi, &now[i]));
+        }
+        fw_decision d;
+        fw_policy_mode before = pol.mode;
+        CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, now, n, as, order, &d, NULL) == FW_OK);
+        if (d.acted && o.acts++ == 0) {
+            o.t_act = k;
+            o.first_side = d.search.side;
+            o.first_sit = as[d.primary].situation;
+        }
+        if (before == FW_MODE_AUTOPILOT && d.mode == FW_MODE_STANDBY)
+            o.t_back = k;
+        if (getenv("FW_DEBUG") && (before != d.mode || k % 200 == 0))
+            printf("%5d %s -> %s helm %.1f psi %.1f: %s\n", k, fw_policy_mode_name(before),
+                   fw_policy_mode_name(d.mode), fw_rad_to_deg(d.helm), fw_rad_to_deg(own.psi),
+                   d.reason);
+        fw_track_predict(&c3, &one, &own, d.helm, &step, NULL);
+        own.east = step.east[1], own.north = step.north[1], own.psi = step.psi[1];
+        own.r = step.r[1], own.delta = step.delta[1], own.rdot = step.rdot[1];
+    }
+    o.final_psi = fw_wrap_pi(own.psi);
+    fw_track_free(&step);
+    fw_helm_ctx_destroy(ctx);
+    return o;
+}
+
+/* Rule 17: a crossing ship on the port side that does not give way.  The own
+ * ship keeps course and speed while its own action could still wait two
+ * minutes, then turns to starboard, never to port, keeps the domain, and
+ * comes back to its course. */
+static void test_policy_stand_on_rule_17(void)
+{
+    /* on a collision course: both reach (0, 3000) at t = 583 s */
+    fw_target t = {.id = "T", .east = -3000, .north = 3000, .course = FW_PI / 2,
+                   .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32};
+    loop_out o = closed_loop(&t, 1, 2400);
+    CHECK(o.first_sit == FW_SIT_STAND_ON);
+    CHECK(o.first_side == FW_SIDE_STARBOARD);
+    /* not before the give-way ship has had time: entry would be >= 2 min away */
+    CHECK_MSG(o.t_act > 200 && o.t_act < 500, "acted at %.0f s", o.t_act);
+    CHECK_MSG(o.min_lambda >= 1.0, "domain radius %.2f", o.min_lambda);
+    CHECK_MSG(o.t_back > o.t_act, "back on course at %.0f s", o.t_back);
+    CHECK_NEAR(o.final_psi, 0.0, fw_deg_to_rad(2.0));
+    printf("  stand-on: acted at %.0f s (collision point at 583 s), closest radius %.2f, "
+           "back on course at %.0f s\n", o.t_act, o.min_lambda, o.t_back);
+}
+
+/* A ship converging slowly from the port bow at the own speed (Imazu case 10's
+ * second target) stays near: the own ship must not turn back into it, and must
+ * still come back to its course once it is clear. */
+static void test_policy_return_only_when_clear(void)
+{
+    fw_target t = {.id = "P", .east = -2876, .north = 378, .course = fw_deg_to_rad(15),
+                   .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32};
+    loop_out o = closed_loop(&t, 1, 4000);
+    CHECK(o.acts >= 1);
+    CHECK_MSG(o.min_lambda >= 1.0, "domain radius %.2f", o.min_lambda);
+    CHECK_MSG(o.t_back > 0, "never back on course (heading %.1f deg at the end)",
+              fw_rad_to_deg(o.final_psi));
+    CHECK_NEAR(o.final_psi, 0.0, fw_deg_to_rad(2.0));
+    printf("  pacing ship: %d actions from %.0f s, closest radius %.2f, back on course at %.0f s\n",
+           o.acts, o.t_act, o.min_lambda, o.t_back);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -307,5 +400,7 @@ int main(void)
     TEST_RUN(test_only_one_side_works);
     TEST_RUN(test_policy_head_on_cycle);
     TEST_RUN(test_policy_follows_target_id);
+    TEST_RUN(test_policy_stand_on_rule_17);
+    TEST_RUN(test_policy_return_only_when_clear);
     return TEST_EXIT();
 }

@@ -181,6 +181,43 @@ static void test_track_mirror_and_limit(void)
     fw_track_free(&m);
 }
 
+/* The autopilot prediction is the closed loop it stands for: one-second
+ * steps of the fixed-helm predictor with the PD order recomputed each second
+ * give the same track (no drift terms in c3, so nothing is lost between
+ * calls; the predictor rounds the order to whole degrees for the indices,
+ * which moves it by centimetres), and it settles on the ordered heading. */
+static void test_steer_prediction_is_the_closed_loop(void)
+{
+    fw_track_def def = fw_default_track_def();
+    fw_own_state s0 = {.psi = fw_deg_to_rad(40), .U = fw_kn_to_ms(10), .r = fw_deg_to_rad(0.2),
+                       .delta = fw_deg_to_rad(15)};
+    fw_steer_def ap = {.psi_ref = 0.0, .kp = 1.0, .kd = 20.0, .max_helm = fw_deg_to_rad(20)};
+    fw_track pred, one;
+    fw_error err = {0};
+    fw_track_alloc(&pred, fw_track_samples(&def), NULL);
+    fw_track_alloc(&one, 2, NULL);
+    CHECK(fw_track_predict_steer(&c3, &def, &s0, &ap, &pred, &err) == FW_OK);
+    fw_track_def sec = {.dt = 1.0, .horizon = 1.0};
+    fw_own_state x = s0;
+    double worst = 0.0;
+    for (int k = 1; k <= 600; k++) {
+        double h = -ap.kp * fw_wrap_pi(x.psi - ap.psi_ref) - ap.kd * x.r;
+        h = fmax(-ap.max_helm, fmin(ap.max_helm, h));
+        CHECK(fw_track_predict(&c3, &sec, &x, h, &one, &err) == FW_OK);
+        x.east = one.east[1], x.north = one.north[1], x.psi = one.psi[1];
+        x.r = one.r[1], x.rdot = one.rdot[1], x.delta = one.delta[1];
+        if (k % 5 == 0)
+            worst = fmax(worst, hypot(x.east - pred.east[k / 5], x.north - pred.north[k / 5]));
+    }
+    int last = pred.n - 1;
+    CHECK_NEAR(fw_wrap_pi(pred.psi[last]), 0.0, fw_deg_to_rad(1.0));
+    CHECK_MSG(worst < 20.0, "%.1f m apart", worst);
+    printf("  autopilot prediction vs one-second closed loop: %.1f m at most over 600 s, "
+           "heading %.2f deg at the end\n", worst, fw_rad_to_deg(fw_wrap_pi(pred.psi[last])));
+    fw_track_free(&pred);
+    fw_track_free(&one);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -192,5 +229,6 @@ int main(void)
     TEST_RUN(test_step_response);
     TEST_RUN(test_track_against_rk4);
     TEST_RUN(test_track_mirror_and_limit);
+    TEST_RUN(test_steer_prediction_is_the_closed_loop);
     return TEST_EXIT();
 }

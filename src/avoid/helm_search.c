@@ -435,22 +435,32 @@ fw_status fw_helm_clears_after(fw_helm_ctx *c, const fw_target *t, int n, double
     return FW_OK;
 }
 
-fw_status fw_helm_turn_clearance(fw_helm_ctx *c, const fw_target *t, int n, double helm,
-                                 double turn, double *clearance, fw_error *err)
+fw_status fw_helm_steer_clearance(fw_helm_ctx *c, const fw_target *t, int n,
+                                  const fw_steer_def *ap, bool beyond, double *clearance,
+                                  fw_error *err)
 {
-    fw_track_def d = c->def.track;
-    /* steadying is instantaneous in the prediction once the heading has
-     * changed by max_turn; for a turn of under half a degree that is at the
-     * first sample, with the rudder amidships on the way */
-    double min_turn = fw_deg_to_rad(0.5);
-    if (fabs(turn) < min_turn)
-        helm = 0.0, turn = min_turn;
-    d.max_turn = fabs(turn);
-    fw_track *spare = &c->tracks[2 * c->nh + 1];
-    fw_status st = fw_track_predict(c->ship, &d, &c->own, copysign(fabs(helm), turn), spare, err);
+    fw_track *tr = &c->tracks[2 * c->nh + 1];
+    fw_status st = fw_track_predict_steer(c->ship, &c->def.track, &c->own, ap, tr, err);
     if (st)
         return st;
     c->computed++;
-    *clearance = fw_track_clearance(&c->def, spare, t, n, 0.0, NULL);
+    double cl = fw_track_clearance(&c->def, tr, t, n, 0.0, NULL);
+    if (beyond && tr->n > 0) {
+        int k = tr->n - 1;
+        double T = k * tr->dt, U = c->own.U0 > 0.0 ? c->own.U0 : c->own.U;
+        double oe = U * tr->sin_psi[k], on = U * tr->cos_psi[k];
+        for (int i = 0; i < n; i++) {
+            double ve = t[i].speed * sin(t[i].course), vn = t[i].speed * cos(t[i].course);
+            double rx = t[i].east + ve * T - tr->east[k], ry = t[i].north + vn * T - tr->north[k];
+            double wx = ve - oe, wy = vn - on, w2 = wx * wx + wy * wy;
+            double tc = w2 > 1e-9 ? -(rx * wx + ry * wy) / w2 : 0.0;
+            if (tc <= 0.0)
+                continue; /* opening from there on */
+            fw_target at = t[i];
+            at.east = rx + wx * tc, at.north = ry + wy * tc;
+            cl = fmin(cl, fw_domain_lambda(&c->def.domain, 0.0, 0.0, tr->psi[k], &at));
+        }
+    }
+    *clearance = cl;
     return FW_OK;
 }

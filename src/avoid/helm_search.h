@@ -94,12 +94,16 @@ fw_status fw_helm_search(fw_helm_ctx *ctx, const fw_target *t, int n, int allowe
 fw_status fw_helm_clears_after(fw_helm_ctx *ctx, const fw_target *t, int n, double helm,
                                double delay, bool *clears, fw_error *err);
 
-/* Clearance (smallest normalised domain radius, >= 1: all out) of turning
- * by `turn` rad (signed, + = to starboard) with `helm` (rad, toward it) and
- * then steadying; turn 0: of steadying on the present heading now.  (For
- * the policy: whether to steady, and whether the return to the original
- * course is safe.) */
-fw_status fw_helm_turn_clearance(fw_helm_ctx *ctx, const fw_target *t, int n, double helm,
-                                 double turn, double *clearance, fw_error *err);
+/* Clearance (smallest normalised domain radius, >= 1: all out) of the track
+ * under a heading autopilot (nomoto/track.h): steadying on a heading, or the
+ * return to the course.  For the policy, which then steers with the same
+ * autopilot.  With `beyond` the track is continued past the horizon on its
+ * last heading at constant velocity (the closest point of approach of every
+ * target from there counts too): a return judged over the horizon alone would
+ * meet, just beyond it, a ship converging slowly at the own speed, and the
+ * verdict would change as the horizon slides. */
+fw_status fw_helm_steer_clearance(fw_helm_ctx *ctx, const fw_target *t, int n,
+                                  const fw_steer_def *ap, bool beyond, double *clearance,
+                                  fw_error *err);
 
 #endif

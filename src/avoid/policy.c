@@ -13,7 +13,7 @@ fw_policy_def fw_default_policy_def(void)
                            .standon_act_range = 0.5 * FW_NMILE,
                            .standon_act_time = 120.0,
                            .standon_lookahead = 120.0,
-                           .steady_margin = 1.1,
+                           .steady_margin = 1.2,
                            .min_alteration = fw_deg_to_rad(30.0),
                            .blocked_time = 120.0,
                            .reopen_step = fw_deg_to_rad(30.0),
@@ -30,7 +30,6 @@ const char *fw_policy_mode_name(fw_policy_mode m)
     case FW_MODE_STANDBY: return "standby";
     case FW_MODE_AVOID: return "avoid";
     case FW_MODE_STEADY: return "steady";
-    case FW_MODE_COUNTER: return "counter";
     case FW_MODE_AUTOPILOT: return "autopilot";
     }
     return "?";
@@ -44,7 +43,6 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->psi_hold = 0.0;
     p->side = FW_SIDE_NONE;
     p->helm = 0.0;
-    p->avoid_helm = 0.0;
     p->primary = -1;
     p->primary_id[0] = '\0';
     p->t_mode = 0.0;
@@ -136,7 +134,7 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
 {
     bool act;
     fw_status st = should_act(p, ctx, tg, n, as, d->primary, &d->search, &act, &d->reason, err);
-    if (st || !act)
+    if (st || !act || d->search.side == FW_SIDE_NONE)
         return st;
     d->acted = true;
     p->t_blocked = -1.0;
@@ -144,24 +142,25 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
         p->psi_ref = own->psi;
     p->side = d->search.side;
     p->helm = d->search.helm;
-    p->avoid_helm = fabs(p->helm);
     p->primary = d->primary;
     snprintf(p->primary_id, sizeof p->primary_id, "%s", tg[d->primary].id);
     set_mode(p, FW_MODE_AVOID, t);
     return FW_OK;
 }
 
-/* Is the return from here to psi_ref safe (nothing to return from: yes)? */
-static fw_status return_safe(fw_policy *p, fw_helm_ctx *ctx, const fw_own_state *own,
-                             const fw_target *tg, int n, double need, bool *safe, fw_error *err)
+/* Clearance of steering with the autopilot on heading psi from now, over
+ * the decision horizon (beyond 0) or on past it (1: for the return). */
+static fw_status steer(const fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg, int n,
+                       double psi, int beyond, double *clearance, fw_error *err)
 {
-    double turn = fw_wrap_pi(p->psi_ref - own->psi), cl = INFINITY;
-    fw_status st = FW_OK;
-    if (fabs(turn) >= p->def.ap_done_heading)
-        st = fw_helm_turn_clearance(ctx, tg, n, p->def.ap_max_helm, turn, &cl, err);
-    *safe = cl >= need;
-    return st;
+    fw_steer_def ap = {.psi_ref = psi, .kp = p->def.ap_kp, .kd = p->def.ap_kd,
+                       .max_helm = p->def.ap_max_helm};
+    return fw_helm_steer_clearance(ctx, tg, n, &ap, beyond != 0, clearance, err);
 }
+
+/* t_blocked is kept through a return that is then given up: the pacing ship
+ * that blocks the return for good does so by letting it start and stop */
+static void start_return(fw_policy *p, double t) { set_mode(p, FW_MODE_AUTOPILOT, t); }
 
 fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef, double t,
                          const fw_own_state *own, const fw_target *tg, int n,
@@ -179,17 +178,22 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
     d->reason = "";
     double err_psi = fw_wrap_pi(own->psi - p->psi_ref);
 
-    /* returning: on only while the rest of the return keeps every target out */
-    if (p->mode == FW_MODE_COUNTER || p->mode == FW_MODE_AUTOPILOT) {
-        bool safe;
-        if ((st = return_safe(p, ctx, own, tg, n, 1.0, &safe, err)))
+    /* returning: on while the rest of the return keeps every target out, or
+     * while stopping it would do no better */
+    if (p->mode == FW_MODE_AUTOPILOT) {
+        double ret, hold;
+        if ((st = steer(p, ctx, tg, n, p->psi_ref, 1, &ret, err)))
             return st;
-        if (!safe) {
-            p->psi_hold = own->psi;
-            if (p->t_blocked < 0.0)
-                p->t_blocked = t;
-            set_mode(p, FW_MODE_STEADY, t);
-            d->reason = "the rest of the return would let a target in: steadying";
+        if (ret < 1.0) {
+            if ((st = steer(p, ctx, tg, n, own->psi, 1, &hold, err)))
+                return st;
+            if (hold > ret) {
+                p->psi_hold = own->psi;
+                if (p->t_blocked < 0.0)
+                    p->t_blocked = t;
+                set_mode(p, FW_MODE_STEADY, t);
+                d->reason = "the rest of the return would let a target in: steadying";
+            }
         }
     }
     switch (p->mode) {
@@ -204,14 +208,14 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
             return st;
         break;
     case FW_MODE_AVOID: {
-        double turned = fabs(fw_wrap_pi(own->psi - p->psi_ref)), hold;
+        double turned = fabs(err_psi), hold;
         bool far_enough = hdef->track.max_turn > 0.0 && turned >= hdef->track.max_turn;
         /* rule 8(b): one alteration large enough to be readily apparent,
          * not a succession of small ones; less only once the target passes */
         int k = p->primary_id[0] ? fw_target_find(tg, n, p->primary_id)
                                  : (p->primary < n ? p->primary : -1);
         bool apparent = turned >= p->def.min_alteration || k < 0 || as[k].tcpa < 0.0;
-        if ((st = fw_helm_turn_clearance(ctx, tg, n, 0.0, 0.0, &hold, err)))
+        if ((st = steer(p, ctx, tg, n, own->psi, 0, &hold, err)))
             return st;
         if ((apparent && hold >= p->def.steady_margin) || (hold >= 1.0 && far_enough)) {
             d->reason = "steadying on this heading keeps every target out: steadying";
@@ -222,18 +226,25 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
             d->reason = "avoiding: holding the helm";
             if (res->side == p->side && fabs(res->helm) > fabs(p->helm)) {
                 p->helm = res->helm;
-                p->avoid_helm = fabs(p->helm);
-                d->reason = "avoiding: the search asks for more helm";
+                            d->reason = "avoiding: the search asks for more helm";
             }
         }
         break;
     }
     case FW_MODE_STEADY: {
         p->helm = autopilot(p, own, p->psi_hold);
-        double hold;
-        if ((st = fw_helm_turn_clearance(ctx, tg, n, 0.0, 0.0, &hold, err)))
+        double hold, ret;
+        if ((st = steer(p, ctx, tg, n, p->psi_hold, 0, &hold, err)))
             return st;
         if (hold < 1.0) {
+            if (!res->threat) {
+                /* easing the rudder keeps them out where steering back to
+                 * psi_hold would not: hold the heading reached instead */
+                d->reason = "steady: holding the present heading keeps every target out";
+                p->psi_hold = own->psi;
+                p->helm = autopilot(p, own, p->psi_hold);
+                break;
+            }
             d->reason = "steady: a target would enter the domain";
             if ((st = maybe_act(p, ctx, t, own, tg, n, as, d, err)))
                 return st;
@@ -241,52 +252,38 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
         }
         /* no wait for TCPA < 0 here: a ship that keeps pacing the own ship
          * may never pass, and the return is checked against every target
-         * over the horizon.  The margin: a return that only just clears would be abandoned at
-         * the next step's slightly different prediction */
-        bool safe;
-        if ((st = return_safe(p, ctx, own, tg, n, p->def.steady_margin, &safe, err)))
+         * over the horizon.  The margin: a return that only just clears
+         * would be abandoned at the next step's slightly different
+         * prediction */
+        if ((st = steer(p, ctx, tg, n, p->psi_ref, 1, &ret, err)))
             return st;
-        if (!safe) {
-            d->reason = "steady: returning now would let a target in";
-            if (p->t_blocked < 0.0)
-                p->t_blocked = t;
-            /* a ship pacing the own ship on a converging course blocks the
-             * return for as long as it stays: open the range by altering
-             * further away (while that is clear and within max_turn) */
-            double turn = fw_wrap_pi(p->psi_ref - p->psi_hold);
-            if (t - p->t_blocked >= p->def.blocked_time && fabs(turn) > 0.0) {
-                double more = -copysign(p->def.reopen_step, turn), cl = 0.0;
-                bool within = hdef->track.max_turn <= 0.0 ||
-                              fabs(turn - more) <= hdef->track.max_turn;
-                if (within &&
-                    (st = fw_helm_turn_clearance(ctx, tg, n, p->def.ap_max_helm,
-                                                 fw_wrap_pi(p->psi_hold + more - own->psi), &cl,
-                                                 err)))
-                    return st;
-                if (within && cl >= p->def.steady_margin) {
-                    p->psi_hold = fw_wrap_pi(p->psi_hold + more);
-                    p->t_blocked = t;
-                    d->reason = "steady: the return stays blocked: altering further to open the range";
-                }
-            }
+        if (ret >= p->def.steady_margin) {
+            d->reason = "the return is clear: back to the course";
+            p->helm = autopilot(p, own, p->psi_ref);
+            start_return(p, t);
             break;
         }
-        d->reason = "the return is clear: opposite helm to return";
-        /* the helm the return was predicted with (return_safe) */
-        p->helm = copysign(p->def.ap_max_helm, fw_wrap_pi(p->psi_ref - own->psi));
-        p->side = p->helm >= 0.0 ? FW_SIDE_PORT : FW_SIDE_STARBOARD; /* the avoiding side */
-        set_mode(p, FW_MODE_COUNTER, t);
+        d->reason = "steady: returning now would let a target in";
+        if (p->t_blocked < 0.0)
+            p->t_blocked = t;
+        /* a ship pacing the own ship on a converging course blocks the
+         * return for as long as it stays: open the range by altering
+         * further away (while that is clear and within max_turn) */
+        double away = fw_wrap_pi(p->psi_hold - p->psi_ref);
+        if (t - p->t_blocked >= p->def.blocked_time && away != 0.0) {
+            double next = p->psi_hold + copysign(p->def.reopen_step, away), cl;
+            bool within = hdef->track.max_turn <= 0.0 ||
+                          fabs(fw_wrap_pi(next - p->psi_ref)) <= hdef->track.max_turn;
+            if (within && (st = steer(p, ctx, tg, n, next, 1, &cl, err)))
+                return st;
+            if (within && cl >= p->def.steady_margin) {
+                p->psi_hold = fw_wrap_pi(next);
+                p->t_blocked = t;
+                d->reason = "steady: the return stays blocked: altering further to open the range";
+            }
+        }
         break;
     }
-    case FW_MODE_COUNTER:
-        d->reason = "returning: opposite helm";
-        /* the yaw rate has reversed, or the course is already regained */
-        if (own->r * p->side <= 0.0 || err_psi * p->side <= 0.0) {
-            set_mode(p, FW_MODE_AUTOPILOT, t);
-        } else {
-            break;
-        }
-        /* fall through */
     case FW_MODE_AUTOPILOT:
         d->reason = "returning: heading autopilot";
         p->helm = autopilot(p, own, p->psi_ref);

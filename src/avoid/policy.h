@@ -4,23 +4,26 @@
  *             (-> AVOID) when the policy below says so
  *   AVOID     hold the avoidance helm (raised if the search asks for more) until
  *             steadying on the present heading would keep every target out
- *             with steady_margin to spare (or the turn reaches the
+ *             with steady_margin to spare and the course has changed by
+ *             min_alteration or the target has passed (or the turn reaches the
  *             prediction's max_turn with every target out)
  *   STEADY    hold the heading reached (the autopilot below on it) until the
- *             predicted return to the original course keeps every target out
- *             with steady_margin to spare; act again (->
- *             AVOID) by the STANDBY rules if a new threat calls for it.
+ *             return to the original course keeps every target out with
+ *             steady_margin to spare; act again (-> AVOID) by the STANDBY
+ *             rules if a new threat calls for it.  Steadying and the return
+ *             are predicted with the autopilot itself (fw_track_predict_steer),
+ *             so what is checked is what is then done.
  *             A return blocked for blocked_time alters reopen_step further
  *             away, up to the prediction's max_turn in all: a ship pacing the
  *             own ship on a converging course would otherwise block it for
  *             good, and coming back part of the way only invites it again
  *             (the rule 8(b) succession of small alterations)
- *   COUNTER   opposite helm of the same size (the paper's first return step)
- *             until the yaw rate has reversed
- *   AUTOPILOT PD on the heading error back to the original course, then STANDBY
+ *   AUTOPILOT PD on the heading error back to the original course (its first
+ *             orders are the opposite helm, the paper's return), then STANDBY
  *             (which from then on keeps that course with the same PD: without
  *             disturbances its helm is near zero, the paper's "amidships").
- *             If the rest of the return stops being safe, back to STEADY.
+ *             If the rest of the return stops being safe and stopping it would
+ *             do better, back to STEADY.
  *
  * Point of action for a give-way (or head-on, overtaking) own ship, the first of:
  *   - range to the threat <= act_range (the paper: act at least 1 nm before);
@@ -45,7 +48,6 @@ typedef enum fw_policy_mode {
     FW_MODE_STANDBY,
     FW_MODE_AVOID,
     FW_MODE_STEADY,
-    FW_MODE_COUNTER,
     FW_MODE_AUTOPILOT,
 } fw_policy_mode;
 
@@ -58,7 +60,7 @@ typedef struct fw_policy_def {
     double standon_act_time;   /* s, 120: domain entry this close -> the give-way ship is late */
     double standon_lookahead;  /* s, 120: ... or the largest helm would no longer keep every
                                   target out if the order waited this long (0: off) */
-    double steady_margin;      /* 1.1: AVOID -> STEADY once steadying keeps every target
+    double steady_margin;      /* 1.2: AVOID -> STEADY once steadying keeps every target
                                   this far out (normalised domain radius) ... */
     double min_alteration;     /* rad, 30 deg (Woerner's "readily apparent"): ... and the heading has changed this much
                                   (rule 8(b)) or the target has passed */
@@ -86,7 +88,6 @@ typedef struct fw_policy {
     double psi_hold;  /* rad, the heading STEADY keeps */
     int side;         /* side of the current manoeuvre */
     double helm;      /* rad, last order */
-    double avoid_helm; /* rad, size of the avoidance helm (the counter helm's) */
     /* the target the manoeuvre is for: by its id (fw_target.id) when it has
      * one, so that the caller may reorder, add and drop targets between steps
      * (a target no longer in the list counts as passed); by its index in the

@@ -60,6 +60,60 @@ static void rotate(double *s, double *c, double d)
     *c = c0 * cd - s0 * sd;
 }
 
+/* Position, speed and drift along a predicted track (see track.h). */
+typedef struct kin {
+    const fw_nomoto_kb *kb;
+    double L;
+    bool slip;                /* the knowledge base has drift or speed loss */
+    double east, north;
+    double U, U0, beta;       /* speed now, on a straight course, drift angle */
+    double sb, cb;            /* sin, cos of beta, kept by rotation: beta moves slowly */
+    double cse, csn;          /* unit vector of the course over ground */
+    double Eb, Eu;            /* lag factors over one step */
+} kin;
+
+static void kin_init(kin *k, const fw_ship *ship, const fw_own_state *s, double dt)
+{
+    const fw_nomoto_kb *kb = &ship->nomoto;
+    k->kb = kb;
+    k->L = ship->L;
+    k->slip = kb->drift > 0.0 || kb->speed_loss > 0.0;
+    k->east = s->east, k->north = s->north;
+    k->U = s->U > 0.0 ? s->U : 0.0;
+    k->U0 = s->U0 > 0.0 ? s->U0 : k->U;
+    k->beta = s->beta;
+    k->sb = sin(s->beta), k->cb = cos(s->beta);
+    k->cse = sin(s->psi - s->beta), k->csn = cos(s->psi - s->beta);
+    /* the lags are solved exactly for an input held over a step (the yaw
+     * rate at its end): a first-order hold would gain nothing at dt = 5 s
+     * against lags of a minute and more */
+    k->Eb = kb->drift_lag_s > 0.0 ? exp(-dt / kb->drift_lag_s) : 0.0;
+    k->Eu = kb->speed_lag_s > 0.0 ? exp(-dt / kb->speed_lag_s) : 0.0;
+}
+
+/* One step of dt from heading vector (ps, pc) to (sn, cs), yaw rate r at its end. */
+static void kin_step(kin *k, double ps, double pc, double sn, double cs, double r, double dt)
+{
+    if (!k->slip) {
+        /* trapezoid on the unit vectors: direction exact for a constant
+         * rate, length short by (d psi)^2/12 (< 1e-4) */
+        k->east += 0.5 * k->U * dt * (ps + sn);
+        k->north += 0.5 * k->U * dt * (pc + cs);
+        return;
+    }
+    double rn = k->U > 0.1 ? r * k->L / k->U : 0.0; /* r' */
+    double b_ss = k->kb->drift * rn;
+    double u_ss = k->U0 * (1.0 - fmin(k->kb->speed_loss * fabs(rn), 0.9));
+    double U1 = u_ss + (k->U - u_ss) * k->Eu;
+    double b1 = b_ss + (k->beta - b_ss) * k->Eb;
+    rotate(&k->sb, &k->cb, b1 - k->beta);
+    k->beta = b1;
+    double ce1 = sn * k->cb - cs * k->sb, cn1 = cs * k->cb + sn * k->sb;
+    k->east += 0.5 * dt * (k->U * k->cse + U1 * ce1);
+    k->north += 0.5 * dt * (k->U * k->csn + U1 * cn1);
+    k->U = U1, k->cse = ce1, k->csn = cn1;
+}
+
 fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
                            double helm, fw_track *out, fw_error *err)
 {
@@ -90,18 +144,10 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
     out->helm = helm;
     double r0 = s->r, v0 = s->rdot, turned0 = 0.0;
     double sn = sin(s->psi), cs = cos(s->psi);
-    double east = s->east, north = s->north, prev_turn = 0.0;
+    double prev_turn = 0.0;
     bool steadied = false;
-    /* drift and speed: the lags are solved exactly for an input held over a
-     * sample (the yaw rate at its end), a first-order hold would gain nothing
-     * at dt = 5 s against lags of a minute and more */
-    const fw_nomoto_kb *kb = &ship->nomoto;
-    bool slip = kb->drift > 0.0 || kb->speed_loss > 0.0;
-    double Ud = s->U > 0.0 ? s->U : 0.0, U0 = s->U0 > 0.0 ? s->U0 : Ud, beta = s->beta;
-    double Eb = kb->drift_lag_s > 0.0 ? exp(-dt / kb->drift_lag_s) : 0.0;
-    double Eu = kb->speed_lag_s > 0.0 ? exp(-dt / kb->speed_lag_s) : 0.0;
-    double cse = sin(s->psi - beta), csn = cos(s->psi - beta); /* course over ground */
-    double sb = sin(beta), cb = cos(beta); /* kept by rotation: beta moves slowly */
+    kin kn;
+    kin_init(&kn, ship, s, dt);
     int k = 0;
     for (int p = 0; p < 3 && k < n; p++) {
         double t_end = p < 2 ? piece_start[p + 1] : INFINITY;
@@ -137,30 +183,14 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
                     r = rd = 0.0;
                     dl = 0.0;
                 }
-                if (k > 0 && !slip) {
-                    /* trapezoid on the unit vectors: direction exact for a
-                     * constant rate, length short by (d psi)^2/12 (< 1e-4) */
+                if (k > 0) {
                     double ps = sn, pcs = cs;
                     rotate(&sn, &cs, turn - prev_turn);
-                    east += 0.5 * s->U * dt * (ps + sn);
-                    north += 0.5 * s->U * dt * (pcs + cs);
-                } else if (k > 0) {
-                    rotate(&sn, &cs, turn - prev_turn);
-                    double rn = Ud > 0.1 ? r * ship->L / Ud : 0.0; /* r' */
-                    double b_ss = kb->drift * rn;
-                    double u_ss = U0 * (1.0 - fmin(kb->speed_loss * fabs(rn), 0.9));
-                    double U1 = u_ss + (Ud - u_ss) * Eu;
-                    double b1 = b_ss + (beta - b_ss) * Eb;
-                    rotate(&sb, &cb, b1 - beta);
-                    beta = b1;
-                    double ce1 = sn * cb - cs * sb, cn1 = cs * cb + sn * sb;
-                    east += 0.5 * dt * (Ud * cse + U1 * ce1);
-                    north += 0.5 * dt * (Ud * csn + U1 * cn1);
-                    Ud = U1, cse = ce1, csn = cn1;
+                    kin_step(&kn, ps, pcs, sn, cs, r, dt);
                 }
                 prev_turn = turn;
-                out->east[k] = east;
-                out->north[k] = north;
+                out->east[k] = kn.east;
+                out->north[k] = kn.north;
                 out->psi[k] = s->psi + turn;
                 out->r[k] = r;
                 out->rdot[k] = rd;
@@ -178,6 +208,75 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
             fw_nomoto_piece_eval(&pc, len, &r0, &v0, &turned);
             turned0 += turned;
         }
+    }
+    return FW_OK;
+}
+
+fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
+                                 const fw_own_state *s, const fw_steer_def *ap, fw_track *out,
+                                 fw_error *err)
+{
+    int n = fw_track_samples(def);
+    if (n > out->cap)
+        return fw_fail(err, FW_EINPUT, "track needs %d samples, buffer holds %d", n, out->cap);
+    double hmax = fmin(fabs(ap->max_helm), ship->rudder_max);
+    /* the indices follow the order (they depend on the rudder angle, as the
+     * step loop's ship does): by whole degrees, evaluated when first needed */
+    enum { NDEG = 91 };
+    fw_nomoto_indices tab[NDEG];
+    bool have[NDEG] = {false};
+    double U_kn = fw_ms_to_kn(s->U);
+    /* the order is re-evaluated every second, as the step loop does */
+    int sub = (int)fmax(1.0, round(def->dt));
+    double h = def->dt / sub;
+    kin kn;
+    kin_init(&kn, ship, s, h);
+    double psi = s->psi, r = s->r, v = s->rdot, delta = s->delta;
+    double sn = sin(psi), cs = cos(psi);
+    out->n = n;
+    out->dt = def->dt;
+    out->helm = NAN;
+    for (int k = 0; k < n; k++) {
+        if (k > 0)
+            for (int j = 0; j < sub; j++) {
+                double order = -ap->kp * fw_wrap_pi(psi - ap->psi_ref) - ap->kd * r;
+                order = fmax(-hmax, fmin(hmax, order));
+                int deg = (int)fmin(NDEG - 1, round(fw_rad_to_deg(fabs(order))));
+                if (!have[deg]) {
+                    fw_status st = fw_nomoto_indices_at(&ship->nomoto, U_kn, deg, &tab[deg], err);
+                    if (st)
+                        return st;
+                    have[deg] = true;
+                }
+                const fw_nomoto_indices *ix = &tab[deg];
+                /* the rudder: ramp to the order at the rudder rate, then hold */
+                double ramp = fmin(h, fabs(order - delta) / ship->rudder_rate);
+                double rho = order > delta ? ship->rudder_rate : -ship->rudder_rate;
+                double psi0 = psi, turned;
+                fw_nomoto_piece pc;
+                if (ramp > 0.0) {
+                    fw_nomoto_piece_init(&pc, ix, delta, rho, r, v);
+                    fw_nomoto_piece_eval(&pc, ramp, &r, &v, &turned);
+                    psi += turned;
+                    delta += rho * ramp;
+                }
+                if (h - ramp > 0.0) {
+                    fw_nomoto_piece_init(&pc, ix, delta, 0.0, r, v);
+                    fw_nomoto_piece_eval(&pc, h - ramp, &r, &v, &turned);
+                    psi += turned;
+                }
+                double ps = sn, pcs = cs;
+                rotate(&sn, &cs, psi - psi0);
+                kin_step(&kn, ps, pcs, sn, cs, r, h);
+            }
+        out->east[k] = kn.east;
+        out->north[k] = kn.north;
+        out->psi[k] = psi;
+        out->r[k] = r;
+        out->rdot[k] = v;
+        out->delta[k] = delta;
+        out->sin_psi[k] = sn;
+        out->cos_psi[k] = cs;
     }
     return FW_OK;
 }

@@ -60,6 +60,23 @@ void fw_track_free(fw_track *tr);
 fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
                            double helm, fw_track *out, fw_error *err);
 
+/* A heading autopilot: helm = -kp (psi - psi_ref) - kd r, within +-max_helm. */
+typedef struct fw_steer_def {
+    double psi_ref;   /* rad */
+    double kp;        /* rad of helm per rad of heading error */
+    double kd;        /* s */
+    double max_helm;  /* rad */
+} fw_steer_def;
+
+/* Predicts the track under that autopilot, the order re-evaluated every
+ * second (as the step loop does) and the rudder following at its rate; the
+ * Nomoto indices at U and the order's angle (to the nearest degree).  def->max_turn and def->delay are not used.
+ * For the policy's steadying and return, so that what it checks is what it
+ * then does. */
+fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
+                                 const fw_own_state *s, const fw_steer_def *ap, fw_track *out,
+                                 fw_error *err);
+
 /* The mirror image of src about the line of the initial heading: the track
  * for -helm when the start is symmetric (r = rdot = delta = 0). */
 void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst);

@@ -264,7 +264,7 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
         if (d.mode != mode_prev) {
             fprintf(log, "%9.1f  %s -> %s, helm %.1f deg: %s\n", t, fw_policy_mode_name(mode_prev),
                     fw_policy_mode_name(d.mode), fw_rad_to_deg(d.helm), d.reason ? d.reason : "");
-            if (d.mode == FW_MODE_COUNTER && isnan(sum->t_return))
+            if (d.mode == FW_MODE_AUTOPILOT && isnan(sum->t_return))
                 sum->t_return = t;
             if (mode_prev == FW_MODE_AUTOPILOT && d.mode == FW_MODE_STANDBY &&
                 isnan(sum->t_on_course))

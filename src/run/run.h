@@ -76,7 +76,7 @@ typedef struct fw_run_summary {
     int act_side;
     double act_helm;        /* rad */
     double max_helm;        /* rad, largest |helm order| */
-    double t_return;        /* s, counter helm began (NAN if never) */
+    double t_return;        /* s, the return to the course began (NAN if never) */
     double t_on_course;     /* s, back on course and in standby (NAN if never) */
     double heading_error;   /* rad, final heading minus the planned course */
     double cross_track;     /* m, final offset from the planned track (+ starboard) */
