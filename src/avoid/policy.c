@@ -16,6 +16,7 @@ fw_policy_def fw_default_policy_def(void)
                            .steady_margin = 1.2,
                            .min_alteration = fw_deg_to_rad(30.0),
                            .blocked_time = 120.0,
+                           .min_avoid_time = 30.0,
                            .reopen_step = fw_deg_to_rad(30.0),
                            .ap_kp = 1.0,
                            .ap_kd = 20.0,
@@ -217,7 +218,11 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
         bool apparent = turned >= p->def.min_alteration || k < 0 || as[k].tcpa < 0.0;
         if ((st = steer(p, ctx, tg, n, own->psi, 0, &hold, err)))
             return st;
-        if ((apparent && hold >= p->def.steady_margin) || (hold >= 1.0 && far_enough)) {
+        /* a minimum time at the helm: ships on SUMO's polyline lanes change
+         * course at each vertex, and their constant-velocity tracks swing
+         * with it; without it the order would follow every swing */
+        bool dwelt = t - p->t_mode >= p->def.min_avoid_time;
+        if (dwelt && ((apparent && hold >= p->def.steady_margin) || (hold >= 1.0 && far_enough))) {
             d->reason = "steadying on this heading keeps every target out: steadying";
             p->psi_hold = own->psi;
             p->helm = autopilot(p, own, p->psi_hold);

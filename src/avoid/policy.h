@@ -2,7 +2,8 @@
  *
  *   STANDBY   rudder amidships; every step: assess, search the helm, and act
  *             (-> AVOID) when the policy below says so
- *   AVOID     hold the avoidance helm (raised if the search asks for more) until
+ *   AVOID     hold the avoidance helm (raised if the search asks for more), for
+ *             min_avoid_time at least and then until
  *             steadying on the present heading would keep every target out
  *             with steady_margin to spare and the course has changed by
  *             min_alteration or the target has passed (or the turn reaches the
@@ -64,6 +65,7 @@ typedef struct fw_policy_def {
                                   this far out (normalised domain radius) ... */
     double min_alteration;     /* rad, 30 deg (Woerner's "readily apparent"): ... and the heading has changed this much
                                   (rule 8(b)) or the target has passed */
+    double min_avoid_time;     /* s, 30: AVOID lasts at least this long */
     double blocked_time;       /* s, 120: a return blocked this long in STEADY ... */
     double reopen_step;        /* rad, 30 deg: ... alters this much further away */
     /* heading autopilot: helm = -kp * error - kd * r, limited to ap_max_helm.
