@@ -21,6 +21,7 @@
  * Outputs (in the run directory; every number printed with a fixed format and
  * no clock time anywhere, so the same scenario and seed give identical files):
  *   own.csv         t, east, north, heading, u, v, r, rudder, helm order, propeller, mode
+ *                   (standby, avoid, steady, autopilot: avoid/policy.h)
  *   targets.csv     t, id, east, north, heading, speed, range, bearing (outputs.targets_csv)
  *   encounters.csv  one row per target met
  *   traffic_encounters.csv  one row per pair episode of the survey (only with one)
