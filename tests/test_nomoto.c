@@ -183,9 +183,10 @@ static void test_track_mirror_and_limit(void)
 
 /* The autopilot prediction is the closed loop it stands for: one-second
  * steps of the fixed-helm predictor with the PD order recomputed each second
- * give the same track (no drift terms in c3, so nothing is lost between
- * calls; the predictor rounds the order to whole degrees for the indices,
- * which moves it by centimetres), and it settles on the ordered heading. */
+ * give nearly the same track (no drift terms in c3, so nothing is lost
+ * between calls; the predictor updates the order every 5 s and rounds it to
+ * whole degrees for the indices: 2.7 m apart after 10 minutes), and it
+ * settles on the ordered heading. */
 static void test_steer_prediction_is_the_closed_loop(void)
 {
     fw_track_def def = fw_default_track_def();
@@ -211,7 +212,7 @@ static void test_steer_prediction_is_the_closed_loop(void)
     }
     int last = pred.n - 1;
     CHECK_NEAR(fw_wrap_pi(pred.psi[last]), 0.0, fw_deg_to_rad(1.0));
-    CHECK_MSG(worst < 20.0, "%.1f m apart", worst);
+    CHECK_MSG(worst < 10.0, "%.1f m apart", worst);
     printf("  autopilot prediction vs one-second closed loop: %.1f m at most over 600 s, "
            "heading %.2f deg at the end\n", worst, fw_rad_to_deg(fw_wrap_pi(pred.psi[last])));
     fw_track_free(&pred);
