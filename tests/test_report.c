@@ -133,6 +133,9 @@ static void test_hand_summary(void)
     CHECK_NEAR(csv_get(p, w, "ci_high"), 10.0 + t2 * 2.0 / sqrt(3.0), 1e-7);
     /* by type: head-on 4, 2, 0; overtaking (either way) 2, 4, 0; crossing 2, 6, 10 */
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=head_on_per_h", "mean"), 2.0, 1e-9);
+    /* 4, 2, 0: the t interval would reach -2.97; a rate cannot, it is cut at 0 */
+    CHECK(csv_get(p, "domain_m=100,measure=head_on_per_h", "ci_low") == 0.0);
+    CHECK_NEAR(csv_get(p, "domain_m=100,measure=head_on_per_h", "ci_high"), 2.0 + t2 * 2.0 / sqrt(3.0), 1e-7);
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=overtaking_per_h", "mean"), 2.0, 1e-9);
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=being_overtaken_per_h", "mean"), 4.0 / 3.0, 1e-9);
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=crossing_per_h", "mean"), 6.0, 1e-9);

@@ -6,6 +6,8 @@
  * independent units - encounters within one run share the run's traffic and
  * are not.  Yes/no outcomes per run (a collision happened) get a Wilson
  * interval instead, which does not collapse to [0, 0] when none happened.
+ * Every measure here is non-negative, so a t interval reaching below 0 (rare
+ * events: near misses in one run of twenty) is cut at 0.
  * Paired differences use replication i of both settings: same traffic, so
  * most of the traffic's variation cancels.
  */
@@ -93,7 +95,10 @@ static fw_estimate group_estimate(const fw_study_report *rep, int g, fw_measure_
         }
     if (fw_measures[id].share)
         return fw_wilson(k, ok, rep->level);
-    return fw_mean_ci(buf, n, rep->level);
+    fw_estimate e = fw_mean_ci(buf, n, rep->level);
+    if (e.lo < 0.0)
+        e.lo = 0.0;
+    return e;
 }
 
 /* A round bin width near x: 1, 2, 2.5 or 5 times a power of ten. */
