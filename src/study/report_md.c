@@ -106,8 +106,9 @@ static void md_key_table(FILE *f, const fw_study_report *rep)
 {
     char c[96], m[32];
     fprintf(f, "## Key measures\n\nMean over replications with its %.0f%% confidence interval "
-               "(Student t across replications, symmetric, so it can reach below zero for rare "
-               "events; runs with a collision: Wilson). Rates are per own-ship hour; CPA is the "
+               "(Student t across replications; for rare events its lower end would fall below "
+               "zero and is cut at 0, where these non-negative measures end; runs with a "
+               "collision: Wilson). Rates are per own-ship hour; CPA is the "
                "closest centre distance of an encounter, pooled over replications.\n\n",
             100 * rep->level);
     fprintf(f, "| density | domain (m) | runs |");
