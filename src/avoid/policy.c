@@ -13,6 +13,7 @@ fw_policy_def fw_default_policy_def(void)
                            .standon_act_range = 0.5 * FW_NMILE,
                            .standon_act_time = 120.0,
                            .standon_lookahead = 120.0,
+                           .standon_min_helm = fw_deg_to_rad(20.0),
                            .steady_margin = 1.2,
                            .min_alteration = fw_deg_to_rad(30.0),
                            .blocked_time = 120.0,
@@ -42,6 +43,7 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->mode = FW_MODE_STANDBY;
     p->psi_ref = 0.0;
     p->psi_hold = 0.0;
+    p->psi_act = 0.0;
     p->side = FW_SIDE_NONE;
     p->helm = 0.0;
     p->primary = -1;
@@ -65,9 +67,10 @@ static bool gives_way(fw_situation s)
 /* Should a STANDBY ship act now against the threats?  Sets *why. */
 static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg, int n,
                             const fw_assessment *as, int primary, const fw_helm_result *res,
-                            bool *act, const char **why, fw_error *err)
+                            bool *act, double *least, const char **why, fw_error *err)
 {
     *act = false;
+    *least = 0.0;
     /* in the middle of its own manoeuvre the own ship is no stand-on ship:
      * its turn may have put the target it gives way to on its port side */
     bool give_way = p->mode == FW_MODE_STEADY;
@@ -96,6 +99,9 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
         } else {
             *why = "stand-on: keeping course and speed (rule 17)";
         }
+        /* rule 17(b): the action that best aids, not the least that clears */
+        if (*act)
+            *least = p->def.standon_min_helm;
         return FW_OK;
     }
     if (!res->feasible) {
@@ -134,15 +140,18 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
                            fw_decision *d, fw_error *err)
 {
     bool act;
-    fw_status st = should_act(p, ctx, tg, n, as, d->primary, &d->search, &act, &d->reason, err);
+    double least;
+    fw_status st = should_act(p, ctx, tg, n, as, d->primary, &d->search, &act, &least, &d->reason,
+                              err);
     if (st || !act || d->search.side == FW_SIDE_NONE)
         return st;
     d->acted = true;
     p->t_blocked = -1.0;
+    p->psi_act = own->psi;
     if (p->mode == FW_MODE_STANDBY && !p->course_set)
         p->psi_ref = own->psi;
     p->side = d->search.side;
-    p->helm = d->search.helm;
+    p->helm = copysign(fmax(fabs(d->search.helm), least), d->search.helm);
     p->primary = d->primary;
     snprintf(p->primary_id, sizeof p->primary_id, "%s", tg[d->primary].id);
     set_mode(p, FW_MODE_AVOID, t);
@@ -210,7 +219,10 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
         break;
     case FW_MODE_AVOID: {
         double turned = fabs(err_psi), hold;
-        bool far_enough = hdef->track.max_turn > 0.0 && turned >= hdef->track.max_turn;
+        /* this manoeuvre has turned as far as the predictions go: steady
+         * and decide again from there rather than turn round in the traffic */
+        bool far_enough = hdef->track.max_turn > 0.0 &&
+                          fabs(fw_wrap_pi(own->psi - p->psi_act)) >= hdef->track.max_turn;
         /* rule 8(b): one alteration large enough to be readily apparent,
          * not a succession of small ones; less only once the target passes */
         int k = p->primary_id[0] ? fw_target_find(tg, n, p->primary_id)
@@ -222,8 +234,9 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
          * course at each vertex, and their constant-velocity tracks swing
          * with it; without it the order would follow every swing */
         bool dwelt = t - p->t_mode >= p->def.min_avoid_time;
-        if (dwelt && ((apparent && hold >= p->def.steady_margin) || (hold >= 1.0 && far_enough))) {
-            d->reason = "steadying on this heading keeps every target out: steadying";
+        if (dwelt && ((apparent && hold >= p->def.steady_margin) || far_enough)) {
+            d->reason = far_enough ? "turned as far as the prediction goes: steadying"
+                                   : "steadying on this heading keeps every target out: steadying";
             p->psi_hold = own->psi;
             p->helm = autopilot(p, own, p->psi_hold);
             set_mode(p, FW_MODE_STEADY, t);
@@ -231,7 +244,7 @@ fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef
             d->reason = "avoiding: holding the helm";
             if (res->side == p->side && fabs(res->helm) > fabs(p->helm)) {
                 p->helm = res->helm;
-                            d->reason = "avoiding: the search asks for more helm";
+                d->reason = "avoiding: the search asks for more helm";
             }
         }
         break;

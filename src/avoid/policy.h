@@ -6,8 +6,9 @@
  *             min_avoid_time at least and then until
  *             steadying on the present heading would keep every target out
  *             with steady_margin to spare and the course has changed by
- *             min_alteration or the target has passed (or the turn reaches the
- *             prediction's max_turn with every target out)
+ *             min_alteration or the target has passed, or the turn reaches the
+ *             prediction's max_turn (then it steadies and decides again rather
+ *             than turn round in the traffic)
  *   STEADY    hold the heading reached (the autopilot below on it) until the
  *             return to the original course keeps every target out with
  *             steady_margin to spare; act again (-> AVOID) by the STANDBY
@@ -37,8 +38,9 @@
  * when the predicted domain entry is closer than standon_act_time, the range
  * below standon_act_range, or the largest helm ordered standon_lookahead s
  * later would no longer keep every target out (rule 17(b): the own ship's
- * action alone must then avoid it, and a 333 m ship needs minutes), and never
- * to port for a target on the port side.
+ * action alone must then avoid it, and a 333 m ship needs minutes), with at
+ * least standon_min_helm (the action that best aids, not the least that
+ * clears), and never to port for a target on the port side.
  */
 #ifndef FW_POLICY_H
 #define FW_POLICY_H
@@ -61,6 +63,7 @@ typedef struct fw_policy_def {
     double standon_act_time;   /* s, 120: domain entry this close -> the give-way ship is late */
     double standon_lookahead;  /* s, 120: ... or the largest helm would no longer keep every
                                   target out if the order waited this long (0: off) */
+    double standon_min_helm;   /* rad, 20 deg: a stand-on ship's action is at least this */
     double steady_margin;      /* 1.2: AVOID -> STEADY once steadying keeps every target
                                   this far out (normalised domain radius) ... */
     double min_alteration;     /* rad, 30 deg (Woerner's "readily apparent"): ... and the heading has changed this much
@@ -88,6 +91,7 @@ typedef struct fw_policy {
     fw_policy_mode mode;
     double psi_ref;   /* rad, the course before the manoeuvre */
     double psi_hold;  /* rad, the heading STEADY keeps */
+    double psi_act;   /* rad, the heading when the present AVOID began */
     int side;         /* side of the current manoeuvre */
     double helm;      /* rad, last order */
     /* the target the manoeuvre is for: by its id (fw_target.id) when it has
