@@ -64,7 +64,8 @@ static bool gives_way(fw_situation s)
     return s == FW_SIT_HEAD_ON || s == FW_SIT_GIVE_WAY || s == FW_SIT_OVERTAKING;
 }
 
-/* Should a STANDBY ship act now against the threats?  Sets *why. */
+/* Should a STANDBY (or STEADY) ship act now against the threats?  Sets *why,
+ * and *least: the smallest helm the action may take (rad). */
 static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg, int n,
                             const fw_assessment *as, int primary, const fw_helm_result *res,
                             bool *act, double *least, const char **why, fw_error *err)
@@ -85,7 +86,8 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
              * avoids it, with the largest helm, lookahead s from now */
             double h = fw_helm_value(ctx, res->side, fw_helm_count(ctx) - 1);
             bool later;
-            fw_status st = fw_helm_clears_after(ctx, tg, n, h, p->def.standon_lookahead, &later, err);
+            fw_status st =
+                fw_helm_clears_after(ctx, tg, n, h, p->def.standon_lookahead, &later, err);
             if (st)
                 return st;
             last = !later;
@@ -95,7 +97,9 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
         } else if (a->t_enter <= p->def.standon_act_time) {
             *act = true, *why = "stand-on: give-way ship has not acted, domain entry imminent";
         } else if (!res->feasible || last) {
-            *act = true, *why = "stand-on: give-way ship has not acted, the own ship alone must act now (rule 17(b))";
+            *act = true;
+            *why = "stand-on: give-way ship has not acted, the own ship alone must act now "
+                   "(rule 17(b))";
         } else {
             *why = "stand-on: keeping course and speed (rule 17)";
         }

@@ -66,8 +66,9 @@ typedef struct fw_policy_def {
     double standon_min_helm;   /* rad, 20 deg: a stand-on ship's action is at least this */
     double steady_margin;      /* 1.2: AVOID -> STEADY once steadying keeps every target
                                   this far out (normalised domain radius) ... */
-    double min_alteration;     /* rad, 30 deg (Woerner's "readily apparent"): ... and the heading has changed this much
-                                  (rule 8(b)) or the target has passed */
+    double min_alteration;     /* rad, 30 deg: ... and the heading has changed this much
+                                  (rule 8(b); Woerner's "readily apparent") or the
+                                  target has passed */
     double min_avoid_time;     /* s, 30: AVOID lasts at least this long */
     double blocked_time;       /* s, 120: a return blocked this long in STEADY ... */
     double reopen_step;        /* rad, 30 deg: ... alters this much further away */

@@ -71,7 +71,8 @@ typedef struct fw_steer_def {
 /* Predicts the track under that autopilot, the order re-evaluated every 5 s
  * at most (the step loop does it every second: within 3 m over 10 minutes)
  * and the rudder following at its rate; the
- * Nomoto indices at U and the order's angle (to the nearest degree).  def->max_turn and def->delay are not used.
+ * Nomoto indices at U and the order's angle (to the nearest degree).
+ * def->max_turn and def->delay are not used.
  * For the policy's steadying and return, so that what it checks is what it
  * then does. */
 fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
