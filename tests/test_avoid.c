@@ -190,8 +190,16 @@ static void test_only_one_side_works(void)
     fw_helm_ctx_destroy(ctx);
 }
 
-/* Closed loop on the Nomoto plant itself: the head-on case from t = 0. */
-static void test_policy_head_on_cycle(void)
+/* The policy in closed loop with the Nomoto plant (one second per step) and
+ * constant-velocity targets; what a scenario test asserts, without SUMO. */
+typedef struct loop_out {
+    double t_act, t_return, t_back, min_lambda, min_dist, max_psi, final_psi;
+    int first_side, acts;
+    fw_situation first_sit;
+    fw_policy_mode final_mode;
+} loop_out;
+
+static loop_out closed_loop(const fw_target *t0, int n, int seconds)
 {
     fw_helm_def hdef = fw_default_helm_def();
     fw_helm_ctx *ctx = make_ctx(&hdef);
@@ -199,44 +207,63 @@ static void test_policy_head_on_cycle(void)
     fw_policy pol;
     fw_policy_init(&pol, &pdef);
     fw_own_state own = {.U = fw_kn_to_ms(10)};
-    fw_target t = {.east = 0, .north = 2000, .course = FW_PI, .speed = fw_kn_to_ms(10)};
     fw_track_def one = {.dt = 1.0, .horizon = 1.0};
     fw_track step;
     fw_track_alloc(&step, 2, NULL);
-    double t_act = -1, t_counter = -1, t_done = -1, min_d = 1e9, max_psi = 0;
-    fw_assessment as[1];
-    int order[2];
-    for (int k = 0; k < 1500; k++) {
+    fw_target now[4];
+    fw_assessment as[4];
+    int order[8];
+    loop_out o = {.t_act = -1, .t_return = -1, .t_back = -1, .min_lambda = INFINITY,
+                  .min_dist = INFINITY};
+    for (int k = 0; k < seconds; k++) {
+        for (int i = 0; i < n; i++) {
+            now[i] = t0[i];
+            now[i].east += t0[i].speed * sin(t0[i].course) * k;
+            now[i].north += t0[i].speed * cos(t0[i].course) * k;
+            o.min_lambda = fmin(o.min_lambda,
+                                fw_domain_lambda(&hdef.domain, own.east, own.north, own.psi, &now[i]));
+            o.min_dist = fmin(o.min_dist, hypot(now[i].east - own.east, now[i].north - own.north));
+        }
         fw_decision d;
-        fw_target now = t;
-        now.east += t.speed * sin(t.course) * k;
-        now.north += t.speed * cos(t.course) * k;
         fw_policy_mode before = pol.mode;
-        CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, &now, 1, as, order, &d, NULL) == FW_OK);
-        if (d.acted && t_act < 0)
-            t_act = k;
-        if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) && d.mode == FW_MODE_AUTOPILOT)
-            t_counter = k;
-        if (before != FW_MODE_STANDBY && d.mode == FW_MODE_STANDBY && t_done < 0)
-            t_done = k;
-        min_d = fmin(min_d, hypot(now.east - own.east, now.north - own.north));
-        max_psi = fmax(max_psi, own.psi);
-        /* the plant: one second of the Nomoto model at the ordered helm */
+        CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, now, n, as, order, &d, NULL) == FW_OK);
+        if (d.acted && o.acts++ == 0) {
+            o.t_act = k;
+            o.first_side = d.search.side;
+            o.first_sit = as[d.primary].situation;
+        }
+        if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) &&
+            d.mode == FW_MODE_AUTOPILOT && o.t_return < 0)
+            o.t_return = k;
+        if (before == FW_MODE_AUTOPILOT && d.mode == FW_MODE_STANDBY && o.t_back < 0)
+            o.t_back = k;
+        o.max_psi = fmax(o.max_psi, own.psi);
         fw_track_predict(&c3, &one, &own, d.helm, &step, NULL);
         own.east = step.east[1], own.north = step.north[1], own.psi = step.psi[1];
         own.r = step.r[1], own.delta = step.delta[1], own.rdot = step.rdot[1];
     }
-    CHECK_MSG(t_act >= 0 && t_act <= 20, "acted at %.0f s", t_act);
-    CHECK_MSG(min_d >= 295, "closest approach %.0f m", min_d);
-    CHECK_MSG(t_counter > t_act && t_done > t_counter, "counter %.0f done %.0f", t_counter, t_done);
-    CHECK_NEAR(fw_wrap_pi(own.psi), 0.0, fw_deg_to_rad(1.5));
-    CHECK(max_psi > fw_deg_to_rad(20)); /* a substantial, readily apparent alteration */
-    CHECK(pol.mode == FW_MODE_STANDBY);
-    printf("  head-on closed loop: act %.0f s, counter %.0f s, back on course %.0f s, "
-           "closest %.0f m, max alteration %.0f deg\n",
-           t_act, t_counter, t_done, min_d, fw_rad_to_deg(max_psi));
+    o.final_psi = fw_wrap_pi(own.psi);
+    o.final_mode = pol.mode;
     fw_track_free(&step);
     fw_helm_ctx_destroy(ctx);
+    return o;
+}
+
+/* Closed loop on the Nomoto plant itself: the head-on case from t = 0. */
+static void test_policy_head_on_cycle(void)
+{
+    fw_target t = {.east = 0, .north = 2000, .course = FW_PI, .speed = fw_kn_to_ms(10)};
+    loop_out o = closed_loop(&t, 1, 1500);
+    CHECK_MSG(o.t_act >= 0 && o.t_act <= 20, "acted at %.0f s", o.t_act);
+    CHECK_MSG(o.min_dist >= 295, "closest approach %.0f m", o.min_dist);
+    CHECK_MSG(o.t_return > o.t_act && o.t_back > o.t_return, "return %.0f done %.0f", o.t_return,
+              o.t_back);
+    CHECK_NEAR(o.final_psi, 0.0, fw_deg_to_rad(1.5));
+    CHECK(o.max_psi > fw_deg_to_rad(20)); /* a substantial, readily apparent alteration */
+    CHECK(o.final_mode == FW_MODE_STANDBY);
+    printf("  head-on closed loop: act %.0f s, return %.0f s, back on course %.0f s, "
+           "closest %.0f m, max alteration %.0f deg\n",
+           o.t_act, o.t_return, o.t_back, o.min_dist, fw_rad_to_deg(o.max_psi));
 }
 
 /* The policy follows the target it acted for by id while the caller reorders
@@ -292,61 +319,6 @@ static void test_policy_follows_target_id(void)
     CHECK(fw_target_find(&a, 1, "") == -1 && fw_target_find(&a, 1, "veh.B") == -1);
     fw_track_free(&step);
     fw_helm_ctx_destroy(ctx);
-}
-
-/* The policy in closed loop with the Nomoto plant (one second per step) and
- * constant-velocity targets; what a scenario test asserts, without SUMO. */
-typedef struct loop_out {
-    double t_act, t_back, min_lambda, final_psi;
-    int first_side, acts;
-    fw_situation first_sit;
-} loop_out;
-
-static loop_out closed_loop(const fw_target *t0, int n, int seconds)
-{
-    fw_helm_def hdef = fw_default_helm_def();
-    fw_helm_ctx *ctx = make_ctx(&hdef);
-    fw_policy_def pdef = fw_default_policy_def();
-    fw_policy pol;
-    fw_policy_init(&pol, &pdef);
-    fw_own_state own = {.U = fw_kn_to_ms(10)};
-    fw_track_def one = {.dt = 1.0, .horizon = 1.0};
-    fw_track step;
-    fw_track_alloc(&step, 2, NULL);
-    fw_target now[4];
-    fw_assessment as[4];
-    int order[8];
-    loop_out o = {.t_act = -1, .t_back = -1, .min_lambda = INFINITY};
-    for (int k = 0; k < seconds; k++) {
-        for (int i = 0; i < n; i++) {
-            now[i] = t0[i];
-            now[i].east += t0[i].speed * sin(t0[i].course) * k;
-            now[i].north += t0[i].speed * cos(t0[i].course) * k;
-            o.min_lambda = fmin(o.min_lambda,
-                                fw_domain_lambda(&hdef.domain, own.east, own.north, own.psi, &now[i]));
-        }
-        fw_decision d;
-        fw_policy_mode before = pol.mode;
-        CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, now, n, as, order, &d, NULL) == FW_OK);
-        if (d.acted && o.acts++ == 0) {
-            o.t_act = k;
-            o.first_side = d.search.side;
-            o.first_sit = as[d.primary].situation;
-        }
-        if (before == FW_MODE_AUTOPILOT && d.mode == FW_MODE_STANDBY)
-            o.t_back = k;
-        if (getenv("FW_DEBUG") && (before != d.mode || k % 200 == 0))
-            printf("%5d %s -> %s helm %.1f psi %.1f: %s\n", k, fw_policy_mode_name(before),
-                   fw_policy_mode_name(d.mode), fw_rad_to_deg(d.helm), fw_rad_to_deg(own.psi),
-                   d.reason);
-        fw_track_predict(&c3, &one, &own, d.helm, &step, NULL);
-        own.east = step.east[1], own.north = step.north[1], own.psi = step.psi[1];
-        own.r = step.r[1], own.delta = step.delta[1], own.rdot = step.rdot[1];
-    }
-    o.final_psi = fw_wrap_pi(own.psi);
-    fw_track_free(&step);
-    fw_helm_ctx_destroy(ctx);
-    return o;
 }
 
 /* Rule 17: a crossing ship on the port side that does not give way.  The own
