@@ -23,6 +23,80 @@
 
 static char tmp_root[256];
 
+/* Output digests: every scenario run's files are hashed and compared with
+ * tests/data/digests/runs.txt, so a redesign that should not change results
+ * is checked to the byte.  The scenario's path (which names the checkout) is
+ * cut out of run.log first.  FAIRWAY_WRITE_DIGESTS=FILE writes the list
+ * found instead, for a change of results that is intended (and explained in
+ * its commit). */
+static const char *const digest_files[] = {"own.csv", "targets.csv", "encounters.csv",
+                                           "summary.json", "run.log"};
+static FILE *digest_out;
+
+/* FNV-1a, 64 bits, of a file with every occurrence of `cut` left out. */
+static unsigned long long file_digest(const char *path, const char *cut)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    unsigned long long h = 14695981039346656037ull;
+    size_t m = strlen(cut), k = 0;
+    int c;
+    /* a plain prefix matcher: the data root has no repeated prefix that matters */
+    while ((c = fgetc(f)) != EOF) {
+        if (m && (char)c == cut[k]) {
+            if (++k == m)
+                k = 0;
+            continue;
+        }
+        for (size_t j = 0; j < k; j++)
+            h = (h ^ (unsigned char)cut[j]) * 1099511628211ull;
+        k = 0;
+        if (m && (char)c == cut[0]) {
+            k = 1;
+            continue;
+        }
+        h = (h ^ (unsigned char)c) * 1099511628211ull;
+    }
+    for (size_t j = 0; j < k; j++)
+        h = (h ^ (unsigned char)cut[j]) * 1099511628211ull;
+    fclose(f);
+    return h;
+}
+
+static void check_digests(const char *scenario, const char *dir)
+{
+    char want_path[512], line[256];
+    snprintf(want_path, sizeof want_path, "%s/tests/data/digests/runs.txt", fw_data_root());
+    for (size_t i = 0; i < sizeof digest_files / sizeof digest_files[0]; i++) {
+        char path[700], key[200];
+        snprintf(path, sizeof path, "%s/%s", dir, digest_files[i]);
+        snprintf(key, sizeof key, "%s/%s", scenario, digest_files[i]);
+        unsigned long long h = file_digest(path, fw_data_root());
+        if (digest_out) {
+            fprintf(digest_out, "%s %016llx\n", key, h);
+            continue;
+        }
+        FILE *w = fopen(want_path, "r");
+        CHECK_MSG(w != NULL, "cannot read %s", want_path);
+        if (!w)
+            return;
+        unsigned long long want = 0;
+        bool found = false;
+        while (fgets(line, sizeof line, w)) {
+            char k2[200];
+            unsigned long long v;
+            if (sscanf(line, "%199s %llx", k2, &v) == 2 && strcmp(k2, key) == 0) {
+                want = v;
+                found = true;
+            }
+        }
+        fclose(w);
+        CHECK_MSG(found && want == h, "%s: digest %016llx, expected %016llx%s", key, h, want,
+                  found ? "" : " (not listed)");
+    }
+}
+
 static fw_scenario s; /* large: a ship inside; the last scenario run */
 
 static fw_status run_one(const char *file, const char *dir, fw_run_summary *sum,
@@ -51,6 +125,7 @@ static void check_case(const char *file)
     int ne = 0;
     if (run_one(file, dir, &sum, &e, &ne))
         return;
+    check_digests(sum.scenario, dir);
     CHECK_MSG(!sum.collision, "%s: collision", sum.scenario);
     CHECK_MSG(sum.colregs_ok, "%s: a first action is not COLREGs-correct", sum.scenario);
     CHECK_MSG(fabs(sum.heading_error) < fw_deg_to_rad(2.0), "%s: ends %.1f deg off course",
@@ -254,11 +329,16 @@ int main(void)
     snprintf(tmp_root, sizeof tmp_root, "/tmp/fw_test_run.XXXXXX");
     if (!mkdtemp(tmp_root))
         return 1;
+    const char *wd = getenv("FAIRWAY_WRITE_DIGESTS");
+    if (wd && *wd && !(digest_out = fopen(wd, "w")))
+        return 1;
     TEST_RUN(test_bad_files);
     TEST_RUN(test_oracle);
     TEST_RUN(test_determinism);
     TEST_RUN(test_paper_cases);
     TEST_RUN(test_imazu_cases);
+    if (digest_out)
+        fclose(digest_out);
     char cmd[400];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);
     if (test_failures_ == 0 && system(cmd) != 0)

@@ -10,4 +10,15 @@ trap 'rm -rf "$dir"' EXIT
 "$PYTHON" "$FAIRWAY_DATA/tests/scripts/study_db_compare.py" "$dir/j1.db" "$dir/j2.db"
 again=$("$FAIRWAY" sweep "$study" --db "$dir/j2.db" --jobs 2 --progress lines 2>&1)
 grep -q "10 already in the database, 0 to run" <<<"$again" || { echo "$again"; exit 1; }
+
+# the results themselves, against the digest kept with the tests
+# (FAIRWAY_WRITE_DIGESTS=FILE writes the one found instead)
+got=$("$PYTHON" "$FAIRWAY_DATA/tests/scripts/study_db_digest.py" "$dir/j1.db")
+if [ -n "${FAIRWAY_WRITE_DIGESTS:-}" ]; then
+  echo "$got" > "$FAIRWAY_WRITE_DIGESTS"
+else
+  want=$(cat "$FAIRWAY_DATA/tests/data/digests/study-small.txt")
+  [ "$got" = "$want" ] || { echo "study results digest $got, expected $want"; exit 1; }
+  echo "study results digest as kept"
+fi
 echo "jobs 1 and 2 agree; resume of a finished sweep runs nothing"
