@@ -15,8 +15,7 @@ void fw_prep_targets(const fw_domain_def *dom, const fw_target *t, int n, fw_pre
         out[i] = (fw_prep_target){.east = g->east, .north = g->north,
                                   .ve = g->speed * s, .vn = g->speed * c, .sc = s, .cc = c,
                                   .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
-                                  .reach = dom->size * mx(1.0, dom->fore_aft_ratio) +
-                                           0.5 * hypot(g->length, g->breadth)};
+                                  .reach = fw_domain_reach(dom, g)};
     }
 }
 
@@ -79,7 +78,6 @@ double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chu
                       const fw_prep_target *g, int j0, int j1, double stop2)
 {
     double tmin2 = INFINITY;
-    double a0 = dom->size * dom->fore_aft_ratio, b0 = dom->size;
     for (int j = j0; j < j1 && j * FW_CHUNK < cb->nseg; j++) {
         int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
         if (j < cb->nch && fw_chunk_misses(tr->dt, g, j, cb->nseg, cb->b[j]))
@@ -90,10 +88,10 @@ double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chu
             double dx = g->east + g->ve * tk - tr->east[k];
             double dy = g->north + g->vn * tk - tr->north[k];
             double s = tr->sin_psi[k], c = tr->cos_psi[k];
-            double x = dx * s + dy * c, y = dx * c - dy * s;
-            /* fw_domain_axes inlined: hull half-extents along the own axes */
-            double cr = fabs(g->cc * c + g->sc * s), sr = fabs(g->sc * c - g->cc * s);
-            double a = a0 + g->hl * cr + g->hb * sr, b = b0 + g->hl * sr + g->hb * cr;
+            double x, y, a, b;
+            fw_to_body(dx, dy, s, c, &x, &y);
+            /* cos and sin of the relative heading, from the angle sums */
+            fw_domain_grown(dom, g->hl, g->hb, g->cc * c + g->sc * s, g->sc * c - g->cc * s, &a, &b);
             if (k > k0) {
                 /* body-frame offsets interpolated linearly over the segment:
                  * the frame turns by r dt (about 1 deg), a sub-metre error */

@@ -6,11 +6,6 @@
 
 #include "core/units.h"
 
-fw_domain_def fw_default_domain_def(void)
-{
-    return (fw_domain_def){.size = 300.0, .fore_aft_ratio = 1.0};
-}
-
 fw_colregs_def fw_default_colregs_def(void)
 {
     return (fw_colregs_def){.head_on_bearing_deg = 6.0, .head_on_course_tol_deg = 15.0,
@@ -57,26 +52,6 @@ fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
     return beta < 180.0 ? FW_SIT_GIVE_WAY : FW_SIT_STAND_ON;
 }
 
-void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel,
-                    double sin_rel, double *a, double *b)
-{
-    double hl = 0.5 * t->length, hb = 0.5 * t->breadth;
-    double c = fabs(cos_rel), s = fabs(sin_rel);
-    *a = dom->size * dom->fore_aft_ratio + hl * c + hb * s;
-    *b = dom->size + hl * s + hb * c;
-}
-
-double fw_domain_lambda(const fw_domain_def *dom, double east, double north, double psi,
-                        const fw_target *t)
-{
-    double rel = t->course - psi, a, b;
-    fw_domain_axes(dom, t, cos(rel), sin(rel), &a, &b);
-    double de = t->east - east, dn = t->north - north;
-    double so = sin(psi), co = cos(psi);
-    double x = de * so + dn * co, y = de * co - dn * so;
-    return sqrt((x / a) * (x / a) + (y / b) * (y / b));
-}
-
 static bool more_dangerous(const fw_assessment *p, int i, const fw_assessment *q, int j)
 {
     if (p->enters_domain != q->enters_domain)
@@ -116,23 +91,22 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
     double so = sin(own->psi), co = cos(own->psi);
     for (int i = 0; i < n; i++) {
         fw_assessment *as = &out[i];
-        double dx = t[i].east - own->east, dy = t[i].north - own->north;
-        double vx = t[i].speed * sin(t[i].course) - own->U * so;
-        double vy = t[i].speed * cos(t[i].course) - own->U * co;
+        double dx = t[i].east - own->east, dy = t[i].north - own->north, ve, vn;
+        fw_velocity(t[i].speed, t[i].course, &ve, &vn);
+        double vx = ve - own->U * so, vy = vn - own->U * co;
         as->range = hypot(dx, dy);
         as->bearing = fw_wrap_2pi(atan2(dx, dy));
         as->rel_bearing = fw_wrap_2pi(as->bearing - own->psi);
-        double v2 = vx * vx + vy * vy;
-        as->tcpa = v2 > 1e-12 ? -(dx * vx + dy * vy) / v2 : 0.0;
-        as->dcpa = hypot(dx + vx * as->tcpa, dy + vy * as->tcpa);
+        fw_cpa(dx, dy, vx, vy, &as->tcpa, &as->dcpa);
         as->situation = fw_classify(cdef, own, &t[i]);
         /* Domain on the straight course: in the own body frame (fixed while both
          * keep course) the target moves on a line, and lambda^2(t) is a quadratic. */
         double a, b;
         double rel = t[i].course - own->psi;
         fw_domain_axes(dom, &t[i], cos(rel), sin(rel), &a, &b);
-        double x = dx * so + dy * co, y = dx * co - dy * so;
-        double ux = vx * so + vy * co, uy = vx * co - vy * so;
+        double x, y, ux, uy;
+        fw_to_body(dx, dy, so, co, &x, &y);
+        fw_to_body(vx, vy, so, co, &ux, &uy);
         double A = ux * ux / (a * a) + uy * uy / (b * b);
         double B = 2.0 * (x * ux / (a * a) + y * uy / (b * b));
         double C = x * x / (a * a) + y * y / (b * b);
@@ -160,14 +134,4 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
         for (int i = 0; i < n; i++)
             out[order[i]].rank = i;
     }
-}
-
-int fw_target_find(const fw_target *t, int n, const char *id)
-{
-    if (!id || !id[0])
-        return -1;
-    for (int i = 0; i < n; i++)
-        if (strcmp(t[i].id, id) == 0)
-            return i;
-    return -1;
 }

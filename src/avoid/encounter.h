@@ -3,49 +3,19 @@
  * Per target: range, bearings, DCPA/TCPA (constant velocities), the COLREGs
  * situation (rules 13-17) by named thresholds, and whether and when it enters
  * the own domain if both keep course and speed; then a danger ranking.
- * Frames: metres east/north, navigational headings, SI.
+ * Geometry (domain, CPA, body frame) is geom/geom.h's; the ship record is
+ * fw_target (geom/target.h).  Frames: metres east/north, navigational
+ * headings, SI.
  */
 #ifndef FW_ENCOUNTER_H
 #define FW_ENCOUNTER_H
 
 #include <stdbool.h>
 
+#include "geom/geom.h"
 #include "nomoto/track.h"
 
-/* Room for a target id with its terminating NUL. */
-enum { FW_TARGET_ID_MAX = 64 };
 
-typedef struct fw_target {
-    /* The caller's stable name for this ship (e.g. the SUMO vehicle id), the
-     * same from step to step while the array order may change: the policy
-     * remembers the target it is avoiding by it.  "" = no id (the policy then
-     * falls back to the array index, which is right only if the order is
-     * fixed).  Ids are compared whole: keep them unique and shorter than
-     * FW_TARGET_ID_MAX. */
-    char id[FW_TARGET_ID_MAX];
-    double east, north; /* m */
-    double course;      /* rad, navigational */
-    double speed;       /* m/s */
-    double length;      /* m, 0 = a point */
-    double breadth;     /* m */
-} fw_target;
-
-/* The own domain: an ellipse centred on the own ship and aligned with its
- * heading.  Transverse semi-axis = size (the paper's 300 m "along the side");
- * fore-aft semi-axis = size * fore_aft_ratio.  Default ratio 1: the paper's
- * numbers (300 m passing distance, helms of 15-29 deg) are those of a 300 m
- * circle; Fujii and Tanaka's 8 L x 3.2 L ellipse (ratio 2.5) is for harbour
- * approaches and would be 750 m ahead at this size.  A target's hull counts
- * by growing each semi-axis by the target's half-extent along that own-ship
- * axis (L/2 |cos a| + B/2 |sin a| fore-aft, L/2 |sin a| + B/2 |cos a| abeam,
- * a = relative heading): the Minkowski sum of ellipse and rectangle, exact on
- * the axes and slightly generous between them. */
-typedef struct fw_domain_def {
-    double size;           /* m, transverse semi-axis */
-    double fore_aft_ratio; /* fore-aft / transverse */
-} fw_domain_def;
-
-fw_domain_def fw_default_domain_def(void);
 
 typedef enum fw_situation {
     FW_SIT_HEAD_ON,        /* rule 14: both alter to starboard */
@@ -85,23 +55,10 @@ typedef struct fw_assessment {
 fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
                          const fw_target *t);
 
-/* Normalised domain radius of a target at body offset (x ahead, y starboard)
- * with relative heading given by its cosine/sine: >= 1 means outside. */
-void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel,
-                    double sin_rel, double *a, double *b);
-
-/* Normalised domain radius of target t now, for an own ship at (east, north)
- * heading psi: < 1 inside the (hull-grown) domain. */
-double fw_domain_lambda(const fw_domain_def *dom, double east, double north, double psi,
-                        const fw_target *t);
-
 /* Fills out[0..n-1].  If order is not NULL (room for 2 n ints: the second
  * half is scratch) it gets the target indices most dangerous first and each
  * out[i].rank is set: targets entering the domain first, earliest entry first,
  * then smallest DCPA, then smallest range. */
-/* Index of the target with this id in t[0..n-1], -1 if none or id is "". */
-int fw_target_find(const fw_target *t, int n, const char *id);
-
 void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
                const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
                int *order);

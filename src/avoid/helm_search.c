@@ -216,7 +216,8 @@ double fw_track_clearance(const fw_helm_def *def, const fw_track *tr, const fw_t
 
 double fw_track_min_distance(const fw_track *tr, const fw_target *g, double *t_min)
 {
-    double ve = g->speed * sin(g->course), vn = g->speed * cos(g->course);
+    double ve, vn;
+    fw_velocity(g->speed, g->course, &ve, &vn);
     double best = INFINITY, tb = 0.0, px = 0.0, py = 0.0;
     for (int k = 0; k < tr->n; k++) {
         double tk = k * tr->dt;
@@ -450,7 +451,8 @@ fw_status fw_helm_steer_clearance(fw_helm_ctx *c, const fw_target *t, int n,
         double T = k * tr->dt, U = c->own.U0 > 0.0 ? c->own.U0 : c->own.U;
         double oe = U * tr->sin_psi[k], on = U * tr->cos_psi[k];
         for (int i = 0; i < n; i++) {
-            double ve = t[i].speed * sin(t[i].course), vn = t[i].speed * cos(t[i].course);
+            double ve, vn;
+            fw_velocity(t[i].speed, t[i].course, &ve, &vn);
             double rx = t[i].east + ve * T - tr->east[k], ry = t[i].north + vn * T - tr->north[k];
             double wx = ve - oe, wy = vn - on, w2 = wx * wx + wy * wy;
             double tc = w2 > 1e-9 ? -(rx * wx + ry * wy) / w2 : 0.0;

@@ -16,25 +16,6 @@ static bool name_ok(const char *s)
                      "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;
 }
 
-bool fw_hulls_overlap(double e1, double n1, double psi1, double l1, double b1, double e2,
-                      double n2, double psi2, double l2, double b2)
-{
-    /* unit axes (east, north) along and across each hull */
-    double ax[4][2] = {{sin(psi1), cos(psi1)}, {cos(psi1), -sin(psi1)},
-                       {sin(psi2), cos(psi2)}, {cos(psi2), -sin(psi2)}};
-    double de = e2 - e1, dn = n2 - n1;
-    for (int k = 0; k < 4; k++) {
-        double ue = ax[k][0], un = ax[k][1];
-        double r1 = 0.5 * l1 * fabs(ax[0][0] * ue + ax[0][1] * un) +
-                    0.5 * b1 * fabs(ax[1][0] * ue + ax[1][1] * un);
-        double r2 = 0.5 * l2 * fabs(ax[2][0] * ue + ax[2][1] * un) +
-                    0.5 * b2 * fabs(ax[3][0] * ue + ax[3][1] * un);
-        if (fabs(de * ue + dn * un) > r1 + r2)
-            return false;
-    }
-    return true;
-}
-
 static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"ship", "east_m", "north_m", "course_deg", "speed_kn",

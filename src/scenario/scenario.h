@@ -18,6 +18,7 @@
 
 #include "avoid/policy.h"
 #include "core/error.h"
+#include "geom/geom.h"
 #include "ship/ship.h"
 #include "survey/survey.h"
 
@@ -68,10 +69,5 @@ typedef struct fw_scenario {
 
 /* Loads and checks path.  s is large (a ship inside): callers heap-allocate. */
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err);
-
-/* Oriented rectangles (centre, heading, length, breadth) overlap?  Separating
- * axis test on the four hull axes: the collision criterion of fairway. */
-bool fw_hulls_overlap(double e1, double n1, double psi1, double l1, double b1, double e2,
-                      double n2, double psi2, double l2, double b2);
 
 #endif

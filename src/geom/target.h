@@ -1,0 +1,60 @@
+/* target.h - one ship as the others see it: the one record of "another ship".
+ *
+ * From the traffic source's read (SUMO, the kinematic script, later AIS)
+ * through the world, the assessment and the helm search to the encounter book
+ * and the traffic survey, a ship is an fw_target.  SUMO's own terms (front
+ * bumper, angle in degrees) are converted into it once, inside src/traffic.
+ *
+ * Frame: metres east/north of the scenario origin, the position the hull
+ * centre (midship), headings navigational (0 north, clockwise), SI.  The
+ * record carries no drift: `course` is both the direction of motion and the
+ * hull's heading (true of SUMO's ships; the own ship is listed with its
+ * heading and speed through the water).
+ *
+ * How the ship is expected to move is its predictor (`pred`): NULL means at
+ * constant velocity, the assumption of the paper's search; a source that knows
+ * a ship's route can attach one that follows it (fw_predictor below) without
+ * any change to the assessment's or the helm search's callers.
+ */
+#ifndef FW_GEOM_TARGET_H
+#define FW_GEOM_TARGET_H
+
+#include <stdbool.h>
+
+/* Room for an id or a type with its terminating NUL. */
+enum { FW_TARGET_ID_MAX = 64 };
+
+typedef struct fw_predictor fw_predictor;
+
+typedef struct fw_target {
+    /* A stable name (the SUMO vehicle id, the scenario's target id, later an
+     * MMSI), the same from step to step while the array order may change: the
+     * policy remembers the target it is avoiding by it, the records key their
+     * book by it.  "" = no id (the policy then falls back to the array index,
+     * which is right only if the order is fixed).  Ids are compared whole. */
+    char id[FW_TARGET_ID_MAX];
+    char type[FW_TARGET_ID_MAX]; /* a label ("cargo", a SUMO vType): records only */
+    double east, north;          /* m, hull centre */
+    double course;               /* rad, navigational, motion and hull */
+    double speed;                /* m/s, >= 0 */
+    double length;               /* m, 0 = a point */
+    double breadth;              /* m */
+    bool own;                    /* the own ship (listed only in area queries) */
+    const fw_predictor *pred;    /* NULL: constant velocity */
+} fw_target;
+
+/* Where a ship will be: positions and headings at t = k dt, k = 0..n-1, from
+ * its present record.  Implementations keep their own data behind `self`. */
+struct fw_predictor {
+    void (*path)(const fw_predictor *self, const fw_target *now, double dt, int n,
+                 double *east, double *north, double *course);
+};
+
+/* Fills the path of t (its predictor, or constant velocity). */
+void fw_target_path(const fw_target *t, double dt, int n, double *east, double *north,
+                    double *course);
+
+/* Index of the target with this id in t[0..n-1], -1 if none or id is "". */
+int fw_target_find(const fw_target *t, int n, const char *id);
+
+#endif
