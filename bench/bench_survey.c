@@ -83,7 +83,7 @@ static int one_run(int n, int run, bool brute, double out[4])
 {
     double half = 0.5 * sqrt(n / kDensity);
     ship *s = malloc(sizeof *s * (size_t)n);
-    fw_survey_ship *in = malloc(sizeof *in * (size_t)n);
+    fw_target *in = malloc(sizeof *in * (size_t)n);
     static double tg[STEPS], tb[STEPS];
     fw_survey_def d = fw_default_survey_def(), db = d;
     db.brute_force = true;
@@ -99,9 +99,9 @@ static int one_run(int n, int run, bool brute, double out[4])
         spawn(&s[i], half);
     for (int k = 0; k < WARMUP + STEPS; k++) {
         for (int i = 0; i < n; i++)
-            in[i] = (fw_survey_ship){.id = s[i].id, .east = s[i].e, .north = s[i].n,
-                                     .heading = s[i].h, .speed = s[i].v, .length = 150,
-                                     .breadth = 25, .own = i == 0};
+            in[i] = fw_target_named(s[i].id, (fw_target){ .east = s[i].e, .north = s[i].n,
+                                     .course = s[i].h, .speed = s[i].v, .length = 150,
+                                     .breadth = 25, .own = i == 0});
         double dt[2] = {0.0, 0.0};
         for (int j = 0; j < 1 + brute; j++) {
             /* alternate which goes first */

@@ -47,7 +47,7 @@ static int one_run(int ships, int run, double out[4])
     static double full[STEPS], step[STEPS];
     double count = 0, in_range = 0, U = fw_kn_to_ms(12);
     for (int k = 0; k < WARMUP + STEPS; k++) {
-        const fw_traffic_ship *s;
+        const fw_target *s;
         int n;
         double t0 = 1e3 * bench_now();
         if (fw_traffic_place(t, -19000.0 + U * k, 0.0, FW_PI / 2, U, &err))
@@ -65,7 +65,7 @@ static int one_run(int ships, int run, double out[4])
             in_range += n;
         }
         if (k == WARMUP + STEPS - 1) {
-            const fw_traffic_ship *all;
+            const fw_target *all;
             int na;
             if (fw_traffic_all(t, &all, &na, &err))
                 goto fail;

@@ -32,7 +32,7 @@ static fw_survey *run_lines(const fw_survey_def *def, const line_ship *ls, int n
         CHECK_MSG(0, "%s", err.msg);
         return NULL;
     }
-    fw_survey_ship s[16];
+    fw_target s[16];
     long steps = lround(t_end / dt);
     for (long k = 0; k <= steps; k++) {
         double t = k * dt;
@@ -41,11 +41,11 @@ static fw_survey *run_lines(const fw_survey_def *def, const line_ship *ls, int n
             if (t < ls[i].t_on || (ls[i].t_off > 0 && t > ls[i].t_off))
                 continue;
             double c = fw_deg_to_rad(ls[i].course_deg);
-            s[m++] = (fw_survey_ship){.id = ls[i].id,
+            s[m++] = fw_target_named(ls[i].id, (fw_target){
                                       .east = ls[i].e + ls[i].speed * sin(c) * t,
                                       .north = ls[i].n + ls[i].speed * cos(c) * t,
-                                      .heading = c, .speed = ls[i].speed, .length = 100 + i,
-                                      .breadth = 20, .own = ls[i].own};
+                                      .course = c, .speed = ls[i].speed, .length = 100 + i,
+                                      .breadth = 20, .own = ls[i].own});
         }
         if (fw_survey_step(sv, t, s, m, &err)) {
             CHECK_MSG(0, "t = %g: %s", t, err.msg);
@@ -206,8 +206,8 @@ static int shuttle(double north_turn, double h, fw_survey_record out[4])
             n = north_turn - 10.0 * (t - t_turn);
             c = FW_PI;
         }
-        fw_survey_ship s[2] = {{.id = "A", .heading = 0.0, .speed = 0.0},
-                               {.id = "B", .east = 300.0, .north = n, .heading = c, .speed = 10.0}};
+        fw_target s[2] = {{.id = "A", .course = 0.0, .speed = 0.0},
+                               {.id = "B", .east = 300.0, .north = n, .course = c, .speed = 10.0}};
         CHECK(fw_survey_step(sv, t, s, 2, &err) == FW_OK);
     }
     fw_survey_finish(sv, NULL);
@@ -315,21 +315,21 @@ static void test_bad_input(void)
      * steps in between gives the head-on case's record */
     def = fw_default_survey_def();
     CHECK(fw_survey_create(&def, &sv, &err) == FW_OK);
-    fw_survey_ship s[2] = {{.id = "A", .speed = 5.0}, {.id = "B", .heading = FW_PI, .speed = 5.0}};
+    fw_target s[2] = {{.id = "A", .speed = 5.0}, {.id = "B", .course = FW_PI, .speed = 5.0}};
     for (int k = 0; k <= 1500; k++) {
         s[0].east = 0.0;
         s[0].north = -3000.0 + 5.0 * k;
         s[1].east = 500.0;
         s[1].north = 3000.0 - 5.0 * k;
         if (k == 400 || k == 600) {
-            fw_survey_ship dup[2] = {s[0], s[0]};
+            fw_target dup[2] = {s[0], s[0]};
             CHECK(fw_survey_step(sv, k, dup, 2, &err) == FW_ERUN);
             CHECK_CONTAINS(err.msg, "ship 'A' twice");
-            fw_survey_ship nan = s[1];
+            fw_target nan = s[1];
             nan.north = NAN;
-            fw_survey_ship bad[2] = {s[0], nan};
+            fw_target bad[2] = {s[0], nan};
             CHECK(fw_survey_step(sv, k, bad, 2, &err) == FW_ERUN);
-            fw_survey_ship noid[1] = {{.id = ""}};
+            fw_target noid[1] = {{.id = ""}};
             CHECK(fw_survey_step(sv, k, noid, 1, &err) == FW_ERUN);
         }
         CHECK(fw_survey_step(sv, k, s, 2, &err) == FW_OK);
@@ -459,24 +459,24 @@ static void feed(fw_survey **sv, int k, int n, int steps, double dt, bool shuffl
     traffic tr;
     rng_state = 12345;
     traffic_init(&tr, n, 0.5 * sqrt(n / 0.6e-6)); /* 0.6 ships per km^2 */
-    fw_survey_ship *s = malloc(sizeof *s * (size_t)(2 * n));
-    fw_survey_ship *p = malloc(sizeof *p * (size_t)(2 * n));
+    fw_target *s = malloc(sizeof *s * (size_t)(2 * n));
+    fw_target *p = malloc(sizeof *p * (size_t)(2 * n));
     uint64_t shuffle_rng = 99;
     fw_error err = {0};
     *ship_s = 0.0;
     for (int step = 0; step < steps; step++) {
         for (int i = 0; i < tr.n; i++)
-            s[i] = (fw_survey_ship){.id = tr.id[i], .east = tr.e[i], .north = tr.no[i],
-                                    .heading = tr.h[i], .speed = tr.v[i], .length = 100,
-                                    .breadth = 20, .own = i == 0};
+            s[i] = fw_target_named(tr.id[i], (fw_target){ .east = tr.e[i], .north = tr.no[i],
+                                    .course = tr.h[i], .speed = tr.v[i], .length = 100,
+                                    .breadth = 20, .own = i == 0});
         for (int j = 0; j < k; j++) {
-            const fw_survey_ship *in = s;
+            const fw_target *in = s;
             if (j == 1 && shuffle) {
                 memcpy(p, s, sizeof *s * (size_t)tr.n);
                 for (int i = tr.n - 1; i > 0; i--) {
                     shuffle_rng = shuffle_rng * 6364136223846793005ULL + 1442695040888963407ULL;
                     int q = (int)((shuffle_rng >> 33) % (uint64_t)(i + 1));
-                    fw_survey_ship x = p[i];
+                    fw_target x = p[i];
                     p[i] = p[q];
                     p[q] = x;
                 }

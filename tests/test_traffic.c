@@ -180,7 +180,7 @@ static fw_status write_channel_demand(fw_traffic_def *d, fw_network_files *nf, c
 
 /* The area query against the getters: every ship whose hull centre is within
  * area_r of the own ship's (x, y), the own ship as placed, sorted by id. */
-static void check_area(const fw_traffic_ship *area, int n_area, const fw_traffic_ship *all,
+static void check_area(const fw_target *area, int n_area, const fw_target *all,
                        int n_all, double x, double y, double psi, int k, int counts[3])
 {
     const double area_r = 4000.0;
@@ -193,22 +193,22 @@ static void check_area(const fw_traffic_ship *area, int n_area, const fw_traffic
         owns++;
         CHECK(strcmp(area[j].id, "own") == 0);
         CHECK(strcmp(area[j].type, FW_TRAFFIC_OWN_TYPE) == 0);
-        CHECK_NEAR(area[j].x, x, 1e-9);
-        CHECK_NEAR(area[j].y, y, 1e-9);
-        CHECK_NEAR(fw_wrap_pi(area[j].heading - psi), 0.0, 1e-12);
+        CHECK_NEAR(area[j].east, x, 1e-9);
+        CHECK_NEAR(area[j].north, y, 1e-9);
+        CHECK_NEAR(fw_wrap_pi(area[j].course - psi), 0.0, 1e-12);
         CHECK_NEAR(area[j].speed, 6.0, 1e-12);
         CHECK_NEAR(area[j].length, 180.0, 1e-12);
-        CHECK_NEAR(area[j].width, 30.0, 1e-12);
+        CHECK_NEAR(area[j].breadth, 30.0, 1e-12);
     }
     CHECK_MSG(owns == 1, "step %d: own ship %d times in the area", k, owns);
     for (int i = 0; i < n_all; i++) {
-        const fw_traffic_ship *s = &all[i];
+        const fw_target *s = &all[i];
         if (strcmp(s->id, "own") == 0) {
             CHECK(s->own);
             continue;
         }
         CHECK(!s->own);
-        double d = hypot(s->x - x, s->y - y); /* hull centre to hull centre */
+        double d = hypot(s->east - x, s->north - y); /* hull centre to hull centre */
         int found = -1;
         for (int j = 0; j < n_area; j++)
             if (strcmp(area[j].id, s->id) == 0)
@@ -221,18 +221,18 @@ static void check_area(const fw_traffic_ship *area, int n_area, const fw_traffic
             expected++;
             counts[0]++;
             double fx, fy, a;
-            fw_traffic_to_sumo(s->x, s->y, s->heading, s->length, &fx, &fy, &a);
+            fw_traffic_to_sumo(s->east, s->north, s->course, s->length, &fx, &fy, &a);
             if (hypot(fx - x, fy - y) > area_r)
                 counts[2]++; /* in by its centre, out by its bumper: the widened query */
             CHECK_MSG(found >= 0, "step %d: %s at %.1f m missing from the area", k, s->id, d);
             if (found >= 0) {
                 CHECK(!area[found].own);
-                CHECK_NEAR(area[found].x, s->x, 1e-6);
-                CHECK_NEAR(area[found].y, s->y, 1e-6);
-                CHECK_NEAR(area[found].heading, s->heading, 1e-9);
+                CHECK_NEAR(area[found].east, s->east, 1e-6);
+                CHECK_NEAR(area[found].north, s->north, 1e-6);
+                CHECK_NEAR(area[found].course, s->course, 1e-9);
                 CHECK_NEAR(area[found].speed, s->speed, 1e-9);
                 CHECK_NEAR(area[found].length, s->length, 1e-9);
-                CHECK_NEAR(area[found].width, s->width, 1e-9);
+                CHECK_NEAR(area[found].breadth, s->breadth, 1e-9);
                 CHECK(strcmp(area[found].type, s->type) == 0);
             }
         } else {
@@ -258,21 +258,21 @@ static void run_channel(fw_traffic *t, int check_every)
             return;
         }
         steps++;
-        fw_traffic_ship own;
+        fw_target own;
         CHECK(fw_traffic_get(t, "own", &own, &err) == FW_OK);
-        CHECK_NEAR(own.x, x, 0.01);
-        CHECK_NEAR(own.y, y, 0.01);
-        CHECK_NEAR(fw_rad_to_deg(fw_wrap_pi(own.heading - psi)), 0.0, 0.01);
+        CHECK_NEAR(own.east, x, 0.01);
+        CHECK_NEAR(own.north, y, 0.01);
+        CHECK_NEAR(fw_rad_to_deg(fw_wrap_pi(own.course - psi)), 0.0, 0.01);
         CHECK_NEAR(own.length, 180.0, 1e-9);
-        CHECK_NEAR(own.width, 30.0, 1e-9);
-        const fw_traffic_ship *near, *all, *area;
+        CHECK_NEAR(own.breadth, 30.0, 1e-9);
+        const fw_target *near, *all, *area;
         int n_near, n_all, n_area;
         CHECK(fw_traffic_around(t, &near, &n_near, &err) == FW_OK);
         CHECK(fw_traffic_area(t, &area, &n_area, &err) == FW_OK);
         if (k % check_every)
             continue;
         /* copy: fw_traffic_all reuses the buffer */
-        fw_traffic_ship *nc = malloc(sizeof *nc * (size_t)(n_near + 1));
+        fw_target *nc = malloc(sizeof *nc * (size_t)(n_near + 1));
         memcpy(nc, near, sizeof *nc * (size_t)n_near);
         CHECK(fw_traffic_all(t, &all, &n_all, &err) == FW_OK);
         check_area(area, n_area, all, n_all, x, y, psi, k, area_counts);
@@ -280,10 +280,10 @@ static void run_channel(fw_traffic *t, int check_every)
             max_seen = n_all;
         int expected = 0;
         for (int i = 0; i < n_all; i++) {
-            const fw_traffic_ship *s = &all[i];
+            const fw_target *s = &all[i];
             bool is_own = strcmp(s->id, "own") == 0;
             double fx, fy, a;
-            fw_traffic_to_sumo(s->x, s->y, s->heading, s->length, &fx, &fy, &a);
+            fw_traffic_to_sumo(s->east, s->north, s->course, s->length, &fx, &fy, &a);
             double d = hypot(fx - x, fy - y); /* SUMO's range: to the front bumper */
             int found = -1;
             for (int j = 0; j < n_near; j++)
@@ -300,12 +300,12 @@ static void run_channel(fw_traffic *t, int check_every)
                 in_range++;
                 CHECK_MSG(found >= 0, "step %d: %s at %.1f m missing", k, s->id, d);
                 if (found >= 0) {
-                    CHECK_NEAR(nc[found].x, s->x, 1e-6);
-                    CHECK_NEAR(nc[found].y, s->y, 1e-6);
-                    CHECK_NEAR(nc[found].heading, s->heading, 1e-9);
+                    CHECK_NEAR(nc[found].east, s->east, 1e-6);
+                    CHECK_NEAR(nc[found].north, s->north, 1e-6);
+                    CHECK_NEAR(nc[found].course, s->course, 1e-9);
                     CHECK_NEAR(nc[found].speed, s->speed, 1e-9);
                     CHECK_NEAR(nc[found].length, s->length, 1e-9);
-                    CHECK_NEAR(nc[found].width, s->width, 1e-9);
+                    CHECK_NEAR(nc[found].breadth, s->breadth, 1e-9);
                     CHECK(strcmp(nc[found].type, s->type) == 0);
                 }
             } else {
@@ -458,7 +458,7 @@ static void test_sumo_dies(void)
         if (!st)
             st = fw_traffic_step(t, &err);
         if (!st) {
-            const fw_traffic_ship *s;
+            const fw_target *s;
             int n;
             st = fw_traffic_around(t, &s, &n, &err);
         }

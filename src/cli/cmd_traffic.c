@@ -97,7 +97,7 @@ static int run(const char *network, long ships, double density, double duration,
     int rc = 0;
     for (long k = 0; k < n; k++) {
         double t0 = now_ms();
-        const fw_traffic_ship *s;
+        const fw_target *s;
         int m;
         double x = x0 + U * k * step, y = 0.0;
         if (fw_traffic_place(t, x, y, heading, U, &err) || fw_traffic_step(t, &err) ||
@@ -110,7 +110,7 @@ static int run(const char *network, long ships, double density, double duration,
             int best = -1;
             double r = INFINITY;
             for (int i = 0; i < m; i++) {
-                double ri = hypot(s[i].x - x, s[i].y - y);
+                double ri = hypot(s[i].east - x, s[i].north - y);
                 if (ri < r) {
                     r = ri;
                     best = i;
@@ -119,7 +119,7 @@ static int run(const char *network, long ships, double density, double duration,
             printf("%8.0f %8.3f %9d", fw_traffic_time(t), ms[k], m);
             if (best >= 0)
                 printf("  %s (%s), %.2f, %03.0f", s[best].id, s[best].type, fw_m_to_nm(r),
-                       fw_heading_deg(atan2(s[best].x - x, s[best].y - y)));
+                       fw_heading_deg(atan2(s[best].east - x, s[best].north - y)));
             printf("\n");
         }
         if (k + 1 == n) {

@@ -1,6 +1,7 @@
 /* geom.c - see geom.h. */
 #include "geom/geom.h"
 
+#include <stdio.h>
 #include <string.h>
 
 fw_domain_def fw_default_domain_def(void)
@@ -63,6 +64,12 @@ void fw_target_path(const fw_target *t, double dt, int n, double *east, double *
         north[k] = t->north + vn * tk;
         course[k] = t->course;
     }
+}
+
+fw_target fw_target_named(const char *id, fw_target t)
+{
+    snprintf(t.id, sizeof t.id, "%s", id);
+    return t;
 }
 
 int fw_target_find(const fw_target *t, int n, const char *id)

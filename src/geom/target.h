@@ -54,6 +54,10 @@ struct fw_predictor {
 void fw_target_path(const fw_target *t, double dt, int n, double *east, double *north,
                     double *course);
 
+/* t with its id set to id (cut at FW_TARGET_ID_MAX - 1 characters: for
+ * tests and benchmarks, whose ids are short). */
+fw_target fw_target_named(const char *id, fw_target t);
+
 /* Index of the target with this id in t[0..n-1], -1 if none or id is "". */
 int fw_target_find(const fw_target *t, int n, const char *id);
 

@@ -135,7 +135,7 @@ static bool action_ok(const char *situation, int side)
     return true;
 }
 
-void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts, const fw_mmg_state *own,
+void fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mmg_state *own,
                        const fw_assessment *as, bool record_row)
 {
     fw_encounter *e = find(r, ts->id);
@@ -160,7 +160,7 @@ void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts, const
             if (strcmp(r->s->targets[i].id, ts->id) == 0)
                 snprintf(e->type, sizeof e->type, "%s", r->s->targets[i].type);
         e->length = ts->length;
-        e->breadth = ts->width;
+        e->breadth = ts->breadth;
         e->situation = fw_situation_name(as->situation);
         e->t_detect = t;
         e->dcpa0 = as->dcpa;
@@ -171,7 +171,7 @@ void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts, const
     }
     if (as->enters_domain)
         e->threat = true;
-    double de = ts->x - own->east, dn = ts->y - own->north;
+    double de = ts->east - own->east, dn = ts->north - own->north;
     double d = hypot(de, dn);
     if (d < e->min_dist) {
         e->min_dist = d;
@@ -179,22 +179,20 @@ void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts, const
     }
     /* where the target actually is against the own domain (same ellipse as
      * the assessment, grown by the target's hull) */
-    fw_target tg = {.east = ts->x, .north = ts->y, .course = ts->heading, .speed = ts->speed,
-                    .length = ts->length, .breadth = ts->width};
-    double lam = fw_domain_lambda(&r->s->helm.domain, own->east, own->north, own->psi, &tg);
+    double lam = fw_domain_lambda(&r->s->helm.domain, own->east, own->north, own->psi, ts);
     if (lam < e->min_lambda)
         e->min_lambda = lam;
     if (lam < 1.0)
         e->domain_entered = true;
     /* hulls can only touch within half the sum of their diagonals */
-    double reach = 0.5 * (hypot(r->s->ship.Loa, r->s->ship.B) + hypot(ts->length, ts->width));
+    double reach = 0.5 * (hypot(r->s->ship.Loa, r->s->ship.B) + hypot(ts->length, ts->breadth));
     if (d <= reach && fw_hulls_overlap(own->east, own->north, own->psi, r->s->ship.Loa,
-                                       r->s->ship.B, ts->x, ts->y, ts->heading, ts->length,
-                                       ts->width))
+                                       r->s->ship.B, ts->east, ts->north, ts->course, ts->length,
+                                       ts->breadth))
         e->collision = true;
     if (record_row && r->tgt)
-        fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s\n", t, ts->id, ts->x,
-                ts->y, fw_heading_deg(ts->heading), fw_ms_to_kn(ts->speed), d,
+        fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s\n", t, ts->id, ts->east,
+                ts->north, fw_heading_deg(ts->course), fw_ms_to_kn(ts->speed), d,
                 fw_heading_deg(as->bearing), as->dcpa, as->tcpa,
                 fw_situation_name(as->situation));
 }

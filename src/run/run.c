@@ -100,7 +100,7 @@ static double now_s(void)
 
 static int cmp_ship(const void *a, const void *b)
 {
-    return strcmp(((const fw_traffic_ship *)a)->id, ((const fw_traffic_ship *)b)->id);
+    return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
 typedef struct loop_state {
@@ -111,31 +111,15 @@ typedef struct loop_state {
     fw_records *rec;
     double n_prop;
     fw_survey *sv;              /* NULL: no survey */
-    fw_survey_ship *sships;
-    int scap;
 } loop_state;
 
 /* The survey's step: every ship in the area, the own ship included. */
 static fw_status survey_step(loop_state *L, double t, fw_error *err)
 {
-    const fw_traffic_ship *a;
+    const fw_target *a;
     int n;
     fw_status st = fw_traffic_area(L->tr, &a, &n, err);
-    if (st)
-        return st;
-    if (n > L->scap) {
-        void *p = realloc(L->sships, sizeof *L->sships * (size_t)(2 * n));
-        if (!p)
-            return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
-        L->sships = p;
-        L->scap = 2 * n;
-    }
-    for (int i = 0; i < n; i++)
-        L->sships[i] = (fw_survey_ship){.id = a[i].id, .east = a[i].x, .north = a[i].y,
-                                        .heading = a[i].heading, .speed = a[i].speed,
-                                        .length = a[i].length, .breadth = a[i].width,
-                                        .own = a[i].own};
-    return fw_survey_step(L->sv, t, L->sships, n, err);
+    return st ? st : fw_survey_step(L->sv, t, a, n, err);
 }
 
 /* Survey totals into the summary, its records into the run directory and to
@@ -182,7 +166,7 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
     long n_steps = lround(s->duration / s->step);
     long every = lround(s->record_every / s->step);
     int cap = 0;
-    fw_traffic_ship *ships = NULL;
+    fw_target *ships = NULL;
     fw_target *tg = NULL;
     fw_assessment *as = NULL;
     int *order = NULL;
@@ -195,7 +179,7 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
     for (long k = 0;; k++) {
         double t = k * s->step;
         const fw_mmg_state *x = fw_stepper_state(L->st);
-        const fw_traffic_ship *raw;
+        const fw_target *raw;
         int n;
         if ((stt = fw_traffic_around(L->tr, &raw, &n, err)))
             break;
@@ -220,11 +204,7 @@ static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
             qsort(ships, (size_t)n, sizeof *ships, cmp_ship);
         }
         for (int i = 0; i < n; i++) {
-            tg[i] = (fw_target){.east = ships[i].x, .north = ships[i].y,
-                                .course = ships[i].heading, .speed = ships[i].speed,
-                                .length = ships[i].length, .breadth = ships[i].width};
-            /* the policy remembers the ship it avoids by this id */
-            snprintf(tg[i].id, sizeof tg[i].id, "%s", ships[i].id);
+            tg[i] = ships[i];
         }
         fw_own_state own = {.east = x->east, .north = x->north, .psi = x->psi,
                             .U = hypot(x->u, x->vm), .U0 = s->speed,
@@ -453,7 +433,6 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
 out:
     fw_traffic_close(L.tr);
     fw_survey_destroy(L.sv);
-    free(L.sships);
     sum->wall_s = now_s() - wall0;
     fw_helm_ctx_destroy(L.ctx);
     fw_stepper_destroy(L.st);

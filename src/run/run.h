@@ -130,7 +130,7 @@ FILE *fw_records_log(fw_records *r);
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
                     const char *mode);
 /* One target seen at time t, with its assessment (situation, DCPA/TCPA, threat). */
-void fw_records_target(fw_records *r, double t, const fw_traffic_ship *ts,
+void fw_records_target(fw_records *r, double t, const fw_target *ts,
                        const fw_mmg_state *own, const fw_assessment *as, bool record_row);
 /* The own ship acted at t (side, helm) for target id primary_id; threats[i]
  * names the ids that were predicted to enter the domain then. */

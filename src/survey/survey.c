@@ -26,7 +26,7 @@ struct fw_survey {
     long *seen;          /* per interned id: stamp of the last step it was in */
     int seen_cap;
     /* the step being taken, by position in the caller's array */
-    const fw_survey_ship *in;
+    const fw_target *in;
     int *cid;            /* interned id */
     double *x, *y, *vx, *vy;
     int cap;
@@ -163,15 +163,13 @@ static bool reserve_records(fw_survey *sv)
     return true;
 }
 
-static fw_survey_type pair_type(const fw_colregs_def *c, const fw_survey_ship *a,
-                                const fw_survey_ship *b)
+static fw_survey_type pair_type(const fw_colregs_def *c, const fw_target *a,
+                                const fw_target *b)
 {
-    fw_own_state own = {.east = a->east, .north = a->north, .psi = a->heading, .U = a->speed};
-    fw_target tg = {.east = b->east, .north = b->north, .course = b->heading, .speed = b->speed,
-                    .length = b->length, .breadth = b->breadth};
+    fw_own_state own = {.east = a->east, .north = a->north, .psi = a->course, .U = a->speed};
     /* fw_classify's roles swap with the ships (give-way <-> stand-on,
      * overtaking <-> being overtaken), so the pair's type is symmetric */
-    switch (fw_classify(c, &own, &tg)) {
+    switch (fw_classify(c, &own, b)) {
     case FW_SIT_HEAD_ON: return FW_SURVEY_HEAD_ON;
     case FW_SIT_OVERTAKING:
     case FW_SIT_OVERTAKEN: return FW_SURVEY_OVERTAKING;
@@ -208,10 +206,10 @@ static void on_pair(void *ctx, int i, int j, double d2)
     double u2 = ux * ux + uy * uy;
     if (u2 < 1e-12)
         return; /* no relative motion: no closest point ahead */
-    double tcpa = -(dx * ux + dy * uy) / u2;
+    double tcpa, dcpa;
+    fw_cpa(dx, dy, ux, uy, &tcpa, &dcpa);
     if (!(tcpa > 0.0 && tcpa < sv->def.tcpa))
         return;
-    double dcpa = hypot(dx + ux * tcpa, dy + uy * tcpa);
     if (!(dcpa < sv->def.dcpa))
         return;
     /* a new episode: named and classified from the smaller id's side */
@@ -230,7 +228,7 @@ static void on_pair(void *ctx, int i, int j, double d2)
         return;
     }
     sv->nrec++;
-    const fw_survey_ship *sa = &sv->in[a], *sb = &sv->in[b];
+    const fw_target *sa = &sv->in[a], *sb = &sv->in[b];
     fw_survey_record *o = &sv->rec[r];
     memset(o, 0, sizeof *o);
     snprintf(o->ship_a, sizeof o->ship_a, "%s", sa->id);
@@ -255,23 +253,23 @@ static void on_pair(void *ctx, int i, int j, double d2)
     sv->active[sv->nactive++] = r;
 }
 
-static fw_status check_ship(const fw_survey_ship *s, int k, fw_error *err)
+static fw_status check_ship(const fw_target *s, int k, fw_error *err)
 {
-    size_t len = s->id ? strlen(s->id) : 0;
+    size_t len = strnlen(s->id, sizeof s->id);
     if (len == 0 || len >= FW_SURVEY_ID_MAX)
         return fw_fail(err, FW_ERUN, "survey: ship %d has %s id", k,
                        len ? "a too long" : "no");
-    if (!(fabs(s->east) <= kMaxCoord && fabs(s->north) <= kMaxCoord) || !isfinite(s->heading) ||
+    if (!(fabs(s->east) <= kMaxCoord && fabs(s->north) <= kMaxCoord) || !isfinite(s->course) ||
         !(s->speed >= 0.0 && s->speed < 1e3) || !(s->length >= 0.0 && s->length < 1e4) ||
         !(s->breadth >= 0.0 && s->breadth < 1e4))
         return fw_fail(err, FW_ERUN,
                        "survey: ship '%s' at (%g, %g) heading %g speed %g size %g x %g: "
-                       "not a ship state", s->id, s->east, s->north, s->heading, s->speed,
+                       "not a ship state", s->id, s->east, s->north, s->course, s->speed,
                        s->length, s->breadth);
     return FW_OK;
 }
 
-fw_status fw_survey_step(fw_survey *sv, double t, const fw_survey_ship *ships, int n,
+fw_status fw_survey_step(fw_survey *sv, double t, const fw_target *ships, int n,
                          fw_error *err)
 {
     sv->stamp++;
@@ -304,12 +302,11 @@ fw_status fw_survey_step(fw_survey *sv, double t, const fw_survey_ship *ships, i
         if (sv->seen[id] == sv->stamp)
             return fw_fail(err, FW_ERUN, "survey: ship '%s' twice at t = %g s", ships[k].id, t);
         sv->seen[id] = sv->stamp;
-        const fw_survey_ship *s = &ships[k];
+        const fw_target *s = &ships[k];
         sv->cid[k] = id;
         sv->x[k] = s->east;
         sv->y[k] = s->north;
-        sv->vx[k] = s->speed * sin(s->heading);
-        sv->vy[k] = s->speed * cos(s->heading);
+        fw_velocity(s->speed, s->course, &sv->vx[k], &sv->vy[k]);
     }
     /* accepted from here on */
     sv->in = ships;

@@ -23,6 +23,7 @@
  * Exposure: each step's ships count until the next step, so the ship-seconds
  * sum n_k (t_{k+1} - t_k) over the steps.
  *
+ * Ships are fw_target records (geom/target.h), the own ship flagged `own`.
  * Frame: metres east/north, navigational headings (0 north, clockwise), SI.
  */
 #ifndef FW_SURVEY_H
@@ -33,7 +34,7 @@
 #include "avoid/encounter.h"
 #include "core/error.h"
 
-enum { FW_SURVEY_ID_MAX = 64 }; /* room for an id and its NUL */
+enum { FW_SURVEY_ID_MAX = FW_TARGET_ID_MAX }; /* room for an id and its NUL */
 
 typedef struct fw_survey_def {
     double range;          /* m, 2000: centres closer than this ... */
@@ -46,16 +47,6 @@ typedef struct fw_survey_def {
 } fw_survey_def;
 
 fw_survey_def fw_default_survey_def(void);
-
-/* One ship in one step. */
-typedef struct fw_survey_ship {
-    const char *id;        /* unique within a step, 1..63 chars; copied when kept */
-    double east, north;    /* m, hull centre */
-    double heading;        /* rad, navigational */
-    double speed;          /* m/s, >= 0 */
-    double length, breadth;/* m, >= 0; kept in the record (collision diameters) */
-    bool own;              /* the own ship */
-} fw_survey_ship;
 
 typedef enum fw_survey_type {
     FW_SURVEY_HEAD_ON,     /* rule 14 */
@@ -96,7 +87,7 @@ fw_status fw_survey_create(const fw_survey_def *def, fw_survey **out, fw_error *
  * step).  Ships may come and go between steps.  FW_ERUN on a bad ship
  * (duplicate or empty id, non-finite value), which leaves the survey as it
  * was, or when out of memory (the step then half done). */
-fw_status fw_survey_step(fw_survey *sv, double t, const fw_survey_ship *ships, int n,
+fw_status fw_survey_step(fw_survey *sv, double t, const fw_target *ships, int n,
                          fw_error *err);
 /* Ends the survey: sorts the records and fills tot (may be NULL).  No step
  * after it; calling it again only refills tot. */

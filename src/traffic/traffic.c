@@ -27,9 +27,9 @@ struct fw_traffic {
     fw_sumo_list raw;      /* fw_traffic_all */
     fw_sumo_list ctx;      /* the context results of step ctx_step */
     long ctx_step;
-    fw_traffic_ship *ships;
+    fw_target *ships;
     int ships_cap;
-    fw_traffic_ship *area;
+    fw_target *area;
     int area_cap;
 };
 
@@ -373,18 +373,19 @@ fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
 double fw_traffic_time(const fw_traffic *t) { return t->time; }
 
 /* Raw SUMO values to fairway's frame: the one place this happens. */
-static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_traffic_ship *s)
+static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_target *s)
 {
     memcpy(s->id, r->id, sizeof s->id);
     memcpy(s->type, r->type, sizeof s->type);
-    fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->x, &s->y, &s->heading);
+    fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->east, &s->north, &s->course);
     s->speed = r->speed;
     s->length = r->length;
-    s->width = r->width;
+    s->breadth = r->width;
     s->own = strcmp(r->id, own_id) == 0;
+    s->pred = NULL;
 }
 
-static fw_status room(fw_traffic_ship **v, int *cap, int n, fw_error *err)
+static fw_status room(fw_target **v, int *cap, int n, fw_error *err)
 {
     if (n <= *cap)
         return FW_OK;
@@ -396,7 +397,7 @@ static fw_status room(fw_traffic_ship **v, int *cap, int n, fw_error *err)
     return FW_OK;
 }
 
-static fw_status convert(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
+static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     fw_status st = room(&t->ships, &t->ships_cap, t->raw.n, err);
     if (st)
@@ -419,7 +420,7 @@ static fw_status context(fw_traffic *t, fw_error *err)
     return st;
 }
 
-fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
+fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     *n = 0;
     if (alive(t, err))
@@ -446,10 +447,10 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n
 
 static int cmp_id(const void *a, const void *b)
 {
-    return strcmp(((const fw_traffic_ship *)a)->id, ((const fw_traffic_ship *)b)->id);
+    return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
-fw_status fw_traffic_area(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
+fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     *n = 0;
     if (alive(t, err))
@@ -465,22 +466,22 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_traffic_ship **ships, int *n, 
         return st;
     int m = 0;
     for (int i = 0; i < t->ctx.n; i++) {
-        fw_traffic_ship *s = &t->area[m];
+        fw_target *s = &t->area[m];
         convert_one(&t->ctx.v[i], t->own_id, s);
-        if (!s->own && hypot(s->x - t->own_x, s->y - t->own_y) <= t->def.area_radius)
+        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= t->def.area_radius)
             m++;
     }
     /* the own ship as placed: SUMO may not list a vehicle moved off its lanes */
-    fw_traffic_ship *o = &t->area[m++];
+    fw_target *o = &t->area[m++];
     memset(o, 0, sizeof *o);
     snprintf(o->id, sizeof o->id, "%s", t->own_id);
     snprintf(o->type, sizeof o->type, "%s", FW_TRAFFIC_OWN_TYPE);
-    o->x = t->own_x;
-    o->y = t->own_y;
-    o->heading = t->own_heading;
+    o->east = t->own_x;
+    o->north = t->own_y;
+    o->course = t->own_heading;
     o->speed = t->own_speed;
     o->length = t->def.own_length;
-    o->width = t->def.own_width;
+    o->breadth = t->def.own_width;
     o->own = true;
     qsort(t->area, (size_t)m, sizeof *t->area, cmp_id);
     *ships = t->area;
@@ -488,7 +489,7 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_traffic_ship **ships, int *n, 
     return FW_OK;
 }
 
-fw_status fw_traffic_all(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err)
+fw_status fw_traffic_all(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     *n = 0;
     if (alive(t, err))
@@ -497,7 +498,7 @@ fw_status fw_traffic_all(fw_traffic *t, const fw_traffic_ship **ships, int *n, f
     return st ? st : convert(t, ships, n, err);
 }
 
-fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_traffic_ship *ship, fw_error *err)
+fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_target *ship, fw_error *err)
 {
     if (alive(t, err))
         return FW_ERUN;

@@ -5,6 +5,8 @@
  * a sumo-gui started here ("gui").  Every SUMO failure comes back as an
  * fw_status and message; nothing throws or aborts.
  *
+ * Ships come back as fw_target (geom/target.h), the one ship record: SUMO's
+ * front bumper and angle are converted here, once.
  * Frame: metres east (x) and north (y) in the SUMO network's coordinates.
  * fairway's networks are built with normalisation off, so these are exactly the
  * coordinates of networks/NAME/NAME.nod.xml.  Headings are navigational radians
@@ -25,6 +27,7 @@
 #include <sys/types.h>
 
 #include "core/error.h"
+#include "geom/target.h"
 
 typedef enum fw_traffic_kind {
     FW_TRAFFIC_EMBEDDED, /* libsumo, in this process */
@@ -65,18 +68,6 @@ typedef struct fw_traffic_def {
 /* embedded, step 1 s, seed 1, radius 6 nm, no area, own ship "own" 100 x 16 m. */
 fw_traffic_def fw_default_traffic_def(void);
 
-/* One ship as fairway sees it. */
-typedef struct fw_traffic_ship {
-    char id[64];
-    char type[64];
-    double x, y;    /* m, hull centre */
-    double heading; /* rad, navigational, [0, 2 pi) */
-    double speed;   /* m/s */
-    double length;  /* m */
-    double width;   /* m */
-    bool own;       /* the own ship (only fw_traffic_area and fw_traffic_all list it) */
-} fw_traffic_ship;
-
 /* Hull centre and heading <-> SUMO front bumper and angle (degrees). */
 void fw_traffic_to_sumo(double x, double y, double heading, double length, double *fx,
                         double *fy, double *angle_deg);
@@ -104,7 +95,7 @@ fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, do
 fw_status fw_traffic_step(fw_traffic *t, fw_error *err);
 /* Ships within the radius of the own ship after the last step, own ship
  * excluded.  *ships points into t and stays valid until the next step. */
-fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n,
+fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n,
                             fw_error *err);
 /* Every ship whose hull centre is within area_radius of the own ship's hull
  * centre after the last step, the own ship included (flagged own, as placed:
@@ -112,15 +103,15 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_traffic_ship **ships, int *n
  * FW_TRAFFIC_OWN_TYPE), sorted by id.  The same context results as
  * fw_traffic_around (one query per step); *ships points into t and stays
  * valid until the next step.  FW_ERUN if the def has no area_radius. */
-fw_status fw_traffic_area(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err);
+fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_error *err);
 double fw_traffic_time(const fw_traffic *t); /* s, SUMO time after the last step */
 
 /* For checks, not for the step loop (one SUMO call per ship and variable):
  * every ship in SUMO through the individual getters, own ship included.
  * *ships points into t until the next call. */
-fw_status fw_traffic_all(fw_traffic *t, const fw_traffic_ship **ships, int *n, fw_error *err);
+fw_status fw_traffic_all(fw_traffic *t, const fw_target **ships, int *n, fw_error *err);
 /* One ship by id through the getters. */
-fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_traffic_ship *ship, fw_error *err);
+fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_target *ship, fw_error *err);
 
 /* The command line fairway gives sumo for def (program name first, NULL
  * terminated, at most max entries); extra remote_port > 0 adds --remote-port.
