@@ -4,15 +4,11 @@
 #define FW_BENCH_H
 
 #include <stdlib.h>
-#include <time.h>
+
+#include "core/clock.h"
 
 /* Seconds on the monotonic clock. */
-static inline double bench_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+static inline double bench_now(void) { return fw_clock_s(); }
 
 static inline int bench_cmp(const void *a, const void *b)
 {

@@ -212,7 +212,9 @@ int main(void)
             for (int r = 0; r < REPS; r++) {
                 fw_policy pol;
                 fw_policy_init(&pol, &pdef);
-                if (fw_policy_step(&pol, ctx, &hdef, 0.0, &own, tg, n, as, order, &d, &err)) {
+                fw_policy_input in = {.ctx = ctx, .helm = &hdef, .t = 0.0, .own = &own,
+                                      .targets = tg, .n = n, .as = as, .order = order};
+                if (fw_policy_step(&pol, &in, &d, &err)) {
                     fprintf(stderr, "%s\n", err.msg);
                     return 1;
                 }

@@ -7,6 +7,9 @@
 #include "core/units.h"
 #include "nomoto/nomoto.h"
 #include "test.h"
+#include "traffic/source.h"
+#include "world/controllers.h"
+#include "world/world.h"
 
 static fw_ship c3;
 
@@ -201,51 +204,72 @@ typedef struct loop_out {
 
 static loop_out closed_loop(const fw_target *t0, int n, int seconds)
 {
-    fw_helm_def hdef = fw_default_helm_def();
-    fw_helm_ctx *ctx = make_ctx(&hdef);
-    fw_policy_def pdef = fw_default_policy_def();
-    fw_policy pol;
-    fw_policy_init(&pol, &pdef);
-    fw_own_state own = {.U = fw_kn_to_ms(10)};
-    fw_track_def one = {.dt = 1.0, .horizon = 1.0};
-    fw_track step;
-    fw_track_alloc(&step, 2, NULL);
-    fw_target now[4];
-    fw_assessment as[4];
-    int order[8];
     loop_out o = {.t_act = -1, .t_return = -1, .t_back = -1, .min_lambda = INFINITY,
                   .min_dist = INFINITY};
+    fw_error err = {0};
+    /* the world: the targets from the kinematic source (all seen), the own
+     * ship a Nomoto plant under the policy */
+    fw_kin_ship ships[4];
+    for (int i = 0; i < n; i++) {
+        ships[i] = (fw_kin_ship){.start = t0[i]};
+        if (!ships[i].start.id[0])
+            snprintf(ships[i].start.id, sizeof ships[i].start.id, "T%d", i + 1);
+    }
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ships;
+    kd.n = n;
+    fw_world_def wd = fw_default_world_def();
+    fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
+                                   .policy = fw_default_policy_def()};
+    fw_own_state start = {.U = fw_kn_to_ms(10)};
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.ship = &c3;
+    vd.dynamics = FW_DYN_NOMOTO;
+    vd.start_state = &start;
+    vd.radius = INFINITY;
+    fw_world *w = NULL;
+    fw_vessel *own = NULL;
+    CHECK_MSG(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
+                  fw_world_create(&wd, &w, &err) == FW_OK &&
+                  fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK &&
+                  fw_world_add_vessel(w, &vd, &own, &err) == FW_OK &&
+                  fw_world_start(w, &err) == FW_OK,
+              "%s", err.msg);
+    if (!own) {
+        fw_world_destroy(w);
+        return o;
+    }
+    const fw_policy *pol = fw_policy_controller_policy(fw_vessel_controller(own));
+    fw_policy_mode before = FW_MODE_STANDBY;
     for (int k = 0; k < seconds; k++) {
-        for (int i = 0; i < n; i++) {
-            now[i] = t0[i];
-            now[i].east += t0[i].speed * sin(t0[i].course) * k;
-            now[i].north += t0[i].speed * cos(t0[i].course) * k;
+        const fw_own_state *x = fw_vessel_own_state(own);
+        const fw_target *now;
+        const fw_assessment *as;
+        int m;
+        fw_vessel_view(own, &now, &as, &m);
+        for (int i = 0; i < m; i++) {
             o.min_lambda = fmin(o.min_lambda,
-                                fw_domain_lambda(&hdef.domain, own.east, own.north, own.psi, &now[i]));
-            o.min_dist = fmin(o.min_dist, hypot(now[i].east - own.east, now[i].north - own.north));
+                                fw_domain_lambda(&pd.helm.domain, x->east, x->north, x->psi, &now[i]));
+            o.min_dist = fmin(o.min_dist, hypot(now[i].east - x->east, now[i].north - x->north));
         }
-        fw_decision d;
-        fw_policy_mode before = pol.mode;
-        CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, now, n, as, order, &d, NULL) == FW_OK);
-        if (d.acted && o.acts++ == 0) {
+        const fw_decision *d = fw_vessel_decision(own);
+        if (d->acted && o.acts++ == 0) {
             o.t_act = k;
-            o.first_side = d.search.side;
-            o.first_sit = as[d.primary].situation;
+            o.first_side = d->search.side;
+            o.first_sit = as[d->primary].situation;
         }
         if ((before == FW_MODE_AVOID || before == FW_MODE_STEADY) &&
-            d.mode == FW_MODE_AUTOPILOT && o.t_return < 0)
+            d->mode == FW_MODE_AUTOPILOT && o.t_return < 0)
             o.t_return = k;
-        if (before == FW_MODE_AUTOPILOT && d.mode == FW_MODE_STANDBY && o.t_back < 0)
+        if (before == FW_MODE_AUTOPILOT && d->mode == FW_MODE_STANDBY && o.t_back < 0)
             o.t_back = k;
-        o.max_psi = fmax(o.max_psi, own.psi);
-        fw_track_predict(&c3, &one, &own, d.helm, &step, NULL);
-        own.east = step.east[1], own.north = step.north[1], own.psi = step.psi[1];
-        own.r = step.r[1], own.delta = step.delta[1], own.rdot = step.rdot[1];
+        before = d->mode;
+        o.final_mode = pol->mode;
+        o.max_psi = fmax(o.max_psi, x->psi);
+        CHECK_MSG(fw_world_step(w, 1.0, &err) == FW_OK, "%s", err.msg);
     }
-    o.final_psi = fw_wrap_pi(own.psi);
-    o.final_mode = pol.mode;
-    fw_track_free(&step);
-    fw_helm_ctx_destroy(ctx);
+    o.final_psi = fw_wrap_pi(fw_vessel_own_state(own)->psi);
+    fw_world_destroy(w);
     return o;
 }
 
@@ -299,7 +323,9 @@ static void test_policy_follows_target_id(void)
         }
         fw_decision d;
         fw_policy_mode before = pol.mode;
-        CHECK(fw_policy_step(&pol, ctx, &hdef, k, &own, now, 2, as, order, &d, NULL) == FW_OK);
+        fw_policy_input in = {.ctx = ctx, .helm = &hdef, .t = k, .own = &own, .targets = now,
+                              .n = 2, .as = as, .order = order};
+        CHECK(fw_policy_step(&pol, &in, &d, NULL) == FW_OK);
         if (d.acted) {
             acted = true;
             CHECK_MSG(strcmp(now[d.primary].id, "veh.B") == 0, "acted for %s", now[d.primary].id);

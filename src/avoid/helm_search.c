@@ -30,6 +30,11 @@ struct fw_helm_ctx {
     fw_chunk_boxes *boxes; /* per track slot, made with the track */
 };
 
+const char *fw_side_name(int side)
+{
+    return side == FW_SIDE_STARBOARD ? "starboard" : side == FW_SIDE_PORT ? "port" : "none";
+}
+
 fw_helm_def fw_default_helm_def(void)
 {
     return (fw_helm_def){.min_helm_deg = 10.0,

@@ -19,6 +19,8 @@
 #include "ship/ship.h"
 
 enum { FW_SIDE_PORT = -1, FW_SIDE_NONE = 0, FW_SIDE_STARBOARD = 1 };
+/* "starboard", "port", "none": the one spelling, for logs and files. */
+const char *fw_side_name(int side);
 /* masks of permitted sides */
 enum { FW_ALLOW_STARBOARD = 1, FW_ALLOW_PORT = 2, FW_ALLOW_EITHER = 3 };
 

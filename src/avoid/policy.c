@@ -176,148 +176,179 @@ static fw_status steer(const fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg
  * that blocks the return for good does so by letting it start and stop */
 static void start_return(fw_policy *p, double t) { set_mode(p, FW_MODE_AUTOPILOT, t); }
 
-fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef, double t,
-                         const fw_own_state *own, const fw_target *tg, int n,
-                         fw_assessment *as, int *order, fw_decision *d, fw_error *err)
+/* Returning: on while the rest of the return keeps every target out, or
+ * while stopping it would do no better (else back to STEADY). */
+static fw_status check_return(fw_policy *p, const fw_policy_input *in, fw_decision *d,
+                              fw_error *err)
 {
-    fw_assess(&hdef->colregs, &hdef->domain, hdef->track.horizon, own, tg, n, as, order);
-    fw_helm_begin(ctx, own);
-    int allowed = fw_permitted_sides(hdef, as, n);
-    fw_status st = fw_helm_search(ctx, tg, n, allowed, &d->search, err);
+    double ret, hold;
+    fw_status st = steer(p, in->ctx, in->targets, in->n, p->psi_ref, 1, &ret, err);
+    if (st || ret >= 1.0)
+        return st;
+    if ((st = steer(p, in->ctx, in->targets, in->n, in->own->psi, 1, &hold, err)))
+        return st;
+    if (hold > ret) {
+        p->psi_hold = in->own->psi;
+        if (p->t_blocked < 0.0)
+            p->t_blocked = in->t;
+        set_mode(p, FW_MODE_STEADY, in->t);
+        d->reason = "the rest of the return would let a target in: steadying";
+    }
+    return FW_OK;
+}
+
+static fw_status step_standby(fw_policy *p, const fw_policy_input *in, fw_decision *d,
+                              fw_error *err)
+{
+    p->helm = p->course_set ? autopilot(p, in->own, p->psi_ref) : 0.0;
+    if (!d->search.threat) {
+        d->reason = p->course_set ? "no target enters the domain: keeping the course"
+                                  : "no target enters the domain on the present course";
+        return FW_OK;
+    }
+    return maybe_act(p, in->ctx, in->t, in->own, in->targets, in->n, in->as, d, err);
+}
+
+static fw_status step_avoid(fw_policy *p, const fw_policy_input *in, fw_decision *d,
+                            fw_error *err)
+{
+    const fw_own_state *own = in->own;
+    const fw_helm_result *res = &d->search;
+    double turned = fabs(fw_wrap_pi(own->psi - p->psi_ref)), hold;
+    /* this manoeuvre has turned as far as the predictions go: steady
+     * and decide again from there rather than turn round in the traffic */
+    double max_turn = in->helm->track.max_turn;
+    bool far_enough = max_turn > 0.0 && fabs(fw_wrap_pi(own->psi - p->psi_act)) >= max_turn;
+    /* rule 8(b): one alteration large enough to be readily apparent,
+     * not a succession of small ones; less only once the target passes */
+    int k = p->primary_id[0] ? fw_target_find(in->targets, in->n, p->primary_id)
+                             : (p->primary < in->n ? p->primary : -1);
+    bool apparent = turned >= p->def.min_alteration || k < 0 || in->as[k].tcpa < 0.0;
+    fw_status st = steer(p, in->ctx, in->targets, in->n, own->psi, 0, &hold, err);
     if (st)
         return st;
-    const fw_helm_result *res = &d->search;
-    d->primary = n > 0 ? order[0] : -1;
-    d->acted = false;
-    d->reason = "";
-    double err_psi = fw_wrap_pi(own->psi - p->psi_ref);
-
-    /* returning: on while the rest of the return keeps every target out, or
-     * while stopping it would do no better */
-    if (p->mode == FW_MODE_AUTOPILOT) {
-        double ret, hold;
-        if ((st = steer(p, ctx, tg, n, p->psi_ref, 1, &ret, err)))
-            return st;
-        if (ret < 1.0) {
-            if ((st = steer(p, ctx, tg, n, own->psi, 1, &hold, err)))
-                return st;
-            if (hold > ret) {
-                p->psi_hold = own->psi;
-                if (p->t_blocked < 0.0)
-                    p->t_blocked = t;
-                set_mode(p, FW_MODE_STEADY, t);
-                d->reason = "the rest of the return would let a target in: steadying";
-            }
+    /* a minimum time at the helm: ships on SUMO's polyline lanes change
+     * course at each vertex, and their constant-velocity tracks swing
+     * with it; without it the order would follow every swing */
+    bool dwelt = in->t - p->t_mode >= p->def.min_avoid_time;
+    if (dwelt && ((apparent && hold >= p->def.steady_margin) || far_enough)) {
+        d->reason = far_enough ? "turned as far as the prediction goes: steadying"
+                               : "steadying on this heading keeps every target out: steadying";
+        p->psi_hold = own->psi;
+        p->helm = autopilot(p, own, p->psi_hold);
+        set_mode(p, FW_MODE_STEADY, in->t);
+    } else {
+        d->reason = "avoiding: holding the helm";
+        if (res->side == p->side && fabs(res->helm) > fabs(p->helm)) {
+            p->helm = res->helm;
+            d->reason = "avoiding: the search asks for more helm";
         }
     }
-    switch (p->mode) {
-    case FW_MODE_STANDBY:
-        p->helm = p->course_set ? autopilot(p, own, p->psi_ref) : 0.0;
-        if (!res->threat) {
-            d->reason = p->course_set ? "no target enters the domain: keeping the course"
-                                      : "no target enters the domain on the present course";
-            break;
-        }
-        if ((st = maybe_act(p, ctx, t, own, tg, n, as, d, err)))
-            return st;
-        break;
-    case FW_MODE_AVOID: {
-        double turned = fabs(err_psi), hold;
-        /* this manoeuvre has turned as far as the predictions go: steady
-         * and decide again from there rather than turn round in the traffic */
-        bool far_enough = hdef->track.max_turn > 0.0 &&
-                          fabs(fw_wrap_pi(own->psi - p->psi_act)) >= hdef->track.max_turn;
-        /* rule 8(b): one alteration large enough to be readily apparent,
-         * not a succession of small ones; less only once the target passes */
-        int k = p->primary_id[0] ? fw_target_find(tg, n, p->primary_id)
-                                 : (p->primary < n ? p->primary : -1);
-        bool apparent = turned >= p->def.min_alteration || k < 0 || as[k].tcpa < 0.0;
-        if ((st = steer(p, ctx, tg, n, own->psi, 0, &hold, err)))
-            return st;
-        /* a minimum time at the helm: ships on SUMO's polyline lanes change
-         * course at each vertex, and their constant-velocity tracks swing
-         * with it; without it the order would follow every swing */
-        bool dwelt = t - p->t_mode >= p->def.min_avoid_time;
-        if (dwelt && ((apparent && hold >= p->def.steady_margin) || far_enough)) {
-            d->reason = far_enough ? "turned as far as the prediction goes: steadying"
-                                   : "steadying on this heading keeps every target out: steadying";
+    return FW_OK;
+}
+
+/* STEADY with the return blocked: a ship pacing the own ship on a converging
+ * course blocks it for as long as it stays; open the range by altering
+ * further away (while that is clear and within max_turn). */
+static fw_status reopen(fw_policy *p, const fw_policy_input *in, fw_decision *d, fw_error *err)
+{
+    double away = fw_wrap_pi(p->psi_hold - p->psi_ref);
+    if (!(in->t - p->t_blocked >= p->def.blocked_time && away != 0.0))
+        return FW_OK;
+    double next = p->psi_hold + copysign(p->def.reopen_step, away), cl;
+    double max_turn = in->helm->track.max_turn;
+    bool within = max_turn <= 0.0 || fabs(fw_wrap_pi(next - p->psi_ref)) <= max_turn;
+    if (!within)
+        return FW_OK;
+    fw_status st = steer(p, in->ctx, in->targets, in->n, next, 1, &cl, err);
+    if (st)
+        return st;
+    if (cl >= p->def.steady_margin) {
+        p->psi_hold = fw_wrap_pi(next);
+        p->t_blocked = in->t;
+        d->reason = "steady: the return stays blocked: altering further to open the range";
+    }
+    return FW_OK;
+}
+
+static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decision *d,
+                             fw_error *err)
+{
+    const fw_own_state *own = in->own;
+    p->helm = autopilot(p, own, p->psi_hold);
+    double hold, ret;
+    fw_status st = steer(p, in->ctx, in->targets, in->n, p->psi_hold, 0, &hold, err);
+    if (st)
+        return st;
+    if (hold < 1.0) {
+        if (!d->search.threat) {
+            /* easing the rudder keeps them out where steering back to
+             * psi_hold would not: hold the heading reached instead */
+            d->reason = "steady: holding the present heading keeps every target out";
             p->psi_hold = own->psi;
             p->helm = autopilot(p, own, p->psi_hold);
-            set_mode(p, FW_MODE_STEADY, t);
-        } else {
-            d->reason = "avoiding: holding the helm";
-            if (res->side == p->side && fabs(res->helm) > fabs(p->helm)) {
-                p->helm = res->helm;
-                d->reason = "avoiding: the search asks for more helm";
-            }
+            return FW_OK;
         }
-        break;
+        d->reason = "steady: a target would enter the domain";
+        return maybe_act(p, in->ctx, in->t, own, in->targets, in->n, in->as, d, err);
     }
-    case FW_MODE_STEADY: {
-        p->helm = autopilot(p, own, p->psi_hold);
-        double hold, ret;
-        if ((st = steer(p, ctx, tg, n, p->psi_hold, 0, &hold, err)))
-            return st;
-        if (hold < 1.0) {
-            if (!res->threat) {
-                /* easing the rudder keeps them out where steering back to
-                 * psi_hold would not: hold the heading reached instead */
-                d->reason = "steady: holding the present heading keeps every target out";
-                p->psi_hold = own->psi;
-                p->helm = autopilot(p, own, p->psi_hold);
-                break;
-            }
-            d->reason = "steady: a target would enter the domain";
-            if ((st = maybe_act(p, ctx, t, own, tg, n, as, d, err)))
-                return st;
-            break;
-        }
-        /* no wait for TCPA < 0 here: a ship that keeps pacing the own ship
-         * may never pass, and the return is checked against every target
-         * over the horizon.  The margin: a return that only just clears
-         * would be abandoned at the next step's slightly different
-         * prediction */
-        if ((st = steer(p, ctx, tg, n, p->psi_ref, 1, &ret, err)))
-            return st;
-        if (ret >= p->def.steady_margin) {
-            d->reason = "the return is clear: back to the course";
-            p->helm = autopilot(p, own, p->psi_ref);
-            start_return(p, t);
-            break;
-        }
-        d->reason = "steady: returning now would let a target in";
-        if (p->t_blocked < 0.0)
-            p->t_blocked = t;
-        /* a ship pacing the own ship on a converging course blocks the
-         * return for as long as it stays: open the range by altering
-         * further away (while that is clear and within max_turn) */
-        double away = fw_wrap_pi(p->psi_hold - p->psi_ref);
-        if (t - p->t_blocked >= p->def.blocked_time && away != 0.0) {
-            double next = p->psi_hold + copysign(p->def.reopen_step, away), cl;
-            bool within = hdef->track.max_turn <= 0.0 ||
-                          fabs(fw_wrap_pi(next - p->psi_ref)) <= hdef->track.max_turn;
-            if (within && (st = steer(p, ctx, tg, n, next, 1, &cl, err)))
-                return st;
-            if (within && cl >= p->def.steady_margin) {
-                p->psi_hold = fw_wrap_pi(next);
-                p->t_blocked = t;
-                d->reason = "steady: the return stays blocked: altering further to open the range";
-            }
-        }
-        break;
-    }
-    case FW_MODE_AUTOPILOT:
-        d->reason = "returning: heading autopilot";
+    /* no wait for TCPA < 0 here: a ship that keeps pacing the own ship
+     * may never pass, and the return is checked against every target
+     * over the horizon.  The margin: a return that only just clears
+     * would be abandoned at the next step's slightly different
+     * prediction */
+    if ((st = steer(p, in->ctx, in->targets, in->n, p->psi_ref, 1, &ret, err)))
+        return st;
+    if (ret >= p->def.steady_margin) {
+        d->reason = "the return is clear: back to the course";
         p->helm = autopilot(p, own, p->psi_ref);
-        if (fabs(err_psi) < p->def.ap_done_heading && fabs(own->r) < p->def.ap_done_rate) {
-            d->reason = "back on the original course";
-            p->t_blocked = -1.0;
-            p->side = FW_SIDE_NONE;
-            p->course_set = true;
-            set_mode(p, FW_MODE_STANDBY, t);
-        }
-        break;
+        start_return(p, in->t);
+        return FW_OK;
     }
+    d->reason = "steady: returning now would let a target in";
+    if (p->t_blocked < 0.0)
+        p->t_blocked = in->t;
+    return reopen(p, in, d, err);
+}
+
+static void step_autopilot(fw_policy *p, const fw_policy_input *in, fw_decision *d)
+{
+    d->reason = "returning: heading autopilot";
+    p->helm = autopilot(p, in->own, p->psi_ref);
+    if (fabs(fw_wrap_pi(in->own->psi - p->psi_ref)) < p->def.ap_done_heading &&
+        fabs(in->own->r) < p->def.ap_done_rate) {
+        d->reason = "back on the original course";
+        p->t_blocked = -1.0;
+        p->side = FW_SIDE_NONE;
+        p->course_set = true;
+        set_mode(p, FW_MODE_STANDBY, in->t);
+    }
+}
+
+fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d,
+                         fw_error *err)
+{
+    const fw_helm_def *hdef = in->helm;
+    fw_assess(&hdef->colregs, &hdef->domain, hdef->track.horizon, in->own, in->targets, in->n,
+              in->as, in->order);
+    fw_helm_begin(in->ctx, in->own);
+    int allowed = fw_permitted_sides(hdef, in->as, in->n);
+    fw_status st = fw_helm_search(in->ctx, in->targets, in->n, allowed, &d->search, err);
+    if (st)
+        return st;
+    d->primary = in->n > 0 ? in->order[0] : -1;
+    d->acted = false;
+    d->reason = "";
+    if (p->mode == FW_MODE_AUTOPILOT && (st = check_return(p, in, d, err)))
+        return st;
+    switch (p->mode) {
+    case FW_MODE_STANDBY: st = step_standby(p, in, d, err); break;
+    case FW_MODE_AVOID: st = step_avoid(p, in, d, err); break;
+    case FW_MODE_STEADY: st = step_steady(p, in, d, err); break;
+    case FW_MODE_AUTOPILOT: step_autopilot(p, in, d); break;
+    }
+    if (st)
+        return st;
     d->mode = p->mode;
     d->helm = p->helm;
     return FW_OK;

@@ -119,10 +119,20 @@ typedef struct fw_decision {
     fw_helm_result search;  /* the helm search of this step */
 } fw_decision;
 
-/* One step at time t: assess (into as[0..n-1], order needs 2 n ints), search,
- * update the mode.  ctx is begun here with `own`. */
-fw_status fw_policy_step(fw_policy *p, fw_helm_ctx *ctx, const fw_helm_def *hdef, double t,
-                         const fw_own_state *own, const fw_target *tg, int n,
-                         fw_assessment *as, int *order, fw_decision *d, fw_error *err);
+/* What one step decides on. */
+typedef struct fw_policy_input {
+    fw_helm_ctx *ctx;           /* begun here with `own` */
+    const fw_helm_def *helm;
+    double t;                   /* s */
+    const fw_own_state *own;
+    const fw_target *targets;   /* the ships seen (ids stable from step to step) */
+    int n;
+    fw_assessment *as;          /* room for n: filled */
+    int *order;                 /* room for 2 n ints: scratch for the ranking */
+} fw_policy_input;
+
+/* One step: assess (into in->as), search, update the mode. */
+fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d,
+                         fw_error *err);
 
 #endif

@@ -67,11 +67,6 @@ static fw_status parse_ship_state(const char *opt, const char *text, bool target
     return FW_OK;
 }
 
-static const char *side_name(int side)
-{
-    return side == FW_SIDE_STARBOARD ? "starboard" : side == FW_SIDE_PORT ? "port" : "none";
-}
-
 static const char *allowed_name(int a)
 {
     return a == FW_ALLOW_EITHER ? "either" : a == FW_ALLOW_PORT ? "port" : "starboard";
@@ -169,9 +164,10 @@ int fw_cmd_helm(int argc, char **argv)
     fw_policy_def pdef = fw_default_policy_def();
     fw_policy_init(&pol, &pdef);
     fw_decision d;
+    fw_policy_input in = {.ctx = ctx, .helm = &hdef, .t = 0.0, .own = &own, .targets = tg,
+                          .n = n, .as = as, .order = order};
     fw_status st = !as || !order ? fw_fail(&err, FW_ERUN, "out of memory")
-                                 : fw_policy_step(&pol, ctx, &hdef, 0.0, &own, tg, n, as, order,
-                                                  &d, &err);
+                                 : fw_policy_step(&pol, &in, &d, &err);
     if (st) {
         rc = fw_report(&err);
     } else {
@@ -209,7 +205,7 @@ int fw_cmd_helm(int argc, char **argv)
             }
             printf("], \"threat\": %s, \"feasible\": %s, \"side\": \"%s\", ",
                    r->threat ? "true" : "false", r->feasible ? "true" : "false",
-                   side_name(r->side));
+                   fw_side_name(r->side));
             json_num("helm_deg", fw_rad_to_deg(r->helm), "%.0f", true);
             json_num("starboard_helm_deg", fw_rad_to_deg(r->side_helm[0]), "%.0f", true);
             json_num("port_helm_deg", fw_rad_to_deg(r->side_helm[1]), "%.0f", true);
@@ -240,7 +236,7 @@ int fw_cmd_helm(int argc, char **argv)
                 printf("no target enters the domain: keep course, rudder amidships\n");
             else
                 printf("required: %s %.0f deg (allowed: %s)%s; clearance %.2f\n",
-                       side_name(r->side), fabs(fw_rad_to_deg(r->helm)), allowed_name(r->allowed),
+                       fw_side_name(r->side), fabs(fw_rad_to_deg(r->helm)), allowed_name(r->allowed),
                        r->feasible ? "" : " - NOT ENOUGH: avoidance by helm is not possible, "
                                           "best available action",
                        r->clearance);

@@ -53,7 +53,7 @@ static void row(const fw_run_summary *s)
     printf("%-24s %8.0f %-6s %-9s %-17s %8.0f %7s %9.0f %9.0f  %s\n", s->scenario, s->min_dist,
            s->domain_entered ? "yes" : "no", s->collision ? "COLLISION" : "no", act,
            fw_rad_to_deg(s->max_helm), ret, s->path_lengthening, s->time_lost,
-           strcmp(s->status, "ok") ? s->status : (s->colregs_ok ? "ok" : "colregs?"));
+           s->status != FW_RUN_OK ? fw_run_status_name(s->status) : (s->colregs_ok ? "ok" : "colregs?"));
 }
 
 int fw_cmd_run(int argc, char **argv)

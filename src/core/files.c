@@ -1,5 +1,6 @@
 /* files.c - see files.h. */
 #define _XOPEN_SOURCE 700
+#include <stdarg.h>
 #include <errno.h>
 #include <ftw.h>
 #include <stdio.h>
@@ -41,5 +42,17 @@ fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err)
     struct stat sb;
     if (stat(buf, &sb) != 0 || !S_ISDIR(sb.st_mode))
         return fw_fail(err, FW_EINPUT, "%s %s: not a directory", what, dir);
+    return FW_OK;
+}
+
+fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(buf, size, fmt, ap);
+    va_end(ap);
+    if (n < 0 || (size_t)n >= size)
+        return fw_fail(err, FW_ERUN, "path too long (over %zu characters): %.60s...", size - 1,
+                       buf);
     return FW_OK;
 }

@@ -2,6 +2,8 @@
 #ifndef FW_FILES_H
 #define FW_FILES_H
 
+#include <stddef.h>
+
 #include "core/error.h"
 
 /* Removes path and everything under it (no symlinks followed); quiet when it
@@ -11,5 +13,10 @@ void fw_remove_tree(const char *path);
 /* Creates dir and its missing parents; an existing directory is fine.
  * what names the option or field in the error ("--out"). */
 fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err);
+
+/* Formats a path into buf (size bytes); FW_ERUN naming the start of the path
+ * if it does not fit: a path is never silently cut. */
+fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
 
 #endif

@@ -1,67 +1,81 @@
+/* oracle.c - the best fixed manoeuvre (oracle.h), each tried in a world of
+ * its own: the kinematic source for the targets, the MMG ship under the
+ * manoeuvre controller. */
 #include "run/oracle.h"
 
 #include <math.h>
+#include <stddef.h>
 
-#include "avoid/encounter.h"
 #include "core/units.h"
-#include "dynamics/stepper.h"
+#include "world/controllers.h"
+#include "world/world.h"
 
 fw_oracle_def fw_default_oracle_def(void)
 {
     return (fw_oracle_def){.t_act = 0.0, .helm = 0.0, .step = 1.0, .after = 0.0};
 }
 
+/* The scenario's targets at constant velocity (all seen, whatever the range)
+ * and the own ship under one fixed manoeuvre, in a world of their own. */
+static fw_status make_world(const fw_scenario *s, double step, const fw_manoeuvre_def *md,
+                            fw_world **w, fw_vessel **own, fw_error *err)
+{
+    fw_kin_ship ships[FW_SCN_MAX_TARGETS];
+    for (int i = 0; i < s->n_targets; i++)
+        ships[i] = (fw_kin_ship){.start = s->targets[i]};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ships;
+    kd.n = s->n_targets;
+    kd.step = step;
+    fw_world_def wd = fw_default_world_def();
+    wd.step = step;
+    fw_controller *ctl = NULL;
+    fw_status st;
+    if ((st = fw_kinematic_source_create(&kd, &wd.source, err)) ||
+        (st = fw_world_create(&wd, w, err)) ||
+        (st = fw_manoeuvre_controller_create(md, &ctl, err)))
+        return st;
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.ship = &s->ship;
+    vd.east = s->east;
+    vd.north = s->north;
+    vd.course = s->course;
+    vd.speed = s->speed;
+    vd.radius = INFINITY;
+    vd.controller = ctl;
+    return fw_world_add_vessel(*w, &vd, own, err);
+}
+
 /* One manoeuvre: smallest normalised domain radius and centre distance. */
 static fw_status follow(const fw_scenario *s, const fw_oracle_def *def, double helm,
-                        double alteration, double prop, double *lam_out, double *dist_out,
-                        fw_error *err)
+                        double alteration, double *lam_out, double *dist_out, fw_error *err)
 {
-    fw_stepper_def sd = fw_default_stepper_def();
-    fw_stepper *st;
-    fw_status rc = fw_stepper_create(&s->ship, &sd, &st, err);
-    if (rc)
-        return rc;
-    fw_mmg_state x0 = fw_mmg_straight(s->speed, s->east, s->north, s->course);
-    if ((rc = fw_stepper_start(st, 0.0, &x0, prop, err)))
-        goto out;
+    fw_manoeuvre_def md = {.t_act = def->t_act, .helm = helm, .course = s->course,
+                           .alteration = alteration};
+    fw_world *w = NULL;
+    fw_vessel *own = NULL;
+    fw_status rc = make_world(s, def->step, &md, &w, &own, err);
+    if (!rc)
+        rc = fw_world_start(w, err);
     double t_end = def->after > 0.0 ? fmin(s->duration, def->t_act + def->after) : s->duration;
-    double lam = INFINITY, dist = INFINITY, psi_hold = s->course;
-    bool turning = false, steady = alteration <= 0.0;
+    double lam = INFINITY, dist = INFINITY;
     long n = lround(t_end / def->step);
-    for (long k = 0; k <= n; k++) {
-        double t = k * def->step;
-        const fw_mmg_state *x = fw_stepper_state(st);
-        for (int i = 0; i < s->n_targets; i++) {
-            const fw_scn_target *g = &s->targets[i];
-            fw_target tg = {.east = g->east + g->speed * sin(g->course) * t,
-                            .north = g->north + g->speed * cos(g->course) * t,
-                            .course = g->course, .speed = g->speed, .length = g->length,
-                            .breadth = g->breadth};
-            lam = fmin(lam, fw_domain_lambda(&s->helm.domain, x->east, x->north, x->psi, &tg));
-            dist = fmin(dist, hypot(tg.east - x->east, tg.north - x->north));
+    for (long k = 0; !rc && k <= n; k++) {
+        const fw_mmg_state *x = fw_vessel_motion(own);
+        const fw_target *tg;
+        const fw_assessment *as;
+        int nt;
+        fw_vessel_view(own, &tg, &as, &nt);
+        for (int i = 0; i < nt; i++) {
+            lam = fmin(lam, fw_domain_lambda(&s->helm.domain, x->east, x->north, x->psi, &tg[i]));
+            dist = fmin(dist, hypot(tg[i].east - x->east, tg[i].north - x->north));
         }
-        if (k == n)
-            break;
-        double order = 0.0;
-        if (!steady && t >= def->t_act) {
-            turning = true;
-            if (fabs(x->psi - s->course) >= alteration) {
-                steady = true;
-                psi_hold = s->course + copysign(alteration, helm);
-            }
-        }
-        if (turning && !steady)
-            order = helm;
-        else if (steady && alteration > 0.0) /* hold the new heading: PD, 1 deg/deg, 20 s */
-            order = fmax(-fabs(helm), fmin(fabs(helm), -(x->psi - psi_hold) - 20.0 * x->r));
-        fw_stepper_set_helm(st, order);
-        if ((rc = fw_stepper_advance(st, def->step, err)))
-            break;
+        if (k < n)
+            rc = fw_world_step(w, def->step, err);
     }
+    fw_world_destroy(w);
     *lam_out = lam;
     *dist_out = dist;
-out:
-    fw_stepper_destroy(st);
     return rc;
 }
 
@@ -71,17 +85,14 @@ fw_status fw_oracle_best(const fw_scenario *s, const fw_oracle_def *def, fw_orac
     if (!(def->step > 0.0) || def->t_act < 0.0)
         return fw_fail(err, FW_EINPUT, "oracle: need step > 0 and t_act >= 0");
     double helm = def->helm > 0.0 ? fmin(def->helm, s->ship.rudder_max) : s->ship.rudder_max;
-    double prop;
-    fw_status rc = fw_mmg_propeller_for_speed(&s->ship, s->speed, &prop, err);
-    if (rc)
-        return rc;
+    fw_status rc;
     *out = (fw_oracle_result){.best_lambda = -1.0, .best_dist = 0.0};
     for (int side = 0; side <= 2; side++) {
         int nalt = side == 0 ? 1 : 12;
         for (int a = 1; a <= nalt; a++) {
             double alt = side == 0 ? 0.0 : fw_deg_to_rad(15.0 * a);
             double h = side == 2 ? -helm : helm, lam, dist;
-            if ((rc = follow(s, def, h, alt, prop, &lam, &dist, err)))
+            if ((rc = follow(s, def, h, alt, &lam, &dist, err)))
                 return rc;
             out->manoeuvres++;
             if (lam > out->best_lambda) {

@@ -123,14 +123,13 @@ static bool index_add(fw_records *r, int i)
 }
 
 /* COLREGs reading of a first action (see fw_records_finish for no action). */
-static bool action_ok(const char *situation, int side)
+static bool action_ok(fw_situation situation, int side)
 {
     /* head-on (rule 14) and give-way crossing (rules 15/16): to starboard;
      * stand-on (rule 17c): never to port for a crossing target on the port
      * side; overtaking and being overtaken: either side */
-    if (strcmp(situation, fw_situation_name(FW_SIT_HEAD_ON)) == 0 ||
-        strcmp(situation, fw_situation_name(FW_SIT_GIVE_WAY)) == 0 ||
-        strcmp(situation, fw_situation_name(FW_SIT_STAND_ON)) == 0)
+    if (situation == FW_SIT_HEAD_ON || situation == FW_SIT_GIVE_WAY ||
+        situation == FW_SIT_STAND_ON)
         return side == FW_SIDE_STARBOARD;
     return true;
 }
@@ -155,13 +154,9 @@ void fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mm
             return;
         r->n++;
         snprintf(e->type, sizeof e->type, "%s", ts->type);
-        /* an explicit target: the scenario's label, not the generated vType id */
-        for (int i = 0; i < r->s->n_targets; i++)
-            if (strcmp(r->s->targets[i].id, ts->id) == 0)
-                snprintf(e->type, sizeof e->type, "%s", r->s->targets[i].type);
         e->length = ts->length;
         e->breadth = ts->breadth;
-        e->situation = fw_situation_name(as->situation);
+        e->situation = as->situation;
         e->t_detect = t;
         e->dcpa0 = as->dcpa;
         e->tcpa0 = as->tcpa;
@@ -198,18 +193,19 @@ void fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mm
 }
 
 void fw_records_action(fw_records *r, double t, int side, double helm, const char *primary_id,
-                       const char *const *threat_ids, const fw_assessment *const *threat_as,
-                       int n_threats)
+                       const fw_target *tg, const fw_assessment *as, int n)
 {
-    for (int i = 0; i < n_threats; i++) {
-        fw_encounter *e = find(r, threat_ids[i]);
+    for (int i = 0; i < n; i++) {
+        if (!as[i].enters_domain)
+            continue;
+        fw_encounter *e = find(r, tg[i].id);
         if (!e || e->acted)
             continue;
         e->acted = true;
         e->t_act = t;
         e->act_side = side;
         e->act_helm = helm;
-        e->act_situation = fw_situation_name(threat_as[i]->situation);
+        e->act_situation = as[i].situation;
         e->primary = primary_id && strcmp(primary_id, e->id) == 0;
     }
 }
@@ -218,11 +214,6 @@ fw_encounter *fw_records_encounters(fw_records *r, int *n)
 {
     *n = r->n;
     return r->e;
-}
-
-static const char *side_name(int side)
-{
-    return side == FW_SIDE_STARBOARD ? "starboard" : side == FW_SIDE_PORT ? "port" : "none";
 }
 
 static void num(FILE *f, const char *fmt, double v)
@@ -238,7 +229,7 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
 {
     fprintf(f, "%s{\n", ind);
     fprintf(f, "%s  \"scenario\": \"%s\", \"status\": \"%s\", \"t_end_s\": %.1f,\n", ind,
-            s->scenario, s->status, s->t_end);
+            s->scenario, fw_run_status_name(s->status), s->t_end);
     fprintf(f, "%s  \"min_distance_m\": ", ind);
     num(f, "%.1f", s->min_dist);
     fprintf(f, ", \"closest_target\": \"%s\",\n", s->min_dist_id);
@@ -247,7 +238,7 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
             s->colregs_ok ? "true" : "false");
     fprintf(f, "%s  \"first_action\": {\"acted\": %s, \"t_s\": ", ind, s->acted ? "true" : "false");
     num(f, "%.1f", s->t_act);
-    fprintf(f, ", \"side\": \"%s\", \"helm_deg\": %.1f},\n", side_name(s->act_side),
+    fprintf(f, ", \"side\": \"%s\", \"helm_deg\": %.1f},\n", fw_side_name(s->act_side),
             fw_rad_to_deg(fabs(s->act_helm)));
     fprintf(f, "%s  \"max_helm_deg\": %.1f, \"t_return_s\": ", ind, fw_rad_to_deg(s->max_helm));
     num(f, "%.1f", s->t_return);
@@ -276,14 +267,14 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
         const fw_encounter *x = &e[i];
         fprintf(f, "%s\n%s    {\"id\": \"%s\", \"type\": \"%s\", \"situation\": \"%s\", "
                    "\"t_detect_s\": %.1f, \"dcpa_m\": %.1f, \"tcpa_s\": %.1f, \"threat\": %s, ",
-                i ? "," : "", ind, x->id, x->type, x->situation, x->t_detect, x->dcpa0, x->tcpa0,
+                i ? "," : "", ind, x->id, x->type, fw_situation_name(x->situation), x->t_detect, x->dcpa0, x->tcpa0,
                 x->threat ? "true" : "false");
         fprintf(f, "\"t_act_s\": ");
         num(f, "%.1f", x->t_act);
         fprintf(f, ", \"act_side\": \"%s\", \"act_helm_deg\": %.1f, \"primary\": %s, "
                    "\"min_distance_m\": %.1f, \"t_min_s\": %.1f, \"min_domain_ratio\": %.3f, "
                    "\"domain_entered\": %s, \"collision\": %s, \"colregs_ok\": %s}",
-                side_name(x->act_side), fw_rad_to_deg(fabs(x->act_helm)),
+                fw_side_name(x->act_side), fw_rad_to_deg(fabs(x->act_helm)),
                 x->primary ? "true" : "false", x->min_dist, x->t_min, x->min_lambda,
                 x->domain_entered ? "true" : "false", x->collision ? "true" : "false",
                 x->colregs_ok ? "true" : "false");
@@ -323,9 +314,8 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
         if (e->acted)
             e->colregs_ok = action_ok(e->act_situation, e->act_side);
         else
-            e->colregs_ok = !e->domain_entered ||
-                            strcmp(e->situation, fw_situation_name(FW_SIT_STAND_ON)) == 0 ||
-                            strcmp(e->situation, fw_situation_name(FW_SIT_OVERTAKEN)) == 0;
+            e->colregs_ok = !e->domain_entered || e->situation == FW_SIT_STAND_ON ||
+                            e->situation == FW_SIT_OVERTAKEN;
         if (e->min_dist < sum->min_dist) {
             sum->min_dist = e->min_dist;
             snprintf(sum->min_dist_id, sizeof sum->min_dist_id, "%s", e->id);
@@ -343,9 +333,9 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
     for (int i = 0; i < r->n; i++) {
         const fw_encounter *e = &r->e[i];
         fprintf(f, "%s,%s,%.1f,%.1f,%s,%.1f,%.1f,%.1f,%d,", e->id, e->type, e->length, e->breadth,
-                e->situation, e->t_detect, e->dcpa0, e->tcpa0, e->threat);
+                fw_situation_name(e->situation), e->t_detect, e->dcpa0, e->tcpa0, e->threat);
         num(f, "%.1f", e->t_act);
-        fprintf(f, ",%s,%.1f,%d,%.1f,%.1f,%.3f,%d,%d,%d\n", side_name(e->act_side),
+        fprintf(f, ",%s,%.1f,%d,%.1f,%.1f,%.3f,%d,%d,%d\n", fw_side_name(e->act_side),
                 fw_rad_to_deg(fabs(e->act_helm)), e->primary, e->min_dist, e->t_min,
                 e->min_lambda, e->domain_entered, e->collision, e->colregs_ok);
     }

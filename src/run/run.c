@@ -1,147 +1,152 @@
-/* run.c - the step loop (see run.h). */
+/* run.c - one scenario run: set-up, a loop of world steps with records, tear-down (run.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 
-#include "avoid/policy.h"
+#include "core/clock.h"
+#include "core/files.h"
 #include "core/units.h"
-#include "dynamics/stepper.h"
 #include "run/run.h"
-#include "traffic/demand.h"
-#include "traffic/netbuild.h"
+#include "traffic/source_sumo.h"
+#include "world/controllers.h"
+#include "world/world.h"
 
 fw_run_def fw_default_run_def(void)
 {
     fw_run_def d = {0};
     d.mode.kind = FW_TRAFFIC_EMBEDDED;
+    d.traffic = FW_RUN_TRAFFIC_SUMO;
     return d;
 }
 
-/* Extra length of each straight edge behind the start and beyond the end of
- * the run, so no ship reaches an edge's end (where SUMO would remove it). */
-static const double kBehind = 1000.0, kBeyond = 3000.0;
+const char *fw_run_status_name(fw_run_status s) { return s == FW_RUN_OK ? "ok" : "failed"; }
 
-static void node(FILE *f, const char *id, double e, double n)
+/* The own ship at t = 0 as a record (hull centre, heading, speed, size). */
+static fw_target own_start(const fw_scenario *s)
 {
-    fprintf(f, "    <node id=\"%s\" x=\"%.3f\" y=\"%.3f\" type=\"unregulated\"/>\n", id, e, n);
+    fw_target o = {.east = s->east, .north = s->north, .course = s->course, .speed = s->speed,
+                   .length = s->ship.Loa, .breadth = s->ship.B};
+    snprintf(o.id, sizeof o.id, "fw_own");
+    return o;
 }
 
-/* Plain XML for the own ship's leg and every target's track, and the routes
- * of the targets.  Target lanes allow custom1 only (see run.h). */
-static fw_status write_tracks(const fw_scenario *s, const char *sumo, fw_error *err)
+static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *err)
 {
-    char path[1200];
-    snprintf(path, sizeof path, "%s/tracks.nod.xml", sumo);
-    FILE *nf = fopen(path, "w");
-    snprintf(path, sizeof path, "%s/tracks.edg.xml", sumo);
-    FILE *ef = fopen(path, "w");
-    snprintf(path, sizeof path, "%s/targets.rou.xml", sumo);
-    FILE *rf = fopen(path, "w");
-    if (!nf || !ef || !rf) {
-        if (nf)
-            fclose(nf);
-        if (ef)
-            fclose(ef);
-        if (rf)
-            fclose(rf);
-        return fw_fail(err, FW_ERUN, "cannot write the track network in %s", sumo);
-    }
-    fprintf(nf, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- written by fairway run: "
-                "straight tracks of the own ship and the explicit targets -->\n<nodes>\n");
-    fprintf(ef, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<edges>\n");
-    fprintf(rf, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<routes>\n");
-    double se = sin(s->course), ce = cos(s->course);
-    double len = fmax(s->leg, s->speed * s->duration) + kBeyond;
-    node(nf, "fw_own_a", s->east - kBehind * se, s->north - kBehind * ce);
-    node(nf, "fw_own_b", s->east + len * se, s->north + len * ce);
-    fprintf(ef, "    <edge id=\"fw_own\" from=\"fw_own_a\" to=\"fw_own_b\" numLanes=\"1\" "
-                "speed=\"30\" width=\"%.1f\" allow=\"ship\" spreadType=\"center\"/>\n",
-            fmax(s->ship.B, 10.0));
-    for (int i = 0; i < s->n_targets; i++) {
-        const fw_scn_target *t = &s->targets[i];
-        double te = sin(t->course), tn = cos(t->course);
-        double tl = t->speed * s->duration + kBeyond;
-        char a[64], b[64], v[32];
-        snprintf(a, sizeof a, "fw_t_%s_a", t->id);
-        snprintf(b, sizeof b, "fw_t_%s_b", t->id);
-        node(nf, a, t->east - kBehind * te, t->north - kBehind * tn);
-        node(nf, b, t->east + tl * te, t->north + tl * tn);
-        fprintf(ef, "    <edge id=\"fw_t_%s\" from=\"%s\" to=\"%s\" numLanes=\"1\" speed=\"30\" "
-                    "width=\"%.1f\" allow=\"custom1\" spreadType=\"center\"/>\n",
-                t->id, a, b, fmax(t->breadth, 10.0));
-        /* one string for maxSpeed and departSpeed: SUMO refuses a departure
-         * faster than the type's maximum by a rounding digit */
-        snprintf(v, sizeof v, "%.6f", t->speed);
-        fprintf(rf, "    <vType id=\"fw_t_%s\" vClass=\"custom1\" guiShape=\"ship\" length=\"%.3f\" "
-                    "width=\"%.3f\" maxSpeed=\"%s\" speedFactor=\"1\" sigma=\"0\" accel=\"1\" "
-                    "decel=\"1\" minGap=\"0\" color=\"0.2,0.4,0.9\"/>\n",
-                t->id, t->length, t->breadth, v);
-        /* departPos is the front bumper: hull centre at the start point */
-        fprintf(rf, "    <vehicle id=\"%s\" type=\"fw_t_%s\" depart=\"0\" departLane=\"0\" "
-                    "departPos=\"%.3f\" departSpeed=\"%s\">\n        <route edges=\"fw_t_%s\"/>\n"
-                    "    </vehicle>\n",
-                t->id, t->id, kBehind + 0.5 * t->length, v, t->id);
-    }
-    fprintf(nf, "</nodes>\n");
-    fprintf(ef, "</edges>\n");
-    fprintf(rf, "</routes>\n");
-    int bad = fclose(nf) | fclose(ef) | fclose(rf);
-    return bad ? fw_fail(err, FW_ERUN, "cannot write the track network in %s", sumo) : FW_OK;
+    const fw_scenario *s = def->scenario;
+    char dir[1100];
+    fw_status st = fw_path(dir, sizeof dir, err, "%s/sumo", def->dir);
+    if (st)
+        return st;
+    if (mkdir(dir, 0777) != 0)
+        return fw_fail(err, FW_ERUN, "cannot create %s", dir);
+    fw_sumo_source_def sd = fw_default_sumo_source_def();
+    sd.mode = def->mode;
+    sd.dir = dir;
+    sd.network = s->network;
+    sd.density = s->density;
+    sd.fill = s->fill;
+    sd.seed = s->seed;
+    sd.duration = s->duration;
+    sd.step = s->step;
+    sd.targets = s->targets;
+    sd.n_targets = s->n_targets;
+    sd.own = own_start(s);
+    sd.own_leg = s->leg;
+    sd.radius = s->radius;
+    sd.area_radius = s->survey ? s->survey_radius : 0.0;
+    return fw_sumo_source_create(&sd, src, err);
 }
 
-static double now_s(void)
+/* The scenario's explicit targets at constant velocity, no SUMO. */
+static fw_status kinematic_source(const fw_scenario *s, fw_source **src, fw_error *err)
 {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+    if (s->network[0])
+        return fw_fail(err, FW_EINPUT, "%s: traffic on network '%s' needs SUMO, not the "
+                                       "kinematic source", s->file, s->network);
+    fw_kin_ship ships[FW_SCN_MAX_TARGETS];
+    for (int i = 0; i < s->n_targets; i++)
+        ships[i] = (fw_kin_ship){.start = s->targets[i]};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ships;
+    kd.n = s->n_targets;
+    kd.step = s->step;
+    kd.radius = s->radius;
+    kd.area_radius = s->survey ? s->survey_radius : 0.0;
+    kd.own_id = "fw_own";
+    return fw_kinematic_source_create(&kd, src, err);
 }
 
-static int cmp_ship(const void *a, const void *b)
+/* The world: the source and the own ship (MMG, the avoidance policy). */
+static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own, fw_error *err)
 {
-    return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
+    const fw_scenario *s = def->scenario;
+    fw_source *src = NULL;
+    fw_status st = def->traffic == FW_RUN_TRAFFIC_KINEMATIC ? kinematic_source(s, &src, err)
+                                                            : sumo_source(def, &src, err);
+    if (st)
+        return st;
+    fw_world_def wd = fw_default_world_def();
+    wd.step = s->step;
+    wd.source = src;
+    if ((st = fw_world_create(&wd, w, err)))
+        return st;
+    fw_policy_controller_def pd = {.ship = &s->ship, .helm = s->helm, .policy = s->policy};
+    fw_controller *ctl;
+    if ((st = fw_policy_controller_create(&pd, &ctl, err)))
+        return st;
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.id = "fw_own";
+    vd.ship = &s->ship;
+    vd.dynamics = FW_DYN_MMG;
+    vd.east = s->east;
+    vd.north = s->north;
+    vd.course = s->course;
+    vd.speed = s->speed;
+    vd.radius = s->radius;
+    vd.controller = ctl;
+    return fw_world_add_vessel(*w, &vd, own, err);
 }
 
-typedef struct loop_state {
+typedef struct run_state {
     const fw_scenario *s;
-    fw_stepper *st;
-    fw_traffic *tr;
-    fw_helm_ctx *ctx;
+    fw_world *w;
+    fw_vessel *own;
     fw_records *rec;
-    double n_prop;
-    fw_survey *sv;              /* NULL: no survey */
-} loop_state;
+    fw_survey *sv;           /* NULL: no survey */
+    fw_policy_mode mode_prev;
+    double helm_prev, e_prev, n_prev;
+} run_state;
 
 /* The survey's step: every ship in the area, the own ship included. */
-static fw_status survey_step(loop_state *L, double t, fw_error *err)
+static fw_status survey_step(run_state *R, double t, fw_error *err)
 {
     const fw_target *a;
     int n;
-    fw_status st = fw_traffic_area(L->tr, &a, &n, err);
-    return st ? st : fw_survey_step(L->sv, t, a, n, err);
+    fw_status st = fw_world_area(R->w, &a, &n, err);
+    return st ? st : fw_survey_step(R->sv, t, a, n, err);
 }
 
 /* Survey totals into the summary, its records into the run directory and to
  * the caller; run.log gets the counts. */
-static fw_status survey_finish(loop_state *L, const fw_run_def *def, fw_run_summary *sum,
+static fw_status survey_finish(run_state *R, const fw_run_def *def, fw_run_summary *sum,
                                fw_error *err)
 {
     fw_survey_totals tot;
-    fw_survey_finish(L->sv, &tot);
+    fw_survey_finish(R->sv, &tot);
     sum->survey = true;
     sum->traffic_ship_s = tot.ship_s;
     sum->n_traffic = tot.n;
     for (int k = 0; k < FW_SURVEY_NTYPES; k++)
         sum->traffic_by_type[k] = tot.by_type[k];
     sum->n_traffic_own = tot.n_own;
-    fprintf(fw_records_log(L->rec),
+    fprintf(fw_records_log(R->rec),
             "survey: %d traffic encounters (%d head-on, %d overtaking, %d crossing; %d with the "
             "own ship) in %.1f ship-hours\n",
             tot.n, tot.by_type[FW_SURVEY_HEAD_ON], tot.by_type[FW_SURVEY_OVERTAKING],
             tot.by_type[FW_SURVEY_CROSSING], tot.n_own, tot.ship_s / 3600.0);
     int n;
-    const fw_survey_record *r = fw_survey_records(L->sv, &n);
+    const fw_survey_record *r = fw_survey_records(R->sv, &n);
     if (def->survey_out && n > 0) {
         *def->survey_out = malloc(sizeof **def->survey_out * (size_t)n);
         if (!*def->survey_out)
@@ -149,157 +154,116 @@ static fw_status survey_finish(loop_state *L, const fw_run_def *def, fw_run_summ
         memcpy(*def->survey_out, r, sizeof **def->survey_out * (size_t)n);
         *def->n_survey_out = n;
     }
-    return fw_records_survey(L->rec, r, n, err);
+    return fw_records_survey(R->rec, r, n, err);
 }
 
-static const char *side_word(int side)
+/* The own ship acted this step: the encounter book, the summary and run.log. */
+static void record_action(run_state *R, double t, const fw_decision *d, const fw_target *tg,
+                          const fw_assessment *as, int n, fw_run_summary *sum)
 {
-    return side == FW_SIDE_STARBOARD ? "starboard" : side == FW_SIDE_PORT ? "port" : "none";
-}
-
-static fw_status loop(loop_state *L, fw_run_summary *sum, fw_error *err)
-{
-    const fw_scenario *s = L->s;
-    FILE *log = fw_records_log(L->rec);
-    fw_policy pol;
-    fw_policy_init(&pol, &s->policy);
-    long n_steps = lround(s->duration / s->step);
-    long every = lround(s->record_every / s->step);
-    int cap = 0;
-    fw_target *ships = NULL;
-    fw_target *tg = NULL;
-    fw_assessment *as = NULL;
-    int *order = NULL;
-    const char **tid = NULL;
-    const fw_assessment **tas = NULL;
-    fw_status stt = FW_OK;
-    double r_prev = 0.0, e_prev = s->east, n_prev = s->north, helm_prev = 0.0;
-    double se = sin(s->course), ce = cos(s->course);
-    fw_policy_mode mode_prev = FW_MODE_STANDBY;
-    for (long k = 0;; k++) {
-        double t = k * s->step;
-        const fw_mmg_state *x = fw_stepper_state(L->st);
-        const fw_target *raw;
-        int n;
-        if ((stt = fw_traffic_around(L->tr, &raw, &n, err)))
-            break;
-        if (L->sv && (stt = survey_step(L, t, err)))
-            break;
-        if (n > cap) {
-            cap = n * 2;
-            ships = realloc(ships, sizeof *ships * (size_t)cap);
-            tg = realloc(tg, sizeof *tg * (size_t)cap);
-            as = realloc(as, sizeof *as * (size_t)cap);
-            order = realloc(order, sizeof *order * 2 * (size_t)cap);
-            tid = realloc(tid, sizeof *tid * (size_t)cap);
-            tas = realloc(tas, sizeof *tas * (size_t)cap);
-            if (!ships || !tg || !as || !order || !tid || !tas) {
-                stt = fw_fail(err, FW_ERUN, "out of memory");
-                break;
-            }
-        }
-        /* converted once, here; sorted by id so the order never depends on SUMO's */
-        if (n > 0) { /* no ship in range yet: the arrays may still be NULL */
-            memcpy(ships, raw, sizeof *ships * (size_t)n);
-            qsort(ships, (size_t)n, sizeof *ships, cmp_ship);
-        }
-        for (int i = 0; i < n; i++) {
-            tg[i] = ships[i];
-        }
-        fw_own_state own = {.east = x->east, .north = x->north, .psi = x->psi,
-                            .U = hypot(x->u, x->vm), .U0 = s->speed,
-                            .beta = atan2(-x->vm, x->u), .r = x->r,
-                            .rdot = k ? (x->r - r_prev) / s->step : 0.0, .delta = x->delta};
-        fw_decision d;
-        if ((stt = fw_policy_step(&pol, L->ctx, &s->helm, t, &own, tg, n, as, order, &d, err)))
-            break;
-        bool row = k % every == 0;
-        if (row)
-            fw_records_own(L->rec, t, x, d.helm, L->n_prop, fw_policy_mode_name(d.mode));
-        for (int i = 0; i < n; i++)
-            fw_records_target(L->rec, t, &ships[i], x, &as[i], row);
-        if (d.acted) {
-            int m = 0;
-            for (int i = 0; i < n; i++)
-                if (as[i].enters_domain) {
-                    tid[m] = ships[i].id;
-                    tas[m++] = &as[i];
-                }
-            const char *pid = d.primary >= 0 && d.primary < n ? ships[d.primary].id : NULL;
-            fw_records_action(L->rec, t, d.search.side, d.helm, pid, tid, tas, m);
-            sum->n_actions++;
-            if (!sum->acted) {
-                sum->acted = true;
-                sum->t_act = t;
-                sum->act_side = d.search.side;
-                sum->act_helm = d.helm;
-            }
-            fprintf(log, "%9.1f  act %s %.0f deg for %s (%s, range %.0f m, DCPA %.0f m, TCPA "
-                         "%.0f s): %s\n",
-                    t, side_word(d.search.side), fw_rad_to_deg(fabs(d.helm)), pid ? pid : "-",
-                    pid ? fw_situation_name(as[d.primary].situation) : "-",
-                    pid ? as[d.primary].range : 0.0, pid ? as[d.primary].dcpa : 0.0,
-                    pid ? as[d.primary].tcpa : 0.0, d.reason ? d.reason : "");
-        }
-        if (d.mode != mode_prev) {
-            fprintf(log, "%9.1f  %s -> %s, helm %.1f deg: %s\n", t, fw_policy_mode_name(mode_prev),
-                    fw_policy_mode_name(d.mode), fw_rad_to_deg(d.helm), d.reason ? d.reason : "");
-            if (d.mode == FW_MODE_AUTOPILOT && isnan(sum->t_return))
-                sum->t_return = t;
-            if (mode_prev == FW_MODE_AUTOPILOT && d.mode == FW_MODE_STANDBY &&
-                isnan(sum->t_on_course))
-                sum->t_on_course = t;
-            mode_prev = d.mode;
-        }
-        sum->max_helm = fmax(sum->max_helm, fabs(d.helm));
-        if (fabs(d.helm - helm_prev) > fw_deg_to_rad(0.5)) {
-            sum->helm_orders++;
-            helm_prev = d.helm;
-        }
-        sum->t_end = t;
-        if (k >= n_steps)
-            break;
-        r_prev = x->r;
-        fw_stepper_set_helm(L->st, d.helm);
-        if ((stt = fw_stepper_advance(L->st, s->step, err)))
-            break;
-        x = fw_stepper_state(L->st);
-        sum->rudder_work += fabs(x->delta) * s->step;
-        sum->path_length += hypot(x->east - e_prev, x->north - n_prev);
-        e_prev = x->east;
-        n_prev = x->north;
-        if ((stt = fw_traffic_place(L->tr, x->east, x->north, x->psi, hypot(x->u, x->vm), err)))
-            break;
-        double t0 = now_s();
-        stt = fw_traffic_step(L->tr, err);
-        sum->sumo_s += now_s() - t0;
-        if (stt)
-            break;
+    const char *pid = d->primary >= 0 && d->primary < n ? tg[d->primary].id : NULL;
+    fw_records_action(R->rec, t, d->search.side, d->helm, pid, tg, as, n);
+    sum->n_actions++;
+    if (!sum->acted) {
+        sum->acted = true;
+        sum->t_act = t;
+        sum->act_side = d->search.side;
+        sum->act_helm = d->helm;
     }
-    const fw_mmg_state *x = fw_stepper_state(L->st);
+    fprintf(fw_records_log(R->rec),
+            "%9.1f  act %s %.0f deg for %s (%s, range %.0f m, DCPA %.0f m, TCPA %.0f s): %s\n", t,
+            fw_side_name(d->search.side), fw_rad_to_deg(fabs(d->helm)), pid ? pid : "-",
+            pid ? fw_situation_name(as[d->primary].situation) : "-",
+            pid ? as[d->primary].range : 0.0, pid ? as[d->primary].dcpa : 0.0,
+            pid ? as[d->primary].tcpa : 0.0, d->reason ? d->reason : "");
+}
+
+static void record_mode(run_state *R, double t, const fw_decision *d, fw_run_summary *sum)
+{
+    if (d->mode == R->mode_prev)
+        return;
+    fprintf(fw_records_log(R->rec), "%9.1f  %s -> %s, helm %.1f deg: %s\n", t,
+            fw_policy_mode_name(R->mode_prev), fw_policy_mode_name(d->mode),
+            fw_rad_to_deg(d->helm), d->reason ? d->reason : "");
+    if (d->mode == FW_MODE_AUTOPILOT && isnan(sum->t_return))
+        sum->t_return = t;
+    if (R->mode_prev == FW_MODE_AUTOPILOT && d->mode == FW_MODE_STANDBY &&
+        isnan(sum->t_on_course))
+        sum->t_on_course = t;
+    R->mode_prev = d->mode;
+}
+
+/* Everything the records keep of one instant (the world's state and the
+ * decision taken on it). */
+static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *err)
+{
+    const fw_scenario *s = R->s;
+    double t = fw_world_time(R->w);
+    fw_status st = R->sv ? survey_step(R, t, err) : FW_OK;
+    if (st)
+        return st;
+    const fw_mmg_state *x = fw_vessel_motion(R->own);
+    const fw_decision *d = fw_vessel_decision(R->own);
+    const fw_target *tg;
+    const fw_assessment *as;
+    int n;
+    fw_vessel_view(R->own, &tg, &as, &n);
+    bool row = k % lround(s->record_every / s->step) == 0;
+    if (row)
+        fw_records_own(R->rec, t, x, d->helm, fw_vessel_propeller(R->own),
+                       fw_policy_mode_name(d->mode));
+    for (int i = 0; i < n; i++)
+        fw_records_target(R->rec, t, &tg[i], x, &as[i], row);
+    if (d->acted)
+        record_action(R, t, d, tg, as, n, sum);
+    record_mode(R, t, d, sum);
+    sum->max_helm = fmax(sum->max_helm, fabs(d->helm));
+    if (fabs(d->helm - R->helm_prev) > fw_deg_to_rad(0.5)) {
+        sum->helm_orders++;
+        R->helm_prev = d->helm;
+    }
+    sum->t_end = t;
+    return FW_OK;
+}
+
+/* The run's steps; the track measures at the end. */
+static fw_status loop(run_state *R, fw_run_summary *sum, fw_error *err)
+{
+    const fw_scenario *s = R->s;
+    long n_steps = lround(s->duration / s->step);
+    R->e_prev = s->east;
+    R->n_prev = s->north;
+    R->mode_prev = FW_MODE_STANDBY;
+    fw_status st = fw_world_start(R->w, err);
+    for (long k = 0; !st; k++) {
+        if ((st = observe(R, k, sum, err)) || k >= n_steps)
+            break;
+        if ((st = fw_world_step(R->w, s->step, err)))
+            break;
+        const fw_mmg_state *x = fw_vessel_motion(R->own);
+        sum->rudder_work += fabs(x->delta) * s->step;
+        sum->path_length += hypot(x->east - R->e_prev, x->north - R->n_prev);
+        R->e_prev = x->east;
+        R->n_prev = x->north;
+    }
+    const fw_mmg_state *x = fw_vessel_motion(R->own);
     double de = x->east - s->east, dn = x->north - s->north;
+    double se = sin(s->course), ce = cos(s->course);
     sum->along_track = de * se + dn * ce;
     sum->cross_track = de * ce - dn * se;
     sum->heading_error = fw_wrap_pi(x->psi - s->course);
     sum->path_lengthening = sum->path_length - sum->along_track;
     sum->time_lost = sum->t_end - sum->along_track / s->speed;
-    free(ships);
-    free(tg);
-    free(as);
-    free(order);
-    free(tid);
-    free(tas);
-    return stt;
+    return st;
 }
 
-fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
-                          int *n_enc, fw_error *err)
+static void init_summary(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
+                         int *n_enc)
 {
     const fw_scenario *s = def->scenario;
-    double wall0 = now_s();
     memset(sum, 0, sizeof *sum);
     snprintf(sum->scenario, sizeof sum->scenario, "%s", s->name);
-    snprintf(sum->status, sizeof sum->status, "failed");
+    sum->status = FW_RUN_FAILED;
     sum->t_act = sum->t_return = sum->t_on_course = NAN;
     sum->min_dist = INFINITY;
     sum->own_length = s->ship.Loa;
@@ -312,130 +276,74 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
         *def->survey_out = NULL;
         *def->n_survey_out = 0;
     }
-    loop_state L = {.s = s};
-    char sumo[1100], net[1200], routes[2600], slog[1200], nlog[1200], nodes[2400], edges[2400];
-    snprintf(sumo, sizeof sumo, "%s/sumo", def->dir);
-    if (mkdir(sumo, 0777) != 0)
-        return fw_fail(err, FW_ERUN, "cannot create %s", sumo);
-    /* Traffic on a network alone needs no track edges (moveToXY places the own
-     * ship anywhere): the built network is used as it is, which spares a
-     * netconvert per run in a sweep. */
-    bool tracks = s->n_targets > 0 || !s->network[0];
-    fw_status st = tracks ? write_tracks(s, sumo, err) : FW_OK;
-    if (st)
-        return st;
-    fw_network_files nf = {0};
-    /* netconvert runs in sumo/: relative names keep the net.xml independent
-     * of the (temporary) run directory's path */
-    snprintf(nodes, sizeof nodes, "tracks.nod.xml");
-    snprintf(edges, sizeof edges, "tracks.edg.xml");
-    snprintf(routes, sizeof routes, "%s/targets.rou.xml", sumo);
-    const char *types = NULL;
-    char typ[1100] = "";
-    if (s->network[0]) {
-        /* the network's own sources and the tracks, built together: one code path */
-        if ((st = fw_network_find(s->network, &nf, err)))
-            return st;
-        const char *root = fw_data_root();
-        char pre[1024];
-        snprintf(pre, sizeof pre, "%s/networks/%s/%s", root, s->network, s->network);
-        snprintf(nodes, sizeof nodes, "%s.nod.xml,tracks.nod.xml", pre);
-        snprintf(edges, sizeof edges, "%s.edg.xml,tracks.edg.xml", pre);
-        snprintf(typ, sizeof typ, "%s.typ.xml", pre);
-        types = typ;
-        fw_demand dm;
-        fw_demand_def dd = fw_default_demand_def();
-        dd.density = s->density;
-        dd.fill = s->fill;
-        dd.end = s->duration + s->step;
-        dd.seed = s->seed;
-        char drou[1200];
-        snprintf(drou, sizeof drou, "%s/demand.rou.xml", sumo);
-        if ((st = fw_demand_load(nf.demand, &dm, err)) ||
-            (st = fw_demand_write(&dm, &dd, drou, err)))
-            return st;
-        if (s->n_targets > 0)
-            snprintf(routes, sizeof routes, "%s/demand.rou.xml,%s/targets.rou.xml", sumo, sumo);
-        else
-            snprintf(routes, sizeof routes, "%s", drou);
+}
+
+/* The records' files and the summary, also after a failure part way; the
+ * first error wins. */
+static fw_status finish(run_state *R, const fw_run_def *def, fw_run_summary *sum,
+                        fw_encounter **enc, int *n_enc, fw_status st, fw_error *err)
+{
+    fw_error ferr = {0}, rerr = {0};
+    /* the survey first: summary.json carries its totals */
+    fw_status fst = R->sv ? survey_finish(R, def, sum, &ferr) : FW_OK;
+    fw_status rst = fw_records_finish(R->rec, sum, &rerr);
+    if (!fst && rst) {
+        fst = rst;
+        ferr = rerr;
     }
-    snprintf(net, sizeof net, "%s/run.net.xml", sumo);
-    snprintf(nlog, sizeof nlog, "%s/netconvert.log", sumo);
-    snprintf(slog, sizeof slog, "%s/sumo.log", sumo);
-    if (!tracks)
-        snprintf(net, sizeof net, "%s", nf.net);
-    else if ((st = fw_netconvert(sumo, nodes, edges, types, "run.net.xml", nlog, err)))
-        return st;
-    fw_traffic_def td = fw_default_traffic_def();
-    td.mode = def->mode;
-    td.net_file = net;
-    td.route_file = routes;
-    td.add_file = s->network[0] ? nf.types : NULL;
-    td.log_file = slog;
-    td.step = s->step;
-    td.seed = s->seed;
-    td.own_id = "fw_own";
-    td.own_length = s->ship.Loa;
-    td.own_width = s->ship.B;
-    td.own_edge = tracks ? "fw_own" : NULL;
-    td.radius = s->radius;
-    td.area_radius = s->survey ? s->survey_radius : 0.0;
-    fw_mmg_state x0 = fw_mmg_straight(s->speed, s->east, s->north, s->course);
-    fw_stepper_def sd = fw_default_stepper_def();
-    if ((st = fw_records_open(&L.rec, s, def->dir, err)) ||
-        (st = fw_mmg_propeller_for_speed(&s->ship, s->speed, &L.n_prop, err)) ||
-        (st = fw_stepper_create(&s->ship, &sd, &L.st, err)) ||
-        (st = fw_stepper_start(L.st, 0.0, &x0, L.n_prop, err)) ||
-        (st = fw_helm_ctx_create(&s->ship, &s->helm, &L.ctx, err)) ||
-        (s->survey && (st = fw_survey_create(&s->survey_def, &L.sv, err))) ||
-        (st = fw_traffic_open(&td, &L.tr, err)))
-        goto out;
-    fprintf(fw_records_log(L.rec),
-            "scenario %s (%s): own ship %s at %.1f kn on %03.0f deg from (%.1f, %.1f) m, "
-            "%d explicit targets%s%s, %.0f s in steps of %.3f s, seed %lu\n",
-            s->name, s->file, s->ship.name, fw_ms_to_kn(s->speed), fw_heading_deg(s->course),
-            s->east, s->north, s->n_targets, s->network[0] ? ", network " : "", s->network,
-            s->duration, s->step, s->seed);
-    /* SUMO inserts the targets during its first step: after it, their
-     * positions are those of fairway's t = 0 */
-    if ((st = fw_traffic_place(L.tr, x0.east, x0.north, x0.psi, s->speed, err)) ||
-        (st = fw_traffic_step(L.tr, err)))
-        goto out;
-    L.s = s;
-    st = loop(&L, sum, err);
-    if (st)
-        fprintf(fw_records_log(L.rec), "run failed: %s\n", err ? err->msg : "");
-    else
-        snprintf(sum->status, sizeof sum->status, "ok");
-    {
-        fw_error ferr = {0}, rerr = {0};
-        /* the survey first: summary.json carries its totals */
-        fw_status fst = L.sv ? survey_finish(&L, def, sum, &ferr) : FW_OK;
-        fw_status rst = fw_records_finish(L.rec, sum, &rerr);
-        if (!fst && rst) {
-            fst = rst;
-            ferr = rerr;
-        }
-        if (!st && fst) {
-            st = fst;
-            if (err)
-                *err = ferr;
-        }
+    if (!st && fst) {
+        st = fst;
+        if (err)
+            *err = ferr;
     }
-    fw_encounter *e = fw_records_encounters(L.rec, n_enc);
+    fw_encounter *e = fw_records_encounters(R->rec, n_enc);
     if (*n_enc > 0) {
         *enc = malloc(sizeof **enc * (size_t)*n_enc);
         if (*enc)
             memcpy(*enc, e, sizeof **enc * (size_t)*n_enc);
         else
+            st = st ? st : fw_fail(err, FW_ERUN, "out of memory for %d encounters", *n_enc);
+        if (!*enc)
             *n_enc = 0;
     }
+    return st;
+}
+
+static void log_start(run_state *R)
+{
+    const fw_scenario *s = R->s;
+    fprintf(fw_records_log(R->rec),
+            "scenario %s (%s): own ship %s at %.1f kn on %03.0f deg from (%.1f, %.1f) m, "
+            "%d explicit targets%s%s, %.0f s in steps of %.3f s, seed %lu\n",
+            s->name, s->file, s->ship.name, fw_ms_to_kn(s->speed), fw_heading_deg(s->course),
+            s->east, s->north, s->n_targets, s->network[0] ? ", network " : "", s->network,
+            s->duration, s->step, s->seed);
+}
+
+fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
+                          int *n_enc, fw_error *err)
+{
+    const fw_scenario *s = def->scenario;
+    double wall0 = fw_clock_s();
+    init_summary(def, sum, enc, n_enc);
+    run_state R = {.s = s};
+    fw_status st;
+    if ((st = fw_records_open(&R.rec, s, def->dir, err)) ||
+        (s->survey && (st = fw_survey_create(&s->survey_def, &R.sv, err))) ||
+        (st = make_world(def, &R.w, &R.own, err)))
+        goto out;
+    log_start(&R);
+    st = loop(&R, sum, err);
+    if (st)
+        fprintf(fw_records_log(R.rec), "run failed: %s\n", err ? err->msg : "");
+    else
+        sum->status = FW_RUN_OK;
+    st = finish(&R, def, sum, enc, n_enc, st, err);
 out:
-    fw_traffic_close(L.tr);
-    fw_survey_destroy(L.sv);
-    sum->wall_s = now_s() - wall0;
-    fw_helm_ctx_destroy(L.ctx);
-    fw_stepper_destroy(L.st);
-    fw_records_close(L.rec);
+    sum->sumo_s = fw_sumo_source_step_wall(R.w ? fw_world_source(R.w) : NULL);
+    fw_world_destroy(R.w);
+    fw_survey_destroy(R.sv);
+    sum->wall_s = fw_clock_s() - wall0;
+    fw_records_close(R.rec);
     return st;
 }

@@ -1,22 +1,12 @@
-/* run.h - one scenario run: the step loop of design.md and its records.
+/* run.h - one scenario run: set-up, a loop of world steps with records, tear-down.
  *
- * Every dt:
- *   traffic step        SUMO advances the targets and background ships
- *   targets around      one context query, converted to fw_target once, sorted by id
- *   decide              encounter assessment + helm search + action/return policy
- *   advance             helm order to the MMG stepper, integrate dt
- *   place               the own ship moved in SUMO (moveToXY)
- *   records             time histories and the per-target encounter book
- *   survey              (scenario survey: section) every ship within the survey
- *                       radius, the own ship included, to fw_survey_step: the
- *                       encounters among all ships, by type
- *
- * Explicit targets become SUMO vehicles on a run-specific network: one straight
- * one-lane edge along each target's track (and one along the own ship's planned
- * leg), written as plain XML and built by netconvert into the run directory.
- * Target lanes allow only vClass custom1, so moveToXY can never map the own
- * ship (vClass ship) onto a target's lane where the target would brake for it:
- * targets keep course and speed exactly, as the benchmarks assume.
+ * fw_run_scenario builds a world (world/world.h) from the scenario: a traffic
+ * source (SUMO, which writes its own files into sumo/, or the kinematic source
+ * for explicit targets) and the own ship (MMG dynamics, the avoidance policy).
+ * After the world's start and after every fw_world_step the records take the
+ * instant: the own ship's state and decision, every target seen with its
+ * assessment (the encounter book), and, with a survey: section, every ship in
+ * the survey area (survey/survey.h: the encounters among all ships, by type).
  *
  * Outputs (in the run directory; every number printed with a fixed format and
  * no clock time anywhere, so the same scenario and seed give identical files):
@@ -27,7 +17,7 @@
  *   traffic_encounters.csv  one row per pair episode of the survey (only with one)
  *   summary.json    the run's measures and the encounter rows
  *   run.log         decisions and mode changes
- *   sumo/           the generated network, routes and SUMO's messages
+ *   sumo/           the generated network, routes and SUMO's messages (SUMO runs)
  */
 #ifndef FW_RUN_H
 #define FW_RUN_H
@@ -47,7 +37,7 @@ typedef struct fw_encounter {
     char id[64];
     char type[64];
     double length, breadth;
-    const char *situation;  /* at first detection */
+    fw_situation situation; /* at first detection */
     double t_detect;        /* s */
     double dcpa0, tcpa0;    /* m, s at first detection */
     bool threat;            /* ever predicted to enter the domain */
@@ -55,7 +45,7 @@ typedef struct fw_encounter {
     double t_act;           /* s, first such action */
     int act_side;           /* FW_SIDE_* */
     double act_helm;        /* rad, signed */
-    const char *act_situation; /* situation when the own ship acted */
+    fw_situation act_situation; /* situation when the own ship acted */
     bool primary;           /* that action was for this target */
     double min_dist, t_min; /* m, s: centre distance */
     double min_lambda;      /* smallest normalised domain radius reached (< 1 = inside) */
@@ -64,9 +54,14 @@ typedef struct fw_encounter {
     bool colregs_ok;
 } fw_encounter;
 
+typedef enum fw_run_status { FW_RUN_OK, FW_RUN_FAILED } fw_run_status;
+
+/* "ok", "failed" (summary.json's and the study database's words). */
+const char *fw_run_status_name(fw_run_status s);
+
 typedef struct fw_run_summary {
     char scenario[64];
-    char status[16];        /* "ok", "failed" */
+    fw_run_status status;
     double t_end;           /* s */
     int n_encounters;
     double min_dist;        /* m, over all targets, INFINITY if none */
@@ -102,9 +97,14 @@ typedef struct fw_run_summary {
     int n_traffic_own;              /* of which with the own ship */
 } fw_run_summary;
 
+/* Where the targets come from: SUMO (any scenario), or the kinematic source
+ * (explicit targets only, at constant velocity, no SUMO process). */
+typedef enum fw_run_traffic { FW_RUN_TRAFFIC_SUMO, FW_RUN_TRAFFIC_KINEMATIC } fw_run_traffic;
+
 typedef struct fw_run_def {
     const fw_scenario *scenario;
     const char *dir;          /* the run directory (created by the caller) */
+    fw_run_traffic traffic;   /* SUMO (default) or kinematic */
     fw_traffic_mode mode;     /* SUMO back end */
     /* Optional: the survey's records, sorted by (t_first, ship_a, ship_b), as
      * a malloc'd array the caller frees.  NULL = not wanted.  Set (to NULL,
@@ -132,11 +132,11 @@ void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm,
 /* One target seen at time t, with its assessment (situation, DCPA/TCPA, threat). */
 void fw_records_target(fw_records *r, double t, const fw_target *ts,
                        const fw_mmg_state *own, const fw_assessment *as, bool record_row);
-/* The own ship acted at t (side, helm) for target id primary_id; threats[i]
- * names the ids that were predicted to enter the domain then. */
+/* The own ship acted at t (side, helm) for target id primary_id; the targets
+ * tg[0..n-1] it saw then whose assessment says they enter the domain are the
+ * ones it acted for. */
 void fw_records_action(fw_records *r, double t, int side, double helm, const char *primary_id,
-                       const char *const *threat_ids, const fw_assessment *const *threat_as,
-                       int n_threats);
+                       const fw_target *tg, const fw_assessment *as, int n);
 fw_encounter *fw_records_encounters(fw_records *r, int *n);
 /* traffic_encounters.csv: the survey's records. */
 fw_status fw_records_survey(fw_records *r, const fw_survey_record *rec, int n, fw_error *err);

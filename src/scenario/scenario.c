@@ -72,7 +72,7 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
 }
 
 static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *path,
-                             fw_scn_target *o, fw_error *err)
+                             fw_target *o, fw_error *err)
 {
     static const char *const keys[] = {"id", "type", "east_m", "north_m", "course_deg",
                                        "speed_kn", "length_m", "breadth_m", NULL};
@@ -138,7 +138,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
         for (size_t i = 0; i < seq->n; i++) {
             char path[64];
             snprintf(path, sizeof path, "traffic.targets[%zu]", i);
-            fw_scn_target *o = &s->targets[i];
+            fw_target *o = &s->targets[i];
             if ((st = load_target(doc, seq->items[i], path, o, err)))
                 return st;
             for (size_t j = 0; j < i; j++)

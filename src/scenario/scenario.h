@@ -24,15 +24,6 @@
 
 #define FW_SCN_MAX_TARGETS 32
 
-typedef struct fw_scn_target {
-    char id[32];
-    char type[32];     /* a label ("cargo", "tanker"...) kept in the records */
-    double east, north; /* m, hull centre at t = 0 */
-    double course;     /* rad */
-    double speed;      /* m/s */
-    double length;     /* m */
-    double breadth;    /* m */
-} fw_scn_target;
 
 typedef struct fw_scenario {
     char file[512];
@@ -49,7 +40,7 @@ typedef struct fw_scenario {
     double density;      /* demand scale of the network's streams */
     int fill;            /* network ships placed along the routes at t = 0 */
     int n_targets;
-    fw_scn_target targets[FW_SCN_MAX_TARGETS];
+    fw_target targets[FW_SCN_MAX_TARGETS]; /* at t = 0; type: the label kept in the records */
     /* avoidance */
     fw_helm_def helm;
     fw_policy_def policy;

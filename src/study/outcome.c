@@ -25,11 +25,6 @@ void fw_outcome_free(fw_outcome *o)
     o->n_enc = o->n_traffic = 0;
 }
 
-static const char *side_name(int side)
-{
-    return side == FW_SIDE_STARBOARD ? "starboard" : side == FW_SIDE_PORT ? "port" : "none";
-}
-
 fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
                               const fw_run_summary *sum, const fw_encounter *e, int n,
                               const fw_survey_record *sv, int n_sv, fw_error *err)
@@ -82,8 +77,8 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
         fw_outcome_encounter *y = &o->enc[o->n_enc++];
         snprintf(y->target, sizeof y->target, "%s", x->id);
         snprintf(y->target_type, sizeof y->target_type, "%s", x->type);
-        snprintf(y->situation, sizeof y->situation, "%s", x->situation ? x->situation : "?");
-        snprintf(y->act_side, sizeof y->act_side, "%s", side_name(x->act_side));
+        snprintf(y->situation, sizeof y->situation, "%s", fw_situation_name(x->situation));
+        snprintf(y->act_side, sizeof y->act_side, "%s", fw_side_name(x->act_side));
         y->t_detect = x->t_detect;
         y->dcpa0 = x->dcpa0;
         y->tcpa0 = x->tcpa0;

@@ -1,0 +1,101 @@
+/* source.h - where the world's background ships come from: one interface, two sources.
+ *
+ * A traffic source moves the ships that fairway does not step itself and says
+ * where they are, as fw_target records (geom/target.h: hull centre,
+ * navigational course, SI), converted from the source's own terms inside the
+ * source.  The world (world/world.h) drives it, every step of fixed length:
+ *
+ *   place(own)   where the own ship is now (SUMO keeps a vehicle for it, so
+ *                that sumo-gui shows it and the area query lists it)
+ *   advance()    one step of the source's ships
+ *   around()     the ships within sight of the own ship, sorted by id
+ *   area()       every ship within the area radius of the own ship, the own
+ *                ship included (flagged own), sorted by id: the survey's input
+ *
+ * Sources:
+ *   SUMO        (source_sumo.h) libsumo in-process or libtraci to a sumo or
+ *               sumo-gui; the only code that writes SUMO's files
+ *   kinematic   (below) scripted legs of constant course and speed, no SUMO
+ *               process: tests, the oracle, benchmarks, quick runs
+ *
+ * Lists returned point into the source and stay valid until its next
+ * advance or query.  Sorting by id makes every result independent of the
+ * order in which a source keeps its ships.
+ */
+#ifndef FW_TRAFFIC_SOURCE_H
+#define FW_TRAFFIC_SOURCE_H
+
+#include "core/error.h"
+#include "geom/target.h"
+
+typedef struct fw_source fw_source;
+
+typedef struct fw_source_ops {
+    const char *name;
+    fw_status (*place)(fw_source *s, const fw_target *own, fw_error *err);
+    fw_status (*advance)(fw_source *s, fw_error *err);
+    fw_status (*around)(fw_source *s, const fw_target **ships, int *n, fw_error *err);
+    fw_status (*area)(fw_source *s, const fw_target **ships, int *n, fw_error *err);
+    double (*time)(const fw_source *s);        /* s, after the last advance */
+    double (*step_length)(const fw_source *s); /* s */
+    void (*destroy)(fw_source *s);
+} fw_source_ops;
+
+/* Every source begins with this header. */
+struct fw_source {
+    const fw_source_ops *ops;
+};
+
+static inline fw_status fw_source_place(fw_source *s, const fw_target *own, fw_error *err)
+{
+    return s->ops->place(s, own, err);
+}
+static inline fw_status fw_source_advance(fw_source *s, fw_error *err)
+{
+    return s->ops->advance(s, err);
+}
+static inline fw_status fw_source_around(fw_source *s, const fw_target **v, int *n,
+                                         fw_error *err)
+{
+    return s->ops->around(s, v, n, err);
+}
+static inline fw_status fw_source_area(fw_source *s, const fw_target **v, int *n, fw_error *err)
+{
+    return s->ops->area(s, v, n, err);
+}
+static inline double fw_source_time(const fw_source *s) { return s->ops->time(s); }
+static inline double fw_source_step_length(const fw_source *s) { return s->ops->step_length(s); }
+/* Safe on NULL. */
+void fw_source_destroy(fw_source *s);
+
+/* ---- the kinematic source ---- */
+
+enum { FW_KIN_MAX_LEGS = 8 };
+
+/* One scripted ship: from t = 0 on its first leg; at each later leg's
+ * t_start it takes that leg's course and speed at once (a script, not a ship
+ * manoeuvre: for tests of what the own ship does when a target alters). */
+typedef struct fw_kin_ship {
+    fw_target start;  /* id, type, position, course, speed, size at t = 0 */
+    int n_legs;       /* further legs, 0 = constant velocity throughout */
+    struct { double t_start, course, speed; } legs[FW_KIN_MAX_LEGS];
+} fw_kin_ship;
+
+typedef struct fw_kinematic_def {
+    const fw_kin_ship *ships; /* copied */
+    int n;
+    double step;              /* s, > 0 */
+    double radius;            /* m, sight: hull centre to hull centre; INFINITY = all */
+    double area_radius;       /* m, 0 = no area query */
+    const char *own_id;       /* the own ship's id in area lists */
+} fw_kinematic_def;
+
+/* No ships, step 1 s, sight unlimited, no area, own id "own". */
+fw_kinematic_def fw_default_kinematic_def(void);
+
+/* FW_EINPUT on a bad def (duplicate or empty id, non-finite value, legs out
+ * of time order). */
+fw_status fw_kinematic_source_create(const fw_kinematic_def *def, fw_source **out,
+                                     fw_error *err);
+
+#endif

@@ -1,0 +1,321 @@
+/* source_sumo.c - the SUMO traffic source (source_sumo.h). */
+#include "traffic/source_sumo.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/clock.h"
+#include "core/files.h"
+#include "traffic/demand.h"
+#include "ship/ship.h"
+#include "traffic/netbuild.h"
+
+/* Extra length of each straight edge behind the start and beyond the end of
+ * the run, so no ship reaches an edge's end (where SUMO would remove it). */
+static const double kBehind = 1000.0, kBeyond = 3000.0;
+
+/* The vType prefix of explicit targets: their lanes allow custom1 only. */
+#define TARGET_TYPE_PREFIX "fw_t_"
+
+typedef struct sumo_source {
+    fw_source base;
+    fw_traffic *tr;
+    double step;
+    long steps;
+    double wall;          /* s, in SUMO's steps */
+    fw_target *sorted;    /* around(), sorted by id */
+    int cap;
+    fw_target *labels;    /* explicit targets: id -> the scenario's type label */
+    int n_labels;
+} sumo_source;
+
+fw_sumo_source_def fw_default_sumo_source_def(void)
+{
+    fw_sumo_source_def d;
+    memset(&d, 0, sizeof d);
+    d.mode.kind = FW_TRAFFIC_EMBEDDED;
+    d.density = 1.0;
+    d.seed = 1;
+    d.duration = 3600.0;
+    d.step = 1.0;
+    snprintf(d.own.id, sizeof d.own.id, "fw_own");
+    d.own.length = 100.0;
+    d.own.breadth = 16.0;
+    d.radius = 6.0 * 1852.0;
+    return d;
+}
+
+static void node(FILE *f, const char *id, double e, double n)
+{
+    fprintf(f, "    <node id=\"%s\" x=\"%.3f\" y=\"%.3f\" type=\"unregulated\"/>\n", id, e, n);
+}
+
+/* One explicit target: its track's nodes and edge, its vType and vehicle. */
+static void write_target(FILE *nf, FILE *ef, FILE *rf, const fw_target *t, double duration)
+{
+    double te = sin(t->course), tn = cos(t->course);
+    double tl = t->speed * duration + kBeyond;
+    char a[96], b[96], v[32];
+    snprintf(a, sizeof a, "fw_t_%s_a", t->id);
+    snprintf(b, sizeof b, "fw_t_%s_b", t->id);
+    node(nf, a, t->east - kBehind * te, t->north - kBehind * tn);
+    node(nf, b, t->east + tl * te, t->north + tl * tn);
+    fprintf(ef, "    <edge id=\"fw_t_%s\" from=\"%s\" to=\"%s\" numLanes=\"1\" speed=\"30\" "
+                "width=\"%.1f\" allow=\"custom1\" spreadType=\"center\"/>\n",
+            t->id, a, b, fmax(t->breadth, 10.0));
+    /* one string for maxSpeed and departSpeed: SUMO refuses a departure
+     * faster than the type's maximum by a rounding digit */
+    snprintf(v, sizeof v, "%.6f", t->speed);
+    fprintf(rf, "    <vType id=\"" TARGET_TYPE_PREFIX "%s\" vClass=\"custom1\" guiShape=\"ship\" "
+                "length=\"%.3f\" width=\"%.3f\" maxSpeed=\"%s\" speedFactor=\"1\" sigma=\"0\" "
+                "accel=\"1\" decel=\"1\" minGap=\"0\" color=\"0.2,0.4,0.9\"/>\n",
+            t->id, t->length, t->breadth, v);
+    /* departPos is the front bumper: hull centre at the start point */
+    fprintf(rf, "    <vehicle id=\"%s\" type=\"" TARGET_TYPE_PREFIX "%s\" depart=\"0\" "
+                "departLane=\"0\" departPos=\"%.3f\" departSpeed=\"%s\">\n"
+                "        <route edges=\"fw_t_%s\"/>\n    </vehicle>\n",
+            t->id, t->id, kBehind + 0.5 * t->length, v, t->id);
+}
+
+/* Plain XML for the own ship's leg and every target's track, and the routes
+ * of the targets (see source_sumo.h). */
+static fw_status write_tracks(const fw_sumo_source_def *d, fw_error *err)
+{
+    char np[1200], ep[1200], rp[1200];
+    fw_status st;
+    if ((st = fw_path(np, sizeof np, err, "%s/tracks.nod.xml", d->dir)) ||
+        (st = fw_path(ep, sizeof ep, err, "%s/tracks.edg.xml", d->dir)) ||
+        (st = fw_path(rp, sizeof rp, err, "%s/targets.rou.xml", d->dir)))
+        return st;
+    FILE *nf = fopen(np, "w"), *ef = fopen(ep, "w"), *rf = fopen(rp, "w");
+    if (!nf || !ef || !rf) {
+        if (nf)
+            fclose(nf);
+        if (ef)
+            fclose(ef);
+        if (rf)
+            fclose(rf);
+        return fw_fail(err, FW_ERUN, "cannot write the track network in %s", d->dir);
+    }
+    fprintf(nf, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- written by fairway run: "
+                "straight tracks of the own ship and the explicit targets -->\n<nodes>\n");
+    fprintf(ef, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<edges>\n");
+    fprintf(rf, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<routes>\n");
+    const fw_target *o = &d->own;
+    double se = sin(o->course), ce = cos(o->course);
+    double len = fmax(d->own_leg, o->speed * d->duration) + kBeyond;
+    node(nf, "fw_own_a", o->east - kBehind * se, o->north - kBehind * ce);
+    node(nf, "fw_own_b", o->east + len * se, o->north + len * ce);
+    fprintf(ef, "    <edge id=\"fw_own\" from=\"fw_own_a\" to=\"fw_own_b\" numLanes=\"1\" "
+                "speed=\"30\" width=\"%.1f\" allow=\"ship\" spreadType=\"center\"/>\n",
+            fmax(o->breadth, 10.0));
+    for (int i = 0; i < d->n_targets; i++)
+        write_target(nf, ef, rf, &d->targets[i], d->duration);
+    fprintf(nf, "</nodes>\n");
+    fprintf(ef, "</edges>\n");
+    fprintf(rf, "</routes>\n");
+    int bad = fclose(nf) | fclose(ef) | fclose(rf);
+    return bad ? fw_fail(err, FW_ERUN, "cannot write the track network in %s", d->dir) : FW_OK;
+}
+
+/* The files SUMO loads, written and built into d->dir. */
+typedef struct sumo_files {
+    char net[1200], routes[2600], types[1100];
+    bool has_types;
+} sumo_files;
+
+/* A network's demand as a route file in dir (drou). */
+static fw_status write_demand(const fw_sumo_source_def *d, const fw_network_files *nf,
+                              const char *drou, fw_error *err)
+{
+    fw_demand dm;
+    fw_demand_def dd = fw_default_demand_def();
+    dd.density = d->density;
+    dd.fill = d->fill;
+    dd.end = d->duration + d->step;
+    dd.seed = d->seed;
+    fw_status st = fw_demand_load(nf->demand, &dm, err);
+    return st ? st : fw_demand_write(&dm, &dd, drou, err);
+}
+
+static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *err)
+{
+    bool has_net = d->network && d->network[0];
+    /* Traffic on a network alone needs no track edges (moveToXY places the own
+     * ship anywhere): the built network is used as it is, which spares a
+     * netconvert per run in a sweep. */
+    bool tracks = d->n_targets > 0 || !has_net;
+    fw_status st = tracks ? write_tracks(d, err) : FW_OK;
+    if (st)
+        return st;
+    char nodes[2400] = "tracks.nod.xml", edges[2400] = "tracks.edg.xml", nlog[1200], typ[1100];
+    const char *types = NULL;
+    fw_network_files nf = {0};
+    if ((st = fw_path(f->routes, sizeof f->routes, err, "%s/targets.rou.xml", d->dir)))
+        return st;
+    if (has_net) {
+        /* the network's own sources and the tracks, built together: one code path */
+        char pre[1024], drou[1200];
+        if ((st = fw_network_find(d->network, &nf, err)) ||
+            (st = fw_path(pre, sizeof pre, err, "%s/networks/%s/%s", fw_data_root(), d->network,
+                          d->network)) ||
+            (st = fw_path(nodes, sizeof nodes, err, "%s.nod.xml,tracks.nod.xml", pre)) ||
+            (st = fw_path(edges, sizeof edges, err, "%s.edg.xml,tracks.edg.xml", pre)) ||
+            (st = fw_path(typ, sizeof typ, err, "%s.typ.xml", pre)) ||
+            (st = fw_path(drou, sizeof drou, err, "%s/demand.rou.xml", d->dir)) ||
+            (st = write_demand(d, &nf, drou, err)))
+            return st;
+        types = typ;
+        st = d->n_targets > 0
+                 ? fw_path(f->routes, sizeof f->routes, err, "%s,%s/targets.rou.xml", drou, d->dir)
+                 : fw_path(f->routes, sizeof f->routes, err, "%s", drou);
+        if (st)
+            return st;
+        f->has_types = true;
+        snprintf(f->types, sizeof f->types, "%s", nf.types);
+    }
+    if (!tracks)
+        return fw_path(f->net, sizeof f->net, err, "%s", nf.net);
+    /* netconvert runs in dir: relative names keep the net.xml independent of
+     * the (temporary) run directory's path */
+    if ((st = fw_path(f->net, sizeof f->net, err, "%s/run.net.xml", d->dir)) ||
+        (st = fw_path(nlog, sizeof nlog, err, "%s/netconvert.log", d->dir)))
+        return st;
+    return fw_netconvert(d->dir, nodes, edges, types, "run.net.xml", nlog, err);
+}
+
+static double ss_time(const fw_source *s)
+{
+    const sumo_source *k = (const sumo_source *)s;
+    return (double)k->steps * k->step;
+}
+
+static double ss_step_length(const fw_source *s) { return ((const sumo_source *)s)->step; }
+
+static fw_status ss_place(fw_source *s, const fw_target *own, fw_error *err)
+{
+    return fw_traffic_place(((sumo_source *)s)->tr, own->east, own->north, own->course,
+                            own->speed, err);
+}
+
+static fw_status ss_advance(fw_source *s, fw_error *err)
+{
+    sumo_source *k = (sumo_source *)s;
+    double t0 = fw_clock_s();
+    fw_status st = fw_traffic_step(k->tr, err);
+    k->wall += fw_clock_s() - t0;
+    if (!st)
+        k->steps++;
+    return st;
+}
+
+static int cmp_id(const void *a, const void *b)
+{
+    return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
+}
+
+static fw_status ss_around(fw_source *s, const fw_target **v, int *n, fw_error *err)
+{
+    sumo_source *k = (sumo_source *)s;
+    const fw_target *raw;
+    int m;
+    *v = k->sorted;
+    *n = 0;
+    fw_status st = fw_traffic_around(k->tr, &raw, &m, err);
+    if (st)
+        return st;
+    if (m > k->cap) {
+        fw_target *p = realloc(k->sorted, sizeof *p * (size_t)(2 * m));
+        if (!p)
+            return fw_fail(err, FW_ERUN, "out of memory for %d ships", m);
+        k->sorted = p;
+        k->cap = 2 * m;
+    }
+    if (m > 0) /* no ship in range yet: the buffer may still be NULL */
+        memcpy(k->sorted, raw, sizeof *raw * (size_t)m);
+    for (int i = 0; i < m; i++) {
+        fw_target *t = &k->sorted[i];
+        if (strncmp(t->type, TARGET_TYPE_PREFIX, strlen(TARGET_TYPE_PREFIX)) != 0)
+            continue;
+        int j = fw_target_find(k->labels, k->n_labels, t->id);
+        if (j >= 0)
+            memcpy(t->type, k->labels[j].type, sizeof t->type);
+    }
+    /* sorted by id so that nothing downstream depends on SUMO's order */
+    qsort(k->sorted, (size_t)m, sizeof *k->sorted, cmp_id);
+    *v = k->sorted;
+    *n = m;
+    return FW_OK;
+}
+
+static fw_status ss_area(fw_source *s, const fw_target **v, int *n, fw_error *err)
+{
+    return fw_traffic_area(((sumo_source *)s)->tr, v, n, err);
+}
+
+static void ss_destroy(fw_source *s)
+{
+    sumo_source *k = (sumo_source *)s;
+    fw_traffic_close(k->tr);
+    free(k->sorted);
+    free(k->labels);
+    free(k);
+}
+
+static const fw_source_ops sumo_ops = {.name = "sumo", .place = ss_place, .advance = ss_advance,
+                                       .around = ss_around, .area = ss_area, .time = ss_time,
+                                       .step_length = ss_step_length, .destroy = ss_destroy};
+
+double fw_sumo_source_step_wall(const fw_source *s)
+{
+    return s && s->ops == &sumo_ops ? ((const sumo_source *)s)->wall : 0.0;
+}
+
+fw_status fw_sumo_source_create(const fw_sumo_source_def *d, fw_source **out, fw_error *err)
+{
+    *out = NULL;
+    sumo_files f;
+    memset(&f, 0, sizeof f);
+    char slog[1200];
+    fw_status st;
+    if ((st = prepare(d, &f, err)) ||
+        (st = fw_path(slog, sizeof slog, err, "%s/sumo.log", d->dir)))
+        return st;
+    sumo_source *k = calloc(1, sizeof *k);
+    if (!k)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    k->base.ops = &sumo_ops;
+    k->step = d->step;
+    if (d->n_targets > 0 && !(k->labels = malloc(sizeof *k->labels * (size_t)d->n_targets))) {
+        ss_destroy(&k->base);
+        return fw_fail(err, FW_ERUN, "out of memory");
+    }
+    for (int i = 0; i < d->n_targets; i++)
+        k->labels[i] = d->targets[i];
+    k->n_labels = d->n_targets;
+    fw_traffic_def td = fw_default_traffic_def();
+    td.mode = d->mode;
+    td.net_file = f.net;
+    td.route_file = f.routes;
+    td.add_file = f.has_types ? f.types : NULL;
+    td.log_file = slog;
+    td.step = d->step;
+    td.seed = d->seed;
+    td.own_id = d->own.id;
+    td.own_length = d->own.length;
+    td.own_width = d->own.breadth;
+    td.own_edge = d->n_targets > 0 || !(d->network && d->network[0]) ? "fw_own" : NULL;
+    td.radius = d->radius;
+    td.area_radius = d->area_radius;
+    /* SUMO inserts the targets during its first step: after it, their
+     * positions are those of fairway's t = 0 */
+    if ((st = fw_traffic_open(&td, &k->tr, err)) || (st = ss_place(&k->base, &d->own, err)) ||
+        (st = fw_traffic_step(k->tr, err))) {
+        ss_destroy(&k->base);
+        return st;
+    }
+    *out = &k->base;
+    return FW_OK;
+}

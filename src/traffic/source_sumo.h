@@ -1,0 +1,55 @@
+/* source_sumo.h - the SUMO traffic source: everything fairway writes for SUMO, and the coupling.
+ *
+ * What a run needs from SUMO is described here in fairway's terms (a network
+ * by name with its demand, explicit target ships at constant course and
+ * speed, the own ship's start and leg) and turned into SUMO's files here:
+ *
+ *   network only       the built networks/NAME/NAME.net.xml as it is, and a
+ *                      route file from the network's demand (demand.h); the
+ *                      own ship is placed anywhere by moveToXY
+ *   explicit targets   one straight one-lane edge along each target's track
+ *                      and one along the own ship's leg, as plain XML, built
+ *                      with the network's own sources (if any) by netconvert
+ *                      into dir; a route per target (departPos is SUMO's
+ *                      front bumper: the hull centre lands on the start)
+ *
+ * Target lanes allow only vClass custom1, so moveToXY can never map the own
+ * ship (vClass ship) onto a target's lane where the target would brake for it:
+ * targets keep course and speed exactly.  Explicit targets are listed with the
+ * scenario's type label, not the generated vType.
+ *
+ * After create, SUMO has made its first step (it inserts ships during a
+ * step): the ships are where they are at fairway's t = 0.
+ */
+#ifndef FW_SOURCE_SUMO_H
+#define FW_SOURCE_SUMO_H
+
+#include "traffic/source.h"
+#include "traffic/traffic.h"
+
+typedef struct fw_sumo_source_def {
+    fw_traffic_mode mode;
+    const char *dir;            /* SUMO's files and logs go here (it must exist) */
+    const char *network;        /* networks/NAME; NULL or "" = none */
+    double density;             /* demand scale */
+    int fill;                   /* network ships along the routes at t = 0 */
+    unsigned long seed;         /* SUMO's and the demand's */
+    double duration;            /* s, the run; flows run to duration + step */
+    double step;                /* s */
+    const fw_target *targets;   /* explicit ships at t = 0 (constant velocity) */
+    int n_targets;
+    fw_target own;              /* id, position, course, speed, length, breadth at t = 0 */
+    double own_leg;             /* m, planned straight leg along the course */
+    double radius;              /* m, sight (own hull centre to SUMO's front bumper) */
+    double area_radius;         /* m, 0 = no area query */
+} fw_sumo_source_def;
+
+fw_sumo_source_def fw_default_sumo_source_def(void);
+
+fw_status fw_sumo_source_create(const fw_sumo_source_def *def, fw_source **out, fw_error *err);
+
+/* Wall-clock seconds spent in SUMO's steps so far (benchmarks and the study
+ * database only, never in a run's files). */
+double fw_sumo_source_step_wall(const fw_source *s);
+
+#endif

@@ -1,0 +1,159 @@
+/* vessel.c - a vessel's dynamics and what it shows (vessel.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "world/vessel_internal.h"
+
+fw_vessel_def fw_default_vessel_def(void)
+{
+    return (fw_vessel_def){.id = "own", .dynamics = FW_DYN_MMG, .radius = 6.0 * 1852.0};
+}
+
+/* The policy's view of the vessel and its record, from the motion state. */
+static void refresh(fw_vessel *v, double dt)
+{
+    const fw_mmg_state *x = &v->motion;
+    if (v->dyn == FW_DYN_MMG) {
+        v->own = (fw_own_state){.east = x->east, .north = x->north, .psi = x->psi,
+                                .U = hypot(x->u, x->vm), .U0 = v->U0,
+                                .beta = atan2(-x->vm, x->u), .r = x->r,
+                                .rdot = v->advanced ? (x->r - v->r_prev) / dt : 0.0,
+                                .delta = x->delta};
+    } else {
+        v->own = v->nom;
+    }
+    fw_target *t = &v->record;
+    t->east = x->east;
+    t->north = x->north;
+    t->course = x->psi;
+    t->speed = hypot(x->u, x->vm);
+}
+
+static void nomoto_motion(fw_vessel *v)
+{
+    const fw_own_state *s = &v->nom;
+    v->motion = (fw_mmg_state){.u = s->U, .vm = 0.0, .r = s->r, .east = s->east,
+                               .north = s->north, .psi = s->psi, .delta = s->delta};
+}
+
+static fw_status init_mmg(fw_vessel *v, const fw_vessel_def *def, fw_error *err)
+{
+    fw_stepper_def sd = fw_default_stepper_def();
+    fw_mmg_state x0 = fw_mmg_straight(def->speed, def->east, def->north, def->course);
+    fw_status st;
+    if ((st = fw_mmg_propeller_for_speed(def->ship, def->speed, &v->n_prop, err)) ||
+        (st = fw_stepper_create(def->ship, &sd, &v->st, err)) ||
+        (st = fw_stepper_start(v->st, 0.0, &x0, v->n_prop, err)))
+        return st;
+    v->motion = *fw_stepper_state(v->st);
+    return FW_OK;
+}
+
+fw_status fw_vessel_init(fw_vessel *v, const fw_vessel_def *def, double dt, fw_error *err)
+{
+    if (!def->id || !def->id[0] || strlen(def->id) >= sizeof v->id)
+        return fw_fail(err, FW_EINPUT, "vessel id must have 1..%d characters",
+                       FW_TARGET_ID_MAX - 1);
+    if (!def->ship)
+        return fw_fail(err, FW_EINPUT, "vessel '%s' has no ship", def->id);
+    if (!(def->radius > 0.0) || !isfinite(def->east) || !isfinite(def->north) ||
+        !isfinite(def->course) || !(def->speed >= 0.0))
+        return fw_fail(err, FW_EINPUT, "vessel '%s': not a start state (or sight <= 0)", def->id);
+    snprintf(v->id, sizeof v->id, "%s", def->id);
+    v->ship = def->ship;
+    v->dyn = def->dynamics;
+    v->radius = def->radius;
+    v->U0 = def->speed;
+    v->record = (fw_target){.length = def->ship->Loa, .breadth = def->ship->B,
+                            .pred = def->predictor};
+    snprintf(v->record.id, sizeof v->record.id, "%s", def->id);
+    snprintf(v->record.type, sizeof v->record.type, "%s", def->ship->name);
+    fw_status st;
+    if (v->dyn == FW_DYN_MMG) {
+        if ((st = init_mmg(v, def, err)))
+            return st;
+    } else {
+        v->nom = def->start_state
+                     ? *def->start_state
+                     : (fw_own_state){.east = def->east, .north = def->north, .psi = def->course,
+                                      .U = def->speed, .U0 = def->speed};
+        if ((st = fw_track_alloc(&v->one, 2, err)))
+            return st;
+        nomoto_motion(v);
+    }
+    refresh(v, dt);
+    return FW_OK;
+}
+
+void fw_vessel_free(fw_vessel *v)
+{
+    fw_stepper_destroy(v->st);
+    fw_track_free(&v->one);
+    fw_controller_destroy(v->ctl);
+    free(v->view);
+    free(v->as);
+    free(v->order);
+}
+
+fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err)
+{
+    fw_status st;
+    if (v->dyn == FW_DYN_MMG) {
+        v->r_prev = v->motion.r;
+        fw_stepper_set_helm(v->st, v->d.helm);
+        if ((st = fw_stepper_advance(v->st, dt, err)))
+            return st;
+        v->motion = *fw_stepper_state(v->st);
+    } else {
+        /* one step of the predicted track, the light plant: its state is
+         * the prediction's, speed and drift as they were */
+        fw_track_def one = {.dt = dt, .horizon = dt};
+        if ((st = fw_track_predict(v->ship, &one, &v->nom, v->d.helm, &v->one, err)))
+            return st;
+        v->nom.east = v->one.east[1], v->nom.north = v->one.north[1];
+        v->nom.psi = v->one.psi[1], v->nom.r = v->one.r[1];
+        v->nom.delta = v->one.delta[1], v->nom.rdot = v->one.rdot[1];
+        nomoto_motion(v);
+    }
+    v->advanced = true;
+    refresh(v, dt);
+    return FW_OK;
+}
+
+fw_status fw_vessel_reserve(fw_vessel *v, int n, fw_error *err)
+{
+    if (n <= v->cap)
+        return FW_OK;
+    int cap = 2 * n;
+    fw_target *view = realloc(v->view, sizeof *view * (size_t)cap);
+    if (view)
+        v->view = view;
+    fw_assessment *as = view ? realloc(v->as, sizeof *as * (size_t)cap) : NULL;
+    if (as)
+        v->as = as;
+    int *order = as ? realloc(v->order, sizeof *order * 2 * (size_t)cap) : NULL;
+    if (!order)
+        return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
+    v->order = order;
+    v->cap = cap;
+    return FW_OK;
+}
+
+const char *fw_vessel_id(const fw_vessel *v) { return v->id; }
+const fw_ship *fw_vessel_ship(const fw_vessel *v) { return v->ship; }
+const fw_mmg_state *fw_vessel_motion(const fw_vessel *v) { return &v->motion; }
+const fw_own_state *fw_vessel_own_state(const fw_vessel *v) { return &v->own; }
+const fw_target *fw_vessel_record(const fw_vessel *v) { return &v->record; }
+double fw_vessel_propeller(const fw_vessel *v) { return v->n_prop; }
+const fw_decision *fw_vessel_decision(const fw_vessel *v) { return &v->d; }
+fw_controller *fw_vessel_controller(fw_vessel *v) { return v->ctl; }
+
+void fw_vessel_view(const fw_vessel *v, const fw_target **targets, const fw_assessment **as,
+                    int *n)
+{
+    *targets = v->view;
+    *as = v->ctl && v->ctl->ops->assesses ? v->as : NULL;
+    *n = v->n_view;
+}

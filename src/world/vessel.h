@@ -1,0 +1,93 @@
+/* vessel.h - a ship the world steps: static data, dynamics, a controller, a predictor.
+ *
+ * A vessel is owned by its world (world.h).  Each has
+ *   static data   id, the ship's particulars (ship/ship.h), its sight radius
+ *   dynamics      FW_DYN_MMG: the MMG model with the rudder servo, integrated
+ *                 by ARKODE (dynamics/stepper.h), the own ship's;
+ *                 FW_DYN_NOMOTO: the ship's Nomoto model advanced one step of
+ *                 the predicted track (nomoto/track.h), a light plant for tests
+ *                 and for the reactive background ships to come
+ *   a controller  what turns what the vessel senses into a helm order: the
+ *                 avoidance policy (world/controllers.h), a fixed manoeuvre
+ *                 (the oracle's), or none (helm amidships)
+ *   a predictor   how the others expect it to move (geom/target.h): NULL,
+ *                 constant velocity
+ *
+ * What others see of it is its record (fw_target): hull centre, heading,
+ * speed through the water, Loa and B.
+ */
+#ifndef FW_WORLD_VESSEL_H
+#define FW_WORLD_VESSEL_H
+
+#include "avoid/policy.h"
+#include "dynamics/mmg.h"
+#include "geom/target.h"
+#include "ship/ship.h"
+
+typedef enum fw_dynamics_kind { FW_DYN_MMG, FW_DYN_NOMOTO } fw_dynamics_kind;
+
+/* What a controller is given each step. */
+typedef struct fw_sense {
+    double t;                  /* s */
+    const fw_own_state *own;   /* the vessel, as the predictor needs it */
+    const fw_target *targets;  /* the ships it sees, sorted by id */
+    int n;
+    fw_assessment *as;         /* room for n assessments (the controller may fill them) */
+    int *order;                /* room for 2 n ints (scratch for the ranking) */
+} fw_sense;
+
+typedef struct fw_controller fw_controller;
+
+typedef struct fw_controller_ops {
+    const char *name;
+    /* The order for the next step, and why, into d (d->helm the helm, rad,
+     * signed; the rest as fw_decision says, or zero).  Fills in->as[0..n-1]
+     * if it assesses the targets (and then returns true from assesses). */
+    fw_status (*decide)(fw_controller *c, const fw_sense *in, fw_decision *d, fw_error *err);
+    bool assesses;
+    void (*destroy)(fw_controller *c);
+} fw_controller_ops;
+
+/* Every controller begins with this header. */
+struct fw_controller {
+    const fw_controller_ops *ops;
+};
+
+/* Safe on NULL. */
+void fw_controller_destroy(fw_controller *c);
+
+typedef struct fw_vessel_def {
+    const char *id;            /* 1..63 characters, unique in the world */
+    const fw_ship *ship;       /* must outlive the world */
+    fw_dynamics_kind dynamics;
+    /* start: MMG from straight running at speed on course; Nomoto from
+     * `start` as given (when start_state is set) */
+    double east, north, course, speed;
+    const fw_own_state *start_state; /* FW_DYN_NOMOTO: the exact start (NULL: from the above) */
+    double radius;             /* m, sight (other vessels, hull centre to hull centre) */
+    fw_controller *controller; /* taken over; NULL = helm amidships */
+    const fw_predictor *predictor; /* NULL: constant velocity */
+} fw_vessel_def;
+
+/* MMG, at rest at the origin heading north, sight 6 nm, no controller. */
+fw_vessel_def fw_default_vessel_def(void);
+
+typedef struct fw_vessel fw_vessel;
+
+const char *fw_vessel_id(const fw_vessel *v);
+const fw_ship *fw_vessel_ship(const fw_vessel *v);
+/* Motion state: position, heading, u, v, r, rudder (Nomoto: u = U, v = 0). */
+const fw_mmg_state *fw_vessel_motion(const fw_vessel *v);
+/* What the predictor and the policy need of it. */
+const fw_own_state *fw_vessel_own_state(const fw_vessel *v);
+/* Its record as the others see it. */
+const fw_target *fw_vessel_record(const fw_vessel *v);
+double fw_vessel_propeller(const fw_vessel *v); /* rev/s (MMG), 0 (Nomoto) */
+/* The last decision, what it saw then, and (if the controller assesses) the
+ * assessment of each target seen, all of the same instant. */
+const fw_decision *fw_vessel_decision(const fw_vessel *v);
+void fw_vessel_view(const fw_vessel *v, const fw_target **targets, const fw_assessment **as,
+                    int *n);
+fw_controller *fw_vessel_controller(fw_vessel *v);
+
+#endif

@@ -1,0 +1,44 @@
+/* vessel_internal.h - the vessel as the world keeps it (internal to src/world). */
+#ifndef FW_WORLD_VESSEL_INTERNAL_H
+#define FW_WORLD_VESSEL_INTERNAL_H
+
+#include "dynamics/stepper.h"
+#include "nomoto/track.h"
+#include "world/vessel.h"
+
+struct fw_vessel {
+    char id[FW_TARGET_ID_MAX];
+    const fw_ship *ship;
+    fw_dynamics_kind dyn;
+    double radius;
+    double U0;                 /* m/s, the speed on a straight course */
+    /* dynamics */
+    fw_stepper *st;            /* MMG */
+    double n_prop;             /* rev/s */
+    double r_prev;             /* rad/s, before the last advance (for rdot) */
+    bool advanced;             /* rdot is known once it has advanced */
+    fw_track one;              /* Nomoto: one step of the predicted track */
+    fw_own_state nom;          /* Nomoto: the state */
+    /* what the others and the controller see */
+    fw_mmg_state motion;
+    fw_own_state own;
+    fw_target record;
+    /* control */
+    fw_controller *ctl;
+    fw_decision d;
+    /* the view of the last sensing: targets sorted by id, their assessments */
+    fw_target *view;
+    fw_assessment *as;
+    int *order;
+    int n_view, cap;
+};
+
+/* Creates the dynamics and the first state; v->ctl is set by the caller. */
+fw_status fw_vessel_init(fw_vessel *v, const fw_vessel_def *def, double dt, fw_error *err);
+void fw_vessel_free(fw_vessel *v);
+/* Advances the dynamics by dt under the last decision's helm. */
+fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err);
+/* Room for n targets in the view. */
+fw_status fw_vessel_reserve(fw_vessel *v, int n, fw_error *err);
+
+#endif
