@@ -18,3 +18,9 @@ fw_script_test(cli_run_bad_file 0 "ok: no output" run_bad.sh)
 foreach(t cli_run_paper cli_run_json cli_run_help cli_run_none cli_run_bad_mode cli_run_bad_file)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 60)
 endforeach()
+
+# The world and its traffic sources; a paper case with and without SUMO.
+fw_test(test_world test_world.c)
+target_link_libraries(test_world PRIVATE fairway_run)
+set_tests_properties(test_world PROPERTIES TIMEOUT 120
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

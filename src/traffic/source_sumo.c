@@ -244,7 +244,8 @@ static fw_status ss_around(fw_source *s, const fw_target **v, int *n, fw_error *
             memcpy(t->type, k->labels[j].type, sizeof t->type);
     }
     /* sorted by id so that nothing downstream depends on SUMO's order */
-    qsort(k->sorted, (size_t)m, sizeof *k->sorted, cmp_id);
+    if (m > 1)
+        qsort(k->sorted, (size_t)m, sizeof *k->sorted, cmp_id);
     *v = k->sorted;
     *n = m;
     return FW_OK;

@@ -1,0 +1,263 @@
+/* test_world.c - the world and its traffic sources.
+ *
+ *   the kinematic source: positions on scripted legs, sight and area queries,
+ *     sorting by id, bad definitions refused
+ *   the world's contract: fixed step, vessels before the start, one instant
+ *   two vessels under the same policy meeting head-on: both alter to
+ *     starboard, and by symmetry their tracks are point mirror images
+ *   a paper case stepped with the kinematic source (no SUMO process) takes the
+ *     same decisions as its SUMO run: every helm order and mode, every action
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/units.h"
+#include "run/run.h"
+#include "test.h"
+#include "traffic/source.h"
+#include "world/controllers.h"
+#include "world/world.h"
+
+static char tmp_root[256];
+static fw_ship c3;
+
+static void test_kinematic_source(void)
+{
+    fw_error err = {0};
+    fw_kin_ship ships[3] = {
+        {.start = {.id = "b", .east = 0, .north = 1000, .course = FW_PI, .speed = 5.0,
+                   .length = 100, .breadth = 20}},
+        /* a, east-going, turns north at 100 s and stops at 200 s */
+        {.start = {.id = "a", .east = -500, .north = 0, .course = 0.5 * FW_PI, .speed = 2.0,
+                   .length = 50, .breadth = 10},
+         .n_legs = 2,
+         .legs = {{100.0, 0.0, 3.0}, {200.0, 0.0, 0.0}}},
+        {.start = {.id = "c", .east = 9000, .north = 0, .course = 0.0, .speed = 1.0}}};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ships;
+    kd.n = 3;
+    kd.radius = 5000.0;
+    kd.area_radius = 2000.0;
+    kd.own_id = "me";
+    fw_source *src;
+    CHECK_MSG(fw_kinematic_source_create(&kd, &src, &err) == FW_OK, "%s", err.msg);
+    fw_target own = {.east = 0, .north = 0, .course = 0, .speed = 4, .length = 200, .breadth = 30};
+    const fw_target *v;
+    int n;
+    CHECK(fw_source_around(src, &v, &n, &err) == FW_ERUN); /* not placed yet */
+    CHECK(fw_source_place(src, &own, &err) == FW_OK);
+    CHECK(fw_source_around(src, &v, &n, &err) == FW_OK);
+    CHECK(n == 2 && strcmp(v[0].id, "a") == 0 && strcmp(v[1].id, "b") == 0); /* c is 9 km off */
+    for (int k = 0; k < 250; k++)
+        CHECK(fw_source_advance(src, &err) == FW_OK);
+    CHECK_NEAR(fw_source_time(src), 250.0, 1e-12);
+    CHECK(fw_source_area(src, &v, &n, &err) == FW_OK);
+    /* a: 200 m east in 100 s, then 300 m north, then stopped */
+    CHECK(n == 3 && strcmp(v[0].id, "a") == 0 && strcmp(v[1].id, "b") == 0 &&
+          strcmp(v[2].id, "me") == 0 && v[2].own && !v[0].own);
+    CHECK_NEAR(v[0].east, -300.0, 1e-9);
+    CHECK_NEAR(v[0].north, 300.0, 1e-9);
+    CHECK_NEAR(v[0].speed, 0.0, 0.0);
+    CHECK_NEAR(v[1].north, 1000.0 - 1250.0, 1e-9); /* b, straight on */
+    CHECK_NEAR(v[1].east, 0.0, 1e-9);
+    fw_source_destroy(src);
+    /* bad definitions */
+    fw_kin_ship twice[2] = {ships[0], ships[0]};
+    kd.ships = twice;
+    kd.n = 2;
+    CHECK(fw_kinematic_source_create(&kd, &src, &err) == FW_EINPUT);
+    CHECK(strstr(err.msg, "'b' listed twice") != NULL);
+    fw_kin_ship late = ships[1];
+    late.legs[1].t_start = 50.0; /* before the first */
+    kd.ships = &late;
+    kd.n = 1;
+    CHECK(fw_kinematic_source_create(&kd, &src, &err) == FW_EINPUT);
+    CHECK(strstr(err.msg, "leg 2 out of order") != NULL);
+    kd.ships = ships;
+    kd.step = 0.0;
+    CHECK(fw_kinematic_source_create(&kd, &src, &err) == FW_EINPUT);
+}
+
+static void test_world_contract(void)
+{
+    fw_error err = {0};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.step = 0.5;
+    fw_world_def wd = fw_default_world_def(); /* step 1 s */
+    CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
+    fw_world *w;
+    CHECK(fw_world_create(&wd, &w, &err) == FW_EINPUT); /* source 0.5 s, world 1 s */
+    CHECK(strstr(err.msg, "steps 0.5 s, the world 1 s") != NULL);
+    wd.source = NULL;
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.ship = &c3;
+    vd.speed = fw_kn_to_ms(10);
+    vd.course = 0.5 * FW_PI;
+    fw_vessel *v;
+    CHECK(fw_world_step(w, 1.0, &err) == FW_ERUN); /* not started */
+    CHECK(fw_world_add_vessel(w, &vd, &v, &err) == FW_OK);
+    CHECK(fw_world_add_vessel(w, &vd, NULL, &err) == FW_EINPUT); /* same id */
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    CHECK(fw_world_add_vessel(w, &vd, NULL, &err) == FW_EINPUT);
+    CHECK(fw_world_step(w, 0.5, &err) == FW_EINPUT);
+    /* no controller: helm amidships, the MMG ship runs straight at its speed */
+    for (int k = 0; k < 60; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    const fw_mmg_state *x = fw_vessel_motion(v);
+    CHECK_NEAR(fw_world_time(w), 60.0, 1e-12);
+    CHECK_NEAR(x->east, 60.0 * fw_kn_to_ms(10), 0.5);
+    CHECK_NEAR(x->north, 0.0, 1e-6);
+    CHECK_NEAR(fw_vessel_record(v)->speed, fw_kn_to_ms(10), 0.01);
+    fw_world_destroy(w);
+}
+
+/* Two vessels, same ship and policy, head-on 4 km apart: each sees the other
+ * through the world, both turn to starboard (rule 14), and the tracks are
+ * point mirrors of each other about the midpoint. */
+static void test_two_vessels_head_on(void)
+{
+    fw_error err = {0};
+    fw_world_def wd = fw_default_world_def();
+    fw_world *w;
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
+                                   .policy = fw_default_policy_def()};
+    const char *ids[2] = {"A", "B"};
+    fw_vessel *v[2];
+    for (int i = 0; i < 2; i++) {
+        fw_vessel_def vd = fw_default_vessel_def();
+        vd.id = ids[i];
+        vd.ship = &c3;
+        vd.dynamics = FW_DYN_NOMOTO;
+        vd.north = i ? 4000.0 : 0.0;
+        vd.course = i ? FW_PI : 0.0;
+        vd.speed = fw_kn_to_ms(10);
+        CHECK_MSG(fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK, "%s", err.msg);
+        CHECK_MSG(fw_world_add_vessel(w, &vd, &v[i], &err) == FW_OK, "%s", err.msg);
+    }
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    double dmin = INFINITY, asym = 0.0, t_act[2] = {-1, -1};
+    int side[2] = {0, 0};
+    for (int k = 0; k < 1200; k++) {
+        for (int i = 0; i < 2; i++) {
+            const fw_decision *d = fw_vessel_decision(v[i]);
+            if (d->acted && t_act[i] < 0) {
+                t_act[i] = k;
+                side[i] = d->search.side;
+            }
+        }
+        const fw_mmg_state *a = fw_vessel_motion(v[0]), *b = fw_vessel_motion(v[1]);
+        dmin = fmin(dmin, hypot(a->east - b->east, a->north - b->north));
+        /* B is A turned half round about (0, 2000) */
+        asym = fmax(asym, hypot(a->east + b->east, a->north + b->north - 4000.0));
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    }
+    CHECK_MSG(t_act[0] >= 0 && t_act[0] == t_act[1], "acted at %.0f and %.0f s", t_act[0],
+              t_act[1]);
+    CHECK(side[0] == FW_SIDE_STARBOARD && side[1] == FW_SIDE_STARBOARD);
+    CHECK_MSG(asym < 1e-6, "tracks not mirror images: %.3g m", asym);
+    /* each keeps the other out of a 300 m domain grown by the hull */
+    CHECK_MSG(dmin > 300.0, "closest approach %.0f m", dmin);
+    printf("  two vessels head-on: both act at %.0f s to starboard, closest %.0f m, "
+           "asymmetry %.1g m\n", t_act[0], dmin, asym);
+    fw_world_destroy(w);
+}
+
+/* own.csv's helm order and mode columns, and the act lines of run.log. */
+static int decisions(const char *dir, char *out, size_t size)
+{
+    char path[700], line[512];
+    size_t used = 0;
+    int rows = 0;
+    snprintf(path, sizeof path, "%s/own.csv", dir);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    while (fgets(line, sizeof line, f)) {
+        /* t,east,north,heading,u,v,r,rudder,helm,propeller,mode: keep t, helm, mode */
+        char *col[12];
+        int nc = 0;
+        for (char *p = strtok(line, ",\n"); p && nc < 12; p = strtok(NULL, ",\n"))
+            col[nc++] = p;
+        if (nc == 11)
+            used += (size_t)snprintf(out + used, size - used, "%s %s %s\n", col[0], col[8],
+                                     col[10]);
+        rows++;
+    }
+    fclose(f);
+    snprintf(path, sizeof path, "%s/run.log", dir);
+    if (!(f = fopen(path, "r")))
+        return -1;
+    while (fgets(line, sizeof line, f) && used < size)
+        if (strstr(line, "  act ") || strstr(line, " -> "))
+            used += (size_t)snprintf(out + used, size - used, "%s", line);
+    fclose(f);
+    return rows;
+}
+
+static void test_paper_case_without_sumo(void)
+{
+    static const char *const cases[] = {"1-head-on", "2-overtaking", "3-crossing",
+                                        "4-head-on-complex", "5-crossing-complex"};
+    static fw_scenario s;
+    static char a[1 << 17], b[1 << 17];
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        char file[512], d1[512], d2[512];
+        fw_error err = {0};
+        snprintf(file, sizeof file, "%s/scenarios/paper/%s.yaml", fw_data_root(), cases[c]);
+        CHECK_MSG(fw_scenario_load(file, &s, &err) == FW_OK, "%s", err.msg);
+        fw_run_summary sum[2];
+        for (int k = 0; k < 2; k++) {
+            char *d = k ? d2 : d1;
+            snprintf(d, 512, "%s/%s-%s", tmp_root, cases[c], k ? "kinematic" : "sumo");
+            mkdir(d, 0777);
+            fw_run_def def = fw_default_run_def();
+            def.scenario = &s;
+            def.dir = d;
+            def.traffic = k ? FW_RUN_TRAFFIC_KINEMATIC : FW_RUN_TRAFFIC_SUMO;
+            fw_encounter *e = NULL;
+            int ne = 0;
+            CHECK_MSG(fw_run_scenario(&def, &sum[k], &e, &ne, &err) == FW_OK, "%s", err.msg);
+            free(e);
+        }
+        struct stat sb;
+        char sumo_dir[600];
+        snprintf(sumo_dir, sizeof sumo_dir, "%s/sumo", d2);
+        CHECK_MSG(stat(d2, &sb) == 0 && stat(sumo_dir, &sb) != 0,
+                  "the kinematic run wrote SUMO files");
+        int ra = decisions(d1, a, sizeof a), rb = decisions(d2, b, sizeof b);
+        CHECK_MSG(ra > 100 && ra == rb, "%s: %d and %d rows", cases[c], ra, rb);
+        CHECK_MSG(strcmp(a, b) == 0, "%s: decisions differ between SUMO and the kinematic source",
+                  cases[c]);
+        CHECK_NEAR(sum[0].min_dist, sum[1].min_dist, 0.05);
+        CHECK_NEAR(sum[0].t_act, sum[1].t_act, 0.0);
+        CHECK(sum[0].n_actions == sum[1].n_actions && sum[0].n_actions > 0);
+        printf("  %s: same decisions with and without SUMO (%d rows; first action %.0f s, "
+               "%d actions; closest %.2f / %.2f m)\n",
+               cases[c], ra, sum[0].t_act, sum[0].n_actions, sum[0].min_dist, sum[1].min_dist);
+    }
+}
+
+int main(void)
+{
+    snprintf(tmp_root, sizeof tmp_root, "/tmp/fw_test_world.XXXXXX");
+    if (!mkdtemp(tmp_root))
+        return 1;
+    fw_error err = {0};
+    if (fw_ship_load("c3", &c3, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return 1;
+    }
+    TEST_RUN(test_kinematic_source);
+    TEST_RUN(test_world_contract);
+    TEST_RUN(test_two_vessels_head_on);
+    TEST_RUN(test_paper_case_without_sumo);
+    char cmd[400];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);
+    if (test_failures_ == 0 && system(cmd) != 0)
+        fprintf(stderr, "could not remove %s\n", tmp_root);
+    return TEST_EXIT();
+}
