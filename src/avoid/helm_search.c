@@ -1,6 +1,7 @@
 #include "avoid/helm_search.h"
 
 #include "avoid/clearance.h"
+#include "core/mem.h"
 
 #include <limits.h>
 #include <math.h>
@@ -279,19 +280,10 @@ static fw_status ensure_scratch(fw_helm_ctx *c, int n, fw_error *err)
 {
     if (n <= c->cap)
         return FW_OK;
-    int *idx = realloc(c->idx, sizeof *idx * (size_t)n);
-    if (idx)
-        c->idx = idx;
-    short *lo = realloc(c->jlo, sizeof *lo * (size_t)n);
-    if (lo)
-        c->jlo = lo;
-    short *hi = realloc(c->jhi, sizeof *hi * (size_t)n);
-    if (hi)
-        c->jhi = hi;
-    fw_prep_target *pr = realloc(c->prep, sizeof *pr * (size_t)n);
-    if (pr)
-        c->prep = pr;
-    if (!idx || !lo || !hi || !pr)
+    if (!fw_resize((void **)&c->idx, sizeof *c->idx, (size_t)n) ||
+        !fw_resize((void **)&c->jlo, sizeof *c->jlo, (size_t)n) ||
+        !fw_resize((void **)&c->jhi, sizeof *c->jhi, (size_t)n) ||
+        !fw_resize((void **)&c->prep, sizeof *c->prep, (size_t)n))
         return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
     c->cap = n;
     return FW_OK;

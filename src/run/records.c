@@ -8,6 +8,8 @@
 #include <string.h>
 
 #include "avoid/helm_search.h"
+#include "core/idmap.h"
+#include "core/mem.h"
 #include "core/units.h"
 #include "run/run.h"
 
@@ -17,11 +19,9 @@ struct fw_records {
     FILE *own, *tgt, *log;
     fw_encounter *e;
     int n, cap;
-    /* id -> index into e: open addressing, -1 empty, at most half full.  A
-     * heavy-traffic hour meets hundreds of ships and every step looks up
-     * each one in range. */
-    int *slot;
-    unsigned nslot;
+    /* id -> index into e (core/idmap.h): a heavy-traffic hour meets
+     * hundreds of ships and every step looks up each one in range */
+    fw_idmap ids;
 };
 
 static FILE *open_in(const char *dir, const char *name, fw_error *err)
@@ -64,7 +64,7 @@ void fw_records_close(fw_records *r)
     if (r->log)
         fclose(r->log);
     free(r->e);
-    free(r->slot);
+    fw_idmap_free(&r->ids);
     free(r);
 }
 
@@ -78,48 +78,41 @@ void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm,
             fw_rad_to_deg(helm), n, mode);
 }
 
-static unsigned id_hash(const char *id)
-{
-    unsigned h = 2166136261u;
-    for (; *id; id++)
-        h = (h ^ (unsigned char)*id) * 16777619u;
-    return h;
-}
-
 static fw_encounter *find(fw_records *r, const char *id)
 {
-    if (!r->nslot)
-        return NULL;
-    for (unsigned k = id_hash(id) & (r->nslot - 1);; k = (k + 1) & (r->nslot - 1)) {
-        if (r->slot[k] < 0)
-            return NULL;
-        if (strcmp(r->e[r->slot[k]].id, id) == 0)
-            return &r->e[r->slot[k]];
-    }
+    int i = fw_idmap_find(&r->ids, id);
+    return i >= 0 ? &r->e[i] : NULL;
 }
 
-/* Indexes e[i]; grows the table first when it would pass half full. */
-static bool index_add(fw_records *r, int i)
+/* A new entry in the book for a ship first seen now. */
+static fw_status add(fw_records *r, double t, const fw_target *ts, const fw_assessment *as,
+                     fw_encounter **out, fw_error *err)
 {
-    if (2u * (unsigned)(r->n + 1) > r->nslot) {
-        unsigned ns = r->nslot ? 2 * r->nslot : 64;
-        int *sl = malloc(sizeof *sl * ns);
-        if (!sl)
-            return false;
-        for (unsigned k = 0; k < ns; k++)
-            sl[k] = -1;
-        free(r->slot);
-        r->slot = sl;
-        r->nslot = ns;
-        for (int j = 0; j < r->n; j++)
-            if (j != i)
-                index_add(r, j);
+    if (r->n == r->cap) {
+        int cap = fw_grown_cap(r->cap, 16);
+        if (!fw_resize((void **)&r->e, sizeof *r->e, (size_t)cap))
+            return fw_fail(err, FW_ERUN, "out of memory for the encounter book (%d ships)", r->n);
+        r->cap = cap;
     }
-    unsigned k = id_hash(r->e[i].id) & (r->nslot - 1);
-    while (r->slot[k] >= 0)
-        k = (k + 1) & (r->nslot - 1);
-    r->slot[k] = i;
-    return true;
+    int i;
+    if (fw_idmap_intern(&r->ids, ts->id, &i))
+        return fw_fail(err, FW_ERUN, "out of memory for the encounter book (%d ships)", r->n);
+    /* the map numbers ids as the book adds them: i == r->n */
+    fw_encounter *e = &r->e[r->n++];
+    memset(e, 0, sizeof *e);
+    snprintf(e->id, sizeof e->id, "%s", ts->id);
+    snprintf(e->type, sizeof e->type, "%s", ts->type);
+    e->length = ts->length;
+    e->breadth = ts->breadth;
+    e->situation = as->situation;
+    e->t_detect = t;
+    e->dcpa0 = as->dcpa;
+    e->tcpa0 = as->tcpa;
+    e->min_dist = INFINITY;
+    e->min_lambda = INFINITY;
+    e->t_act = NAN;
+    *out = e;
+    return FW_OK;
 }
 
 /* COLREGs reading of a first action (see fw_records_finish for no action). */
@@ -134,36 +127,13 @@ static bool action_ok(fw_situation situation, int side)
     return true;
 }
 
-void fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mmg_state *own,
-                       const fw_assessment *as, bool record_row)
+fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mmg_state *own,
+                            const fw_assessment *as, bool record_row, fw_error *err)
 {
     fw_encounter *e = find(r, ts->id);
-    if (!e) {
-        if (r->n == r->cap) {
-            int cap = r->cap ? 2 * r->cap : 16;
-            fw_encounter *ne = realloc(r->e, sizeof *ne * (size_t)cap);
-            if (!ne)
-                return; /* out of memory: the book misses this ship, the run goes on */
-            r->e = ne;
-            r->cap = cap;
-        }
-        e = &r->e[r->n];
-        memset(e, 0, sizeof *e);
-        snprintf(e->id, sizeof e->id, "%s", ts->id);
-        if (!index_add(r, r->n))
-            return;
-        r->n++;
-        snprintf(e->type, sizeof e->type, "%s", ts->type);
-        e->length = ts->length;
-        e->breadth = ts->breadth;
-        e->situation = as->situation;
-        e->t_detect = t;
-        e->dcpa0 = as->dcpa;
-        e->tcpa0 = as->tcpa;
-        e->min_dist = INFINITY;
-        e->min_lambda = INFINITY;
-        e->t_act = NAN;
-    }
+    fw_status st = e ? FW_OK : add(r, t, ts, as, &e, err);
+    if (st)
+        return st;
     if (as->enters_domain)
         e->threat = true;
     double de = ts->east - own->east, dn = ts->north - own->north;
@@ -190,6 +160,7 @@ void fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mm
                 ts->north, fw_heading_deg(ts->course), fw_ms_to_kn(ts->speed), d,
                 fw_heading_deg(as->bearing), as->dcpa, as->tcpa,
                 fw_situation_name(as->situation));
+    return FW_OK;
 }
 
 void fw_records_action(fw_records *r, double t, int side, double helm, const char *primary_id,

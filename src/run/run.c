@@ -213,7 +213,8 @@ static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *er
         fw_records_own(R->rec, t, x, d->helm, fw_vessel_propeller(R->own),
                        fw_policy_mode_name(d->mode));
     for (int i = 0; i < n; i++)
-        fw_records_target(R->rec, t, &tg[i], x, &as[i], row);
+        if ((st = fw_records_target(R->rec, t, &tg[i], x, &as[i], row, err)))
+            return st;
     if (d->acted)
         record_action(R, t, d, tg, as, n, sum);
     record_mode(R, t, d, sum);

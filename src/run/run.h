@@ -129,9 +129,11 @@ void fw_records_close(fw_records *r);
 FILE *fw_records_log(fw_records *r);
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
                     const char *mode);
-/* One target seen at time t, with its assessment (situation, DCPA/TCPA, threat). */
-void fw_records_target(fw_records *r, double t, const fw_target *ts,
-                       const fw_mmg_state *own, const fw_assessment *as, bool record_row);
+/* One target seen at time t, with its assessment (situation, DCPA/TCPA, threat).
+ * FW_ERUN when the book cannot grow: a run never goes on missing a ship. */
+fw_status fw_records_target(fw_records *r, double t, const fw_target *ts,
+                            const fw_mmg_state *own, const fw_assessment *as, bool record_row,
+                            fw_error *err);
 /* The own ship acted at t (side, helm) for target id primary_id; the targets
  * tg[0..n-1] it saw then whose assessment says they enter the domain are the
  * ones it acted for. */

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/mem.h"
 #include "survey/survey_index.h"
 
 /* Coordinates beyond this are no position on Earth (and would overflow the
@@ -22,7 +23,7 @@ struct fw_survey {
     double t_prev;
     int n_prev;
     double ship_s;
-    sv_ids ids;
+    fw_idmap ids; /* ship ids interned (core/idmap.h) */
     long *seen;          /* per interned id: stamp of the last step it was in */
     int seen_cap;
     /* the step being taken, by position in the caller's array */
@@ -102,7 +103,7 @@ void fw_survey_destroy(fw_survey *sv)
 {
     if (!sv)
         return;
-    sv_ids_free(&sv->ids);
+    fw_idmap_free(&sv->ids);
     sv_pairs_free(&sv->pairs);
     sv_grid_free(&sv->grid);
     free(sv->seen);
@@ -121,26 +122,16 @@ void fw_survey_destroy(fw_survey *sv)
     free(sv);
 }
 
-/* Grows *p (elements of size sz, capacity *cap) to hold n; false when out of memory. */
-static bool grow(void **p, size_t sz, int n, int cap)
-{
-    void *q = realloc(*p, sz * (size_t)(n > cap ? n : cap));
-    if (!q)
-        return false;
-    *p = q;
-    return true;
-}
-
 static bool reserve_step(fw_survey *sv, int n)
 {
     if (n <= sv->cap)
         return true;
-    int cap = n > 2 * sv->cap ? n : 2 * sv->cap;
-    if (!grow((void **)&sv->cid, sizeof *sv->cid, cap, 0) ||
-        !grow((void **)&sv->x, sizeof *sv->x, cap, 0) ||
-        !grow((void **)&sv->y, sizeof *sv->y, cap, 0) ||
-        !grow((void **)&sv->vx, sizeof *sv->vx, cap, 0) ||
-        !grow((void **)&sv->vy, sizeof *sv->vy, cap, 0))
+    int cap = fw_grown_cap(sv->cap, n);
+    if (!fw_resize((void **)&sv->cid, sizeof *sv->cid, (size_t)cap) ||
+        !fw_resize((void **)&sv->x, sizeof *sv->x, (size_t)cap) ||
+        !fw_resize((void **)&sv->y, sizeof *sv->y, (size_t)cap) ||
+        !fw_resize((void **)&sv->vx, sizeof *sv->vx, (size_t)cap) ||
+        !fw_resize((void **)&sv->vy, sizeof *sv->vy, (size_t)cap))
         return false;
     sv->cap = cap;
     return true;
@@ -151,13 +142,13 @@ static bool reserve_records(fw_survey *sv)
     if (sv->nrec < sv->rec_cap)
         return true;
     int cap = sv->rec_cap ? 2 * sv->rec_cap : 64;
-    if (!grow((void **)&sv->rec, sizeof *sv->rec, cap, 0) ||
-        !grow((void **)&sv->rec_a, sizeof *sv->rec_a, cap, 0) ||
-        !grow((void **)&sv->rec_b, sizeof *sv->rec_b, cap, 0) ||
-        !grow((void **)&sv->touched, sizeof *sv->touched, cap, 0) ||
-        !grow((void **)&sv->t_seen, sizeof *sv->t_seen, cap, 0) ||
-        !grow((void **)&sv->active, sizeof *sv->active, cap, 0) ||
-        !grow((void **)&sv->is_open, sizeof *sv->is_open, cap, 0))
+    if (!fw_resize((void **)&sv->rec, sizeof *sv->rec, (size_t)cap) ||
+        !fw_resize((void **)&sv->rec_a, sizeof *sv->rec_a, (size_t)cap) ||
+        !fw_resize((void **)&sv->rec_b, sizeof *sv->rec_b, (size_t)cap) ||
+        !fw_resize((void **)&sv->touched, sizeof *sv->touched, (size_t)cap) ||
+        !fw_resize((void **)&sv->t_seen, sizeof *sv->t_seen, (size_t)cap) ||
+        !fw_resize((void **)&sv->active, sizeof *sv->active, (size_t)cap) ||
+        !fw_resize((void **)&sv->is_open, sizeof *sv->is_open, (size_t)cap))
         return false;
     sv->rec_cap = cap;
     return true;
@@ -286,7 +277,7 @@ fw_status fw_survey_step(fw_survey *sv, double t, const fw_target *ships, int n,
         return fw_fail(err, FW_ERUN, "survey: out of memory for %d ships", n);
     for (int k = 0; k < n; k++) {
         int id;
-        if (sv_ids_intern(&sv->ids, ships[k].id, &id))
+        if (fw_idmap_intern(&sv->ids, ships[k].id, &id))
             return fw_fail(err, FW_ERUN, "survey: out of memory for ship ids");
         if (sv->ids.n > sv->seen_cap) {
             int cap = 2 * sv->ids.n;

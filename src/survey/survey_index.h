@@ -1,6 +1,5 @@
 /* survey_index.h - the survey's lookup structures (internal to src/survey).
  *
- *   sv_ids    ship ids interned to small integers 0, 1, 2, ... (first seen first)
  *   sv_pairs  a pair of interned ids -> the index of its latest episode
  *   sv_grid   every pair of points closer than r, once, from a uniform grid of
  *             cells of side r (hashed, so the area needs no bounds)
@@ -15,17 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-typedef struct sv_ids {
-    int *slot;        /* cap entries: interned index + 1, 0 = empty */
-    size_t cap;
-    char **name;      /* interned index -> id */
-    uint64_t *hash;
-    int n, name_cap;
-} sv_ids;
-
-/* *out = the index of id, interning it if new. */
-int sv_ids_intern(sv_ids *t, const char *id, int *out);
-void sv_ids_free(sv_ids *t);
+#include "core/idmap.h"
 
 typedef struct sv_pairs {
     uint64_t *key;    /* 0 = empty (a real key has hi > 0) */

@@ -8,6 +8,7 @@
 
 #include "core/clock.h"
 #include "core/files.h"
+#include "core/mem.h"
 #include "traffic/demand.h"
 #include "ship/ship.h"
 #include "traffic/netbuild.h"
@@ -227,10 +228,8 @@ static fw_status ss_around(fw_source *s, const fw_target **v, int *n, fw_error *
     if (st)
         return st;
     if (m > k->cap) {
-        fw_target *p = realloc(k->sorted, sizeof *p * (size_t)(2 * m));
-        if (!p)
+        if (!fw_resize((void **)&k->sorted, sizeof *k->sorted, 2 * (size_t)m))
             return fw_fail(err, FW_ERUN, "out of memory for %d ships", m);
-        k->sorted = p;
         k->cap = 2 * m;
     }
     if (m > 0) /* no ship in range yet: the buffer may still be NULL */

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/mem.h"
 #include "core/units.h"
 #include "traffic/backend.h"
 
@@ -389,10 +390,8 @@ static fw_status room(fw_target **v, int *cap, int n, fw_error *err)
 {
     if (n <= *cap)
         return FW_OK;
-    void *p = realloc(*v, sizeof **v * (size_t)(2 * n));
-    if (!p)
+    if (!fw_resize((void **)v, sizeof **v, 2 * (size_t)n))
         return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
-    *v = p;
     *cap = 2 * n;
     return FW_OK;
 }

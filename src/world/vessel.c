@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/mem.h"
 #include "world/vessel_internal.h"
 
 fw_vessel_def fw_default_vessel_def(void)
@@ -126,17 +127,11 @@ fw_status fw_vessel_reserve(fw_vessel *v, int n, fw_error *err)
 {
     if (n <= v->cap)
         return FW_OK;
-    int cap = 2 * n;
-    fw_target *view = realloc(v->view, sizeof *view * (size_t)cap);
-    if (view)
-        v->view = view;
-    fw_assessment *as = view ? realloc(v->as, sizeof *as * (size_t)cap) : NULL;
-    if (as)
-        v->as = as;
-    int *order = as ? realloc(v->order, sizeof *order * 2 * (size_t)cap) : NULL;
-    if (!order)
+    int cap = fw_grown_cap(v->cap, n);
+    if (!fw_resize((void **)&v->view, sizeof *v->view, (size_t)cap) ||
+        !fw_resize((void **)&v->as, sizeof *v->as, (size_t)cap) ||
+        !fw_resize((void **)&v->order, sizeof *v->order, 2 * (size_t)cap))
         return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
-    v->order = order;
     v->cap = cap;
     return FW_OK;
 }

@@ -1,0 +1,92 @@
+/* idmap.c - see idmap.h. */
+#include "core/idmap.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/mem.h"
+
+/* FNV-1a: ids are short strings like "east.123" */
+static uint64_t hash_str(const char *s)
+{
+    uint64_t h = 1469598103934665603ULL;
+    for (; *s; s++) {
+        h ^= (unsigned char)*s;
+        h *= 1099511628211ULL;
+    }
+    return h;
+}
+
+static int rehash(fw_idmap *t, size_t cap)
+{
+    int *slot = calloc(cap, sizeof *slot);
+    if (!slot)
+        return -1;
+    for (int i = 0; i < t->n; i++) {
+        size_t k = (size_t)t->hash[i] & (cap - 1);
+        while (slot[k])
+            k = (k + 1) & (cap - 1);
+        slot[k] = i + 1;
+    }
+    free(t->slot);
+    t->slot = slot;
+    t->cap = cap;
+    return 0;
+}
+
+static int find(const fw_idmap *t, const char *id, uint64_t h)
+{
+    if (!t->cap)
+        return -1;
+    for (size_t k = (size_t)h & (t->cap - 1); t->slot[k]; k = (k + 1) & (t->cap - 1)) {
+        int i = t->slot[k] - 1;
+        if (t->hash[i] == h && strcmp(t->name[i], id) == 0)
+            return i;
+    }
+    return -1;
+}
+
+int fw_idmap_find(const fw_idmap *t, const char *id) { return find(t, id, hash_str(id)); }
+
+int fw_idmap_intern(fw_idmap *t, const char *id, int *out)
+{
+    uint64_t h = hash_str(id);
+    int found = find(t, id, h);
+    if (found >= 0) {
+        *out = found;
+        return 0;
+    }
+    /* new: keep the table at most half full */
+    if ((size_t)(t->n + 1) * 2 > t->cap && rehash(t, t->cap ? 2 * t->cap : 256))
+        return -1;
+    if (t->n == t->name_cap) {
+        int cap = t->name_cap ? 2 * t->name_cap : 128;
+        if (!fw_resize((void **)&t->name, sizeof *t->name, (size_t)cap) ||
+            !fw_resize((void **)&t->hash, sizeof *t->hash, (size_t)cap))
+            return -1;
+        t->name_cap = cap;
+    }
+    char *copy = strdup(id);
+    if (!copy)
+        return -1;
+    int i = t->n++;
+    t->name[i] = copy;
+    t->hash[i] = h;
+    size_t k = (size_t)h & (t->cap - 1);
+    while (t->slot[k])
+        k = (k + 1) & (t->cap - 1);
+    t->slot[k] = i + 1;
+    *out = i;
+    return 0;
+}
+
+void fw_idmap_free(fw_idmap *t)
+{
+    for (int i = 0; i < t->n; i++)
+        free(t->name[i]);
+    free(t->name);
+    free(t->hash);
+    free(t->slot);
+    memset(t, 0, sizeof *t);
+}
+

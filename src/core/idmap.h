@@ -1,0 +1,30 @@
+/* idmap.h - ship ids interned to small integers: the one string hash table.
+ *
+ * Ids get indices 0, 1, 2, ... in the order first seen, so a caller keeps
+ * its per-ship data in plain arrays indexed by them (the encounter book, the
+ * survey's per-ship arrays).  Open addressing with linear probing in a
+ * power-of-two table kept at most half full; nothing is ever deleted.
+ * Functions that allocate return 0, or -1 when out of memory (the map is
+ * then as it was).  A zeroed fw_idmap is an empty one.
+ */
+#ifndef FW_IDMAP_H
+#define FW_IDMAP_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct fw_idmap {
+    int *slot;        /* cap entries: interned index + 1, 0 = empty */
+    size_t cap;
+    char **name;      /* interned index -> id */
+    uint64_t *hash;
+    int n, name_cap;
+} fw_idmap;
+
+/* The index of id, -1 if it has not been interned. */
+int fw_idmap_find(const fw_idmap *t, const char *id);
+/* *out = the index of id, interning it if new. */
+int fw_idmap_intern(fw_idmap *t, const char *id, int *out);
+void fw_idmap_free(fw_idmap *t);
+
+#endif

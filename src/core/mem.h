@@ -1,0 +1,19 @@
+/* mem.h - growing arrays without the `p = realloc(p, ...)` leak.
+ *
+ * fw_resize gives *p room for n elements of elem bytes and keeps the old
+ * block (and returns false) when memory runs out, so a caller can report the
+ * failure with everything it had still owned and freed once.  The pointer is
+ * passed as void ** (the address of any object pointer, cast).
+ */
+#ifndef FW_MEM_H
+#define FW_MEM_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+bool fw_resize(void **p, size_t elem, size_t n);
+
+/* Capacity for n when cap is too small: at least double, at least n. */
+static inline int fw_grown_cap(int cap, int n) { return n > 2 * cap ? n : 2 * cap; }
+
+#endif
