@@ -2,6 +2,7 @@
  * its own: the kinematic source for the targets, the MMG ship under the
  * manoeuvre controller. */
 #include "run/oracle.h"
+#include "run/run.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -20,18 +21,11 @@ fw_oracle_def fw_default_oracle_def(void)
 static fw_status make_world(const fw_scenario *s, double step, const fw_manoeuvre_def *md,
                             fw_world **w, fw_vessel **own, fw_error *err)
 {
-    fw_kin_ship ships[FW_SCN_MAX_TARGETS];
-    for (int i = 0; i < s->n_targets; i++)
-        ships[i] = (fw_kin_ship){.start = s->targets[i]};
-    fw_kinematic_def kd = fw_default_kinematic_def();
-    kd.ships = ships;
-    kd.n = s->n_targets;
-    kd.step = step;
     fw_world_def wd = fw_default_world_def();
     wd.step = step;
     fw_controller *ctl = NULL;
     fw_status st;
-    if ((st = fw_kinematic_source_create(&kd, &wd.source, err)) ||
+    if ((st = fw_run_kinematic_source(s, step, INFINITY, &wd.source, err)) ||
         (st = fw_world_create(&wd, w, err)) ||
         (st = fw_manoeuvre_controller_create(md, &ctl, err)))
         return st;

@@ -58,8 +58,8 @@ static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *e
     return fw_sumo_source_create(&sd, src, err);
 }
 
-/* The scenario's explicit targets at constant velocity, no SUMO. */
-static fw_status kinematic_source(const fw_scenario *s, fw_source **src, fw_error *err)
+fw_status fw_run_kinematic_source(const fw_scenario *s, double step, double radius,
+                                  fw_source **src, fw_error *err)
 {
     if (s->network[0])
         return fw_fail(err, FW_EINPUT, "%s: traffic on network '%s' needs SUMO, not the "
@@ -70,8 +70,8 @@ static fw_status kinematic_source(const fw_scenario *s, fw_source **src, fw_erro
     fw_kinematic_def kd = fw_default_kinematic_def();
     kd.ships = ships;
     kd.n = s->n_targets;
-    kd.step = s->step;
-    kd.radius = s->radius;
+    kd.step = step;
+    kd.radius = radius;
     kd.area_radius = s->survey ? s->survey_radius : 0.0;
     kd.own_id = "fw_own";
     return fw_kinematic_source_create(&kd, src, err);
@@ -82,8 +82,9 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
 {
     const fw_scenario *s = def->scenario;
     fw_source *src = NULL;
-    fw_status st = def->traffic == FW_RUN_TRAFFIC_KINEMATIC ? kinematic_source(s, &src, err)
-                                                            : sumo_source(def, &src, err);
+    fw_status st = def->traffic == FW_RUN_TRAFFIC_KINEMATIC
+                       ? fw_run_kinematic_source(s, s->step, s->radius, &src, err)
+                       : sumo_source(def, &src, err);
     if (st)
         return st;
     fw_world_def wd = fw_default_world_def();

@@ -30,6 +30,7 @@
 #include "dynamics/mmg.h"
 #include "scenario/scenario.h"
 #include "survey/survey.h"
+#include "traffic/source.h"
 #include "traffic/traffic.h"
 
 /* What the encounter book keeps per target. */
@@ -120,6 +121,13 @@ fw_run_def fw_default_run_def(void);
  * summary is filled even when the run fails part way (status "failed"). */
 fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
                           int *n_enc, fw_error *err);
+
+/* The scenario's explicit targets at constant velocity as a kinematic source
+ * (traffic/source.h) stepping `step`, seen within `radius` (INFINITY: all),
+ * with the survey's area if the scenario has one.  FW_EINPUT for a scenario
+ * with a network (that traffic needs SUMO). */
+fw_status fw_run_kinematic_source(const fw_scenario *s, double step, double radius,
+                                  fw_source **src, fw_error *err);
 
 /* records.c: the encounter book and the result files. */
 typedef struct fw_records fw_records;
