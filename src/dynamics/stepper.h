@@ -1,11 +1,14 @@
-/* stepper.h - the own ship stepped in time: MMG + rudder servo, integrated by CVODE.
+/* stepper.h - a ship stepped in time: MMG + rudder servo, integrated by ARKODE.
  *
- * This is what the step loop calls: set the helm order and propeller speed,
- * advance by dt, read the state.  The rudder follows the helm order at the
- * ship's rate limit up to its maximum angle.  The integrator is re-initialised
- * only where an input jumps (new helm order, new propeller speed) or where the
- * rudder reaches its order (located by root finding); in between it keeps its
- * step size and history across calls.
+ * What a world's MMG vessel calls (world/vessel.c): set the helm order and
+ * propeller speed, advance by dt, read the state.  The rudder follows the helm
+ * order at the ship's rate limit up to its maximum angle.  The integrator
+ * (ARKODE's explicit Runge-Kutta ERKStep, Cash-Karp 5(4); stepper.c says why
+ * not CVODE) is re-initialised only where an input jumps (new helm order, new
+ * propeller speed) or where the rudder reaches its order: that instant is
+ * known in advance (the rudder angle is piecewise linear in time), so the
+ * integration stops there exactly, with no root finding; in between it keeps
+ * its step size across calls.
  */
 #ifndef FW_STEPPER_H
 #define FW_STEPPER_H

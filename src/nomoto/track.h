@@ -6,7 +6,8 @@
  * every dt.  The paper keeps U and moves the ship along its heading; the MMG
  * ship does neither: in a 20 deg turn at 10 kn it drifts 10 deg outwards and
  * loses a fifth of its speed within three minutes, and a track without them is
- * 110 m off by then (300 m at 35 deg).  When the knowledge base has them
+ * 111 m off by then (220 m at 35 deg; 90-582 m after five minutes at 10-12 kn
+ * and 10-35 deg, tests/test_identify.c).  When the knowledge base has them
  * (ship.h: drift, speed_loss and their lags) the drift angle and the speed
  * follow the predicted yaw rate through first-order lags, and positions
  * integrate the course over ground (heading - drift) at that speed.
