@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "core/units.h"
+#include "core/spawn.h"
 #include "test.h"
 #include "traffic/demand.h"
 #include "traffic/traffic.h"
@@ -358,7 +359,8 @@ static pid_t start_sumo(fw_traffic_def *d, int *port)
         return -1;
     }
     pid_t pid = -1;
-    CHECK(fw_traffic_spawn(argv, work_file("sumo.out", log, sizeof log), &pid, &err) == FW_OK);
+    fw_spawn_def sp = {.argv = argv, .log = work_file("sumo.out", log, sizeof log), .append = true};
+    CHECK(fw_spawn(&sp, &pid, &err) == FW_OK);
     return pid;
 }
 
@@ -384,7 +386,7 @@ static void test_remote(void)
     } else {
         CHECK_MSG(0, "%s", err.msg);
     }
-    fw_traffic_stop_child(pid);
+    fw_spawn_stop(pid);
 }
 
 static void test_bad_network(void)
@@ -441,7 +443,7 @@ static void test_sumo_dies(void)
     fw_traffic *t = NULL;
     if (fw_traffic_open(&d, &t, &err) != FW_OK) {
         CHECK_MSG(0, "%s", err.msg);
-        fw_traffic_stop_child(pid);
+        fw_spawn_stop(pid);
         return;
     }
     fw_status st = FW_OK;
@@ -470,7 +472,7 @@ static void test_sumo_dies(void)
     CHECK(fw_traffic_step(t, &err) == FW_ERUN);
     fw_traffic_close(t);
     if (pid > 0)
-        fw_traffic_stop_child(pid);
+        fw_spawn_stop(pid);
 }
 
 int main(int argc, char **argv)

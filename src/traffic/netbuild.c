@@ -1,16 +1,10 @@
 /* netbuild.c - netconvert as a child process (see netbuild.h). */
-#define _GNU_SOURCE /* posix_spawn_file_actions_addchdir_np */
-#include <fcntl.h>
-#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
+#include "core/spawn.h"
 #include "traffic/netbuild.h"
-
-extern char **environ;
 
 /* "<!-- generated on YYYY-MM-DD HH:MM:SS by ..." -> without the date. */
 static fw_status strip_date(const char *path, fw_error *err)
@@ -75,21 +69,13 @@ fw_status fw_netconvert(const char *dir, const char *nodes, const char *edges, c
     argv[k++] = out;
     argv[k] = NULL;
     setenv("SUMO_HOME", FW_SUMO_HOME, 0);
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
     const char *sink = log ? log : "/dev/null";
-    posix_spawn_file_actions_addopen(&fa, 1, sink, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&fa, 1, 2);
-    posix_spawn_file_actions_addchdir_np(&fa, dir);
-    pid_t pid;
-    int rc = posix_spawn(&pid, FW_NETCONVERT, &fa, NULL, (char *const *)argv, environ);
-    posix_spawn_file_actions_destroy(&fa);
-    if (rc != 0)
-        return fw_fail(err, FW_ERUN, "cannot start %s: %s", FW_NETCONVERT, strerror(rc));
+    fw_spawn_def sp = {.argv = argv, .log = log, .dir = dir};
     int status;
-    while (waitpid(pid, &status, 0) < 0)
-        ;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    fw_status st = fw_spawn_run(&sp, &status, err);
+    if (st)
+        return st;
+    if (status != 0)
         return fw_fail(err, FW_ERUN, "netconvert failed building %s (messages in %s)", out, sink);
     char path[2048];
     snprintf(path, sizeof path, "%s%s%s", out[0] == '/' ? "" : dir, out[0] == '/' ? "" : "/", out);

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "core/mem.h"
+#include "core/spawn.h"
 #include "core/units.h"
 #include "traffic/backend.h"
 
@@ -256,7 +257,8 @@ static fw_status start(fw_traffic *t, fw_error *err)
         argv[n++] = "--start"; /* run without waiting for the play button */
         argv[n++] = "true";
         argv[n] = NULL;
-        if ((st = fw_traffic_spawn(argv, NULL, &t->child, err)))
+        fw_spawn_def sp = {.argv = argv};
+        if ((st = fw_spawn(&sp, &t->child, err)))
             return st;
         if ((st = t->be->connect("localhost", port, retries, err)))
             return prefix(err, "%s did not accept a connection on port %d", d->sumo_gui, port);
@@ -318,7 +320,7 @@ void fw_traffic_close(fw_traffic *t)
             embedded_open = false;
     }
     if (t->child > 0)
-        fw_traffic_stop_child(t->child);
+        fw_spawn_stop(t->child);
     free(t->raw.v);
     free(t->ctx.v);
     free(t->ships);

@@ -122,11 +122,4 @@ fw_status fw_traffic_sumo_args(const fw_traffic_def *def, const char *program, i
 
 /* A free TCP port on localhost (bound and released: a small race remains). */
 fw_status fw_traffic_free_port(int *port, fw_error *err);
-/* Starts a sumo (or sumo-gui) child with argv, its stdout/stderr to log_file
- * (or /dev/null).  The caller stops it with fw_traffic_stop_child. */
-fw_status fw_traffic_spawn(const char *const *argv, const char *log_file, pid_t *pid,
-                           fw_error *err);
-/* SIGTERM, wait up to 3 s, then SIGKILL; always reaps. */
-void fw_traffic_stop_child(pid_t pid);
-
 #endif

@@ -1,0 +1,97 @@
+/* spawn.c - see spawn.h. */
+#include "core/spawn.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+/* In the child: redirect, change directory, exec; on failure write errno to
+ * the pipe and leave. */
+static void child(const fw_spawn_def *d, int report)
+{
+    int flags = O_WRONLY | O_CREAT | (d->append ? O_APPEND : O_TRUNC);
+    int fd = open(d->log ? d->log : "/dev/null", flags, 0644);
+    if (fd >= 0) {
+        dup2(fd, STDOUT_FILENO);
+        dup2(fd, STDERR_FILENO);
+        close(fd);
+    }
+    if (!d->dir || chdir(d->dir) == 0)
+        execvp(d->argv[0], (char *const *)d->argv);
+    int e = errno;
+    ssize_t w = write(report, &e, sizeof e);
+    (void)w;
+    _exit(127);
+}
+
+fw_status fw_spawn(const fw_spawn_def *d, pid_t *pid, fw_error *err)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return fw_fail(err, FW_ERUN, "cannot start %s: %s", d->argv[0], strerror(errno));
+    fcntl(fds[1], F_SETFD, FD_CLOEXEC);
+    fflush(NULL); /* the child must not write our buffered output again */
+    pid_t p = fork();
+    if (p < 0) {
+        int e = errno;
+        close(fds[0]);
+        close(fds[1]);
+        return fw_fail(err, FW_ERUN, "cannot start %s: %s", d->argv[0], strerror(e));
+    }
+    if (p == 0) {
+        close(fds[0]);
+        child(d, fds[1]);
+    }
+    close(fds[1]);
+    int e = 0;
+    ssize_t r;
+    do
+        r = read(fds[0], &e, sizeof e);
+    while (r < 0 && errno == EINTR);
+    close(fds[0]);
+    if (r == (ssize_t)sizeof e) {
+        fw_spawn_wait(p);
+        return fw_fail(err, FW_ERUN, "cannot run %s%s%s: %s", d->argv[0], d->dir ? " in " : "",
+                       d->dir ? d->dir : "", strerror(e));
+    }
+    *pid = p;
+    return FW_OK;
+}
+
+int fw_spawn_wait(pid_t pid)
+{
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR)
+            return 128;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+fw_status fw_spawn_run(const fw_spawn_def *def, int *exit_status, fw_error *err)
+{
+    pid_t pid;
+    fw_status st = fw_spawn(def, &pid, err);
+    if (!st)
+        *exit_status = fw_spawn_wait(pid);
+    return st;
+}
+
+void fw_spawn_stop(pid_t pid)
+{
+    if (pid <= 0)
+        return;
+    kill(pid, SIGTERM);
+    for (int i = 0; i < 300; i++) {
+        if (waitpid(pid, NULL, WNOHANG) == pid)
+            return;
+        struct timespec ts = {0, 10 * 1000 * 1000};
+        nanosleep(&ts, NULL);
+    }
+    kill(pid, SIGKILL);
+    waitpid(pid, NULL, 0);
+}

@@ -1,0 +1,33 @@
+/* spawn.h - the one way fairway starts another program (sumo-gui, netconvert, Python).
+ *
+ * fork and exec with the child's standard output and error sent to a log
+ * file (or /dev/null), optionally in another working directory.  A pipe that
+ * exec closes tells the parent whether the program started at all, so "no
+ * such program" is an error of fw_spawn itself, not an exit status later.
+ */
+#ifndef FW_SPAWN_H
+#define FW_SPAWN_H
+
+#include <stdbool.h>
+#include <sys/types.h>
+
+#include "core/error.h"
+
+typedef struct fw_spawn_def {
+    const char *const *argv; /* program (looked up on PATH) and arguments, NULL-terminated */
+    const char *log;         /* stdout and stderr go here; NULL: /dev/null */
+    bool append;             /* append to the log instead of truncating it */
+    const char *dir;         /* working directory of the child; NULL: ours */
+} fw_spawn_def;
+
+/* Starts the program; *pid is the child's. */
+fw_status fw_spawn(const fw_spawn_def *def, pid_t *pid, fw_error *err);
+/* Waits for the child (through EINTR): its exit status, or 128 + the signal
+ * that ended it. */
+int fw_spawn_wait(pid_t pid);
+/* Starts the program and waits for it: *exit_status as fw_spawn_wait. */
+fw_status fw_spawn_run(const fw_spawn_def *def, int *exit_status, fw_error *err);
+/* SIGTERM, wait up to 3 s, then SIGKILL; always reaps.  Safe on pid <= 0. */
+void fw_spawn_stop(pid_t pid);
+
+#endif
