@@ -385,6 +385,99 @@ static void test_policy_return_only_when_clear(void)
            o.acts, o.t_act, o.min_lambda, o.t_back);
 }
 
+/* Predictors (geom/target.h): a ship that keeps its course until t_turn and
+ * then takes new_course at the same speed. */
+typedef struct turn_pred {
+    fw_predictor base;
+    double t_turn, new_course;
+} turn_pred;
+
+static void turn_path(const fw_predictor *self, const fw_target *now, double dt, int n,
+                      double *east, double *north, double *course)
+{
+    const turn_pred *p = (const turn_pred *)self;
+    double te = now->east + now->speed * sin(now->course) * p->t_turn;
+    double tn = now->north + now->speed * cos(now->course) * p->t_turn;
+    for (int k = 0; k < n; k++) {
+        double t = k * dt;
+        bool after = t > p->t_turn;
+        double c = after ? p->new_course : now->course, s = after ? t - p->t_turn : t;
+        east[k] = (after ? te : now->east) + now->speed * sin(c) * s;
+        north[k] = (after ? tn : now->north) + now->speed * cos(c) * s;
+        course[k] = c;
+    }
+}
+
+/* The helm search and the assessment use a target's predictor: one that
+ * only restates constant velocity changes nothing; one that turns the target
+ * onto the own track makes a threat of a ship that would pass 2 km off, and
+ * the helm found keeps the predicted ship out (checked sample by sample). */
+static void test_predictor_is_used(void)
+{
+    fw_helm_def hdef = fw_default_helm_def();
+    fw_helm_ctx *ctx = make_ctx(&hdef);
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    turn_pred never = {.base = {turn_path}, .t_turn = 1e9};
+    /* a crossing give-way, a head-on and one passing clear */
+    fw_target scene[3] = {target_at(45, 3000, 270, 10), target_at(2, 4000, 180, 12),
+                          target_at(300, 5000, 0, 8)};
+    fw_assessment a0[3], a1[3];
+    fw_helm_result r0, r1;
+    fw_assess(&hdef.colregs, &hdef.domain, hdef.track.horizon, &own, scene, 3, a0, NULL);
+    fw_helm_begin(ctx, &own);
+    CHECK(fw_helm_search(ctx, scene, 3, FW_ALLOW_STARBOARD, &r0, NULL) == FW_OK);
+    fw_target same[3];
+    for (int i = 0; i < 3; i++) {
+        same[i] = scene[i];
+        same[i].pred = &never.base;
+    }
+    fw_assess(&hdef.colregs, &hdef.domain, hdef.track.horizon, &own, same, 3, a1, NULL);
+    fw_helm_begin(ctx, &own);
+    CHECK(fw_helm_search(ctx, same, 3, FW_ALLOW_STARBOARD, &r1, NULL) == FW_OK);
+    CHECK(r0.threat && r0.threat == r1.threat && r0.feasible == r1.feasible && r0.helm == r1.helm);
+    /* INFINITY where every chunk of the track was culled */
+    CHECK(r0.clearance == r1.clearance || fabs(r0.clearance - r1.clearance) <= 1e-9);
+    CHECK(r0.keep_clearance == r1.keep_clearance ||
+          fabs(r0.keep_clearance - r1.keep_clearance) <= 1e-9);
+    for (int i = 0; i < 3; i++) {
+        CHECK(a0[i].enters_domain == a1[i].enters_domain);
+        /* sampled every 5 s against the closed form */
+        CHECK_NEAR(a0[i].min_lambda, a1[i].min_lambda, 0.01);
+        if (a0[i].enters_domain)
+            CHECK_NEAR(a0[i].t_enter, a1[i].t_enter, 5.0);
+    }
+    /* 2 km to starboard on a reciprocal course: passes clear at constant
+     * velocity; the predictor turns it west at 146 s, which brings it across
+     * the own track just as the own ship gets there (both at 10 kn: at 535 s) */
+    fw_target t = {.id = "T", .east = 2000, .north = 3500, .course = FW_PI,
+                   .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32};
+    turn_pred turn = {.base = {turn_path}, .t_turn = 146.0, .new_course = 1.5 * FW_PI};
+    fw_assess(&hdef.colregs, &hdef.domain, hdef.track.horizon, &own, &t, 1, a0, NULL);
+    CHECK(!a0[0].enters_domain);
+    t.pred = &turn.base;
+    fw_assess(&hdef.colregs, &hdef.domain, hdef.track.horizon, &own, &t, 1, a1, NULL);
+    CHECK_MSG(a1[0].enters_domain && a1[0].t_enter > 150.0, "predicted entry at %.0f s",
+              a1[0].t_enter);
+    fw_helm_begin(ctx, &own);
+    CHECK(fw_helm_search(ctx, &t, 1, FW_ALLOW_EITHER, &r1, NULL) == FW_OK);
+    CHECK(r1.threat && r1.feasible && r1.side != FW_SIDE_NONE);
+    const fw_track *tr;
+    int side_i = (int)lround((fw_rad_to_deg(fabs(r1.helm)) - hdef.min_helm_deg) / hdef.step_deg);
+    CHECK(fw_helm_track(ctx, r1.side, side_i, &tr, NULL) == FW_OK);
+    double e[200], n[200], c[200], worst = INFINITY;
+    fw_target_path(&t, tr->dt, tr->n, e, n, c);
+    for (int k = 0; k < tr->n; k++) {
+        fw_target at = t;
+        at.east = e[k], at.north = n[k], at.course = c[k], at.pred = NULL;
+        worst = fmin(worst, fw_domain_lambda(&hdef.domain, tr->east[k], tr->north[k], tr->psi[k], &at));
+    }
+    CHECK_MSG(worst >= 0.99, "the chosen track lets the predicted ship in: %.3f", worst);
+    printf("  predictor: entry at %.0f s predicted (none at constant velocity); %s %.0f deg "
+           "keeps it at %.2f of the domain\n",
+           a1[0].t_enter, fw_side_name(r1.side), fw_rad_to_deg(fabs(r1.helm)), worst);
+    fw_helm_ctx_destroy(ctx);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -396,6 +489,7 @@ int main(void)
     TEST_RUN(test_assessment_and_ranking);
     TEST_RUN(test_more_helm_more_clearance);
     TEST_RUN(test_only_one_side_works);
+    TEST_RUN(test_predictor_is_used);
     TEST_RUN(test_policy_head_on_cycle);
     TEST_RUN(test_policy_follows_target_id);
     TEST_RUN(test_policy_stand_on_rule_17);

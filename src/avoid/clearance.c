@@ -7,8 +7,24 @@
 static inline double mn(double a, double b) { return a < b ? a : b; }
 static inline double mx(double a, double b) { return a > b ? a : b; }
 
-void fw_prep_targets(const fw_domain_def *dom, const fw_target *t, int n, fw_prep_target *out)
+int fw_prep_path_len(const fw_track_def *def) { return 4 * fw_track_samples(def); }
+
+/* The predictor's path (see fw_prep_target.path): the course goes into the
+ * cosine run and is replaced by its sine and cosine. */
+static void fill_path(const fw_target *g, const fw_track_def *tdef, int ns, double *p)
 {
+    fw_target_path(g, tdef->dt, ns, p, p + ns, p + 3 * ns);
+    for (int k = 0; k < ns; k++) {
+        double c = p[3 * ns + k];
+        p[2 * ns + k] = sin(c);
+        p[3 * ns + k] = cos(c);
+    }
+}
+
+void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const fw_target *t,
+                     int n, fw_prep_target *out, double *paths)
+{
+    int len = fw_prep_path_len(tdef);
     for (int i = 0; i < n; i++) {
         const fw_target *g = &t[i];
         double s = sin(g->course), c = cos(g->course);
@@ -16,6 +32,12 @@ void fw_prep_targets(const fw_domain_def *dom, const fw_target *t, int n, fw_pre
                                   .ve = g->speed * s, .vn = g->speed * c, .sc = s, .cc = c,
                                   .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
                                   .reach = fw_domain_reach(dom, g)};
+        if (g->pred && paths) {
+            out[i].ns = len / 4;
+            fill_path(g, tdef, out[i].ns, paths);
+            out[i].path = paths;
+            paths += len;
+        }
     }
 }
 
@@ -48,9 +70,26 @@ void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb)
     }
 }
 
+/* The bounding box of a predicted path (east e, north n) over samples
+ * k0..k1, grown by r. */
+static bool path_misses(const double *e, const double *n, int k0, int k1, double r,
+                        const double b[4])
+{
+    double e0 = e[k0], e1 = e0, n0 = n[k0], n1 = n0;
+    for (int k = k0 + 1; k <= k1; k++) {
+        e0 = mn(e0, e[k]);
+        e1 = mx(e1, e[k]);
+        n0 = mn(n0, n[k]);
+        n1 = mx(n1, n[k]);
+    }
+    return e0 - r > b[1] || e1 + r < b[0] || n0 - r > b[3] || n1 + r < b[2];
+}
+
 bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4])
 {
     int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
+    if (g->path)
+        return path_misses(g->path, g->path + g->ns, k0, k1, g->reach, b);
     double ta = k0 * dt, tb = k1 * dt;
     double ea = g->east + g->ve * ta, eb = g->east + g->ve * tb;
     double na = g->north + g->vn * ta, nb = g->north + g->vn * tb;
@@ -84,14 +123,16 @@ double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chu
             continue;
         double px = 0, py = 0, pa = 1, pb = 1;
         for (int k = k0; k <= k1; k++) {
-            double tk = k * tr->dt;
-            double dx = g->east + g->ve * tk - tr->east[k];
-            double dy = g->north + g->vn * tk - tr->north[k];
+            double tk = k * tr->dt, ge, gn, gs = g->sc, gc = g->cc;
+            fw_prep_at(g, k, tk, &ge, &gn);
+            if (g->path)
+                gs = g->path[2 * g->ns + k], gc = g->path[3 * g->ns + k];
+            double dx = ge - tr->east[k], dy = gn - tr->north[k];
             double s = tr->sin_psi[k], c = tr->cos_psi[k];
             double x, y, a, b;
             fw_to_body(dx, dy, s, c, &x, &y);
             /* cos and sin of the relative heading, from the angle sums */
-            fw_domain_grown(dom, g->hl, g->hb, g->cc * c + g->sc * s, g->sc * c - g->cc * s, &a, &b);
+            fw_domain_grown(dom, g->hl, g->hb, gc * c + gs * s, gs * c - gc * s, &a, &b);
             if (k > k0) {
                 /* body-frame offsets interpolated linearly over the segment:
                  * the frame turns by r dt (about 1 deg), a sub-metre error */

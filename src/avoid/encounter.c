@@ -84,6 +84,55 @@ static void merge_sort(int *a, int *b, int n, const fw_assessment *as)
         a[k] = b[k];
 }
 
+/* Domain entry against a target with a predictor: its path sampled every
+ * kPathDt seconds, the own ship on its present course and speed; between
+ * samples the body-frame offset and the hull-grown axes are interpolated
+ * linearly (the own frame does not turn on a straight course). */
+static const double kPathDt = 5.0;
+
+static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_state *own,
+                        const fw_target *t, fw_assessment *as)
+{
+    enum { MAX_SAMPLES = 1024 };
+    int ns = (int)ceil(horizon / kPathDt) + 1;
+    if (ns > MAX_SAMPLES)
+        ns = MAX_SAMPLES;
+    double e[MAX_SAMPLES], n[MAX_SAMPLES], c[MAX_SAMPLES];
+    fw_target_path(t, kPathDt, ns, e, n, c);
+    double so = sin(own->psi), co = cos(own->psi), ve, vn;
+    fw_velocity(own->U, own->psi, &ve, &vn);
+    double best = INFINITY, px = 0, py = 0, pa = 1, pb = 1;
+    as->t_enter = INFINITY;
+    for (int k = 0; k < ns; k++) {
+        double tk = k * kPathDt, x, y, a, b, rel = c[k] - own->psi;
+        fw_to_body(e[k] - (own->east + ve * tk), n[k] - (own->north + vn * tk), so, co, &x, &y);
+        fw_domain_axes(dom, t, cos(rel), sin(rel), &a, &b);
+        double l2 = (x / a) * (x / a) + (y / b) * (y / b);
+        if (k == 0 && l2 < 1.0)
+            as->t_enter = 0.0;
+        if (k > 0) {
+            /* the smallest normalised radius on the segment, and where it
+             * first crosses 1 */
+            double ma = 0.5 * (pa + a), mb = 0.5 * (pb + b);
+            double dx = x - px, dy = y - py;
+            double A = (dx / ma) * (dx / ma) + (dy / mb) * (dy / mb);
+            double B = 2.0 * (px * dx / (ma * ma) + py * dy / (mb * mb));
+            double C = (px / ma) * (px / ma) + (py / mb) * (py / mb);
+            double s = A > 0.0 ? fmin(1.0, fmax(0.0, -B / (2.0 * A))) : 0.0;
+            best = fmin(best, C + s * (B + s * A));
+            double disc = B * B - 4.0 * A * (C - 1.0);
+            if (isinf(as->t_enter) && C >= 1.0 && A > 0.0 && disc >= 0.0) {
+                double se = (-B - sqrt(disc)) / (2.0 * A);
+                if (se >= 0.0 && se <= 1.0)
+                    as->t_enter = (k - 1 + se) * kPathDt;
+            }
+        }
+        best = fmin(best, l2);
+        px = x, py = y, pa = a, pb = b;
+    }
+    as->min_lambda = sqrt(fmax(0.0, best));
+}
+
 void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
                const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
                int *order)
@@ -99,6 +148,12 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
         as->rel_bearing = fw_wrap_2pi(as->bearing - own->psi);
         fw_cpa(dx, dy, vx, vy, &as->tcpa, &as->dcpa);
         as->situation = fw_classify(cdef, own, &t[i]);
+        as->rank = 0;
+        if (t[i].pred) {
+            assess_path(dom, horizon, own, &t[i], as);
+            as->enters_domain = isfinite(as->t_enter);
+            continue;
+        }
         /* Domain on the straight course: in the own body frame (fixed while both
          * keep course) the target moves on a line, and lambda^2(t) is a quadratic. */
         double a, b;

@@ -1,8 +1,11 @@
 /* encounter.h - what each target means to the own ship right now.
  *
- * Per target: range, bearings, DCPA/TCPA (constant velocities), the COLREGs
- * situation (rules 13-17) by named thresholds, and whether and when it enters
- * the own domain if both keep course and speed; then a danger ranking.
+ * Per target: range, bearings, DCPA/TCPA (constant velocities: the
+ * instantaneous CPA, as a radar's), the COLREGs situation (rules 13-17) by
+ * named thresholds, and whether and when it enters the own domain with the own
+ * ship keeping course and speed and the target moving as its predictor says
+ * (constant velocity without one: closed form; with one: its path sampled
+ * every 5 s); then a danger ranking.
  * Geometry (domain, CPA, body frame) is geom/geom.h's; the ship record is
  * fw_target (geom/target.h).  Frames: metres east/north, navigational
  * headings, SI.

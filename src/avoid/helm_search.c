@@ -28,6 +28,8 @@ struct fw_helm_ctx {
     int *idx;
     short *jlo, *jhi;
     fw_prep_target *prep;
+    double *paths;         /* the predicted targets' paths (clearance.h) */
+    size_t paths_cap;      /* doubles */
     fw_chunk_boxes *boxes; /* per track slot, made with the track */
 };
 
@@ -100,6 +102,7 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     free(c->jlo);
     free(c->jhi);
     free(c->prep);
+    free(c->paths);
     free(c->boxes);
     free(c);
 }
@@ -197,17 +200,35 @@ static double clearance_idx(fw_helm_ctx *c, const fw_track *tr, int m, bool wind
     return sqrt(best);
 }
 
+/* A path buffer for one predicted target: on the stack when it fits (the
+ * default 600 s horizon at 5 s needs 484 doubles), else on the heap. */
+enum { PATH_STACK = 2048 };
+
+static double *path_buffer(const fw_track_def *tdef, double *stack)
+{
+    size_t len = (size_t)fw_prep_path_len(tdef);
+    return len <= PATH_STACK ? stack : malloc(sizeof(double) * len);
+}
+
 double fw_track_clearance(const fw_helm_def *def, const fw_track *tr, const fw_target *t, int n,
                           double stop_below, int *limiting)
 {
     fw_chunk_boxes cb;
     fw_track_boxes(tr, &cb);
-    double best = INFINITY, stop2 = stop_below * stop_below;
+    double best = INFINITY, stop2 = stop_below * stop_below, stack[PATH_STACK];
     int lim = -1;
     for (int i = 0; i < n; i++) {
         fw_prep_target g;
-        fw_prep_targets(&def->domain, &t[i], 1, &g);
+        double *path = t[i].pred ? path_buffer(&def->track, stack) : NULL;
+        if (t[i].pred && !path) {
+            /* no memory for its path: counted as inside, the safe verdict */
+            best = 0.0, lim = i;
+            break;
+        }
+        fw_prep_targets(&def->domain, &def->track, &t[i], 1, &g, path);
         double m2 = fw_target_min2(&def->domain, tr, &cb, &g, 0, INT_MAX / FW_CHUNK, stop2);
+        if (path != stack)
+            free(path);
         if (m2 < best) {
             best = m2;
             lim = i;
@@ -220,14 +241,19 @@ double fw_track_clearance(const fw_helm_def *def, const fw_track *tr, const fw_t
     return sqrt(best);
 }
 
-double fw_track_min_distance(const fw_track *tr, const fw_target *g, double *t_min)
+double fw_track_min_distance(const fw_track *tr, const fw_target *t, double *t_min)
 {
-    double ve, vn;
-    fw_velocity(g->speed, g->course, &ve, &vn);
+    /* the target prepared over the track's own samples */
+    fw_track_def tdef = {.dt = tr->dt, .horizon = (tr->n - 1) * tr->dt};
+    fw_domain_def dom = fw_default_domain_def();
+    double stack[PATH_STACK], *path = t->pred ? path_buffer(&tdef, stack) : NULL;
+    fw_prep_target g;
+    fw_prep_targets(&dom, &tdef, t, 1, &g, path);
     double best = INFINITY, tb = 0.0, px = 0.0, py = 0.0;
     for (int k = 0; k < tr->n; k++) {
-        double tk = k * tr->dt;
-        double dx = g->east + ve * tk - tr->east[k], dy = g->north + vn * tk - tr->north[k];
+        double tk = k * tr->dt, ge, gn;
+        fw_prep_at(&g, k, tk, &ge, &gn);
+        double dx = ge - tr->east[k], dy = gn - tr->north[k];
         if (k > 0) {
             double ex = dx - px, ey = dy - py, q = ex * ex + ey * ey;
             double s = q > 0.0 ? -(px * ex + py * ey) / q : 0.0;
@@ -242,6 +268,8 @@ double fw_track_min_distance(const fw_track *tr, const fw_target *g, double *t_m
         }
         px = dx, py = dy;
     }
+    if (path != stack)
+        free(path);
     if (t_min)
         *t_min = tb;
     return best;
@@ -345,7 +373,15 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
     res->helm = 0.0;
     /* keep course, target by target: the threats (inside the domain on the
      * keep track) are checked first on the candidates, the likeliest to fail */
-    fw_prep_targets(&c->def.domain, t, n, c->prep);
+    size_t npred = 0, len = (size_t)fw_prep_path_len(&c->def.track);
+    for (int i = 0; i < n; i++)
+        npred += t[i].pred != NULL;
+    if (npred * len > c->paths_cap) {
+        if (!fw_resize((void **)&c->paths, sizeof *c->paths, npred * len))
+            return fw_fail(err, FW_ERUN, "out of memory for %zu predicted paths", npred);
+        c->paths_cap = npred * len;
+    }
+    fw_prep_targets(&c->def.domain, &c->def.track, t, n, c->prep, c->paths);
     const fw_chunk_boxes *kb = &c->boxes[2 * c->nh];
     double kbest = INFINITY;
     int nthreat = 0;
@@ -433,6 +469,51 @@ fw_status fw_helm_clears_after(fw_helm_ctx *c, const fw_target *t, int n, double
     return FW_OK;
 }
 
+/* Where target t is at the last sample k of a track and how it moves on from
+ * there: its predictor's path (velocity from the last two samples) or
+ * constant velocity. */
+static void target_at_end(const fw_helm_ctx *c, const fw_target *t, int k, double *e, double *n,
+                          double *ve, double *vn)
+{
+    double T = k * c->def.track.dt;
+    fw_velocity(t->speed, t->course, ve, vn);
+    *e = t->east + *ve * T;
+    *n = t->north + *vn * T;
+    double stack[PATH_STACK], *path = t->pred && k > 0 ? path_buffer(&c->def.track, stack) : NULL;
+    if (!path)
+        return;
+    int ns = fw_prep_path_len(&c->def.track) / 4;
+    fw_target_path(t, c->def.track.dt, ns, path, path + ns, path + 2 * ns);
+    *e = path[k];
+    *n = path[ns + k];
+    *ve = (path[k] - path[k - 1]) / c->def.track.dt;
+    *vn = (path[ns + k] - path[ns + k - 1]) / c->def.track.dt;
+    if (path != stack)
+        free(path);
+}
+
+/* The closest approach of every target after the track's end, the own ship
+ * going on at its straight-course speed on the last heading. */
+static double beyond_horizon(const fw_helm_ctx *c, const fw_track *tr, const fw_target *t, int n)
+{
+    int k = tr->n - 1;
+    double U = c->own.U0 > 0.0 ? c->own.U0 : c->own.U, cl = INFINITY;
+    double oe = U * tr->sin_psi[k], on = U * tr->cos_psi[k];
+    for (int i = 0; i < n; i++) {
+        double te, tn, ve, vn;
+        target_at_end(c, &t[i], k, &te, &tn, &ve, &vn);
+        double rx = te - tr->east[k], ry = tn - tr->north[k];
+        double wx = ve - oe, wy = vn - on, w2 = wx * wx + wy * wy;
+        double tc = w2 > 1e-9 ? -(rx * wx + ry * wy) / w2 : 0.0;
+        if (tc <= 0.0)
+            continue; /* opening from there on */
+        fw_target at = t[i];
+        at.east = rx + wx * tc, at.north = ry + wy * tc;
+        cl = fmin(cl, fw_domain_lambda(&c->def.domain, 0.0, 0.0, tr->psi[k], &at));
+    }
+    return cl;
+}
+
 fw_status fw_helm_steer_clearance(fw_helm_ctx *c, const fw_target *t, int n,
                                   const fw_steer_def *ap, bool beyond, double *clearance,
                                   fw_error *err)
@@ -443,23 +524,8 @@ fw_status fw_helm_steer_clearance(fw_helm_ctx *c, const fw_target *t, int n,
         return st;
     c->computed++;
     double cl = fw_track_clearance(&c->def, tr, t, n, 0.0, NULL);
-    if (beyond && tr->n > 0) {
-        int k = tr->n - 1;
-        double T = k * tr->dt, U = c->own.U0 > 0.0 ? c->own.U0 : c->own.U;
-        double oe = U * tr->sin_psi[k], on = U * tr->cos_psi[k];
-        for (int i = 0; i < n; i++) {
-            double ve, vn;
-            fw_velocity(t[i].speed, t[i].course, &ve, &vn);
-            double rx = t[i].east + ve * T - tr->east[k], ry = t[i].north + vn * T - tr->north[k];
-            double wx = ve - oe, wy = vn - on, w2 = wx * wx + wy * wy;
-            double tc = w2 > 1e-9 ? -(rx * wx + ry * wy) / w2 : 0.0;
-            if (tc <= 0.0)
-                continue; /* opening from there on */
-            fw_target at = t[i];
-            at.east = rx + wx * tc, at.north = ry + wy * tc;
-            cl = fmin(cl, fw_domain_lambda(&c->def.domain, 0.0, 0.0, tr->psi[k], &at));
-        }
-    }
+    if (beyond && tr->n > 0)
+        cl = fmin(cl, beyond_horizon(c, tr, t, n));
     *clearance = cl;
     return FW_OK;
 }
