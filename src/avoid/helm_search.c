@@ -503,8 +503,8 @@ static double beyond_horizon(const fw_helm_ctx *c, const fw_track *tr, const fw_
         double te, tn, ve, vn;
         target_at_end(c, &t[i], k, &te, &tn, &ve, &vn);
         double rx = te - tr->east[k], ry = tn - tr->north[k];
-        double wx = ve - oe, wy = vn - on, w2 = wx * wx + wy * wy;
-        double tc = w2 > 1e-9 ? -(rx * wx + ry * wy) / w2 : 0.0;
+        double wx = ve - oe, wy = vn - on, tc, dc;
+        fw_cpa(rx, ry, wx, wy, &tc, &dc);
         if (tc <= 0.0)
             continue; /* opening from there on */
         fw_target at = t[i];

@@ -1,3 +1,4 @@
+#include "core/files.h"
 #include "dynamics/calibrate.h"
 
 #include <math.h>
@@ -69,9 +70,11 @@ static fw_status load_turn(const yt_doc *doc, const yt_node *m, const char *path
 fw_status fw_trial_load(const char *path, fw_trial *trial, fw_error *err)
 {
     memset(trial, 0, sizeof *trial);
-    snprintf(trial->file, sizeof trial->file, "%s", path);
+    fw_status st = fw_path(trial->file, sizeof trial->file, err, "%s", path);
+    if (st)
+        return st;
     yt_doc *doc;
-    fw_status st = yt_load_file(path, &doc, err);
+    st = yt_load_file(path, &doc, err);
     if (st)
         return st;
     const yt_node *root = doc->root, *turns, *tune;

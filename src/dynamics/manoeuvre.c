@@ -1,3 +1,4 @@
+#include "core/files.h"
 #include "dynamics/manoeuvre.h"
 
 #include <errno.h>
@@ -40,7 +41,9 @@ fw_status fw_history_write_csv(const fw_history *h, const char *path, fw_error *
     /* Written to a temporary name and renamed, so a failure never leaves a
      * truncated file where a complete one is expected. */
     char tmp[1024];
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    fw_status st = fw_path(tmp, sizeof tmp, err, "%s.tmp", path);
+    if (st)
+        return st;
     FILE *f = fopen(tmp, "w");
     if (!f)
         return fw_fail(err, FW_EINPUT, "%s: cannot write: %s", path, strerror(errno));

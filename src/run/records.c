@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/files.h"
 #include "avoid/helm_search.h"
 #include "core/idmap.h"
 #include "core/mem.h"
@@ -27,7 +28,8 @@ struct fw_records {
 static FILE *open_in(const char *dir, const char *name, fw_error *err)
 {
     char path[1200];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (fw_path(path, sizeof path, err, "%s/%s", dir, name))
+        return NULL;
     FILE *f = fopen(path, "w");
     if (!f)
         fw_fail(err, FW_ERUN, "cannot write %s", path);
@@ -40,8 +42,10 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
     if (!r)
         return fw_fail(err, FW_ERUN, "out of memory");
     r->s = s;
-    snprintf(r->dir, sizeof r->dir, "%s", dir);
     *out = r;
+    fw_status st = fw_path(r->dir, sizeof r->dir, err, "%s", dir);
+    if (st)
+        return st;
     if (!(r->own = open_in(dir, "own.csv", err)) || !(r->log = open_in(dir, "run.log", err)) ||
         (s->targets_csv && !(r->tgt = open_in(dir, "targets.csv", err))))
         return FW_ERUN;

@@ -1,3 +1,4 @@
+#include "core/files.h"
 #include "traffic/demand.h"
 
 #include <ctype.h>
@@ -63,9 +64,11 @@ static fw_status load_stream(const yt_doc *doc, const yt_node *m, const char *pa
 fw_status fw_demand_load(const char *path, fw_demand *out, fw_error *err)
 {
     memset(out, 0, sizeof *out);
-    snprintf(out->file, sizeof out->file, "%s", path);
+    fw_status st = fw_path(out->file, sizeof out->file, err, "%s", path);
+    if (st)
+        return st;
     yt_doc *doc = NULL;
-    fw_status st = yt_load_file(path, &doc, err);
+    st = yt_load_file(path, &doc, err);
     if (st)
         return st;
     static const char *const keys[] = {"streams", NULL};

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/files.h"
 #include "core/spawn.h"
 #include "traffic/netbuild.h"
 
@@ -78,6 +79,8 @@ fw_status fw_netconvert(const char *dir, const char *nodes, const char *edges, c
     if (status != 0)
         return fw_fail(err, FW_ERUN, "netconvert failed building %s (messages in %s)", out, sink);
     char path[2048];
-    snprintf(path, sizeof path, "%s%s%s", out[0] == '/' ? "" : dir, out[0] == '/' ? "" : "/", out);
+    if ((st = fw_path(path, sizeof path, err, "%s%s%s", out[0] == '/' ? "" : dir,
+                      out[0] == '/' ? "" : "/", out)))
+        return st;
     return strip_date(path, err);
 }

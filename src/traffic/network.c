@@ -4,6 +4,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/files.h"
 #include "ship/ship.h"
 #include "traffic/demand.h"
 
@@ -16,9 +17,13 @@ fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err
     if (!ok)
         return fw_fail(err, FW_EINPUT, "network '%s': not a network name (%s)", name, known);
     const char *root = fw_data_root();
-    snprintf(out->net, sizeof out->net, "%s/%s/%s.net.xml", FAIRWAY_NET_DIR, name, name);
-    snprintf(out->demand, sizeof out->demand, "%s/networks/%s/demand.yaml", root, name);
-    snprintf(out->types, sizeof out->types, "%s/networks/ships.add.xml", root);
+    fw_status st;
+    if ((st = fw_path(out->net, sizeof out->net, err, "%s/%s/%s.net.xml", FAIRWAY_NET_DIR, name,
+                      name)) ||
+        (st = fw_path(out->demand, sizeof out->demand, err, "%s/networks/%s/demand.yaml", root,
+                      name)) ||
+        (st = fw_path(out->types, sizeof out->types, err, "%s/networks/ships.add.xml", root)))
+        return st;
     if (access(out->demand, R_OK) != 0)
         return fw_fail(err, FW_EINPUT, "unknown network '%s' (%s): no %s", name, known,
                        out->demand);

@@ -175,7 +175,8 @@ static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *e
         if (st)
             return st;
         f->has_types = true;
-        snprintf(f->types, sizeof f->types, "%s", nf.types);
+        if ((st = fw_path(f->types, sizeof f->types, err, "%s", nf.types)))
+            return st;
     }
     if (!tracks)
         return fw_path(f->net, sizeof f->net, err, "%s", nf.net);

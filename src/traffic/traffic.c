@@ -1,6 +1,7 @@
 /* traffic.c - the C side of the SUMO coupling: mode strings, the one frame
  * conversion, SUMO's command line, and the step-loop calls dispatched to the
  * libsumo or libtraci table of traffic_sumo.cpp. */
+#include "core/files.h"
 #include "traffic/traffic.h"
 
 #include <math.h>
@@ -282,7 +283,10 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
     snprintf(t->own_id, sizeof t->own_id, "%s", def->own_id);
     t->def.own_id = t->own_id;
     if (def->log_file) {
-        snprintf(t->log_file, sizeof t->log_file, "%s", def->log_file);
+        if ((st = fw_path(t->log_file, sizeof t->log_file, err, "%s", def->log_file))) {
+            fw_traffic_close(t);
+            return st;
+        }
         t->def.log_file = t->log_file;
     }
     /* only the start uses the file names; they are not kept */
