@@ -260,10 +260,7 @@ static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
                trial_path);
     for (int i = 0; i < trial.nturns; i++) {
         const fw_trial_turn *t = &trial.turns[i];
-        fw_turning_def d = fw_default_turning_def();
-        d.speed = t->speed;
-        d.rudder = t->rudder;
-        d.max_turn = fw_deg_to_rad(540.0);
+        fw_turning_def d = fw_trial_turning_def(t);
         fw_turning_result r;
         fw_history h = {0};
         fw_status st = fw_turning_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);

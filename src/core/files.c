@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/files.h"
 
@@ -54,5 +55,18 @@ fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
     if (n < 0 || (size_t)n >= size)
         return fw_fail(err, FW_ERUN, "path too long (over %zu characters): %.60s...", size - 1,
                        buf);
+    return FW_OK;
+}
+
+fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err)
+{
+    int bad = fflush(f) != 0 || ferror(f);
+    bad |= fsync(fileno(f)) != 0;
+    bad |= fclose(f) != 0;
+    if (bad || rename(tmp, path) != 0) {
+        int e = errno;
+        remove(tmp);
+        return fw_fail(err, FW_ERUN, "%s: write failed: %s", path, strerror(e));
+    }
     return FW_OK;
 }

@@ -3,6 +3,7 @@
 #define FW_FILES_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "core/error.h"
 
@@ -13,6 +14,12 @@ void fw_remove_tree(const char *path);
 /* Creates dir and its missing parents; an existing directory is fine.
  * what names the option or field in the error ("--out"). */
 fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err);
+
+/* Finishes a file written under a temporary name: flushes, syncs and closes
+ * f, then renames tmp to path, so a reader never finds a partial file where a
+ * complete one is expected.  On any failure tmp is removed and path left as
+ * it was. */
+fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err);
 
 /* Formats a path into buf (size bytes); FW_ERUN naming the start of the path
  * if it does not fit: a path is never silently cut. */

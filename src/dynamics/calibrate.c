@@ -70,11 +70,12 @@ static fw_status load_turn(const yt_doc *doc, const yt_node *m, const char *path
 fw_status fw_trial_load(const char *path, fw_trial *trial, fw_error *err)
 {
     memset(trial, 0, sizeof *trial);
-    fw_status st = fw_path(trial->file, sizeof trial->file, err, "%s", path);
-    if (st)
-        return st;
+    if (strlen(path) >= sizeof trial->file)
+        return fw_fail(err, FW_EINPUT, "trial file name too long (over %zu characters): %.60s...",
+                       sizeof trial->file - 1, path);
+    memcpy(trial->file, path, strlen(path) + 1);
     yt_doc *doc;
-    st = yt_load_file(path, &doc, err);
+    fw_status st = yt_load_file(path, &doc, err);
     if (st)
         return st;
     const yt_node *root = doc->root, *turns, *tune;
@@ -148,6 +149,15 @@ static void apply(fit_ctx *c, const double *p)
         *c->field[j] = c->base[j] * exp(p[j]);
 }
 
+fw_turning_def fw_trial_turning_def(const fw_trial_turn *t)
+{
+    fw_turning_def d = fw_default_turning_def();
+    d.speed = t->speed;
+    d.rudder = t->rudder;
+    d.max_turn = fw_deg_to_rad(540.0);
+    return d;
+}
+
 static fw_status residuals(const double *p, double *r, void *user, fw_error *err)
 {
     fit_ctx *c = user;
@@ -155,10 +165,7 @@ static fw_status residuals(const double *p, double *r, void *user, fw_error *err
     int k = 0;
     for (int i = 0; i < c->trial->nturns; i++) {
         const fw_trial_turn *t = &c->trial->turns[i];
-        fw_turning_def d = fw_default_turning_def();
-        d.speed = t->speed;
-        d.rudder = t->rudder;
-        d.max_turn = fw_deg_to_rad(540.0);
+        fw_turning_def d = fw_trial_turning_def(t);
         fw_turning_result res;
         fw_error run_err = {0};
         if (fw_turning_run(c->ship, &d, &res, NULL, &run_err)) {

@@ -24,6 +24,10 @@ typedef struct fw_trial_turn {
     double sim_advance, sim_transfer, sim_tactical_diameter, sim_steady_rate;
 } fw_trial_turn;
 
+/* The turning test that reproduces a trial row: its speed and rudder, on to
+ * 540 deg of heading change (the tactical diameter needs 180). */
+fw_turning_def fw_trial_turning_def(const fw_trial_turn *t);
+
 typedef struct fw_trial {
     char file[512];
     char ship[64];

@@ -55,13 +55,7 @@ fw_status fw_history_write_csv(const fw_history *h, const char *path, fw_error *
                 fw_rad_to_deg(s->psi), s->u, s->vm, fw_rad_to_deg(s->r),
                 fw_rad_to_deg(s->delta), fw_rad_to_deg(s->helm), s->n);
     }
-    int bad = ferror(f);
-    bad |= fclose(f);
-    if (bad || rename(tmp, path)) {
-        remove(tmp);
-        return fw_fail(err, FW_ERUN, "%s: write failed", path);
-    }
-    return FW_OK;
+    return fw_file_commit(f, tmp, path, err);
 }
 
 fw_turning_def fw_default_turning_def(void)

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/lsq.h"
 #include "dynamics/stepper.h"
 
 fw_status fw_ident_turning(const fw_ship *ship, double U, double helm, double dt, int n,
@@ -131,36 +132,6 @@ void fw_ident_response(const fw_nomoto_indices *ix, double helm, double rate, do
     }
 }
 
-/* Solves the m x m system A x = b (A symmetric positive definite) by Cholesky; false if singular. */
-static bool chol_solve(double *A, double *b, int m)
-{
-    for (int j = 0; j < m; j++) {
-        double d = A[j * m + j];
-        for (int k = 0; k < j; k++)
-            d -= A[j * m + k] * A[j * m + k];
-        if (!(d > 0.0))
-            return false;
-        A[j * m + j] = sqrt(d);
-        for (int i = j + 1; i < m; i++) {
-            double v = A[i * m + j];
-            for (int k = 0; k < j; k++)
-                v -= A[i * m + k] * A[j * m + k];
-            A[i * m + j] = v / A[j * m + j];
-        }
-    }
-    for (int i = 0; i < m; i++) {
-        for (int k = 0; k < i; k++)
-            b[i] -= A[i * m + k] * b[k];
-        b[i] /= A[i * m + i];
-    }
-    for (int i = m - 1; i >= 0; i--) {
-        for (int k = i + 1; k < m; k++)
-            b[i] -= A[k * m + i] * b[k];
-        b[i] /= A[i * m + i];
-    }
-    return true;
-}
-
 static fw_nomoto_indices from_params(const double p[4])
 {
     /* T1 and T2 as logarithms keep them positive; K, T3 free */
@@ -230,7 +201,7 @@ fw_status fw_ident_fit_from(const double *r, int n, double dt, double helm, doub
             memcpy(step, g, sizeof step);
             for (int a = 0; a < 4; a++)
                 M[a * 4 + a] += lambda * (A[a * 4 + a] > 0 ? A[a * 4 + a] : 1e-30);
-            if (chol_solve(M, step, 4)) {
+            if (fw_spd_solve(4, M, step)) {
                 double q[4] = {p[0] + step[0], p[1] + step[1], p[2] + step[2], p[3] + step[3]};
                 double fq = sse(q, r, n, dt, helm, rate, trial);
                 if (fq < f) {
@@ -291,7 +262,7 @@ fw_status fw_ident_regress(fw_nomoto_index *ix, const double *U_kn, const double
                 A[j * q + k] += x[j] * x[k];
         }
     }
-    if (!chol_solve(A, b, q))
+    if (!fw_spd_solve(q, A, b))
         return fw_fail(err, FW_ERUN, "regression is singular: the grid does not determine "
                                      "the %d terms (add speeds or rudder angles)", q);
     for (int j = 0; j < q; j++)

@@ -40,21 +40,12 @@ static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *e
         return st;
     if (mkdir(dir, 0777) != 0)
         return fw_fail(err, FW_ERUN, "cannot create %s", dir);
-    fw_sumo_source_def sd = fw_default_sumo_source_def();
-    sd.mode = def->mode;
-    sd.dir = dir;
-    sd.network = s->network;
-    sd.density = s->density;
-    sd.fill = s->fill;
-    sd.seed = s->seed;
-    sd.duration = s->duration;
-    sd.step = s->step;
-    sd.targets = s->targets;
-    sd.n_targets = s->n_targets;
-    sd.own = own_start(s);
-    sd.own_leg = s->leg;
-    sd.radius = s->radius;
-    sd.area_radius = s->survey ? s->survey_radius : 0.0;
+    fw_sumo_source_def sd = {.mode = def->mode, .dir = dir, .network = s->network,
+                             .density = s->density, .fill = s->fill, .seed = s->seed,
+                             .duration = s->duration, .step = s->step, .targets = s->targets,
+                             .n_targets = s->n_targets, .own = own_start(s), .own_leg = s->leg,
+                             .radius = s->radius,
+                             .area_radius = s->survey ? s->survey_radius : 0.0};
     return fw_sumo_source_create(&sd, src, err);
 }
 

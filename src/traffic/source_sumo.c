@@ -34,18 +34,10 @@ typedef struct sumo_source {
 
 fw_sumo_source_def fw_default_sumo_source_def(void)
 {
-    fw_sumo_source_def d;
-    memset(&d, 0, sizeof d);
-    d.mode.kind = FW_TRAFFIC_EMBEDDED;
-    d.density = 1.0;
-    d.seed = 1;
-    d.duration = 3600.0;
-    d.step = 1.0;
-    snprintf(d.own.id, sizeof d.own.id, "fw_own");
-    d.own.length = 100.0;
-    d.own.breadth = 16.0;
-    d.radius = 6.0 * 1852.0;
-    return d;
+    return (fw_sumo_source_def){.mode = {.kind = FW_TRAFFIC_EMBEDDED}, .density = 1.0, .seed = 1,
+                                .duration = 3600.0, .step = 1.0,
+                                .own = {.id = "fw_own", .length = 100.0, .breadth = 16.0},
+                                .radius = 6.0 * 1852.0};
 }
 
 static void node(FILE *f, const char *id, double e, double n)
