@@ -237,6 +237,12 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
                 s->n_traffic_own);
     else
         fprintf(f, "%s  \"survey\": null,\n", ind);
+    const fw_monitor_counts *m = &s->monitors;
+    fprintf(f, "%s  \"monitors\": {\"sideways\": %d, \"teleport\": %d, \"overlap\": %d, "
+               "\"appear\": %d, \"vanish\": %d, \"start_close\": %d, \"stopped\": %d, "
+               "\"max_lateral_mps\": %.2f},\n",
+            ind, m->sideways, m->teleport, m->overlap, m->appear, m->vanish, m->start_close,
+            m->stopped, m->max_lateral);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {
         const fw_encounter *x = &e[i];

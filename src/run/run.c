@@ -106,6 +106,7 @@ typedef struct run_state {
     fw_vessel *own;
     fw_records *rec;
     fw_survey *sv;           /* NULL: no survey */
+    fw_monitor *mon;         /* the traffic monitors */
     fw_policy_mode mode_prev;
     double helm_prev, e_prev, n_prev;
 } run_state;
@@ -200,6 +201,8 @@ static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *er
     const fw_assessment *as;
     int n;
     fw_vessel_view(R->own, &tg, &as, &n);
+    if ((st = fw_monitor_step(R->mon, t, fw_vessel_record(R->own), tg, n, err)))
+        return st;
     bool row = k % lround(s->record_every / s->step) == 0;
     if (row)
         fw_records_own(R->rec, t, x, d->helm, fw_vessel_propeller(R->own),
@@ -277,6 +280,13 @@ static fw_status finish(run_state *R, const fw_run_def *def, fw_run_summary *sum
                         fw_encounter **enc, int *n_enc, fw_status st, fw_error *err)
 {
     fw_error ferr = {0}, rerr = {0};
+    sum->monitors = *fw_monitor_counts_of(R->mon);
+    const fw_monitor_counts *mc = &sum->monitors;
+    fprintf(fw_records_log(R->rec),
+            "monitors: %d sideways, %d teleports, %d overlaps, %d appearing and %d vanishing "
+            "within 2 nm, %d there at the start, %d stopped; largest sideways speed %.2f m/s\n",
+            mc->sideways, mc->teleport, mc->overlap, mc->appear, mc->vanish, mc->start_close,
+            mc->stopped, mc->max_lateral);
     /* the survey first: summary.json carries its totals */
     fw_status fst = R->sv ? survey_finish(R, def, sum, &ferr) : FW_OK;
     fw_status rst = fw_records_finish(R->rec, sum, &rerr);
@@ -321,7 +331,9 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     init_summary(def, sum, enc, n_enc);
     run_state R = {.s = s};
     fw_status st;
+    fw_monitor_def md = fw_default_monitor_def();
     if ((st = fw_records_open(&R.rec, s, def->dir, err)) ||
+        (st = fw_monitor_create(&md, fw_records_log(R.rec), &R.mon, err)) ||
         (s->survey && (st = fw_survey_create(&s->survey_def, &R.sv, err))) ||
         (st = make_world(def, &R.w, &R.own, err)))
         goto out;
@@ -336,6 +348,7 @@ out:
     sum->sumo_s = fw_sumo_source_step_wall(R.w ? fw_world_source(R.w) : NULL);
     fw_world_destroy(R.w);
     fw_survey_destroy(R.sv);
+    fw_monitor_destroy(R.mon);
     sum->wall_s = fw_clock_s() - wall0;
     fw_records_close(R.rec);
     return st;

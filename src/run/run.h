@@ -15,8 +15,8 @@
  *   targets.csv     t, id, east, north, heading, speed, range, bearing (outputs.targets_csv)
  *   encounters.csv  one row per target met
  *   traffic_encounters.csv  one row per pair episode of the survey (only with one)
- *   summary.json    the run's measures and the encounter rows
- *   run.log         decisions and mode changes
+ *   summary.json    the run's measures, the traffic monitors and the encounter rows
+ *   run.log         decisions and mode changes, every traffic monitor event
  *   sumo/           the generated network, routes and SUMO's messages (SUMO runs)
  */
 #ifndef FW_RUN_H
@@ -29,6 +29,7 @@
 #include "core/error.h"
 #include "dynamics/mmg.h"
 #include "scenario/scenario.h"
+#include "survey/monitor.h"
 #include "survey/survey.h"
 #include "traffic/source.h"
 #include "traffic/traffic.h"
@@ -96,6 +97,9 @@ typedef struct fw_run_summary {
     int n_traffic;                  /* traffic encounters (pair episodes) */
     int traffic_by_type[FW_SURVEY_NTYPES]; /* indexed by fw_survey_type */
     int n_traffic_own;              /* of which with the own ship */
+    /* What no ship can do, among the ships the own ship saw (survey/monitor.h):
+     * zero for traffic that behaves like ships. */
+    fw_monitor_counts monitors;
 } fw_run_summary;
 
 /* Where the targets come from: SUMO (any scenario), or the kinematic source

@@ -11,6 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/idmap.h"
 #include "core/mem.h"
 #include "core/spawn.h"
 #include "core/units.h"
@@ -34,6 +35,14 @@ struct fw_traffic {
     int ships_cap;
     fw_target *area;
     int area_cap;
+    fw_target *conv;       /* the context results converted (and motion followed) */
+    int conv_cap;
+    /* the hull centre of every ship at its last context step, by id: the
+     * direction of motion of a ship changing lanes */
+    fw_idmap ids;
+    double *last_e, *last_n;
+    long *last_step;
+    int last_cap;
 };
 
 /* m, half the length of the longest ship there is (a 400 m ULCV, with room):
@@ -56,6 +65,7 @@ fw_traffic_def fw_default_traffic_def(void)
     d.own_length = 100.0;
     d.own_width = 16.0;
     d.radius = fw_nm_to_m(6.0);
+    d.lane_change_s = 900.0;
     return d;
 }
 
@@ -148,6 +158,11 @@ fw_status fw_traffic_sumo_args(const fw_traffic_def *def, const char *program, i
     ARG("-1");
     ARG("--collision.action");
     ARG("warn");
+    /* lane changes as ship manoeuvres, not jumps (traffic.h) */
+    if (def->lane_change_s > 0.0) {
+        ARG("--lanechange.duration");
+        NUM("%.17g", def->lane_change_s);
+    }
     ARG("--no-step-log");
     ARG("true");
     ARG("--duration-log.disable");
@@ -329,6 +344,11 @@ void fw_traffic_close(fw_traffic *t)
     free(t->ctx.v);
     free(t->ships);
     free(t->area);
+    fw_idmap_free(&t->ids);
+    free(t->conv);
+    free(t->last_e);
+    free(t->last_n);
+    free(t->last_step);
     free(t);
 }
 
@@ -415,11 +435,57 @@ static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_erro
 }
 
 /* The context results of the last step, asked of SUMO once per step. */
+/* SUMO's angle is its lane's: a ship changing lanes moves across it (at up
+ * to the lane width over lane_change_s) with its angle unchanged.  Such a
+ * ship gets the direction and speed of its hull centre's motion since the
+ * last step instead, so its heading follows its lateral motion and a
+ * constant-velocity prediction points where it goes.  Its hull centre stays
+ * where SUMO's own geometry puts it (behind the bumper along the lane): a
+ * hull turned about its bow would jump sideways.  Ships on their lane's line
+ * move along it exactly and keep SUMO's values (kMinLateral: far below any
+ * lane change, far above rounding). */
+static const double kMinLateral = 0.05; /* m/s */
+
+static fw_status follow_motion(fw_traffic *t, int k, fw_error *err)
+{
+    fw_target *c = &t->conv[k];
+    int i;
+    if (fw_idmap_intern(&t->ids, c->id, &i))
+        return fw_fail(err, FW_ERUN, "out of memory for ship ids");
+    if (i >= t->last_cap) {
+        int cap = fw_grown_cap(t->last_cap, i + 1);
+        if (!fw_resize((void **)&t->last_e, sizeof *t->last_e, (size_t)cap) ||
+            !fw_resize((void **)&t->last_n, sizeof *t->last_n, (size_t)cap) ||
+            !fw_resize((void **)&t->last_step, sizeof *t->last_step, (size_t)cap))
+            return fw_fail(err, FW_ERUN, "out of memory for ship ids");
+        for (int j = t->last_cap; j < cap; j++)
+            t->last_step[j] = -2;
+        t->last_cap = cap;
+    }
+    if (t->last_step[i] == t->steps - 1 && !c->own) {
+        double dx = c->east - t->last_e[i], dy = c->north - t->last_n[i];
+        double lat = fabs(dx * cos(c->course) - dy * sin(c->course)) / t->def.step;
+        if (lat > kMinLateral) {
+            c->course = fw_wrap_2pi(atan2(dx, dy));
+            c->speed = hypot(dx, dy) / t->def.step;
+        }
+    }
+    t->last_e[i] = c->east, t->last_n[i] = c->north, t->last_step[i] = t->steps;
+    return FW_OK;
+}
+
 static fw_status context(fw_traffic *t, fw_error *err)
 {
     if (t->ctx_step == t->steps)
         return FW_OK;
     fw_status st = t->be->context(&t->ctx, err);
+    if (!st)
+        st = room(&t->conv, &t->conv_cap, t->ctx.n, err);
+    /* converted once per step, for both queries */
+    for (int k = 0; !st && k < t->ctx.n; k++) {
+        convert_one(&t->ctx.v[k], t->own_id, &t->conv[k]);
+        st = follow_motion(t, k, err);
+    }
     if (!st)
         t->ctx_step = t->steps;
     return st;
@@ -443,7 +509,7 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n, fw_e
         const fw_sumo_raw *r = &t->ctx.v[i];
         if (filter && hypot(r->x - t->own_x, r->y - t->own_y) > t->def.radius)
             continue;
-        convert_one(r, t->own_id, &t->ships[m++]);
+        t->ships[m++] = t->conv[i];
     }
     *ships = t->ships;
     *n = m;
@@ -472,7 +538,7 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
     int m = 0;
     for (int i = 0; i < t->ctx.n; i++) {
         fw_target *s = &t->area[m];
-        convert_one(&t->ctx.v[i], t->own_id, s);
+        *s = t->conv[i];
         if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= t->def.area_radius)
             m++;
     }

@@ -14,6 +14,11 @@
  * centre; fairway by the hull centre (midship, Loa/2 abaft the bow):
  * fw_traffic_to_sumo / fw_traffic_from_sumo are the one conversion.
  *
+ * Lane changes take lane_change_s (below).  SUMO keeps the angle of a ship
+ * changing lanes at its lane's; the traffic layer gives such a ship the
+ * direction and speed of its motion instead, so what fairway sees moves like
+ * a ship altering course a few degrees to change lanes.
+ *
  * The own ship is kept off SUMO's lanes, so SUMO's ships never react to it:
  * they keep their lanes and speeds, and all avoidance is the own ship's.
  *
@@ -52,6 +57,11 @@ typedef struct fw_traffic_def {
     const char *add_file;    /* NULL: none; normally networks/ships.add.xml */
     const char *log_file;    /* SUMO's messages; NULL: discarded */
     double step;             /* s, SUMO step length = controller step */
+    /* s, how long a lane change takes (SUMO's --lanechange.duration): by
+     * default SUMO moves a ship into the next lane in one step, 900 m sideways
+     * across the strait's lanes.  900 s: 1 m/s across those 900 m lanes,
+     * 0.28 m/s across the 250 m fairway lanes; 0 = SUMO's instant change. */
+    double lane_change_s;
     unsigned long seed;
     const char *sumo_gui;    /* program for gui mode */
     double connect_timeout;  /* s, libtraci connection attempts (about 1 per s) */
@@ -65,7 +75,8 @@ typedef struct fw_traffic_def {
     double area_radius;      /* m, fw_traffic_area: hull centre to hull centre; 0 = no area */
 } fw_traffic_def;
 
-/* embedded, step 1 s, seed 1, radius 6 nm, no area, own ship "own" 100 x 16 m. */
+/* embedded, step 1 s, seed 1, lane changes 900 s, radius 6 nm, no area, own ship
+ * "own" 100 x 16 m. */
 fw_traffic_def fw_default_traffic_def(void);
 
 /* Hull centre and heading <-> SUMO front bumper and angle (degrees). */
