@@ -322,6 +322,8 @@ static void test_bad_files(void)
                  "length_m: 200}\n",
              "bad.yaml:11: traffic.targets[0].breadth_m");
     bad_case(13, "  duration_s: [1]\n", "bad.yaml:13: run.duration_s");
+    bad_case(9, "traffic:\n  behaviour: polite\n",
+             "bad.yaml:10: traffic.behaviour: 'polite': expected colregs or blind");
 }
 
 int main(void)

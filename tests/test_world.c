@@ -166,6 +166,106 @@ static void test_two_vessels_head_on(void)
     fw_world_destroy(w);
 }
 
+/* A world of one own ship on 000 at 10 kn, helm amidships, and scripted
+ * background ships that react by COLREGs (or not): the smallest distance
+ * between any two ships, and the orders given. */
+typedef struct react_out {
+    double dmin;
+    int slow, resume;
+    double first_slow_t, tcpa_then;
+    double speed_end[3];
+} react_out;
+
+static react_out react_world(const fw_kin_ship *ships, int n, fw_behaviour b, int seconds)
+{
+    react_out o = {.dmin = INFINITY, .first_slow_t = -1};
+    fw_error err = {0};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ships;
+    kd.n = n;
+    fw_world_def wd = fw_default_world_def();
+    wd.reactions.behaviour = b;
+    fw_world *w = NULL;
+    fw_vessel *own = NULL;
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.ship = &c3;
+    vd.dynamics = FW_DYN_NOMOTO;
+    vd.speed = fw_kn_to_ms(10);
+    CHECK_MSG(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
+                  fw_world_create(&wd, &w, &err) == FW_OK &&
+                  fw_world_add_vessel(w, &vd, &own, &err) == FW_OK &&
+                  fw_world_start(w, &err) == FW_OK,
+              "%s", err.msg);
+    for (int k = 0; own && k < seconds; k++) {
+        const fw_target *tg, *me = fw_vessel_record(own);
+        const fw_assessment *as;
+        int m;
+        fw_vessel_view(own, &tg, &as, &m);
+        for (int i = 0; i < m; i++) {
+            o.dmin = fmin(o.dmin, hypot(tg[i].east - me->east, tg[i].north - me->north));
+            for (int j = i + 1; j < m; j++)
+                o.dmin = fmin(o.dmin, hypot(tg[i].east - tg[j].east, tg[i].north - tg[j].north));
+            if (i < 3)
+                o.speed_end[i] = tg[i].speed;
+        }
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    }
+    int nr;
+    const fw_reaction *r = w ? fw_world_reactions(w, &nr) : NULL;
+    for (int i = 0; r && i < nr; i++) {
+        if (r[i].kind == FW_REACT_RESUME) {
+            o.resume++;
+            continue;
+        }
+        if (o.slow++ == 0)
+            o.first_slow_t = r[i].t;
+    }
+    fw_world_destroy(w);
+    return o;
+}
+
+/* Background ships by COLREGs: one that must give way to the own ship (the
+ * own ship on its starboard side, rule 15) slows at once, 583 s before the
+ * collision it was heading for, and passes at half a mile; blind, it hits.
+ * One that stands on (the own ship on its port side) keeps course and
+ * speed.  Of two background ships crossing, the give-way one yields. */
+static void test_reactive_traffic(void)
+{
+    double v = fw_kn_to_ms(10), tc = 3000.0 / v; /* both at (0, 3000) at 583 s */
+    fw_kin_ship give = {.start = {.id = "G", .east = -3000.0, .north = 3000.0, .course = 0.5 * FW_PI,
+                                  .speed = v, .length = 200, .breadth = 32}};
+    react_out blind = react_world(&give, 1, FW_BEHAVIOUR_BLIND, 900);
+    react_out col = react_world(&give, 1, FW_BEHAVIOUR_COLREGS, 900);
+    CHECK_MSG(blind.dmin < 50.0 && blind.slow == 0, "blind: %.0f m, %d orders", blind.dmin,
+              blind.slow);
+    CHECK_MSG(col.slow >= 1 && col.first_slow_t == 0.0, "colregs: %d orders, first at %.0f s",
+              col.slow, col.first_slow_t);
+    CHECK_MSG(col.dmin > 0.99 * 926.0, "colregs: closest %.0f m", col.dmin);
+    CHECK_MSG(col.resume == 1 && fabs(col.speed_end[0] - v) < 1e-9, "given its speed back: %d, %.2f",
+              col.resume, col.speed_end[0]);
+    fw_kin_ship stand = {.start = {.id = "S", .east = 3000.0, .north = 3000.0, .course = 1.5 * FW_PI,
+                                   .speed = v, .length = 200, .breadth = 32}};
+    react_out st = react_world(&stand, 1, FW_BEHAVIOUR_COLREGS, 900);
+    CHECK_MSG(st.slow == 0 && fabs(st.speed_end[0] - v) < 1e-12, "stand-on: %d orders", st.slow);
+    /* two background ships far from the own ship crossing at (20000, 3000):
+     * A heading east sees B (heading north) on its starboard side: A gives way */
+    fw_kin_ship two[2] = {
+        {.start = {.id = "A", .east = 17000.0, .north = 3000.0, .course = 0.5 * FW_PI, .speed = v,
+                   .length = 200, .breadth = 32}},
+        {.start = {.id = "B", .east = 20000.0, .north = 0.0, .course = 0.0, .speed = v,
+                   .length = 200, .breadth = 32}}};
+    react_out pair = react_world(two, 2, FW_BEHAVIOUR_COLREGS, 1200);
+    react_out pb = react_world(two, 2, FW_BEHAVIOUR_BLIND, 1200);
+    CHECK_MSG(pb.dmin < 50.0, "blind pair: %.0f m", pb.dmin);
+    CHECK_MSG(pair.slow >= 1 && pair.dmin > 0.99 * 926.0, "pair: %d orders, closest %.0f m",
+              pair.slow, pair.dmin);
+    CHECK_MSG(fabs(pair.speed_end[1] - v) < 1e-12, "the stand-on ship B kept its speed (%.2f)",
+              pair.speed_end[1]);
+    printf("  give-way ship: blind %.0f m, colregs %.0f m (%d orders from %.0f s, %.0f s before "
+           "the collision point); stand-on: %d orders; pair: blind %.0f m, colregs %.0f m\n",
+           blind.dmin, col.dmin, col.slow, col.first_slow_t, tc, st.slow, pb.dmin, pair.dmin);
+}
+
 /* own.csv's helm order and mode columns, and the act lines of run.log. */
 static int decisions(const char *dir, char *out, size_t size)
 {
@@ -254,6 +354,7 @@ int main(void)
     TEST_RUN(test_kinematic_source);
     TEST_RUN(test_world_contract);
     TEST_RUN(test_two_vessels_head_on);
+    TEST_RUN(test_reactive_traffic);
     TEST_RUN(test_paper_case_without_sumo);
     char cmd[400];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);

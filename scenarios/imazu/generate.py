@@ -62,7 +62,8 @@ def case_yaml(n, targets):
     out.append('description: "Imazu case %d: %s"\n' % (n, table))
     out.append("own_ship:\n  ship: c3-mmg\n  east_m: 0\n  north_m: %.1f\n  course_deg: 0\n"
                "  speed_kn: %g\n  leg_nm: 12\n" % (-6 * NM, OWN_KN))
-    out.append("traffic:\n  targets:\n")
+    # the benchmark's targets keep course and speed whatever the own ship does
+    out.append("traffic:\n  behaviour: blind\n  targets:\n")
     for i, (x, y, h) in enumerate(targets, 1):
         dist = math.hypot(x, y)
         kn = dist / T_MEET_H

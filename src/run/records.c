@@ -243,6 +243,9 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
                "\"max_lateral_mps\": %.2f},\n",
             ind, m->sideways, m->teleport, m->overlap, m->appear, m->vanish, m->start_close,
             m->stopped, m->max_lateral);
+    fprintf(f, "%s  \"traffic_behaviour\": \"%s\", \"reactions\": {\"give_way\": %d, "
+               "\"not_enough\": %d, \"resume\": %d},\n",
+            ind, fw_behaviour_name(s->behaviour), s->n_give_way, s->n_give_way_short, s->n_resume);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {
         const fw_encounter *x = &e[i];

@@ -81,6 +81,7 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     fw_world_def wd = fw_default_world_def();
     wd.step = s->step;
     wd.source = src;
+    wd.reactions = s->reactions;
     if ((st = fw_world_create(&wd, w, err)))
         return st;
     fw_policy_controller_def pd = {.ship = &s->ship, .helm = s->helm, .policy = s->policy};
@@ -109,6 +110,7 @@ typedef struct run_state {
     fw_monitor *mon;         /* the traffic monitors */
     fw_policy_mode mode_prev;
     double helm_prev, e_prev, n_prev;
+    int reactions_seen;      /* the world's reactions already in run.log */
 } run_state;
 
 /* The survey's step: every ship in the area, the own ship included. */
@@ -186,6 +188,32 @@ static void record_mode(run_state *R, double t, const fw_decision *d, fw_run_sum
     R->mode_prev = d->mode;
 }
 
+/* The background ships' new orders: run.log and the summary. */
+static void record_reactions(run_state *R, fw_run_summary *sum)
+{
+    int n;
+    const fw_reaction *x = fw_world_reactions(R->w, &n);
+    for (; R->reactions_seen < n; R->reactions_seen++) {
+        const fw_reaction *r = &x[R->reactions_seen];
+        if (r->kind == FW_REACT_RESUME) {
+            sum->n_resume++;
+            fprintf(fw_records_log(R->rec), "%9.1f  traffic: %s resumes %.1f kn\n", r->t, r->ship,
+                    fw_ms_to_kn(r->speed_to));
+            continue;
+        }
+        sum->n_give_way++;
+        sum->n_give_way_short += !r->enough;
+        fprintf(fw_records_log(R->rec),
+                "%9.1f  traffic: %s gives way to %s (%s): slows from %.1f to %.1f kn, CPA %.0f m",
+                r->t, r->ship, r->other, fw_situation_name(r->situation), fw_ms_to_kn(r->speed_from),
+                fw_ms_to_kn(r->speed_to), r->dcpa_before);
+        if (r->enough)
+            fprintf(fw_records_log(R->rec), " -> %.0f m\n", r->dcpa_after);
+        else
+            fprintf(fw_records_log(R->rec), ": no speed keeps the passing distance, the slowest\n");
+    }
+}
+
 /* Everything the records keep of one instant (the world's state and the
  * decision taken on it). */
 static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *err)
@@ -218,6 +246,7 @@ static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *er
         sum->helm_orders++;
         R->helm_prev = d->helm;
     }
+    record_reactions(R, sum);
     sum->t_end = t;
     return FW_OK;
 }
@@ -266,6 +295,7 @@ static void init_summary(const fw_run_def *def, fw_run_summary *sum, fw_encounte
     sum->own_breadth = s->ship.B;
     sum->domain = s->helm.domain.size;
     sum->domain_ratio = s->helm.domain.fore_aft_ratio;
+    sum->behaviour = s->reactions.behaviour;
     *enc = NULL;
     *n_enc = 0;
     if (def->survey_out) {

@@ -100,6 +100,11 @@ typedef struct fw_run_summary {
     /* What no ship can do, among the ships the own ship saw (survey/monitor.h):
      * zero for traffic that behaves like ships. */
     fw_monitor_counts monitors;
+    /* The background ships' reactions (world/reactions.h). */
+    fw_behaviour behaviour;
+    int n_give_way;                 /* slow-down orders */
+    int n_give_way_short;           /* of which no speed kept the passing distance */
+    int n_resume;
 } fw_run_summary;
 
 /* Where the targets come from: SUMO (any scenario), or the kinematic source

@@ -111,7 +111,7 @@ static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *pa
 static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenario *s,
                               fw_error *err)
 {
-    static const char *const keys[] = {"network", "density", "fill", "targets", NULL};
+    static const char *const keys[] = {"network", "density", "fill", "targets", "behaviour", NULL};
     const yt_node *tr, *seq = NULL;
     fw_status st;
     if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
@@ -120,6 +120,12 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
         (st = yt_opt_number(doc, tr, "traffic", "density", 0, 100, &s->density, err)) ||
         (st = yt_opt_seq(doc, tr, "traffic", "targets", &seq, err)))
         return st;
+    char beh[32] = "colregs";
+    if ((st = yt_opt_string(doc, tr, "traffic", "behaviour", beh, sizeof beh, err)))
+        return st;
+    if (fw_behaviour_parse(beh, &s->reactions.behaviour))
+        return fw_fail_at(err, doc->file, yt_key_line(tr, "behaviour"), "traffic.behaviour",
+                          "'%s': expected colregs or blind", beh);
     long fill = 0;
     if ((st = yt_opt_int(doc, tr, "traffic", "fill", 0, 10000, &fill, err)))
         return st;
@@ -287,6 +293,7 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
     memset(s, 0, sizeof *s);
     snprintf(s->file, sizeof s->file, "%s", path);
     s->density = 1.0;
+    s->reactions = fw_default_reactions_def();
     s->helm = fw_default_helm_def();
     s->policy = fw_default_policy_def();
     s->radius = fw_nm_to_m(8.0); /* Imazu targets start 6 nm off: see them from the start */

@@ -21,6 +21,7 @@
 #include "geom/geom.h"
 #include "ship/ship.h"
 #include "survey/survey.h"
+#include "world/reactions.h"
 
 #define FW_SCN_MAX_TARGETS 32
 
@@ -39,6 +40,7 @@ typedef struct fw_scenario {
     char network[64];    /* "" = none */
     double density;      /* demand scale of the network's streams */
     int fill;            /* network ships placed along the routes at t = 0 */
+    fw_reactions_def reactions; /* behaviour: colregs (default) or blind */
     int n_targets;
     fw_target targets[FW_SCN_MAX_TARGETS]; /* at t = 0; type: the label kept in the records */
     /* avoidance */

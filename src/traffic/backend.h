@@ -36,6 +36,8 @@ typedef struct fw_sumo_backend {
                          double radius, fw_error *err);
     fw_status (*place)(const char *id, double fx, double fy, double angle_deg, double cx,
                        double cy, fw_error *err);
+    /* Holds a ship's speed (m/s); speed < 0 hands it back to SUMO's model. */
+    fw_status (*set_speed)(const char *id, double speed, fw_error *err);
     fw_status (*step)(double *time, fw_error *err);
     fw_status (*context)(fw_sumo_list *out, fw_error *err);
     fw_status (*all)(fw_sumo_list *out, fw_error *err);

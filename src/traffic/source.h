@@ -11,6 +11,7 @@
  *   around()     the ships within sight of the own ship, sorted by id
  *   area()       every ship within the area radius of the own ship, the own
  *                ship included (flagged own), sorted by id: the survey's input
+ *   set_speed()  a ship told to hold a speed (or to go on as before)
  *
  * Sources:
  *   SUMO        (source_sumo.h) libsumo in-process or libtraci to a sumo or
@@ -36,6 +37,10 @@ typedef struct fw_source_ops {
     fw_status (*advance)(fw_source *s, fw_error *err);
     fw_status (*around)(fw_source *s, const fw_target **ships, int *n, fw_error *err);
     fw_status (*area)(fw_source *s, const fw_target **ships, int *n, fw_error *err);
+    /* Holds ship id at speed (m/s) from the next step on; speed < 0 gives it
+     * back its own (the scripted or SUMO's).  The world's reactive traffic
+     * (world/reactions.h) gives way through it. */
+    fw_status (*set_speed)(fw_source *s, const char *id, double speed, fw_error *err);
     double (*time)(const fw_source *s);        /* s, after the last advance */
     double (*step_length)(const fw_source *s); /* s */
     void (*destroy)(fw_source *s);
@@ -62,6 +67,11 @@ static inline fw_status fw_source_around(fw_source *s, const fw_target **v, int 
 static inline fw_status fw_source_area(fw_source *s, const fw_target **v, int *n, fw_error *err)
 {
     return s->ops->area(s, v, n, err);
+}
+static inline fw_status fw_source_set_speed(fw_source *s, const char *id, double speed,
+                                            fw_error *err)
+{
+    return s->ops->set_speed(s, id, speed, err);
 }
 static inline double fw_source_time(const fw_source *s) { return s->ops->time(s); }
 static inline double fw_source_step_length(const fw_source *s) { return s->ops->step_length(s); }

@@ -21,6 +21,12 @@ typedef struct kin_ship {
     fw_target now;
     int n;              /* legs, the first at t = 0 */
     kin_leg leg[FW_KIN_MAX_LEGS + 1];
+    /* told to hold a speed (set_speed): from (hold_e, hold_n) at hold_t on
+     * its course then; given back, it follows its script shifted by
+     * (off_e, off_n) so that it goes on from where it is */
+    bool holding;
+    double hold_t, hold_e, hold_n, hold_course, hold_speed;
+    double off_e, off_n;
 } kin_ship;
 
 typedef struct kin_source {
@@ -49,22 +55,63 @@ static double kin_time(const fw_source *s)
 
 static double kin_step_length(const fw_source *s) { return ((const kin_source *)s)->def.step; }
 
+/* Where a ship's script puts it at time t. */
+static void scripted(const kin_ship *s, double t, fw_target *at)
+{
+    int j = s->n - 1;
+    while (j > 0 && s->leg[j].t_start > t)
+        j--;
+    const kin_leg *l = &s->leg[j];
+    double ve, vn, dt = t - l->t_start;
+    fw_velocity(l->speed, l->course, &ve, &vn);
+    at->east = l->east + ve * dt + s->off_e;
+    at->north = l->north + vn * dt + s->off_n;
+    at->course = l->course;
+    at->speed = l->speed;
+}
+
 /* Every ship where it is at time t. */
 static void move_all(kin_source *k, double t)
 {
     for (int i = 0; i < k->n; i++) {
         kin_ship *s = &k->ships[i];
-        int j = s->n - 1;
-        while (j > 0 && s->leg[j].t_start > t)
-            j--;
-        const kin_leg *l = &s->leg[j];
-        double ve, vn, dt = t - l->t_start;
-        fw_velocity(l->speed, l->course, &ve, &vn);
-        s->now.east = l->east + ve * dt;
-        s->now.north = l->north + vn * dt;
-        s->now.course = l->course;
-        s->now.speed = l->speed;
+        if (!s->holding) {
+            scripted(s, t, &s->now);
+            continue;
+        }
+        double ve, vn, dt = t - s->hold_t;
+        fw_velocity(s->hold_speed, s->hold_course, &ve, &vn);
+        s->now.east = s->hold_e + ve * dt;
+        s->now.north = s->hold_n + vn * dt;
+        s->now.course = s->hold_course;
+        s->now.speed = s->hold_speed;
     }
+}
+
+/* A ship's speed held from now (a script: the change is immediate), or its
+ * script taken up again from where it is. */
+static fw_status kin_set_speed(fw_source *src, const char *id, double speed, fw_error *err)
+{
+    kin_source *k = (kin_source *)src;
+    kin_ship *s = NULL;
+    for (int i = 0; i < k->n && !s; i++)
+        if (strcmp(k->ships[i].now.id, id) == 0)
+            s = &k->ships[i];
+    if (!s)
+        return fw_fail(err, FW_ERUN, "kinematic source: no ship '%s'", id);
+    double t = (double)k->steps * k->def.step;
+    if (speed >= 0.0 && isfinite(speed)) {
+        s->holding = true;
+        s->hold_t = t, s->hold_e = s->now.east, s->hold_n = s->now.north;
+        s->hold_course = s->now.course, s->hold_speed = speed;
+    } else if (s->holding) {
+        fw_target at;
+        s->holding = false;
+        s->off_e = s->off_n = 0.0;
+        scripted(s, t, &at);
+        s->off_e = s->now.east - at.east, s->off_n = s->now.north - at.north;
+    }
+    return FW_OK;
 }
 
 static fw_status kin_place(fw_source *s, const fw_target *own, fw_error *err)
@@ -140,7 +187,8 @@ static void kin_destroy(fw_source *s)
 
 static const fw_source_ops kin_ops = {.name = "kinematic", .place = kin_place,
                                       .advance = kin_advance, .around = kin_around,
-                                      .area = kin_area, .time = kin_time,
+                                      .area = kin_area, .set_speed = kin_set_speed,
+                                      .time = kin_time,
                                       .step_length = kin_step_length, .destroy = kin_destroy};
 
 static int cmp_ship(const void *a, const void *b)

@@ -248,6 +248,11 @@ static fw_status ss_area(fw_source *s, const fw_target **v, int *n, fw_error *er
     return fw_traffic_area(((sumo_source *)s)->tr, v, n, err);
 }
 
+static fw_status ss_set_speed(fw_source *s, const char *id, double speed, fw_error *err)
+{
+    return fw_traffic_set_speed(((sumo_source *)s)->tr, id, speed, err);
+}
+
 static void ss_destroy(fw_source *s)
 {
     sumo_source *k = (sumo_source *)s;
@@ -258,7 +263,8 @@ static void ss_destroy(fw_source *s)
 }
 
 static const fw_source_ops sumo_ops = {.name = "sumo", .place = ss_place, .advance = ss_advance,
-                                       .around = ss_around, .area = ss_area, .time = ss_time,
+                                       .around = ss_around, .area = ss_area,
+                                       .set_speed = ss_set_speed, .time = ss_time,
                                        .step_length = ss_step_length, .destroy = ss_destroy};
 
 double fw_sumo_source_step_wall(const fw_source *s)

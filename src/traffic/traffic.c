@@ -383,6 +383,16 @@ fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, do
     return st;
 }
 
+fw_status fw_traffic_set_speed(fw_traffic *t, const char *id, double speed, fw_error *err)
+{
+    if (alive(t, err))
+        return FW_ERUN;
+    if (strcmp(id, t->own_id) == 0)
+        return fw_fail(err, FW_ERUN, "the own ship's speed is fairway's, not SUMO's");
+    /* a refusal (a ship that has just left) leaves SUMO usable */
+    return t->be->set_speed(id, isfinite(speed) ? speed : -1.0, err);
+}
+
 fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
 {
     if (alive(t, err))

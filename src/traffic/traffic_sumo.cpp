@@ -211,6 +211,15 @@ fw_status be_place(const char *id, double fx, double fy, double angle_deg, doubl
     });
 }
 
+fw_status be_set_speed(const char *id, double speed, fw_error *err)
+{
+    return guarded("cannot set a ship's speed", err, [&] {
+        // setSpeed holds the speed (within the type's decel and accel) until
+        // it is given -1, which hands the ship back to its car-following model
+        S::Vehicle::setSpeed(id, speed);
+    });
+}
+
 fw_status be_step(double *time, fw_error *err)
 {
     return guarded("step failed", err, [&] {
@@ -293,5 +302,5 @@ void be_close(void)
 
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
-    be_step, be_context, be_all, be_get, be_close,
+    be_set_speed, be_step, be_context, be_all, be_get, be_close,
 };

@@ -16,9 +16,15 @@ struct fw_world {
     int nv;
     long steps;
     bool started, broken;
+    fw_reactions *react;
 };
 
-fw_world_def fw_default_world_def(void) { return (fw_world_def){.step = 1.0, .source = NULL}; }
+fw_world_def fw_default_world_def(void)
+{
+    fw_world_def d = {.step = 1.0, .source = NULL, .reactions = fw_default_reactions_def()};
+    d.reactions.behaviour = FW_BEHAVIOUR_BLIND;
+    return d;
+}
 
 fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err)
 {
@@ -40,6 +46,11 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
     }
     w->def = *def;
     w->source = def->source;
+    fw_status st = fw_reactions_create(&def->reactions, &w->react, err);
+    if (st) {
+        fw_world_destroy(w);
+        return st;
+    }
     *out = w;
     return FW_OK;
 }
@@ -53,6 +64,7 @@ void fw_world_destroy(fw_world *w)
         free(w->v[i]);
     }
     fw_source_destroy(w->source);
+    fw_reactions_destroy(w->react);
     free(w);
 }
 
@@ -145,6 +157,9 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
         st = sense(w, i, src, n_src, err);
     for (int i = 0; !st && i < w->nv; i++)
         st = decide(w, i, err);
+    if (!st && w->source)
+        st = fw_reactions_step(w->react, fw_world_time(w), w->nv > 0 ? &w->v[0]->record : NULL,
+                               src, n_src, w->source, err);
     return st;
 }
 
@@ -191,6 +206,11 @@ long fw_world_steps(const fw_world *w) { return w->steps; }
 int fw_world_vessel_count(const fw_world *w) { return w->nv; }
 fw_vessel *fw_world_vessel(fw_world *w, int i) { return i >= 0 && i < w->nv ? w->v[i] : NULL; }
 fw_source *fw_world_source(fw_world *w) { return w->source; }
+
+const fw_reaction *fw_world_reactions(const fw_world *w, int *n)
+{
+    return fw_reactions_list(w->react, n);
+}
 
 fw_status fw_world_area(fw_world *w, const fw_target **ships, int *n, fw_error *err)
 {

@@ -21,7 +21,9 @@
  *   2. the source is told where the own ship is and moves its ships one step
  *   3. every vessel senses: the ships within its sight (the source's, for
  *      the own ship, and the other vessels'), sorted by id
- *   4. every vessel's controller decides its next order from what it sensed
+ *   4. every vessel's controller decides its next order from what it sensed,
+ *      and the source's ships that must give way to another are told their
+ *      speed (reactions.h; orders take effect in the next step)
  * so after fw_world_start and after each step, everything read from the world
  * is of one instant: the positions and the decision taken on them.
  *
@@ -34,15 +36,20 @@
 
 #include "core/error.h"
 #include "traffic/source.h"
+#include "world/reactions.h"
 #include "world/vessel.h"
 
 typedef struct fw_world_def {
     double step;        /* s, every fw_world_step is one step of this length */
     fw_source *source;  /* taken over (destroyed with the world, also on a
                            failed create); NULL: no background ships */
+    /* how the source's ships treat the others (world/reactions.h): colregs,
+     * or blind (they keep course and speed whatever happens) */
+    fw_reactions_def reactions;
 } fw_world_def;
 
-/* step 1 s, no source. */
+/* step 1 s, no source, blind traffic (a world built by hand has the traffic
+ * its source scripts; scenarios choose colregs by default). */
 fw_world_def fw_default_world_def(void);
 
 typedef struct fw_world fw_world;
@@ -74,5 +81,8 @@ fw_vessel *fw_world_vessel(fw_world *w, int i);
 fw_status fw_world_area(fw_world *w, const fw_target **ships, int *n, fw_error *err);
 
 fw_source *fw_world_source(fw_world *w);
+
+/* Every order given to the source's ships so far (reactions.h). */
+const fw_reaction *fw_world_reactions(const fw_world *w, int *n);
 
 #endif

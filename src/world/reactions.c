@@ -1,0 +1,286 @@
+/* reactions.c - background ships that give way by COLREGs (reactions.h). */
+#include "world/reactions.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/idmap.h"
+#include "core/mem.h"
+#include "core/units.h"
+#include "geom/geom.h"
+
+/* What a ship is doing, by its interned id. */
+typedef struct react_state {
+    bool seen;
+    bool holding;    /* told to hold `hold` m/s */
+    double v0;       /* m/s, its own speed: the fastest seen while not told */
+    double hold;     /* m/s */
+    char other[FW_TARGET_ID_MAX]; /* the ship it last gave way to */
+} react_state;
+
+struct fw_reactions {
+    fw_reactions_def def;
+    fw_idmap ids;
+    react_state *s;
+    int cap;
+    fw_reaction *log;
+    int nlog, logcap;
+};
+
+fw_reactions_def fw_default_reactions_def(void)
+{
+    return (fw_reactions_def){.behaviour = FW_BEHAVIOUR_COLREGS, .cpa = 0.5 * FW_NMILE,
+                              .horizon = 900.0, .range = 8000.0, .min_speed = 0.3,
+                              .parallel = fw_deg_to_rad(30.0),
+                              .colregs = fw_default_colregs_def()};
+}
+
+const char *fw_behaviour_name(fw_behaviour b)
+{
+    return b == FW_BEHAVIOUR_BLIND ? "blind" : "colregs";
+}
+
+fw_status fw_behaviour_parse(const char *text, fw_behaviour *out)
+{
+    if (strcmp(text, "colregs") == 0)
+        *out = FW_BEHAVIOUR_COLREGS;
+    else if (strcmp(text, "blind") == 0)
+        *out = FW_BEHAVIOUR_BLIND;
+    else
+        return FW_EINPUT;
+    return FW_OK;
+}
+
+fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, fw_error *err)
+{
+    *out = NULL;
+    if (!(def->cpa > 0.0) || !(def->horizon > 0.0) || !(def->range > 0.0) ||
+        !(def->min_speed >= 0.0 && def->min_speed < 1.0))
+        return fw_fail(err, FW_EINPUT,
+                       "reactions: cpa, horizon and range must be positive, min_speed in [0, 1)");
+    fw_reactions *r = calloc(1, sizeof *r);
+    if (!r)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    r->def = *def;
+    *out = r;
+    return FW_OK;
+}
+
+void fw_reactions_destroy(fw_reactions *r)
+{
+    if (!r)
+        return;
+    fw_idmap_free(&r->ids);
+    free(r->s);
+    free(r->log);
+    free(r);
+}
+
+const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n)
+{
+    *n = r->nlog;
+    return r->log;
+}
+
+static const double kResume = 1.25;
+
+/* Closest approach of a (at speed va on its course) and b (as it goes). */
+static void cpa_at(const fw_target *a, double va, const fw_target *b, double *tcpa, double *dcpa)
+{
+    double ae, an, be, bn;
+    fw_velocity(va, a->course, &ae, &an);
+    fw_velocity(b->speed, b->course, &be, &bn);
+    fw_cpa(b->east - a->east, b->north - a->north, be - ae, bn - an, tcpa, dcpa);
+}
+
+/* Does a, at speed va, have to give way to b (risk, and its role)? */
+static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
+                         const fw_target *b, double cpa, const char *keep, fw_situation *sit,
+                         double *tcpa, double *dcpa)
+{
+    if (hypot(b->east - a->east, b->north - a->north) > r->def.range)
+        return false;
+    /* two background ships on nearly the same course share a lane (or run
+     * beside each other in two): they pass by overtaking, which SUMO keeps
+     * apart; only the own ship, off the lanes, is given way to there */
+    if (!b->own && fabs(fw_wrap_pi(a->course - b->course)) < r->def.parallel)
+        return false;
+    cpa_at(a, va, b, tcpa, dcpa);
+    if (!(*tcpa > 0.0 && *tcpa < r->def.horizon && *dcpa < cpa))
+        return false;
+    fw_own_state me = {.east = a->east, .north = a->north, .psi = a->course, .U = va};
+    *sit = fw_classify(&r->def.colregs, &me, b);
+    /* a give-way ship stays one until the other is past and clear (rule 8):
+     * the ship it is giving way to counts while the risk lasts, whatever the
+     * bearing says now (passing ahead, it moves onto the port bow) */
+    if (keep && strcmp(b->id, keep) == 0)
+        return true;
+    /* one background ship overtaking another in its lane is SUMO's to keep
+     * apart (car following, lane changes); the own ship is off the lanes */
+    return *sit == FW_SIT_GIVE_WAY || (*sit == FW_SIT_OVERTAKING && b->own);
+}
+
+/* The ships a gives way to at speed va: the count, and the nearest in time. */
+static int threats(const fw_reactions *r, int self, const fw_target *all, int n, double va,
+                   double cpa, const char *keep, int *nearest, fw_situation *sit, double *dcpa)
+{
+    int k = 0;
+    double tbest = INFINITY;
+    for (int j = 0; j < n; j++) {
+        fw_situation s;
+        double tc, dc;
+        if (j == self || !gives_way_to(r, &all[self], va, &all[j], cpa, keep, &s, &tc, &dc))
+            continue;
+        k++;
+        if (tc < tbest) {
+            tbest = tc;
+            *nearest = j;
+            *sit = s;
+            *dcpa = dc;
+        }
+    }
+    return k;
+}
+
+/* The fastest speed from v0 down to min_speed v0 (5 % steps) at which a
+ * passes every ship it gives way to at cpa or more; *enough false if none. */
+static double yielding_speed(const fw_reactions *r, int self, const fw_target *all, int n,
+                             double v0, const char *keep, bool *enough, double *dcpa_after)
+{
+    double v = v0;
+    for (int k = 1; k <= 20; k++) {
+        v = v0 * (1.0 - 0.05 * k);
+        if (v < r->def.min_speed * v0 - 1e-12)
+            break;
+        double dc = INFINITY;
+        /* the ships it gives way to are those at its old speed; at the new
+         * one it must pass each of them at cpa */
+        bool ok = true;
+        for (int j = 0; j < n && ok; j++) {
+            fw_situation s0;
+            double t0, d0, tc;
+            if (j == self ||
+                !gives_way_to(r, &all[self], v0, &all[j], r->def.cpa, keep, &s0, &t0, &d0))
+                continue;
+            cpa_at(&all[self], v, &all[j], &tc, &dc);
+            ok = tc <= 0.0 || dc >= r->def.cpa;
+        }
+        if (ok) {
+            *enough = true;
+            *dcpa_after = dc;
+            return v;
+        }
+    }
+    *enough = false;
+    *dcpa_after = NAN;
+    return r->def.min_speed * v0;
+}
+
+static fw_status record(fw_reactions *r, const fw_reaction *x, fw_error *err)
+{
+    if (r->nlog == r->logcap) {
+        int cap = fw_grown_cap(r->logcap, 16);
+        if (!fw_resize((void **)&r->log, sizeof *r->log, (size_t)cap))
+            return fw_fail(err, FW_ERUN, "out of memory for the reactions' record");
+        r->logcap = cap;
+    }
+    r->log[r->nlog++] = *x;
+    return FW_OK;
+}
+
+/* Background ship `self` of all[0..n-1] this step. */
+static fw_status react(fw_reactions *r, double t, int self, const fw_target *all, int n,
+                       react_state *st, fw_source *src, fw_error *err)
+{
+    const fw_target *a = &all[self];
+    /* what it does of its own accord: the fastest it has gone untold (a ship
+     * slowed by SUMO's car following or speeding up again after giving way
+     * means to go on at that speed); risks and speeds are judged at it, so
+     * that a ship given its speed back is not told again while it picks up */
+    if (!st->seen || (!st->holding && a->speed > st->v0))
+        st->v0 = a->speed;
+    st->seen = true;
+    double v0 = st->v0;
+    int nearest = -1;
+    fw_situation sit = FW_SIT_GIVE_WAY;
+    double dcpa = INFINITY;
+    /* a ship giving way keeps its speed down until its old one would pass
+     * with kResume x cpa to spare: given back at cpa exactly, it would have
+     * to give way again a few steps later */
+    const char *keep = st->holding ? st->other : NULL;
+    int k = threats(r, self, all, n, v0, st->holding ? kResume * r->def.cpa : r->def.cpa, keep,
+                    &nearest, &sit, &dcpa);
+    fw_reaction x = {.t = t, .situation = sit, .dcpa_before = dcpa};
+    snprintf(x.ship, sizeof x.ship, "%s", a->id);
+    if (k == 0) {
+        if (!st->holding)
+            return FW_OK;
+        /* not while the ship it gave way to is still this close: around the
+         * closest approach the predicted passing flips from ahead to past */
+        for (int j = 0; j < n; j++)
+            if (strcmp(all[j].id, st->other) == 0 &&
+                hypot(all[j].east - a->east, all[j].north - a->north) < r->def.cpa)
+                return FW_OK;
+        /* clear at its own speed again: given back */
+        x.kind = FW_REACT_RESUME;
+        x.speed_from = st->hold;
+        x.speed_to = st->v0;
+        x.enough = true;
+        st->holding = false;
+        fw_status s2 = fw_source_set_speed(src, a->id, -1.0, err);
+        return s2 ? s2 : record(r, &x, err);
+    }
+    double after;
+    double v = yielding_speed(r, self, all, n, v0, keep, &x.enough, &after);
+    if (st->holding && v >= st->hold - 0.05 * v0)
+        return FW_OK; /* already slow enough: no new order */
+    snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
+    x.kind = FW_REACT_SLOW;
+    x.speed_from = st->holding ? st->hold : v0;
+    x.speed_to = v;
+    x.dcpa_after = after;
+    snprintf(st->other, sizeof st->other, "%s", all[nearest].id);
+    st->holding = true;
+    st->hold = v;
+    fw_status s2 = fw_source_set_speed(src, a->id, v, err);
+    return s2 ? s2 : record(r, &x, err);
+}
+
+fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
+                            const fw_target *ships, int n, fw_source *src, fw_error *err)
+{
+    if (r->def.behaviour == FW_BEHAVIOUR_BLIND || n == 0)
+        return FW_OK;
+    /* the own ship joins the list (last) as a ship to give way to */
+    fw_target *all = malloc(sizeof *all * (size_t)(n + 1));
+    if (!all)
+        return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
+    memcpy(all, ships, sizeof *all * (size_t)n);
+    int m = n;
+    if (own) {
+        all[m] = *own;
+        all[m++].own = true;
+    }
+    fw_status st = FW_OK;
+    for (int i = 0; i < n && !st; i++) {
+        int id;
+        if (fw_idmap_intern(&r->ids, ships[i].id, &id)) {
+            st = fw_fail(err, FW_ERUN, "out of memory for ship ids");
+            break;
+        }
+        if (id >= r->cap) {
+            int cap = fw_grown_cap(r->cap, id + 1);
+            if (!fw_resize((void **)&r->s, sizeof *r->s, (size_t)cap)) {
+                st = fw_fail(err, FW_ERUN, "out of memory for ship ids");
+                break;
+            }
+            memset(r->s + r->cap, 0, sizeof *r->s * (size_t)(cap - r->cap));
+            r->cap = cap;
+        }
+        st = react(r, t, i, all, m, &r->s[id], src, err);
+    }
+    free(all);
+    return st;
+}

@@ -1,0 +1,87 @@
+/* reactions.h - background ships that give way by COLREGs: the reactive traffic.
+ *
+ * SUMO moves its ships along their lanes and never yields: at a crossing
+ * nobody gives way, and no ship ever keeps out of the own ship's way.  With
+ * behaviour `colregs` (the default; `blind` is SUMO's own, the worst case)
+ * every background ship the own ship sees is checked each step against every
+ * ship near it, the own ship included:
+ *
+ *   risk        both keeping course, and each its own speed (for a
+ *               background ship the fastest it has gone untold: what it
+ *               means to do), the closest approach comes within cpa in less
+ *               than horizon seconds (and it is ahead)
+ *   role        from the ship's own side (avoid/encounter.h, rules 13-17):
+ *               it gives way to a ship crossing from its starboard side
+ *               (rule 15) and to the own ship when it overtakes it (rule 13;
+ *               one background ship overtaking another in its lane is kept
+ *               apart by SUMO's car following and lane changes)
+ *   action      it slows down (rule 8(e): slacken speed to avoid collision;
+ *               rule 16: early and substantial), to the fastest of the speeds
+ *               from its own down to min_speed of it (in 5 % steps) at which
+ *               every ship it gives way to passes at cpa or more; if none does,
+ *               to min_speed (and the record says so).  A lane-bound ship has
+ *               no other readily apparent action than its speed.
+ *   resumption  once at its former speed it would pass every such ship at
+ *               1.25 cpa or more, or they are past, it is given its speed back
+ *               (the margin: given back at cpa exactly it would have to give
+ *               way again a few steps later)
+ *
+ * A stand-on ship keeps course and speed (rule 17(a)): nothing is ordered.
+ * Head-on meetings (rule 14: both alter to starboard) leave a lane-bound ship
+ * nothing to do but hold its lane; the own ship's policy turns.  Every order
+ * is recorded (ship, time, kind, speeds, the ship it gives way to).
+ */
+#ifndef FW_WORLD_REACTIONS_H
+#define FW_WORLD_REACTIONS_H
+
+#include "avoid/encounter.h"
+#include "core/error.h"
+#include "geom/target.h"
+#include "traffic/source.h"
+
+typedef enum fw_behaviour { FW_BEHAVIOUR_COLREGS, FW_BEHAVIOUR_BLIND } fw_behaviour;
+
+/* "colregs", "blind"; parse: FW_EINPUT for anything else. */
+const char *fw_behaviour_name(fw_behaviour b);
+fw_status fw_behaviour_parse(const char *text, fw_behaviour *out);
+
+typedef struct fw_reactions_def {
+    fw_behaviour behaviour;
+    double cpa;           /* m, 926 (0.5 nm): the passing distance a give-way ship keeps */
+    double horizon;       /* s, 900: acts once the closest approach is this close in time */
+    double range;         /* m, 8000: ships farther apart are not looked at */
+    double min_speed;     /* 0.3: the fraction of its speed it may slow to */
+    double parallel;      /* rad, 30 deg: background ships on courses closer than this
+                             share the lanes and are SUMO's to keep apart */
+    fw_colregs_def colregs;
+} fw_reactions_def;
+
+fw_reactions_def fw_default_reactions_def(void);
+
+typedef enum fw_reaction_kind { FW_REACT_SLOW, FW_REACT_RESUME } fw_reaction_kind;
+
+typedef struct fw_reaction {
+    double t;                        /* s */
+    char ship[FW_TARGET_ID_MAX];     /* the ship that acts */
+    char other[FW_TARGET_ID_MAX];    /* the ship it gives way to (the nearest in time) */
+    fw_reaction_kind kind;
+    fw_situation situation;          /* from the acting ship's side */
+    double speed_from, speed_to;     /* m/s ordered: from, to (resume: to its own) */
+    double dcpa_before, dcpa_after;  /* m, the closest approach at the old and new speed */
+    bool enough;                     /* the new speed keeps cpa against every ship */
+} fw_reaction;
+
+typedef struct fw_reactions fw_reactions;
+
+fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, fw_error *err);
+void fw_reactions_destroy(fw_reactions *r);
+
+/* One step at time t: the background ships seen and the own ship (NULL: none);
+ * orders go to src.  Does nothing with behaviour blind. */
+fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
+                            const fw_target *ships, int n, fw_source *src, fw_error *err);
+
+/* Every order so far, in time order; valid until the next step. */
+const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n);
+
+#endif
