@@ -266,6 +266,72 @@ static void test_reactive_traffic(void)
            blind.dmin, col.dmin, col.slow, col.first_slow_t, tc, st.slow, pb.dmin, pair.dmin);
 }
 
+/* The own ship returning to its course after avoiding a head-on target meets
+ * a second ship that turns onto its return path at 300 s: it stops the return
+ * the same step (a new threat is looked at in every mode), keeps the domain
+ * and gets back on course afterwards. */
+static void test_threat_during_return(void)
+{
+    double v = fw_kn_to_ms(10);
+    fw_kin_ship sh[2] = {
+        {.start = {.id = "T1", .east = 0, .north = 2000, .course = FW_PI, .speed = v,
+                   .length = 200, .breadth = 32}},
+        {.start = {.id = "T2", .east = -400, .north = 5000, .course = 0.5 * FW_PI, .speed = v,
+                   .length = 200, .breadth = 32},
+         .n_legs = 1,
+         .legs = {{300.0, FW_PI, v}}}};
+    fw_error err = {0};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = sh;
+    kd.n = 2;
+    fw_world_def wd = fw_default_world_def();
+    fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
+                                   .policy = fw_default_policy_def()};
+    fw_own_state start = {.U = v};
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.ship = &c3;
+    vd.dynamics = FW_DYN_NOMOTO;
+    vd.start_state = &start;
+    vd.radius = INFINITY;
+    fw_world *w = NULL;
+    fw_vessel *own = NULL;
+    CHECK_MSG(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
+                  fw_world_create(&wd, &w, &err) == FW_OK &&
+                  fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK &&
+                  fw_world_add_vessel(w, &vd, &own, &err) == FW_OK &&
+                  fw_world_start(w, &err) == FW_OK,
+              "%s", err.msg);
+    double lam = INFINITY, t_return = -1, t_stop = -1, t_back = -1;
+    fw_policy_mode prev = FW_MODE_STANDBY;
+    for (int k = 0; own && k < 1500; k++) {
+        const fw_own_state *x = fw_vessel_own_state(own);
+        const fw_decision *d = fw_vessel_decision(own);
+        const fw_target *tg;
+        const fw_assessment *as;
+        int m;
+        fw_vessel_view(own, &tg, &as, &m);
+        for (int i = 0; i < m; i++)
+            lam = fmin(lam, fw_domain_lambda(&pd.helm.domain, x->east, x->north, x->psi, &tg[i]));
+        if (d->mode == FW_MODE_AUTOPILOT && t_return < 0)
+            t_return = k;
+        if (prev == FW_MODE_AUTOPILOT && d->mode != FW_MODE_AUTOPILOT && t_stop < 0 && k >= 300)
+            t_stop = k;
+        if (prev == FW_MODE_AUTOPILOT && d->mode == FW_MODE_STANDBY)
+            t_back = k;
+        prev = d->mode;
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    }
+    CHECK_MSG(t_return > 0 && t_return < 300, "return began at %.0f s", t_return);
+    CHECK_MSG(t_stop >= 300 && t_stop <= 305, "return stopped at %.0f s for the turn at 300 s",
+              t_stop);
+    CHECK_MSG(lam >= 1.0, "domain entered: %.2f", lam);
+    CHECK_MSG(t_back > t_stop, "back on course at %.0f s", t_back);
+    printf("  threat during the return: return from %.0f s, stopped at %.0f s (target turned at "
+           "300 s), domain radius %.2f, back on course at %.0f s\n",
+           t_return, t_stop, lam, t_back);
+    fw_world_destroy(w);
+}
+
 /* own.csv's helm order and mode columns, and the act lines of run.log. */
 static int decisions(const char *dir, char *out, size_t size)
 {
@@ -355,6 +421,7 @@ int main(void)
     TEST_RUN(test_world_contract);
     TEST_RUN(test_two_vessels_head_on);
     TEST_RUN(test_reactive_traffic);
+    TEST_RUN(test_threat_during_return);
     TEST_RUN(test_paper_case_without_sumo);
     char cmd[400];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);

@@ -177,12 +177,14 @@ static fw_status steer(const fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg
 static void start_return(fw_policy *p, double t) { set_mode(p, FW_MODE_AUTOPILOT, t); }
 
 /* Returning: on while the rest of the return keeps every target out, or
- * while stopping it would do no better (else back to STEADY). */
+ * while stopping it would do no better (else back to STEADY).  *ret: the
+ * return's clearance. */
 static fw_status check_return(fw_policy *p, const fw_policy_input *in, fw_decision *d,
-                              fw_error *err)
+                              double *ret_out, fw_error *err)
 {
     double ret, hold;
     fw_status st = steer(p, in->ctx, in->targets, in->n, p->psi_ref, 1, &ret, err);
+    *ret_out = ret;
     if (st || ret >= 1.0)
         return st;
     if ((st = steer(p, in->ctx, in->targets, in->n, in->own->psi, 1, &hold, err)))
@@ -311,6 +313,18 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
     return reopen(p, in, d, err);
 }
 
+/* Returning, with the rest of the return letting a target in and holding
+ * the heading no better: a new threat is acted on as from STANDBY (the
+ * return gives way to it like any other course would). */
+static fw_status threat_on_return(fw_policy *p, const fw_policy_input *in, fw_decision *d,
+                                  fw_error *err)
+{
+    if (!d->search.threat)
+        return FW_OK;
+    d->reason = "returning: a target would enter the domain";
+    return maybe_act(p, in->ctx, in->t, in->own, in->targets, in->n, in->as, d, err);
+}
+
 static void step_autopilot(fw_policy *p, const fw_policy_input *in, fw_decision *d)
 {
     d->reason = "returning: heading autopilot";
@@ -339,13 +353,18 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
     d->primary = in->n > 0 ? in->order[0] : -1;
     d->acted = false;
     d->reason = "";
-    if (p->mode == FW_MODE_AUTOPILOT && (st = check_return(p, in, d, err)))
+    double ret = INFINITY;
+    if (p->mode == FW_MODE_AUTOPILOT && (st = check_return(p, in, d, &ret, err)))
         return st;
     switch (p->mode) {
     case FW_MODE_STANDBY: st = step_standby(p, in, d, err); break;
     case FW_MODE_AVOID: st = step_avoid(p, in, d, err); break;
     case FW_MODE_STEADY: st = step_steady(p, in, d, err); break;
-    case FW_MODE_AUTOPILOT: step_autopilot(p, in, d); break;
+    case FW_MODE_AUTOPILOT:
+        step_autopilot(p, in, d);
+        if (p->mode == FW_MODE_AUTOPILOT && ret < 1.0)
+            st = threat_on_return(p, in, d, err);
+        break;
     }
     if (st)
         return st;

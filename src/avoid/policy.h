@@ -25,7 +25,9 @@
  *             (which from then on keeps that course with the same PD: without
  *             disturbances its helm is near zero, the paper's "amidships").
  *             If the rest of the return stops being safe and stopping it would
- *             do better, back to STEADY.
+ *             do better, back to STEADY; if stopping would do no better, a
+ *             target the return lets in is acted on by the STANDBY rules
+ *             (-> AVOID): a new threat is looked at in every mode.
  *
  * Point of action for a give-way (or head-on, overtaking) own ship, the first of:
  *   - range to the threat <= act_range (the paper: act at least 1 nm before);
