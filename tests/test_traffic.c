@@ -127,7 +127,7 @@ static void test_demand(void)
     /* 9 ships/h at density 2 = 0.005 ships/s */
     CHECK_CONTAINS(text, "<flow id=\"east\" type=\"fw_seagoing\" route=\"r_east_0\" begin=\"0\"");
     CHECK_CONTAINS(text, "period=\"exp(0.005)\"");
-    CHECK_CONTAINS(text, "<route id=\"r_ferry_north_1\" edges=\"EX_WX WX_FN\"/>");
+    CHECK_CONTAINS(text, "<route id=\"r_ferry_north_0\" edges=\"FSN\"/>");
     int fills = 0;
     for (const char *p = text; (p = strstr(p, "_fill")); p++)
         fills++;

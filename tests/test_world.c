@@ -246,7 +246,12 @@ static void test_reactive_traffic(void)
     fw_kin_ship stand = {.start = {.id = "S", .east = 3000.0, .north = 3000.0, .course = 1.5 * FW_PI,
                                    .speed = v, .length = 200, .breadth = 32}};
     react_out st = react_world(&stand, 1, FW_BEHAVIOUR_COLREGS, 900);
-    CHECK_MSG(st.slow == 0 && fabs(st.speed_end[0] - v) < 1e-12, "stand-on: %d orders", st.slow);
+    /* the own ship here never gives way: the stand-on ship keeps course and
+     * speed until it is so close that only its own action can help (rule
+     * 17(b): within 240 s of the closest approach), then it slows */
+    fw_reactions_def rd = fw_default_reactions_def();
+    CHECK_MSG(st.slow >= 1 && st.first_slow_t >= tc - rd.last_time - 1.0,
+              "stand-on: %d orders, the first at %.0f s", st.slow, st.first_slow_t);
     /* two background ships far from the own ship crossing at (20000, 3000):
      * A heading east sees B (heading north) on its starboard side: A gives way */
     fw_kin_ship two[2] = {
@@ -262,8 +267,10 @@ static void test_reactive_traffic(void)
     CHECK_MSG(fabs(pair.speed_end[1] - v) < 1e-12, "the stand-on ship B kept its speed (%.2f)",
               pair.speed_end[1]);
     printf("  give-way ship: blind %.0f m, colregs %.0f m (%d orders from %.0f s, %.0f s before "
-           "the collision point); stand-on: %d orders; pair: blind %.0f m, colregs %.0f m\n",
-           blind.dmin, col.dmin, col.slow, col.first_slow_t, tc, st.slow, pb.dmin, pair.dmin);
+           "the collision point); stand-on: kept course and speed until %.0f s (rule 17(b)), closest "
+           "%.0f m; pair: blind %.0f m, colregs %.0f m\n",
+           blind.dmin, col.dmin, col.slow, col.first_slow_t, tc, st.first_slow_t, st.dmin, pb.dmin,
+           pair.dmin);
 }
 
 /* The own ship returning to its course after avoiding a head-on target meets
@@ -330,6 +337,40 @@ static void test_threat_during_return(void)
            "300 s), domain radius %.2f, back on course at %.0f s\n",
            t_return, t_stop, lam, t_back);
     fw_world_destroy(w);
+}
+
+/* The strait with its heavy traffic for 20 minutes: no ship moves sideways
+ * faster than a lane change allows (1 m/s across 900 m lanes in 900 s), none
+ * jumps, none appears, vanishes or starts within 2 nm of the own ship (the
+ * routes end beyond its sight and the fill's close ships are taken out). */
+static void test_strait_traffic_monitors(void)
+{
+    static fw_scenario s;
+    char file[512], dir[600];
+    fw_error err = {0};
+    snprintf(file, sizeof file, "%s/scenarios/traffic/strait-crossing.yaml", fw_data_root());
+    CHECK_MSG(fw_scenario_load(file, &s, &err) == FW_OK, "%s", err.msg);
+    s.duration = 1200.0;
+    snprintf(dir, sizeof dir, "%s/strait", tmp_root);
+    mkdir(dir, 0777);
+    fw_run_def def = fw_default_run_def();
+    def.scenario = &s;
+    def.dir = dir;
+    fw_run_summary sum;
+    fw_encounter *e = NULL;
+    int ne = 0;
+    CHECK_MSG(fw_run_scenario(&def, &sum, &e, &ne, &err) == FW_OK, "%s", err.msg);
+    free(e);
+    const fw_monitor_counts *m = &sum.monitors;
+    CHECK_MSG(m->sideways == 0 && m->teleport == 0 && m->max_lateral <= 1.0 + 1e-6,
+              "%d sideways, %d teleports, %.2f m/s", m->sideways, m->teleport, m->max_lateral);
+    CHECK_MSG(m->appear == 0 && m->vanish == 0 && m->start_close == 0,
+              "%d appear, %d vanish, %d at the start within 2 nm", m->appear, m->vanish,
+              m->start_close);
+    CHECK(ne > 5 && sum.n_give_way > 0);
+    printf("  strait, 20 min: %d ships met, largest sideways %.2f m/s, %d give-way orders, "
+           "%d background overlaps\n",
+           ne, m->max_lateral, sum.n_give_way, m->overlap);
 }
 
 /* own.csv's helm order and mode columns, and the act lines of run.log. */
@@ -422,6 +463,7 @@ int main(void)
     TEST_RUN(test_two_vessels_head_on);
     TEST_RUN(test_reactive_traffic);
     TEST_RUN(test_threat_during_return);
+    TEST_RUN(test_strait_traffic_monitors);
     TEST_RUN(test_paper_case_without_sumo);
     char cmd[400];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);

@@ -40,12 +40,15 @@ static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *e
         return st;
     if (mkdir(dir, 0777) != 0)
         return fw_fail(err, FW_ERUN, "cannot create %s", dir);
+    fw_sumo_source_def dflt = fw_default_sumo_source_def();
     fw_sumo_source_def sd = {.mode = def->mode, .dir = dir, .network = s->network,
                              .density = s->density, .fill = s->fill, .seed = s->seed,
                              .duration = s->duration, .step = s->step, .targets = s->targets,
                              .n_targets = s->n_targets, .own = own_start(s), .own_leg = s->leg,
                              .radius = s->radius,
-                             .area_radius = s->survey ? s->survey_radius : 0.0};
+                             .area_radius = s->survey ? s->survey_radius : 0.0,
+                             .clear_range = dflt.clear_range, .clear_cpa = dflt.clear_cpa,
+                             .clear_tcpa = dflt.clear_tcpa};
     return fw_sumo_source_create(&sd, src, err);
 }
 
@@ -204,8 +207,9 @@ static void record_reactions(run_state *R, fw_run_summary *sum)
         sum->n_give_way++;
         sum->n_give_way_short += !r->enough;
         fprintf(fw_records_log(R->rec),
-                "%9.1f  traffic: %s gives way to %s (%s): slows from %.1f to %.1f kn, CPA %.0f m",
-                r->t, r->ship, r->other, fw_situation_name(r->situation), fw_ms_to_kn(r->speed_from),
+                "%9.1f  traffic: %s %s %s (%s): slows from %.1f to %.1f kn, CPA %.0f m", r->t,
+                r->ship, r->situation == FW_SIT_STAND_ON ? "acts (rule 17(b)) for" : "gives way to",
+                r->other, fw_situation_name(r->situation), fw_ms_to_kn(r->speed_from),
                 fw_ms_to_kn(r->speed_to), r->dcpa_before);
         if (r->enough)
             fprintf(fw_records_log(R->rec), " -> %.0f m\n", r->dcpa_after);
@@ -345,12 +349,18 @@ static fw_status finish(run_state *R, const fw_run_def *def, fw_run_summary *sum
 static void log_start(run_state *R)
 {
     const fw_scenario *s = R->s;
+    int cleared = fw_sumo_source_cleared(fw_world_source(R->w));
     fprintf(fw_records_log(R->rec),
             "scenario %s (%s): own ship %s at %.1f kn on %03.0f deg from (%.1f, %.1f) m, "
             "%d explicit targets%s%s, %.0f s in steps of %.3f s, seed %lu\n",
             s->name, s->file, s->ship.name, fw_ms_to_kn(s->speed), fw_heading_deg(s->course),
             s->east, s->north, s->n_targets, s->network[0] ? ", network " : "", s->network,
             s->duration, s->step, s->seed);
+    if (cleared > 0)
+        fprintf(fw_records_log(R->rec),
+                "traffic: %d ships the fill put within 2 nm of the own ship or on a collision "
+                "course with it taken out at the start\n",
+                cleared);
 }
 
 fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,

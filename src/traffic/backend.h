@@ -38,6 +38,8 @@ typedef struct fw_sumo_backend {
                        double cy, fw_error *err);
     /* Holds a ship's speed (m/s); speed < 0 hands it back to SUMO's model. */
     fw_status (*set_speed)(const char *id, double speed, fw_error *err);
+    /* Takes a ship out of the simulation. */
+    fw_status (*remove)(const char *id, fw_error *err);
     fw_status (*step)(double *time, fw_error *err);
     fw_status (*context)(fw_sumo_list *out, fw_error *err);
     fw_status (*all)(fw_sumo_list *out, fw_error *err);

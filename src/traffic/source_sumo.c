@@ -9,6 +9,7 @@
 #include "core/clock.h"
 #include "core/files.h"
 #include "core/mem.h"
+#include "geom/geom.h"
 #include "traffic/demand.h"
 #include "ship/ship.h"
 #include "traffic/netbuild.h"
@@ -30,6 +31,7 @@ typedef struct sumo_source {
     int cap;
     fw_target *labels;    /* explicit targets: id -> the scenario's type label */
     int n_labels;
+    int cleared;          /* fill ships taken out at the start */
 } sumo_source;
 
 fw_sumo_source_def fw_default_sumo_source_def(void)
@@ -37,7 +39,8 @@ fw_sumo_source_def fw_default_sumo_source_def(void)
     return (fw_sumo_source_def){.mode = {.kind = FW_TRAFFIC_EMBEDDED}, .density = 1.0, .seed = 1,
                                 .duration = 3600.0, .step = 1.0,
                                 .own = {.id = "fw_own", .length = 100.0, .breadth = 16.0},
-                                .radius = 6.0 * 1852.0};
+                                .radius = 6.0 * 1852.0, .clear_range = 2.0 * 1852.0,
+                                .clear_cpa = 0.25 * 1852.0, .clear_tcpa = 600.0};
 }
 
 static void node(FILE *f, const char *id, double e, double n)
@@ -267,9 +270,50 @@ static const fw_source_ops sumo_ops = {.name = "sumo", .place = ss_place, .advan
                                        .set_speed = ss_set_speed, .time = ss_time,
                                        .step_length = ss_step_length, .destroy = ss_destroy};
 
+int fw_sumo_source_cleared(const fw_source *s)
+{
+    return s && s->ops == &sumo_ops ? ((const sumo_source *)s)->cleared : 0;
+}
+
 double fw_sumo_source_step_wall(const fw_source *s)
 {
     return s && s->ops == &sumo_ops ? ((const sumo_source *)s)->wall : 0.0;
+}
+
+/* The fill's ships too close to the own ship at t = 0, taken out (see
+ * source_sumo.h); *n_out counts them. */
+static fw_status clear_start(sumo_source *k, const fw_sumo_source_def *d, int *n_out,
+                             fw_error *err)
+{
+    const fw_target *v;
+    int n;
+    *n_out = 0;
+    fw_status st = fw_traffic_around(k->tr, &v, &n, err);
+    if (st)
+        return st;
+    /* ids first: removing changes the list */
+    char (*ids)[FW_TARGET_ID_MAX] = malloc(sizeof *ids * (size_t)(n + 1));
+    if (!ids)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    int m = 0;
+    double oe, on;
+    fw_velocity(d->own.speed, d->own.course, &oe, &on);
+    for (int i = 0; i < n; i++) {
+        if (fw_target_find(d->targets, d->n_targets, v[i].id) >= 0)
+            continue;
+        double ve, vn, tc, dc, de = v[i].east - d->own.east, dn = v[i].north - d->own.north;
+        fw_velocity(v[i].speed, v[i].course, &ve, &vn);
+        fw_cpa(de, dn, ve - oe, vn - on, &tc, &dc);
+        bool close = hypot(de, dn) < d->clear_range;
+        bool coming = tc > 0.0 && tc < d->clear_tcpa && dc < d->clear_cpa;
+        if (close || coming)
+            memcpy(ids[m++], v[i].id, FW_TARGET_ID_MAX);
+    }
+    for (int i = 0; i < m && !st; i++)
+        st = fw_traffic_remove(k->tr, ids[i], err);
+    free(ids);
+    *n_out = m;
+    return st;
 }
 
 fw_status fw_sumo_source_create(const fw_sumo_source_def *d, fw_source **out, fw_error *err)
@@ -310,11 +354,13 @@ fw_status fw_sumo_source_create(const fw_sumo_source_def *d, fw_source **out, fw
     td.area_radius = d->area_radius;
     /* SUMO inserts the targets during its first step: after it, their
      * positions are those of fairway's t = 0 */
+    int cleared = 0;
     if ((st = fw_traffic_open(&td, &k->tr, err)) || (st = ss_place(&k->base, &d->own, err)) ||
-        (st = fw_traffic_step(k->tr, err))) {
+        (st = fw_traffic_step(k->tr, err)) || (st = clear_start(k, d, &cleared, err))) {
         ss_destroy(&k->base);
         return st;
     }
+    k->cleared = cleared;
     *out = &k->base;
     return FW_OK;
 }

@@ -19,7 +19,11 @@
  * scenario's type label, not the generated vType.
  *
  * After create, SUMO has made its first step (it inserts ships during a
- * step): the ships are where they are at fairway's t = 0.
+ * step): the ships are where they are at fairway's t = 0.  Then every network
+ * ship (not an explicit target) that SUMO's fill put within clear_range of
+ * the own ship, or on a course that would bring it within clear_cpa of it in
+ * the next clear_tcpa seconds (both at constant velocity), is taken out: a
+ * study must not begin with a ship already on top of the own ship.
  */
 #ifndef FW_SOURCE_SUMO_H
 #define FW_SOURCE_SUMO_H
@@ -42,11 +46,17 @@ typedef struct fw_sumo_source_def {
     double own_leg;             /* m, planned straight leg along the course */
     double radius;              /* m, sight (own hull centre to SUMO's front bumper) */
     double area_radius;         /* m, 0 = no area query */
+    double clear_range;         /* m, 2 nm */
+    double clear_cpa;           /* m, 0.25 nm (a collision course) ... */
+    double clear_tcpa;          /* s, ... within 600 s */
 } fw_sumo_source_def;
 
 fw_sumo_source_def fw_default_sumo_source_def(void);
 
 fw_status fw_sumo_source_create(const fw_sumo_source_def *def, fw_source **out, fw_error *err);
+
+/* How many fill ships were taken out at the start (0 for another source). */
+int fw_sumo_source_cleared(const fw_source *s);
 
 /* Wall-clock seconds spent in SUMO's steps so far (benchmarks and the study
  * database only, never in a run's files). */

@@ -393,6 +393,28 @@ fw_status fw_traffic_set_speed(fw_traffic *t, const char *id, double speed, fw_e
     return t->be->set_speed(id, isfinite(speed) ? speed : -1.0, err);
 }
 
+static fw_status context(fw_traffic *t, fw_error *err);
+
+fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err)
+{
+    if (alive(t, err) || context(t, err))
+        return FW_ERUN;
+    if (strcmp(id, t->own_id) == 0)
+        return fw_fail(err, FW_ERUN, "the own ship cannot be removed");
+    fw_status st = t->be->remove(id, err);
+    if (st)
+        return st;
+    /* out of this step's lists at once */
+    for (int k = 0; k < t->ctx.n; k++)
+        if (strcmp(t->ctx.v[k].id, id) == 0) {
+            t->ctx.v[k] = t->ctx.v[t->ctx.n - 1];
+            t->conv[k] = t->conv[t->ctx.n - 1];
+            t->ctx.n--;
+            break;
+        }
+    return FW_OK;
+}
+
 fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
 {
     if (alive(t, err))

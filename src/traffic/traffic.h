@@ -105,6 +105,9 @@ fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, do
 /* Holds background ship id at speed (m/s) from the next step on, within its
  * type's deceleration; speed < 0 hands it back to SUMO's car following. */
 fw_status fw_traffic_set_speed(fw_traffic *t, const char *id, double speed, fw_error *err);
+/* Takes background ship id out of SUMO; it is left out of the queries of
+ * this step already (SUMO lists it until its next step). */
+fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err);
 /* Advances SUMO by one step. */
 fw_status fw_traffic_step(fw_traffic *t, fw_error *err);
 /* Ships within the radius of the own ship after the last step, own ship

@@ -220,6 +220,11 @@ fw_status be_set_speed(const char *id, double speed, fw_error *err)
     });
 }
 
+fw_status be_remove(const char *id, fw_error *err)
+{
+    return guarded("cannot remove a ship", err, [&] { S::Vehicle::remove(id); });
+}
+
 fw_status be_step(double *time, fw_error *err)
 {
     return guarded("step failed", err, [&] {
@@ -302,5 +307,5 @@ void be_close(void)
 
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
-    be_set_speed, be_step, be_context, be_all, be_get, be_close,
+    be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_close,
 };

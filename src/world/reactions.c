@@ -18,6 +18,7 @@ typedef struct react_state {
     double v0;       /* m/s, its own speed: the fastest seen while not told */
     double hold;     /* m/s */
     char other[FW_TARGET_ID_MAX]; /* the ship it last gave way to */
+    bool rule17;     /* holding as a stand-on ship's last action (rule 17(b)) */
 } react_state;
 
 struct fw_reactions {
@@ -33,7 +34,8 @@ fw_reactions_def fw_default_reactions_def(void)
 {
     return (fw_reactions_def){.behaviour = FW_BEHAVIOUR_COLREGS, .cpa = 0.5 * FW_NMILE,
                               .horizon = 900.0, .range = 8000.0, .min_speed = 0.3,
-                              .parallel = fw_deg_to_rad(30.0),
+                              .parallel = fw_deg_to_rad(30.0), .last_cpa = 0.25 * FW_NMILE,
+                              .last_time = 240.0,
                               .colregs = fw_default_colregs_def()};
 }
 
@@ -122,16 +124,29 @@ static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
     return *sit == FW_SIT_GIVE_WAY || (*sit == FW_SIT_OVERTAKING && b->own);
 }
 
+/* A ship a gives way to: with a risk at its own speed va, or at vh, the
+ * speed it has been told to hold (vh < 0: none): a ship held slow may meet
+ * at its slow speed a ship it would pass ahead of at its own. */
+static bool is_threat(const fw_reactions *r, const fw_target *a, double va, double vh,
+                      const fw_target *b, double cpa, const char *keep, fw_situation *sit,
+                      double *tcpa, double *dcpa)
+{
+    if (gives_way_to(r, a, va, b, cpa, keep, sit, tcpa, dcpa))
+        return true;
+    return vh >= 0.0 && gives_way_to(r, a, vh, b, cpa, keep, sit, tcpa, dcpa);
+}
+
 /* The ships a gives way to at speed va: the count, and the nearest in time. */
 static int threats(const fw_reactions *r, int self, const fw_target *all, int n, double va,
-                   double cpa, const char *keep, int *nearest, fw_situation *sit, double *dcpa)
+                   double vh, double cpa, const char *keep, int *nearest, fw_situation *sit,
+                   double *dcpa)
 {
     int k = 0;
     double tbest = INFINITY;
     for (int j = 0; j < n; j++) {
         fw_situation s;
         double tc, dc;
-        if (j == self || !gives_way_to(r, &all[self], va, &all[j], cpa, keep, &s, &tc, &dc))
+        if (j == self || !is_threat(r, &all[self], va, vh, &all[j], cpa, keep, &s, &tc, &dc))
             continue;
         k++;
         if (tc < tbest) {
@@ -144,35 +159,50 @@ static int threats(const fw_reactions *r, int self, const fw_target *all, int n,
     return k;
 }
 
-/* The fastest speed from v0 down to min_speed v0 (5 % steps) at which a
- * passes every ship it gives way to at cpa or more; *enough false if none. */
-static double yielding_speed(const fw_reactions *r, int self, const fw_target *all, int n,
-                             double v0, const char *keep, bool *enough, double *dcpa_after)
+/* Does a at speed v pass every ship it gives way to (at v0) at cpa? */
+static bool clears_at(const fw_reactions *r, int self, const fw_target *all, int n, double v0,
+                      double vh, double v, const char *keep, double *dcpa)
 {
-    double v = v0;
-    for (int k = 1; k <= 20; k++) {
-        v = v0 * (1.0 - 0.05 * k);
-        if (v < r->def.min_speed * v0 - 1e-12)
-            break;
-        double dc = INFINITY;
-        /* the ships it gives way to are those at its old speed; at the new
-         * one it must pass each of them at cpa */
-        bool ok = true;
-        for (int j = 0; j < n && ok; j++) {
-            fw_situation s0;
-            double t0, d0, tc;
-            if (j == self ||
-                !gives_way_to(r, &all[self], v0, &all[j], r->def.cpa, keep, &s0, &t0, &d0))
-                continue;
-            cpa_at(&all[self], v, &all[j], &tc, &dc);
-            ok = tc <= 0.0 || dc >= r->def.cpa;
-        }
-        if (ok) {
-            *enough = true;
-            *dcpa_after = dc;
-            return v;
-        }
+    *dcpa = INFINITY;
+    for (int j = 0; j < n; j++) {
+        fw_situation s0;
+        double t0, d0, tc, dc;
+        if (j == self ||
+            !is_threat(r, &all[self], v0, vh, &all[j], r->def.cpa, keep, &s0, &t0, &d0))
+            continue;
+        cpa_at(&all[self], v, &all[j], &tc, &dc);
+        if (!(tc <= 0.0 || dc >= r->def.cpa))
+            return false;
+        *dcpa = fmin(*dcpa, dc);
     }
+    return true;
+}
+
+/* The fastest speed from v0 (or the speed it holds, vh) down to min_speed v0
+ * (5 % steps) at which a passes every ship it gives way to at cpa or more;
+ * *enough false if none. */
+/* (see the two passes below) */
+static double yielding_speed(const fw_reactions *r, int self, const fw_target *all, int n,
+                             double v0, double vh, const char *keep, bool *enough,
+                             double *dcpa_after)
+{
+    /* first never faster than it has been told (speeding up to pass ahead
+     * is what a give-way ship must avoid, rule 15); only if no such speed
+     * clears, any up to its own (rule 2(b): the departure that avoids the
+     * immediate danger) */
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 1; k <= 20; k++) {
+            double v = v0 * (1.0 - 0.05 * k);
+            if (v < r->def.min_speed * v0 - 1e-12)
+                break;
+            bool slower = vh < 0.0 || v <= vh + 1e-9;
+            if (slower != (pass == 0))
+                continue;
+            if (clears_at(r, self, all, n, v0, vh, v, keep, dcpa_after)) {
+                *enough = true;
+                return v;
+            }
+        }
     *enough = false;
     *dcpa_after = NAN;
     return r->def.min_speed * v0;
@@ -191,6 +221,78 @@ static fw_status record(fw_reactions *r, const fw_reaction *x, fw_error *err)
 }
 
 /* Background ship `self` of all[0..n-1] this step. */
+/* Rule 17(b): a stand-on ship that finds itself so close to a ship that
+ * should give way that this alone cannot avoid a collision (DCPA below
+ * last_cpa within last_time s) takes the action that best aids: the speed
+ * (from its own down to min_speed, 5 % steps) that passes farthest.  *j_out:
+ * the closest such ship (-1: none). */
+static double last_action(const fw_reactions *r, int self, const fw_target *all, int n,
+                          double v0, int *j_out, double *dcpa_now, double *dcpa_best)
+{
+    const fw_target *a = &all[self];
+    *j_out = -1;
+    double tbest = INFINITY;
+    for (int j = 0; j < n; j++) {
+        double tc, dc;
+        if (j == self || hypot(all[j].east - a->east, all[j].north - a->north) > r->def.range)
+            continue;
+        cpa_at(a, v0, &all[j], &tc, &dc);
+        if (!(tc > 0.0 && tc < r->def.last_time && dc < r->def.last_cpa))
+            continue;
+        fw_own_state me = {.east = a->east, .north = a->north, .psi = a->course, .U = v0};
+        fw_situation s = fw_classify(&r->def.colregs, &me, &all[j]);
+        if ((s == FW_SIT_STAND_ON || s == FW_SIT_OVERTAKEN) && tc < tbest) {
+            tbest = tc;
+            *j_out = j;
+            *dcpa_now = dc;
+        }
+    }
+    if (*j_out < 0)
+        return v0;
+    double best = v0, dbest = *dcpa_now;
+    for (int k = 1; k <= 20; k++) {
+        double v = v0 * (1.0 - 0.05 * k), tc, dc;
+        if (v < r->def.min_speed * v0 - 1e-12)
+            break;
+        cpa_at(a, v, &all[*j_out], &tc, &dc);
+        if (tc <= 0.0)
+            dc = INFINITY;
+        if (dc > dbest)
+            best = v, dbest = dc;
+    }
+    *dcpa_best = dbest;
+    return best;
+}
+
+/* The stand-on ship's part (rule 17(b)): a speed order, or its speed back. */
+static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *all, int n,
+                          react_state *st, fw_source *src, fw_error *err)
+{
+    const fw_target *a = &all[self];
+    int j;
+    double now = INFINITY, best = INFINITY;
+    double v = last_action(r, self, all, n, st->v0, &j, &now, &best);
+    fw_reaction x = {.t = t, .situation = FW_SIT_STAND_ON, .dcpa_before = now, .dcpa_after = best,
+                     .enough = best >= r->def.last_cpa};
+    snprintf(x.ship, sizeof x.ship, "%s", a->id);
+    if (j < 0 || v >= st->v0) {
+        if (!st->holding)
+            return FW_OK;
+        x.kind = FW_REACT_RESUME, x.speed_from = st->hold, x.speed_to = st->v0;
+        st->holding = st->rule17 = false;
+        fw_status s2 = fw_source_set_speed(src, a->id, -1.0, err);
+        return s2 ? s2 : record(r, &x, err);
+    }
+    if (st->holding && fabs(v - st->hold) < 0.05 * st->v0)
+        return FW_OK;
+    snprintf(x.other, sizeof x.other, "%s", all[j].id);
+    x.kind = FW_REACT_SLOW, x.speed_from = st->holding ? st->hold : st->v0, x.speed_to = v;
+    st->holding = st->rule17 = true;
+    st->hold = v;
+    fw_status s2 = fw_source_set_speed(src, a->id, v, err);
+    return s2 ? s2 : record(r, &x, err);
+}
+
 static fw_status react(fw_reactions *r, double t, int self, const fw_target *all, int n,
                        react_state *st, fw_source *src, fw_error *err)
 {
@@ -210,13 +312,15 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
      * with kResume x cpa to spare: given back at cpa exactly, it would have
      * to give way again a few steps later */
     const char *keep = st->holding ? st->other : NULL;
-    int k = threats(r, self, all, n, v0, st->holding ? kResume * r->def.cpa : r->def.cpa, keep,
-                    &nearest, &sit, &dcpa);
+    double vh = st->holding ? st->hold : -1.0;
+    int k = threats(r, self, all, n, v0, vh, st->holding ? kResume * r->def.cpa : r->def.cpa,
+                    keep, &nearest, &sit, &dcpa);
     fw_reaction x = {.t = t, .situation = sit, .dcpa_before = dcpa};
     snprintf(x.ship, sizeof x.ship, "%s", a->id);
+    if (k == 0 && (!st->holding || st->rule17))
+        return stand_on(r, t, self, all, n, st, src, err);
+    st->rule17 = false;
     if (k == 0) {
-        if (!st->holding)
-            return FW_OK;
         /* not while the ship it gave way to is still this close: around the
          * closest approach the predicted passing flips from ahead to past */
         for (int j = 0; j < n; j++)
@@ -233,9 +337,13 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
         return s2 ? s2 : record(r, &x, err);
     }
     double after;
-    double v = yielding_speed(r, self, all, n, v0, keep, &x.enough, &after);
-    if (st->holding && v >= st->hold - 0.05 * v0)
-        return FW_OK; /* already slow enough: no new order */
+    /* the speed it holds still keeps every ship it gives way to at cpa (a
+     * new one may need another: slower is not always clear of a crossing) */
+    if (st->holding && clears_at(r, self, all, n, v0, vh, st->hold, keep, &after))
+        return FW_OK;
+    double v = yielding_speed(r, self, all, n, v0, vh, keep, &x.enough, &after);
+    if (st->holding && fabs(v - st->hold) < 0.05 * v0)
+        return FW_OK; /* the best there is, already ordered */
     snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
     x.kind = FW_REACT_SLOW;
     x.speed_from = st->holding ? st->hold : v0;

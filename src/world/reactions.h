@@ -26,7 +26,11 @@
  *               (the margin: given back at cpa exactly it would have to give
  *               way again a few steps later)
  *
- * A stand-on ship keeps course and speed (rule 17(a)): nothing is ordered.
+ * A stand-on ship keeps course and speed (rule 17(a)): nothing is ordered,
+ * until the other has come so close (DCPA below last_cpa within last_time s)
+ * that its action alone cannot avoid a collision: then it takes the speed,
+ * down to min_speed of its own, that passes farthest (rule 17(b)), and its
+ * own speed back once that is no longer so.
  * Head-on meetings (rule 14: both alter to starboard) leave a lane-bound ship
  * nothing to do but hold its lane; the own ship's policy turns.  Every order
  * is recorded (ship, time, kind, speeds, the ship it gives way to).
@@ -53,6 +57,8 @@ typedef struct fw_reactions_def {
     double min_speed;     /* 0.3: the fraction of its speed it may slow to */
     double parallel;      /* rad, 30 deg: background ships on courses closer than this
                              share the lanes and are SUMO's to keep apart */
+    double last_cpa;      /* m, 463 (0.25 nm) ... */
+    double last_time;     /* s, 240: a stand-on ship this close this soon acts (rule 17(b)) */
     fw_colregs_def colregs;
 } fw_reactions_def;
 
