@@ -207,9 +207,10 @@ static void record_reactions(run_state *R, fw_run_summary *sum)
         sum->n_give_way++;
         sum->n_give_way_short += !r->enough;
         fprintf(fw_records_log(R->rec),
-                "%9.1f  traffic: %s %s %s (%s): slows from %.1f to %.1f kn, CPA %.0f m", r->t,
+                "%9.1f  traffic: %s %s %s (%s): %s from %.1f to %.1f kn, CPA %.0f m", r->t,
                 r->ship, r->situation == FW_SIT_STAND_ON ? "acts (rule 17(b)) for" : "gives way to",
-                r->other, fw_situation_name(r->situation), fw_ms_to_kn(r->speed_from),
+                r->other, fw_situation_name(r->situation),
+                r->speed_to > r->speed_from ? "speeds up" : "slows", fw_ms_to_kn(r->speed_from),
                 fw_ms_to_kn(r->speed_to), r->dcpa_before);
         if (r->enough)
             fprintf(fw_records_log(R->rec), " -> %.0f m\n", r->dcpa_after);

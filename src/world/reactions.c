@@ -2,6 +2,7 @@
 #include "world/reactions.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,6 +29,13 @@ struct fw_reactions {
     int cap;
     fw_reaction *log;
     int nlog, logcap;
+    int *list;       /* scratch: the ships one ship gives way to */
+    int list_cap;
+    /* this step's ships (the own ship last) and the sines and cosines of
+     * their courses, computed once: the pair loops' trigonometry */
+    const fw_target *all;
+    double *sn, *cs;
+    double cos_parallel;
 };
 
 fw_reactions_def fw_default_reactions_def(void)
@@ -66,6 +74,7 @@ fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, f
     if (!r)
         return fw_fail(err, FW_ERUN, "out of memory");
     r->def = *def;
+    r->cos_parallel = cos(def->parallel);
     *out = r;
     return FW_OK;
 }
@@ -76,6 +85,9 @@ void fw_reactions_destroy(fw_reactions *r)
         return;
     fw_idmap_free(&r->ids);
     free(r->s);
+    free(r->list);
+    free(r->sn);
+    free(r->cs);
     free(r->log);
     free(r);
 }
@@ -89,11 +101,20 @@ const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n)
 static const double kResume = 1.25;
 
 /* Closest approach of a (at speed va on its course) and b (as it goes). */
-static void cpa_at(const fw_target *a, double va, const fw_target *b, double *tcpa, double *dcpa)
+/* Velocity of ship t (one of r->all) at speed v on its course. */
+static void vel(const fw_reactions *r, const fw_target *t, double v, double *ve, double *vn)
+{
+    ptrdiff_t i = t - r->all;
+    *ve = v * r->sn[i];
+    *vn = v * r->cs[i];
+}
+
+static void cpa_at(const fw_reactions *r, const fw_target *a, double va, const fw_target *b,
+                   double *tcpa, double *dcpa)
 {
     double ae, an, be, bn;
-    fw_velocity(va, a->course, &ae, &an);
-    fw_velocity(b->speed, b->course, &be, &bn);
+    vel(r, a, va, &ae, &an);
+    vel(r, b, b->speed, &be, &bn);
     fw_cpa(b->east - a->east, b->north - a->north, be - ae, bn - an, tcpa, dcpa);
 }
 
@@ -102,16 +123,32 @@ static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
                          const fw_target *b, double cpa, const char *keep, fw_situation *sit,
                          double *tcpa, double *dcpa)
 {
-    if (hypot(b->east - a->east, b->north - a->north) > r->def.range)
+    double de = b->east - a->east, dn = b->north - a->north;
+    if (de * de + dn * dn > r->def.range * r->def.range)
+        return false;
+    /* opening already (TCPA <= 0): no risk, and no square root spent */
+    double ae, an, be, bn;
+    vel(r, a, va, &ae, &an);
+    vel(r, b, b->speed, &be, &bn);
+    if (de * (be - ae) + dn * (bn - an) >= 0.0 && !(keep && strcmp(b->id, keep) == 0))
         return false;
     /* two background ships on nearly the same course share a lane (or run
      * beside each other in two): they pass by overtaking, which SUMO keeps
-     * apart; only the own ship, off the lanes, is given way to there */
-    if (!b->own && fabs(fw_wrap_pi(a->course - b->course)) < r->def.parallel)
+     * apart; only the own ship, off the lanes, is given way to there (the
+     * cosine of the course difference from the unit vectors) */
+    ptrdiff_t i = a - r->all, j = b - r->all;
+    if (!b->own && r->sn[i] * r->sn[j] + r->cs[i] * r->cs[j] > r->cos_parallel)
         return false;
-    cpa_at(a, va, b, tcpa, dcpa);
-    if (!(*tcpa > 0.0 && *tcpa < r->def.horizon && *dcpa < cpa))
+    /* the closest approach, squared distances first: most pairs fail here */
+    double wx = be - ae, wy = bn - an, w2 = wx * wx + wy * wy;
+    double tc = w2 > 1e-12 ? -(de * wx + dn * wy) / w2 : 0.0;
+    if (!(tc > 0.0 && tc < r->def.horizon))
         return false;
+    double px = de + wx * tc, py = dn + wy * tc, d2 = px * px + py * py;
+    if (!(d2 < cpa * cpa))
+        return false;
+    *tcpa = tc;
+    *dcpa = sqrt(d2);
     fw_own_state me = {.east = a->east, .north = a->north, .psi = a->course, .U = va};
     *sit = fw_classify(&r->def.colregs, &me, b);
     /* a give-way ship stays one until the other is past and clear (rule 8):
@@ -160,17 +197,48 @@ static int threats(const fw_reactions *r, int self, const fw_target *all, int n,
 }
 
 /* Does a at speed v pass every ship it gives way to (at v0) at cpa? */
-static bool clears_at(const fw_reactions *r, int self, const fw_target *all, int n, double v0,
-                      double vh, double v, const char *keep, double *dcpa)
+/* The ships a gives way to (at cpa) into list; their count. */
+static int threat_list(const fw_reactions *r, int self, const fw_target *all, int n, double v0,
+                       double vh, const char *keep, int *list)
 {
-    *dcpa = INFINITY;
+    int m = 0;
     for (int j = 0; j < n; j++) {
         fw_situation s0;
-        double t0, d0, tc, dc;
-        if (j == self ||
-            !is_threat(r, &all[self], v0, vh, &all[j], r->def.cpa, keep, &s0, &t0, &d0))
-            continue;
-        cpa_at(&all[self], v, &all[j], &tc, &dc);
+        double t0, d0;
+        if (j != self &&
+            is_threat(r, &all[self], v0, vh, &all[j], r->def.cpa, keep, &s0, &t0, &d0))
+            list[m++] = j;
+    }
+    return m;
+}
+
+/* Of the ships in list, the nearest in time (at a's speed v0). */
+static void nearest_of(const fw_reactions *r, int self, const fw_target *all, const int *list,
+                       int m, double v0, int *nearest, fw_situation *sit, double *dcpa)
+{
+    double tbest = INFINITY;
+    for (int q = 0; q < m; q++) {
+        double tc, dc;
+        cpa_at(r, &all[self], v0, &all[list[q]], &tc, &dc);
+        if (tc < tbest) {
+            fw_own_state me = {.east = all[self].east, .north = all[self].north,
+                               .psi = all[self].course, .U = v0};
+            tbest = tc;
+            *nearest = list[q];
+            *sit = fw_classify(&r->def.colregs, &me, &all[list[q]]);
+            *dcpa = dc;
+        }
+    }
+}
+
+/* Does a at speed v pass every ship of list at cpa (or are they past)? */
+static bool clears_at(const fw_reactions *r, const fw_target *a, const fw_target *all,
+                      const int *list, int m, double v, double *dcpa)
+{
+    *dcpa = INFINITY;
+    for (int q = 0; q < m; q++) {
+        double tc, dc;
+        cpa_at(r, a, v, &all[list[q]], &tc, &dc);
         if (!(tc <= 0.0 || dc >= r->def.cpa))
             return false;
         *dcpa = fmin(*dcpa, dc);
@@ -182,15 +250,19 @@ static bool clears_at(const fw_reactions *r, int self, const fw_target *all, int
  * (5 % steps) at which a passes every ship it gives way to at cpa or more;
  * *enough false if none. */
 /* (see the two passes below) */
-static double yielding_speed(const fw_reactions *r, int self, const fw_target *all, int n,
-                             double v0, double vh, const char *keep, bool *enough,
+static double yielding_speed(const fw_reactions *r, const fw_target *a, const fw_target *all,
+                             const int *list, int m, double v0, double vh, bool *enough,
                              double *dcpa_after)
 {
     /* first never faster than it has been told (speeding up to pass ahead
      * is what a give-way ship must avoid, rule 15); only if no such speed
      * clears, any up to its own (rule 2(b): the departure that avoids the
-     * immediate danger) */
-    for (int pass = 0; pass < 2; pass++)
+     * immediate danger), but never towards the own ship, whose turns a
+     * constant-velocity look ahead does not see coming */
+    bool own = false;
+    for (int q = 0; q < m; q++)
+        own |= all[list[q]].own;
+    for (int pass = 0; pass < (own ? 1 : 2); pass++)
         for (int k = 1; k <= 20; k++) {
             double v = v0 * (1.0 - 0.05 * k);
             if (v < r->def.min_speed * v0 - 1e-12)
@@ -198,7 +270,7 @@ static double yielding_speed(const fw_reactions *r, int self, const fw_target *a
             bool slower = vh < 0.0 || v <= vh + 1e-9;
             if (slower != (pass == 0))
                 continue;
-            if (clears_at(r, self, all, n, v0, vh, v, keep, dcpa_after)) {
+            if (clears_at(r, a, all, list, m, v, dcpa_after)) {
                 *enough = true;
                 return v;
             }
@@ -234,9 +306,10 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
     double tbest = INFINITY;
     for (int j = 0; j < n; j++) {
         double tc, dc;
-        if (j == self || hypot(all[j].east - a->east, all[j].north - a->north) > r->def.range)
+        double de = all[j].east - a->east, dn = all[j].north - a->north;
+        if (j == self || de * de + dn * dn > r->def.range * r->def.range)
             continue;
-        cpa_at(a, v0, &all[j], &tc, &dc);
+        cpa_at(r, a, v0, &all[j], &tc, &dc);
         if (!(tc > 0.0 && tc < r->def.last_time && dc < r->def.last_cpa))
             continue;
         fw_own_state me = {.east = a->east, .north = a->north, .psi = a->course, .U = v0};
@@ -254,7 +327,7 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
         double v = v0 * (1.0 - 0.05 * k), tc, dc;
         if (v < r->def.min_speed * v0 - 1e-12)
             break;
-        cpa_at(a, v, &all[*j_out], &tc, &dc);
+        cpa_at(r, a, v, &all[*j_out], &tc, &dc);
         if (tc <= 0.0)
             dc = INFINITY;
         if (dc > dbest)
@@ -313,8 +386,14 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
      * to give way again a few steps later */
     const char *keep = st->holding ? st->other : NULL;
     double vh = st->holding ? st->hold : -1.0;
-    int k = threats(r, self, all, n, v0, vh, st->holding ? kResume * r->def.cpa : r->def.cpa,
-                    keep, &nearest, &sit, &dcpa);
+    /* the ships it gives way to (at cpa; held, those that would keep it from
+     * its speed: at kResume cpa) */
+    int m = threat_list(r, self, all, n, v0, vh, keep, r->list);
+    int k = st->holding ? threats(r, self, all, n, v0, vh, kResume * r->def.cpa, keep, &nearest,
+                                  &sit, &dcpa)
+                        : m;
+    if (!st->holding && m > 0)
+        nearest_of(r, self, all, r->list, m, v0, &nearest, &sit, &dcpa);
     fw_reaction x = {.t = t, .situation = sit, .dcpa_before = dcpa};
     snprintf(x.ship, sizeof x.ship, "%s", a->id);
     if (k == 0 && (!st->holding || st->rule17))
@@ -339,9 +418,9 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     double after;
     /* the speed it holds still keeps every ship it gives way to at cpa (a
      * new one may need another: slower is not always clear of a crossing) */
-    if (st->holding && clears_at(r, self, all, n, v0, vh, st->hold, keep, &after))
+    if (st->holding && clears_at(r, a, all, r->list, m, st->hold, &after))
         return FW_OK;
-    double v = yielding_speed(r, self, all, n, v0, vh, keep, &x.enough, &after);
+    double v = yielding_speed(r, a, all, r->list, m, v0, vh, &x.enough, &after);
     if (st->holding && fabs(v - st->hold) < 0.05 * v0)
         return FW_OK; /* the best there is, already ordered */
     snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
@@ -366,11 +445,28 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
     if (!all)
         return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
     memcpy(all, ships, sizeof *all * (size_t)n);
+    if (n + 1 > r->list_cap) {
+        if (!fw_resize((void **)&r->list, sizeof *r->list, (size_t)(n + 1))) {
+            free(all);
+            return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
+        }
+        r->list_cap = n + 1;
+    }
     int m = n;
     if (own) {
         all[m] = *own;
         all[m++].own = true;
     }
+    if (!fw_resize((void **)&r->sn, sizeof *r->sn, (size_t)m) ||
+        !fw_resize((void **)&r->cs, sizeof *r->cs, (size_t)m)) {
+        free(all);
+        return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
+    }
+    for (int i = 0; i < m; i++) {
+        r->sn[i] = sin(all[i].course);
+        r->cs[i] = cos(all[i].course);
+    }
+    r->all = all;
     fw_status st = FW_OK;
     for (int i = 0; i < n && !st; i++) {
         int id;
@@ -390,5 +486,6 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
         st = react(r, t, i, all, m, &r->s[id], src, err);
     }
     free(all);
+    r->all = NULL;
     return st;
 }
