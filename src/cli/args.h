@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "core/error.h"
+#include "ship/ship.h"
 
 typedef struct fw_args {
     int argc;
@@ -31,6 +32,22 @@ fw_status fw_parse_list(const char *opt, const char *text, double *out, int max,
                         fw_error *err);
 
 bool fw_is_help(const char *arg);
+
+/* Checks, before any computation, that path can be written as a new file:
+ * not a directory, an existing directory to hold it that we may write in,
+ * and not an existing file unless replace. */
+fw_status fw_check_out_file(const char *opt, const char *path, bool replace, fw_error *err);
+
+/* The fastest speed any command accepts, as scenarios do (kn). */
+#define FW_SPEED_MAX_KN 40.0
+/* Refuses kn outside [lo, FW_SPEED_MAX_KN]. */
+fw_status fw_check_speed(const char *opt, double kn, double lo, fw_error *err);
+/* Warns on stderr when kn is outside the speeds the ship's Nomoto knowledge
+ * base was fitted over (what names the speed: "--own speed"). */
+void fw_warn_nomoto_speed(const fw_ship *ship, double kn, const char *what);
+
+/* Fails when arguments are left over (an unexpected positional). */
+fw_status fw_args_none_left(const char *cmd, const fw_args *a, fw_error *err);
 
 /* Prints "fairway: msg" to stderr and returns the status as an exit code. */
 int fw_report(const fw_error *err);
