@@ -18,3 +18,16 @@ fw_script_test(cli_run_bad_file 0 "ok: no output" run_bad.sh)
 foreach(t cli_run_paper cli_run_json cli_run_help cli_run_none cli_run_bad_mode cli_run_bad_file)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 60)
 endforeach()
+
+# Hardening (issue 14): an interrupted run cleans up and says what it kept; an
+# unresolvable remote host is refused before anything runs
+fw_script_test(cli_run_interrupt 0 "ok: interrupted runs cleaned up" run_interrupt.sh)
+fw_cli_test(cli_run_bad_host 2 "--sumo remote:no-such-host.invalid:8813: cannot resolve host 'no-such-host.invalid'"
+            run ${CMAKE_SOURCE_DIR}/scenarios/paper/1-head-on.yaml --sumo remote:no-such-host.invalid:8813
+            --out ${CMAKE_CURRENT_BINARY_DIR}/cli-runs-bad-host)
+fw_cli_test(cli_sweep_bad_host 2 "cannot resolve host 'no-such-host.invalid'"
+            sweep ${CMAKE_SOURCE_DIR}/tests/data/study/small.yaml --db ${CMAKE_CURRENT_BINARY_DIR}/bad-host.db
+            --sumo remote:no-such-host.invalid:8813)
+foreach(t cli_run_interrupt cli_run_bad_host cli_sweep_bad_host)
+  set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}" TIMEOUT 120)
+endforeach()

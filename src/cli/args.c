@@ -2,6 +2,7 @@
 
 #include <errno.h>
 #include <libgen.h>
+#include <netdb.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -162,5 +163,20 @@ fw_status fw_args_none_left(const char *cmd, const fw_args *a, fw_error *err)
 {
     if (a->i < a->argc)
         return fw_fail(err, FW_EINPUT, "%s: unexpected argument '%s'", cmd, a->argv[a->i]);
+    return FW_OK;
+}
+
+fw_status fw_check_sumo_mode(const char *opt, const fw_traffic_mode *mode, fw_error *err)
+{
+    if (mode->kind != FW_TRAFFIC_REMOTE)
+        return FW_OK;
+    /* resolved now: libtraci would only say "Invalid network address" later */
+    struct addrinfo hints = {.ai_socktype = SOCK_STREAM}, *res = NULL;
+    int rc = getaddrinfo(mode->host, NULL, &hints, &res);
+    if (res)
+        freeaddrinfo(res);
+    if (rc != 0)
+        return fw_fail(err, FW_EINPUT, "%s remote:%s:%d: cannot resolve host '%s': %s", opt,
+                       mode->host, mode->port, mode->host, gai_strerror(rc));
     return FW_OK;
 }

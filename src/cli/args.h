@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "ship/ship.h"
+#include "traffic/traffic.h"
 
 typedef struct fw_args {
     int argc;
@@ -45,6 +46,9 @@ fw_status fw_check_speed(const char *opt, double kn, double lo, fw_error *err);
 /* Warns on stderr when kn is outside the speeds the ship's Nomoto knowledge
  * base was fitted over (what names the speed: "--own speed"). */
 void fw_warn_nomoto_speed(const fw_ship *ship, double kn, const char *what);
+
+/* A remote SUMO's host must resolve (checked before anything runs). */
+fw_status fw_check_sumo_mode(const char *opt, const fw_traffic_mode *mode, fw_error *err);
 
 /* Fails when arguments are left over (an unexpected positional). */
 fw_status fw_args_none_left(const char *cmd, const fw_args *a, fw_error *err);

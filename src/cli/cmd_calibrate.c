@@ -51,11 +51,13 @@ int fw_cmd_calibrate(int argc, char **argv)
     fw_ship ship;
     if (fw_ship_load(ship_name, &ship, &err))
         return fw_report(&err);
-    char path[600];
-    if (trial_path)
-        snprintf(path, sizeof path, "%s", trial_path);
-    else
-        snprintf(path, sizeof path, "%s/scenarios/ships/%s-trial.yaml", fw_data_root(), ship.name);
+    char path[1100];
+    size_t n = trial_path ? (size_t)snprintf(path, sizeof path, "%s", trial_path)
+                          : (size_t)snprintf(path, sizeof path, "%s/scenarios/ships/%s-trial.yaml",
+                                             fw_data_root(), ship.name);
+    if (n >= sizeof path)
+        return fw_report((fw_fail(&err, FW_EINPUT, "%s: path too long",
+                                  trial_path ? "--trial" : "FAIRWAY_DATA"), &err));
     fw_trial trial;
     if (fw_trial_load(path, &trial, &err))
         return fw_report(&err);

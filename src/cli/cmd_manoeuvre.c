@@ -5,6 +5,8 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "core/files.h"
+#include "core/json.h"
 #include "core/units.h"
 #include "dynamics/calibrate.h"
 #include "dynamics/manoeuvre.h"
@@ -97,6 +99,15 @@ static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
         return fw_fail(err, FW_EINPUT, "--side: '%s' is not starboard or port", o->side);
     if (o->have_speed && !(o->speed > 0.0))
         return fw_fail(err, FW_EINPUT, "--speed: must be positive (got %g kn)", o->speed);
+    if (o->have_speed && o->speed > FW_SPEED_MAX_KN)
+        return fw_fail(err, FW_EINPUT,
+                       "--speed: %g kn is above %g kn, the fastest fairway accepts (as scenarios)",
+                       o->speed, FW_SPEED_MAX_KN);
+    /* output paths are checked before the simulation, not after it */
+    if (o->csv && fw_check_out_file("--csv", o->csv, true, err))
+        return err->status;
+    if (o->csv_dir && fw_mkdirs(o->csv_dir, "--csv-dir", err))
+        return err->status;
     if (o->have_rudder && !(o->rudder > 0.0))
         return fw_fail(err, FW_EINPUT,
                        "--rudder: give the angle's size in degrees (> 0) and the side with --side");
@@ -110,13 +121,15 @@ static double side_sign(const char *side) { return strcmp(side, "port") == 0 ? -
 static void print_turning_json(const fw_ship *s, double speed, double rudder,
                                const fw_turning_result *r, const char *extra)
 {
-    printf("{\"ship\": \"%s\", \"L_m\": %.3f, \"speed_kn\": %.3f, \"rudder_deg\": %.2f, "
+    printf("{\"ship\": ");
+    fw_json_string(stdout, s->name);
+    printf(", \"L_m\": %.3f, \"speed_kn\": %.3f, \"rudder_deg\": %.2f, "
            "\"propeller_rps\": %.4f, \"advance_m\": %.2f, \"advance_L\": %.4f, "
            "\"transfer_m\": %.2f, \"transfer_L\": %.4f, \"tactical_diameter_m\": %.2f, "
            "\"tactical_diameter_L\": %.4f, \"t90_s\": %.2f, \"t180_s\": %.2f, "
            "\"steady_rate_degps\": %.5f, \"steady_speed_kn\": %.3f, \"imo_advance_ok\": %s, "
            "\"imo_tactical_diameter_ok\": %s%s}",
-           s->name, s->L, fw_ms_to_kn(speed), fw_rad_to_deg(rudder), r->propeller, r->advance,
+           s->L, fw_ms_to_kn(speed), fw_rad_to_deg(rudder), r->propeller, r->advance,
            r->advance / s->L, r->transfer, r->transfer / s->L, r->tactical_diameter,
            r->tactical_diameter / s->L, r->t90, r->t180, fw_rad_to_deg(r->steady_rate),
            fw_ms_to_kn(r->steady_speed), r->advance_ok ? "true" : "false",
@@ -146,11 +159,13 @@ static void print_zigzag_json(const fw_ship *s, const fw_zigzag_def *d, const fw
         snprintf(l2, sizeof l2, "%.2f", fw_rad_to_deg(r->limit2));
     else
         snprintf(l2, sizeof l2, "null");
-    printf("{\"ship\": \"%s\", \"speed_kn\": %.3f, \"angle_deg\": %.2f, \"side\": \"%s\", "
+    printf("{\"ship\": ");
+    fw_json_string(stdout, s->name);
+    printf(", \"speed_kn\": %.3f, \"angle_deg\": %.2f, \"side\": \"%s\", "
            "\"propeller_rps\": %.4f, \"initial_turning_time_s\": %.2f, \"L_over_V_s\": %.3f, "
            "\"overshoot1_deg\": %.3f, \"overshoot2_deg\": %.3f, \"limit1_deg\": %.2f, "
            "\"limit2_deg\": %s, \"imo_ok1\": %s, \"imo_ok2\": %s}",
-           s->name, fw_ms_to_kn(d->speed), fw_rad_to_deg(d->angle),
+           fw_ms_to_kn(d->speed), fw_rad_to_deg(d->angle),
            d->first_side > 0 ? "starboard" : "port", r->propeller, r->t_first_execute,
            r->L_over_V, fw_rad_to_deg(r->overshoot1), fw_rad_to_deg(r->overshoot2),
            fw_rad_to_deg(r->limit1), l2, r->ok1 ? "true" : "false", r->ok2 ? "true" : "false");
@@ -243,18 +258,25 @@ static void rate_row(double trial, double sim, double ours)
 
 static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
 {
-    char trial_path[600];
-    if (o->trial)
-        snprintf(trial_path, sizeof trial_path, "%s", o->trial);
-    else
-        snprintf(trial_path, sizeof trial_path, "%s/scenarios/ships/%s-trial.yaml", fw_data_root(),
-                 ship->name);
+    char trial_path[1100];
+    size_t n = o->trial ? (size_t)snprintf(trial_path, sizeof trial_path, "%s", o->trial)
+                        : (size_t)snprintf(trial_path, sizeof trial_path,
+                                           "%s/scenarios/ships/%s-trial.yaml", fw_data_root(),
+                                           ship->name);
+    if (n >= sizeof trial_path)
+        return fw_report((fw_fail(err, FW_EINPUT, "%s: path too long", o->trial ? "--trial"
+                                                                                : "FAIRWAY_DATA"),
+                          err));
     fw_trial trial;
     if (fw_trial_load(trial_path, &trial, err))
         return fw_report(err);
     bool all_ok = true;
     if (o->json)
-        printf("{\"ship\": \"%s\", \"turns\": [", ship->name);
+    {
+        printf("{\"ship\": ");
+        fw_json_string(stdout, ship->name);
+        printf(", \"turns\": [");
+    }
     else
         printf("Manoeuvring report: %s (L = %.1f m), trial data %s\n\n", ship->name, ship->L,
                trial_path);
@@ -268,10 +290,13 @@ static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
         fw_history h = {0};
         fw_status st = fw_turning_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
         if (!st && o->csv_dir) {
-            char path[700];
-            snprintf(path, sizeof path, "%s/turning_%s_%.2fkn.csv", o->csv_dir,
-                     t->rudder > 0 ? "starboard" : "port", fw_ms_to_kn(t->speed));
-            st = fw_history_write_csv(&h, path, err);
+            char path[1100];
+            if ((size_t)snprintf(path, sizeof path, "%s/turning_%s_%.2fkn.csv", o->csv_dir,
+                                 t->rudder > 0 ? "starboard" : "port",
+                                 fw_ms_to_kn(t->speed)) >= sizeof path)
+                st = fw_fail(err, FW_EINPUT, "--csv-dir %s: path too long", o->csv_dir);
+            else
+                st = fw_history_write_csv(&h, path, err);
         }
         fw_history_free(&h);
         if (st)
@@ -312,10 +337,12 @@ static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
         fw_history h = {0};
         fw_status st = fw_zigzag_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
         if (!st && o->csv_dir) {
-            char path[700];
-            snprintf(path, sizeof path, "%s/zigzag_%.0f_%.2fkn.csv", o->csv_dir, angles[k],
-                     fw_ms_to_kn(d.speed));
-            st = fw_history_write_csv(&h, path, err);
+            char path[1100];
+            if ((size_t)snprintf(path, sizeof path, "%s/zigzag_%.0f_%.2fkn.csv", o->csv_dir,
+                                 angles[k], fw_ms_to_kn(d.speed)) >= sizeof path)
+                st = fw_fail(err, FW_EINPUT, "--csv-dir %s: path too long", o->csv_dir);
+            else
+                st = fw_history_write_csv(&h, path, err);
         }
         fw_history_free(&h);
         if (st)

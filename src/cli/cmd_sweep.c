@@ -101,7 +101,8 @@ static fw_status parse_one(fw_args *a, sweep_opts *o, fw_error *err)
         return err->status ? err->status
                            : parse_count("--limit", v, 1, INT_MAX, &def->limit, err);
     else if (fw_args_opt(a, "--sumo", &v, err)) {
-        if (err->status || fw_traffic_mode_parse(v, &def->mode, err))
+        if (err->status || fw_traffic_mode_parse(v, &def->mode, err) ||
+            fw_check_sumo_mode("--sumo", &def->mode, err))
             return err->status;
         if (def->mode.kind == FW_TRAFFIC_GUI)
             return fw_fail(err, FW_EINPUT, "--sumo gui: a sweep runs without windows; use "

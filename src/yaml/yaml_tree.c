@@ -248,7 +248,7 @@ fw_status yt_load_file(const char *path, yt_doc **out, fw_error *err)
     struct stat sb;
     if (fstat(fileno(f), &sb) == 0 && !S_ISREG(sb.st_mode)) {
         fclose(f);
-        return fw_fail(err, FW_EINPUT, "%s: %s, not a YAML file", path,
+        return fw_fail(err, FW_EINPUT, "%s: is %s, expected a YAML file", path,
                        S_ISDIR(sb.st_mode) ? "a directory" : "not a regular file");
     }
     builder b = {.file = path, .err = err};
