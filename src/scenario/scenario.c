@@ -314,7 +314,9 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
     static const char *const keys[] = {"name", "description", "own_ship", "traffic",
                                        "avoidance", "survey", "run", "outputs", NULL};
     memset(s, 0, sizeof *s);
-    snprintf(s->file, sizeof s->file, "%s", path);
+    if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
+        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
+                       sizeof s->file - 1);
     s->density = 1.0;
     s->helm = fw_default_helm_def();
     s->policy = fw_default_policy_def();

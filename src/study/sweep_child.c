@@ -63,7 +63,11 @@ void fw_sweep_exec(const fw_study *s, int run_id, const char *work_dir, bool kee
     fw_study_run r = fw_study_run_at(s, run_id);
     fw_study_scenario(s, &r, scn);
     char dir[1200];
-    snprintf(dir, sizeof dir, "%s/%s", work_dir, scn->name);
+    if ((size_t)snprintf(dir, sizeof dir, "%s/%s", work_dir, scn->name) >= sizeof dir) {
+        free(scn);
+        fw_outcome_failed(out, run_id, "run directory path too long");
+        return;
+    }
     fw_remove_tree(dir); /* left by an interrupted sweep with --keep */
     fw_error err = {0};
     if (mkdir(dir, 0777) != 0) {
