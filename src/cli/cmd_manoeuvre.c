@@ -256,6 +256,92 @@ static void rate_row(double trial, double sim, double ours)
     printf(" %9.3f (%+5.1f%%)\n", fw_rad_to_deg(ours), 100 * (ours / trial - 1));
 }
 
+/* The time history of one manoeuvre into --csv-dir/NAME. */
+static fw_status write_csv_in(const opts *o, const fw_history *h, const char *name,
+                              fw_error *err)
+{
+    char path[1100];
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", o->csv_dir, name) >= sizeof path)
+        return fw_fail(err, FW_EINPUT, "--csv-dir %s: path too long", o->csv_dir);
+    return fw_history_write_csv(h, path, err);
+}
+
+/* One sea-trial turn against the trial; *ok &= its IMO verdicts. */
+static fw_status report_turn(const fw_ship *ship, const opts *o, const fw_trial_turn *t,
+                             bool first, bool *ok, fw_error *err)
+{
+    fw_turning_def d = fw_default_turning_def();
+    d.speed = t->speed;
+    d.rudder = t->rudder;
+    d.max_turn = fw_deg_to_rad(540.0);
+    fw_turning_result r;
+    fw_history h = {0};
+    fw_status st = fw_turning_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
+    if (!st && o->csv_dir) {
+        char name[64];
+        snprintf(name, sizeof name, "turning_%s_%.2fkn.csv", t->rudder > 0 ? "starboard" : "port",
+                 fw_ms_to_kn(t->speed));
+        st = write_csv_in(o, &h, name, err);
+    }
+    fw_history_free(&h);
+    if (st)
+        return st;
+    *ok &= r.advance_ok && r.tactical_ok;
+    if (o->json) {
+        char extra[512];
+        snprintf(extra, sizeof extra,
+                 ", \"trial_advance_m\": %.1f, \"trial_transfer_m\": %.1f, "
+                 "\"trial_tactical_diameter_m\": %.1f, \"trial_steady_rate_degps\": %.4f, "
+                 "\"sim_advance_m\": %.1f, \"sim_transfer_m\": %.1f, "
+                 "\"sim_tactical_diameter_m\": %.1f, \"sim_steady_rate_degps\": %.4f",
+                 t->advance, t->transfer, t->tactical_diameter, fw_rad_to_deg(t->steady_rate),
+                 t->sim_advance, t->sim_transfer, t->sim_tactical_diameter,
+                 fw_rad_to_deg(t->sim_steady_rate));
+        printf("%s", first ? "" : ", ");
+        print_turning_json(ship, d.speed, d.rudder, &r, extra);
+        return FW_OK;
+    }
+    print_turning_text(ship, d.speed, d.rudder, &r);
+    printf("\n  %-19s %9s %18s %18s\n", "against the trial", "trial", "other simulator",
+           "fairway");
+    pct_row("advance m", t->advance, t->sim_advance, r.advance, 1.0);
+    pct_row("transfer m", t->transfer, t->sim_transfer, r.transfer, 1.0);
+    pct_row("tactical diam. m", t->tactical_diameter, t->sim_tactical_diameter,
+            r.tactical_diameter, 1.0);
+    rate_row(t->steady_rate, t->sim_steady_rate, r.steady_rate);
+    printf("\n");
+    return FW_OK;
+}
+
+/* The angle/angle zig-zag at speed (m/s); *ok &= its IMO verdicts. */
+static fw_status report_zigzag(const fw_ship *ship, const opts *o, double speed, double angle,
+                               bool first, bool *ok, fw_error *err)
+{
+    fw_zigzag_def d = fw_default_zigzag_def();
+    d.speed = speed;
+    d.angle = fw_deg_to_rad(angle);
+    fw_zigzag_result r;
+    fw_history h = {0};
+    fw_status st = fw_zigzag_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
+    if (!st && o->csv_dir) {
+        char name[64];
+        snprintf(name, sizeof name, "zigzag_%.0f_%.2fkn.csv", angle, fw_ms_to_kn(d.speed));
+        st = write_csv_in(o, &h, name, err);
+    }
+    fw_history_free(&h);
+    if (st)
+        return st;
+    *ok &= r.ok1 && r.ok2;
+    if (o->json) {
+        printf("%s", first ? "" : ", ");
+        print_zigzag_json(ship, &d, &r);
+    } else {
+        print_zigzag_text(ship, &d, &r);
+        printf("\n");
+    }
+    return FW_OK;
+}
+
 static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
 {
     char trial_path[1100];
@@ -264,98 +350,29 @@ static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
                                            "%s/scenarios/ships/%s-trial.yaml", fw_data_root(),
                                            ship->name);
     if (n >= sizeof trial_path)
-        return fw_report((fw_fail(err, FW_EINPUT, "%s: path too long", o->trial ? "--trial"
-                                                                                : "FAIRWAY_DATA"),
-                          err));
+        return fw_report((fw_fail(err, FW_EINPUT, "%s: path too long",
+                                  o->trial ? "--trial" : "FAIRWAY_DATA"), err));
     fw_trial trial;
     if (fw_trial_load(trial_path, &trial, err))
         return fw_report(err);
     bool all_ok = true;
-    if (o->json)
-    {
+    if (o->json) {
         printf("{\"ship\": ");
         fw_json_string(stdout, ship->name);
         printf(", \"turns\": [");
-    }
-    else
+    } else {
         printf("Manoeuvring report: %s (L = %.1f m), trial data %s\n\n", ship->name, ship->L,
                trial_path);
-    for (int i = 0; i < trial.nturns; i++) {
-        const fw_trial_turn *t = &trial.turns[i];
-        fw_turning_def d = fw_default_turning_def();
-        d.speed = t->speed;
-        d.rudder = t->rudder;
-        d.max_turn = fw_deg_to_rad(540.0);
-        fw_turning_result r;
-        fw_history h = {0};
-        fw_status st = fw_turning_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
-        if (!st && o->csv_dir) {
-            char path[1100];
-            if ((size_t)snprintf(path, sizeof path, "%s/turning_%s_%.2fkn.csv", o->csv_dir,
-                                 t->rudder > 0 ? "starboard" : "port",
-                                 fw_ms_to_kn(t->speed)) >= sizeof path)
-                st = fw_fail(err, FW_EINPUT, "--csv-dir %s: path too long", o->csv_dir);
-            else
-                st = fw_history_write_csv(&h, path, err);
-        }
-        fw_history_free(&h);
-        if (st)
-            return fw_report(err);
-        all_ok &= r.advance_ok && r.tactical_ok;
-        if (o->json) {
-            char extra[512];
-            snprintf(extra, sizeof extra,
-                     ", \"trial_advance_m\": %.1f, \"trial_transfer_m\": %.1f, "
-                     "\"trial_tactical_diameter_m\": %.1f, \"trial_steady_rate_degps\": %.4f, "
-                     "\"sim_advance_m\": %.1f, \"sim_transfer_m\": %.1f, "
-                     "\"sim_tactical_diameter_m\": %.1f, \"sim_steady_rate_degps\": %.4f",
-                     t->advance, t->transfer, t->tactical_diameter, fw_rad_to_deg(t->steady_rate),
-                     t->sim_advance, t->sim_transfer, t->sim_tactical_diameter,
-                     fw_rad_to_deg(t->sim_steady_rate));
-            printf("%s", i ? ", " : "");
-            print_turning_json(ship, d.speed, d.rudder, &r, extra);
-            continue;
-        }
-        print_turning_text(ship, d.speed, d.rudder, &r);
-        printf("\n  %-19s %9s %18s %18s\n", "against the trial", "trial", "other simulator",
-               "fairway");
-        pct_row("advance m", t->advance, t->sim_advance, r.advance, 1.0);
-        pct_row("transfer m", t->transfer, t->sim_transfer, r.transfer, 1.0);
-        pct_row("tactical diam. m", t->tactical_diameter, t->sim_tactical_diameter,
-                r.tactical_diameter, 1.0);
-        rate_row(t->steady_rate, t->sim_steady_rate, r.steady_rate);
-        printf("\n");
     }
+    for (int i = 0; i < trial.nturns; i++)
+        if (report_turn(ship, o, &trial.turns[i], i == 0, &all_ok, err))
+            return fw_report(err);
     if (o->json)
         printf("], \"zigzags\": [");
     const double angles[2] = {10.0, 20.0};
-    for (int k = 0; k < 2; k++) {
-        fw_zigzag_def d = fw_default_zigzag_def();
-        d.speed = trial.turns[0].speed;
-        d.angle = fw_deg_to_rad(angles[k]);
-        fw_zigzag_result r;
-        fw_history h = {0};
-        fw_status st = fw_zigzag_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
-        if (!st && o->csv_dir) {
-            char path[1100];
-            if ((size_t)snprintf(path, sizeof path, "%s/zigzag_%.0f_%.2fkn.csv", o->csv_dir,
-                                 angles[k], fw_ms_to_kn(d.speed)) >= sizeof path)
-                st = fw_fail(err, FW_EINPUT, "--csv-dir %s: path too long", o->csv_dir);
-            else
-                st = fw_history_write_csv(&h, path, err);
-        }
-        fw_history_free(&h);
-        if (st)
+    for (int k = 0; k < 2; k++)
+        if (report_zigzag(ship, o, trial.turns[0].speed, angles[k], k == 0, &all_ok, err))
             return fw_report(err);
-        all_ok &= r.ok1 && r.ok2;
-        if (o->json) {
-            printf("%s", k ? ", " : "");
-            print_zigzag_json(ship, &d, &r);
-        } else {
-            print_zigzag_text(ship, &d, &r);
-            printf("\n");
-        }
-    }
     if (o->json)
         printf("], \"imo_ok\": %s}\n", all_ok ? "true" : "false");
     else
