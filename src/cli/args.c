@@ -148,22 +148,16 @@ fw_status fw_check_speed(const char *opt, double kn, double lo, fw_error *err)
     return FW_OK;
 }
 
-void fw_warn_nomoto_speed(const fw_ship *ship, double kn, const char *what)
+void fw_warn_nomoto_speed(const fw_ship *ship, double kn, const char *file, const char *field)
 {
     const fw_nomoto_kb *kb = &ship->nomoto;
     if (!kb->present || (kn >= kb->speed_min_kn - 1e-9 && kn <= kb->speed_max_kn + 1e-9))
         return;
     fprintf(stderr,
-            "fairway: warning: %s %g kn is outside %g-%g kn, the speeds %s's Nomoto knowledge "
-            "base was fitted over (%s): its predictions are extrapolated\n",
-            what, kn, kb->speed_min_kn, kb->speed_max_kn, ship->name, ship->file);
-}
-
-fw_status fw_args_none_left(const char *cmd, const fw_args *a, fw_error *err)
-{
-    if (a->i < a->argc)
-        return fw_fail(err, FW_EINPUT, "%s: unexpected argument '%s'", cmd, a->argv[a->i]);
-    return FW_OK;
+            "fairway: warning: %s%s%s: %g kn is outside %g-%g kn, the speeds %s's Nomoto "
+            "knowledge base was fitted over (%s): its predictions are extrapolated\n",
+            file ? file : "", file ? ": " : "", field, kn, kb->speed_min_kn, kb->speed_max_kn,
+            ship->name, ship->file);
 }
 
 fw_status fw_check_sumo_mode(const char *opt, const fw_traffic_mode *mode, fw_error *err)

@@ -44,14 +44,12 @@ fw_status fw_check_out_file(const char *opt, const char *path, bool replace, fw_
 /* Refuses kn outside [lo, FW_SPEED_MAX_KN]. */
 fw_status fw_check_speed(const char *opt, double kn, double lo, fw_error *err);
 /* Warns on stderr when kn is outside the speeds the ship's Nomoto knowledge
- * base was fitted over (what names the speed: "--own speed"). */
-void fw_warn_nomoto_speed(const fw_ship *ship, double kn, const char *what);
+ * base was fitted over: "FILE: FIELD: ..." (file may be NULL: "--own"). */
+void fw_warn_nomoto_speed(const fw_ship *ship, double kn, const char *file, const char *field);
 
 /* A remote SUMO's host must resolve (checked before anything runs). */
 fw_status fw_check_sumo_mode(const char *opt, const fw_traffic_mode *mode, fw_error *err);
 
-/* Fails when arguments are left over (an unexpected positional). */
-fw_status fw_args_none_left(const char *cmd, const fw_args *a, fw_error *err);
 
 /* Prints "fairway: msg" to stderr and returns the status as an exit code. */
 int fw_report(const fw_error *err);

@@ -58,6 +58,9 @@ int fw_cmd_calibrate(int argc, char **argv)
     if (n >= sizeof path)
         return fw_report((fw_fail(&err, FW_EINPUT, "%s: path too long",
                                   trial_path ? "--trial" : "FAIRWAY_DATA"), &err));
+    /* --write: a ship file that cannot be replaced fails now, not after the fit */
+    if (write && fw_check_out_file("--write", ship.file, true, &err))
+        return fw_report(&err);
     fw_trial trial;
     if (fw_trial_load(path, &trial, &err))
         return fw_report(&err);

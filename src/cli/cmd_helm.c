@@ -306,7 +306,7 @@ int fw_cmd_helm(int argc, char **argv)
         free(in.tg);
         return rc;
     }
-    fw_warn_nomoto_speed(&ship, in.own_v[3], "--own speed");
+    fw_warn_nomoto_speed(&ship, in.own_v[3], NULL, "--own speed");
     fw_own_state own = {.east = in.own_v[0], .north = in.own_v[1],
                         .psi = fw_deg_to_rad(in.own_v[2]), .U = fw_kn_to_ms(in.own_v[3])};
     fw_helm_ctx *ctx = NULL;

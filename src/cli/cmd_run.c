@@ -132,7 +132,8 @@ static int load_all(run_opts *o, fw_error *err)
     if (fw_mkdirs(o->out, "--out", err))
         return fw_report(err);
     for (int i = 0; i < o->nf; i++)
-        fw_warn_nomoto_speed(&o->scn[i]->ship, fw_ms_to_kn(o->scn[i]->speed), o->files[i]);
+        fw_warn_nomoto_speed(&o->scn[i]->ship, fw_ms_to_kn(o->scn[i]->speed), o->files[i],
+                             "own_ship.speed_kn");
     return -1;
 }
 

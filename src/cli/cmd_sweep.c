@@ -186,7 +186,8 @@ int fw_cmd_sweep(int argc, char **argv)
         free(s);
         return 0;
     }
-    fw_warn_nomoto_speed(&s->base.ship, fw_ms_to_kn(s->base.speed), "own ship speed");
+    fw_warn_nomoto_speed(&s->base.ship, fw_ms_to_kn(s->base.speed), s->scenario_file,
+                         "own_ship.speed_kn");
     /* --keep is made (and checked) before the database exists: a file there
      * would otherwise fail every run */
     if (o.def.keep_dir && (fw_mkdirs(o.def.keep_dir, "--keep", &err) ||

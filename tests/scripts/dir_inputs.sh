@@ -25,9 +25,9 @@ expect 2 "$msg" sweep "$dir/study.yaml" --db "$dir/x.db"
 # 35 kn: within what scenarios accept, far outside c3-mmg's knowledge base (8-14 kn)
 sed -e 's/speed_kn: 12/speed_kn: 35/' -e 's/duration_s: 3600/duration_s: 60/' \
     "$FAIRWAY_DATA/scenarios/traffic/strait-crossing.yaml" > "$dir/fast.yaml"
-expect 0 "warning: $dir/fast.yaml 35 kn is outside 8-14 kn, the speeds c3-mmg's Nomoto knowledge base was fitted over" \
+expect 0 "warning: $dir/fast.yaml: own_ship.speed_kn: 35 kn is outside 8-14 kn, the speeds c3-mmg's Nomoto knowledge base was fitted over" \
   run "$dir/fast.yaml" --out "$dir/runs"
-expect 0 "warning: --own speed 35 kn is outside 8-14 kn" helm --ship c3-mmg --own 0,0,0,35 --target 0,5000,180,10
+expect 0 "warning: --own speed: 35 kn is outside 8-14 kn" helm --ship c3-mmg --own 0,0,0,35 --target 0,5000,180,10
 expect 2 "speed 45 kn is above 40 kn" helm --ship c3-mmg --own 0,0,0,45
 expect 2 "--speed: 60 kn is above 40 kn" manoeuvre turning --ship c3 --speed 60 --rudder 35
 expect 2 "--speed: 45 kn is above 40 kn" manoeuvre zigzag --ship c3 --speed 45 --angle 10
