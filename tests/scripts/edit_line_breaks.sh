@@ -29,6 +29,15 @@ out=$("$FAIRWAY" calibrate --ship "$dir/one.yaml" --trial "$trial" --write 2>&1)
 "$FAIRWAY" ship "$dir/one.yaml" >/dev/null || { echo "calibrate: the ship file no longer loads"; exit 1; }
 [ "$(value "$dir/one.yaml" N_vvv)" = "$nvvv" ] || { echo "calibrate: N_vvv overwritten"; exit 1; }
 grep -q "N_r: .*\[CAL\]" "$dir/one.yaml" || { echo "calibrate: N_r not written"; exit 1; }
-left=$(ls -A "$dir" | grep -v -x -e cr.yaml -e crlf.yaml -e cr-id.yaml -e crlf-id.yaml -e one.yaml)
+# a value on the line after its key cannot be rewritten line by line: refused
+# before the fit, the file byte for byte as it was
+sed 's/^\(  N_r:\) *\([-0-9.e]*\)\(.*\)$/\1\3\n    \2/' "$ship" > "$dir/split.yaml"
+cp "$dir/split.yaml" "$dir/split.orig"
+out=$("$FAIRWAY" calibrate --ship "$dir/split.yaml" --trial "$trial" --write 2>&1)
+[ $? -eq 2 ] && grep -q "split.yaml:[0-9]*: hull.N_r: cannot edit in place" <<<"$out" || { echo "split: $out"; exit 1; }
+grep -q "RMS relative error" <<<"$out" && { echo "split: refused only after the fit"; exit 1; }
+cmp -s "$dir/split.yaml" "$dir/split.orig" || { echo "split: the file was changed"; exit 1; }
+left=$(ls -A "$dir" | grep -v -x -e cr.yaml -e crlf.yaml -e cr-id.yaml -e crlf-id.yaml -e one.yaml \
+       -e split.yaml -e split.orig)
 [ -z "$left" ] || { echo "left behind: $left"; exit 1; }
 echo "ok: line breaks kept, values intact"
