@@ -137,6 +137,8 @@ static int load_all(run_opts *o, fw_error *err)
     return -1;
 }
 
+/* --out is at most 700 characters (load_all) and a name 63: the run's paths
+ * fit in 1024 bytes, never cut. */
 static void tmp_name(const run_opts *o, int i, long pid, char *out, size_t n)
 {
     snprintf(out, n, "%s/.%s.tmp.%ld", o->out, o->scn[i]->name, pid);

@@ -121,8 +121,7 @@ static fw_status write_meta(fw_store *st, const fw_study *s, const char *digest,
     return FW_OK;
 }
 
-/* Each input's digest and path, "input:ROLE" in meta.  On resume a changed
- * file is named; a database from before these rows gets them now. */
+/* One input's row in meta: key "input:ROLE", value "DIGEST PATH". */
 static void input_row(const fw_study_input *in, char *key, size_t keysz, char *val,
                       size_t valsz)
 {
