@@ -24,3 +24,16 @@ fw_test(test_world test_world.c)
 target_link_libraries(test_world PRIVATE fairway_run)
 set_tests_properties(test_world PROPERTIES TIMEOUT 120
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
+# Hardening (issue 14): an interrupted run cleans up and says what it kept; an
+# unresolvable remote host is refused before anything runs
+fw_script_test(cli_run_interrupt 0 "ok: interrupted runs cleaned up" run_interrupt.sh)
+fw_cli_test(cli_run_bad_host 2 "--sumo remote:no-such-host.invalid:8813: cannot resolve host 'no-such-host.invalid'"
+            run ${CMAKE_SOURCE_DIR}/scenarios/paper/1-head-on.yaml --sumo remote:no-such-host.invalid:8813
+            --out ${CMAKE_CURRENT_BINARY_DIR}/cli-runs-bad-host)
+fw_cli_test(cli_sweep_bad_host 2 "cannot resolve host 'no-such-host.invalid'"
+            sweep ${CMAKE_SOURCE_DIR}/tests/data/study/small.yaml --db ${CMAKE_CURRENT_BINARY_DIR}/bad-host.db
+            --sumo remote:no-such-host.invalid:8813)
+foreach(t cli_run_interrupt cli_run_bad_host cli_sweep_bad_host)
+  set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}" TIMEOUT 120)
+endforeach()

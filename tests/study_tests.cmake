@@ -39,3 +39,12 @@ foreach(t ${fw_sweep_tests})
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 endforeach()
 set_tests_properties(sweep_parallel sweep_kill sweep_fail PROPERTIES TIMEOUT 300)
+
+# Hardening (issue 14): inputs of a resumed sweep, one writer, paths checked first
+fw_script_test(sweep_inputs 0 "ok: every changed input refused by name" sweep_inputs.sh)
+fw_script_test(sweep_lock 0 "ok: second sweep refused at once" sweep_lock.sh)
+fw_script_test(sweep_paths 0 "ok: bad paths refused, nothing created" sweep_paths.sh)
+fw_script_test(report_readonly 0 "ok: read-only database reported" report_readonly.sh)
+foreach(t sweep_inputs sweep_lock sweep_paths report_readonly)
+  set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+endforeach()

@@ -1,5 +1,10 @@
 /* YAML tree: line numbers and every kind of field error. */
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "test.h"
+#include "yaml/yaml_edit.h"
 #include "yaml/yaml_tree.h"
 
 static const char *doc_text = "a: 1.5\n"
@@ -66,9 +71,124 @@ static void test_errors(void)
     CHECK_CONTAINS(err.msg, "cannot open");
 }
 
+/* 50,000 levels of '[' or of mappings: a located error, not a stack overflow. */
+static void test_deep_nesting(void)
+{
+    enum { N = 50000 };
+    char *t = malloc(4 * N + 16); /* "{a: " per level */
+    CHECK(t != NULL);
+    if (!t)
+        return;
+    size_t k = (size_t)sprintf(t, "a: ");
+    for (int i = 0; i < N; i++)
+        t[k++] = '[';
+    t[k] = '\0';
+    fw_error err = {0};
+    yt_doc *doc = NULL;
+    CHECK(yt_load_string(t, "deep.yaml", &doc, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "deep.yaml:1: nested deeper than 64 levels");
+    k = (size_t)sprintf(t, "a: ");
+    for (int i = 0; i < N; i++)
+        k += (size_t)sprintf(t + k, "{a: ");
+    CHECK(yt_load_string(t, "deepmap.yaml", &doc, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "deepmap.yaml:1: nested deeper than 64 levels");
+    /* what fairway's files need stays accepted */
+    CHECK(yt_load_string("a: [[[[1]]]]\nb: {c: {d: {e: 1}}}\n", "ok.yaml", &doc, &err) == FW_OK);
+    yt_free(doc);
+    free(t);
+}
+
+/* A ship-like file with the given line break after every line. */
+static char *sample(const char *brk)
+{
+    static const char *const lines[] = {"# header", "hull:", "  N_r: -0.05  # old",
+                                        "  N_vvv: 0.1", "nomoto:", "  a: 1", "", "tail: 3"};
+    char *t = malloc(512);
+    size_t k = 0;
+    for (size_t i = 0; t && i < sizeof lines / sizeof lines[0]; i++)
+        k += (size_t)sprintf(t + k, "%s%s", lines[i], brk);
+    return t;
+}
+
+/* LF, CRLF, bare CR and NEL: the editor's lines are libyaml's lines. */
+static void test_edit_line_breaks(void)
+{
+    static const char *const brks[] = {"\n", "\r\n", "\r", "\xc2\x85"};
+    for (int b = 0; b < 4; b++) {
+        char *t = sample(brks[b]);
+        fw_error err = {0};
+        fw_yaml_edit *ed = NULL;
+        CHECK(fw_yaml_edit_open_text(t, strlen(t), "s.yaml", &ed, &err) == FW_OK);
+        CHECK_MSG(fw_yaml_edit_scalar(ed, "hull", "N_r", "-0.08", "was -0.05", &err) == FW_OK,
+                  "%d: %s", b, err.msg);
+        CHECK(fw_yaml_edit_block(ed, "nomoto", "nomoto:\n  b: 2\n", &err) == FW_OK);
+        CHECK(fw_yaml_edit_comment_block(ed, "cal", "# note\n", &err) == FW_OK);
+        const char *out = fw_yaml_edit_text(ed, NULL);
+        yt_doc *doc = NULL;
+        CHECK(yt_load_string(out, "o.yaml", &doc, &err) == FW_OK);
+        if (doc) {
+            const yt_node *hull = yt_get(doc->root, "hull");
+            CHECK(strcmp(yt_get(hull, "N_r")->str, "-0.08") == 0);
+            CHECK(strcmp(yt_get(hull, "N_vvv")->str, "0.1") == 0);
+            CHECK(strcmp(yt_get(yt_get(doc->root, "nomoto"), "b")->str, "2") == 0);
+            CHECK(strcmp(yt_get(doc->root, "tail")->str, "3") == 0);
+            yt_free(doc);
+        }
+        /* the file's own line break is kept, none is added */
+        char want[64];
+        snprintf(want, sizeof want, "  N_r: -0.08  # was -0.05%s  N_vvv", brks[b]);
+        CHECK_MSG(strstr(out, want) != NULL, "%d: %s", b, out);
+        if (b != 0)
+            CHECK(strchr(out, '\n') == NULL || b == 1);
+        fw_yaml_edit_free(ed);
+        free(t);
+    }
+}
+
+/* An edit the line editor cannot make exactly is refused, the file untouched. */
+static void test_edit_refused(void)
+{
+    char dir[] = "/tmp/fw-yaml-edit.XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char path[64];
+    snprintf(path, sizeof path, "%s/s.yaml", dir);
+    const char *text = "hull: {N_r: -0.05, N_v: 1}\nx:\n  y:\n    -0.1\n";
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+    fw_error err = {0};
+    CHECK(fw_yaml_set_scalar(path, "hull", "N_r", "-0.08", NULL, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "cannot edit");
+    CHECK(fw_yaml_set_scalar(path, "x", "y", "1", NULL, &err) == FW_EINPUT);
+    CHECK(fw_yaml_set_scalar(path, "hull", "nope", "1", NULL, &err) == FW_EINPUT);
+    char buf[256] = "";
+    f = fopen(path, "r");
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = '\0';
+    CHECK(strcmp(buf, text) == 0);
+    /* a check that fails leaves the target as it was and no temporary file */
+    char out[64];
+    snprintf(out, sizeof out, "%s/out.yaml", dir);
+    fw_yaml_edit *ed = NULL;
+    CHECK(fw_yaml_edit_open(path, &ed, &err) == FW_OK);
+    CHECK(fw_yaml_edit_save(ed, dir, NULL, NULL, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "is a directory");
+    CHECK(fw_yaml_edit_save(ed, out, NULL, NULL, &err) == FW_OK);
+    struct stat sb;
+    CHECK(stat(out, &sb) == 0 && (size_t)sb.st_size == strlen(text));
+    fw_yaml_edit_free(ed);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "test $(ls -A %s | wc -l) -eq 2 && rm -rf %s", dir, dir);
+    CHECK(system(cmd) == 0);
+}
+
 int main(void)
 {
     TEST_RUN(test_lines_and_values);
     TEST_RUN(test_errors);
+    TEST_RUN(test_deep_nesting);
+    TEST_RUN(test_edit_line_breaks);
+    TEST_RUN(test_edit_refused);
     return TEST_EXIT();
 }

@@ -12,6 +12,8 @@
 #include <stdio.h>
 
 #include "core/error.h"
+#include "ship/ship.h"
+#include "traffic/traffic.h"
 
 typedef struct fw_args {
     int argc;
@@ -31,6 +33,23 @@ fw_status fw_parse_list(const char *opt, const char *text, double *out, int max,
                         fw_error *err);
 
 bool fw_is_help(const char *arg);
+
+/* Checks, before any computation, that path can be written as a new file:
+ * not a directory, an existing directory to hold it that we may write in,
+ * and not an existing file unless replace. */
+fw_status fw_check_out_file(const char *opt, const char *path, bool replace, fw_error *err);
+
+/* The fastest speed any command accepts, as scenarios do (kn). */
+#define FW_SPEED_MAX_KN 40.0
+/* Refuses kn outside [lo, FW_SPEED_MAX_KN]. */
+fw_status fw_check_speed(const char *opt, double kn, double lo, fw_error *err);
+/* Warns on stderr when kn is outside the speeds the ship's Nomoto knowledge
+ * base was fitted over: "FILE: FIELD: ..." (file may be NULL: "--own"). */
+void fw_warn_nomoto_speed(const fw_ship *ship, double kn, const char *file, const char *field);
+
+/* A remote SUMO's host must resolve (checked before anything runs). */
+fw_status fw_check_sumo_mode(const char *opt, const fw_traffic_mode *mode, fw_error *err);
+
 
 /* Prints "fairway: msg" to stderr and returns the status as an exit code. */
 int fw_report(const fw_error *err);

@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "core/units.h"
 #include "dynamics/calibrate.h"
+#include "yaml/yaml_edit.h"
 
 static void help(void)
 {
@@ -21,6 +22,26 @@ static void help(void)
            "         giving the value it replaced, plus a summary block in its header.\n"
            "\n"
            "Exit codes: 0 ok, 1 the fit failed, 2 bad input.\n");
+}
+
+/* --write: every tuned coefficient must be editable in place; found out now
+ * (the same edit with the current value, not saved), not after the fit. */
+static fw_status check_writable(const fw_ship *ship, const fw_trial *trial, fw_error *err)
+{
+    fw_yaml_edit *ed = NULL;
+    fw_status st = fw_yaml_edit_open(ship->file, &ed, err);
+    fw_ship probe = *ship;
+    for (int j = 0; !st && j < trial->ntune; j++) {
+        const char *section;
+        double scale;
+        double *v = fw_ship_field(&probe, trial->tune[j], &section, &scale);
+        char value[64];
+        snprintf(value, sizeof value, "%.6g", v ? *v / scale : 0.0);
+        if (v)
+            st = fw_yaml_edit_scalar(ed, section, trial->tune[j], value, "check", err);
+    }
+    fw_yaml_edit_free(ed);
+    return st;
 }
 
 int fw_cmd_calibrate(int argc, char **argv)
@@ -51,17 +72,24 @@ int fw_cmd_calibrate(int argc, char **argv)
     fw_ship ship;
     if (fw_ship_load(ship_name, &ship, &err))
         return fw_report(&err);
-    char path[600];
-    if (trial_path)
-        snprintf(path, sizeof path, "%s", trial_path);
-    else
-        snprintf(path, sizeof path, "%s/scenarios/ships/%s-trial.yaml", fw_data_root(), ship.name);
+    char path[1100];
+    size_t n = trial_path ? (size_t)snprintf(path, sizeof path, "%s", trial_path)
+                          : (size_t)snprintf(path, sizeof path, "%s/scenarios/ships/%s-trial.yaml",
+                                             fw_data_root(), ship.name);
+    if (n >= sizeof path)
+        return fw_report((fw_fail(&err, FW_EINPUT, "%s: path too long",
+                                  trial_path ? "--trial" : "FAIRWAY_DATA"), &err));
+    /* --write: a ship file that cannot be replaced fails now, not after the fit */
+    if (write && fw_check_out_file("--write", ship.file, true, &err))
+        return fw_report(&err);
     fw_trial trial;
     if (fw_trial_load(path, &trial, &err))
         return fw_report(&err);
     if (strcmp(trial.ship, ship.name) != 0)
         return fw_report((fw_fail(&err, FW_EINPUT, "%s: trial is for ship '%s', not '%s'", path,
                                   trial.ship, ship.name), &err));
+    if (write && check_writable(&ship, &trial, &err))
+        return fw_report(&err);
     printf("calibrating %s against %s: %d coefficients, %d turning circles\n", ship.name, path,
            trial.ntune, trial.nturns);
     fw_calibration cal;

@@ -5,6 +5,8 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "core/files.h"
+#include "core/json.h"
 #include "core/units.h"
 #include "dynamics/calibrate.h"
 #include "dynamics/manoeuvre.h"
@@ -97,6 +99,15 @@ static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
         return fw_fail(err, FW_EINPUT, "--side: '%s' is not starboard or port", o->side);
     if (o->have_speed && !(o->speed > 0.0))
         return fw_fail(err, FW_EINPUT, "--speed: must be positive (got %g kn)", o->speed);
+    if (o->have_speed && o->speed > FW_SPEED_MAX_KN)
+        return fw_fail(err, FW_EINPUT,
+                       "--speed: %g kn is above %g kn, the fastest fairway accepts (as scenarios)",
+                       o->speed, FW_SPEED_MAX_KN);
+    /* output paths are checked before the simulation, not after it */
+    if (o->csv && fw_check_out_file("--csv", o->csv, true, err))
+        return err->status;
+    if (o->csv_dir && fw_mkdirs(o->csv_dir, "--csv-dir", err))
+        return err->status;
     if (o->have_rudder && !(o->rudder > 0.0))
         return fw_fail(err, FW_EINPUT,
                        "--rudder: give the angle's size in degrees (> 0) and the side with --side");
@@ -110,13 +121,15 @@ static double side_sign(const char *side) { return strcmp(side, "port") == 0 ? -
 static void print_turning_json(const fw_ship *s, double speed, double rudder,
                                const fw_turning_result *r, const char *extra)
 {
-    printf("{\"ship\": \"%s\", \"L_m\": %.3f, \"speed_kn\": %.3f, \"rudder_deg\": %.2f, "
+    printf("{\"ship\": ");
+    fw_json_string(stdout, s->name);
+    printf(", \"L_m\": %.3f, \"speed_kn\": %.3f, \"rudder_deg\": %.2f, "
            "\"propeller_rps\": %.4f, \"advance_m\": %.2f, \"advance_L\": %.4f, "
            "\"transfer_m\": %.2f, \"transfer_L\": %.4f, \"tactical_diameter_m\": %.2f, "
            "\"tactical_diameter_L\": %.4f, \"t90_s\": %.2f, \"t180_s\": %.2f, "
            "\"steady_rate_degps\": %.5f, \"steady_speed_kn\": %.3f, \"imo_advance_ok\": %s, "
            "\"imo_tactical_diameter_ok\": %s%s}",
-           s->name, s->L, fw_ms_to_kn(speed), fw_rad_to_deg(rudder), r->propeller, r->advance,
+           s->L, fw_ms_to_kn(speed), fw_rad_to_deg(rudder), r->propeller, r->advance,
            r->advance / s->L, r->transfer, r->transfer / s->L, r->tactical_diameter,
            r->tactical_diameter / s->L, r->t90, r->t180, fw_rad_to_deg(r->steady_rate),
            fw_ms_to_kn(r->steady_speed), r->advance_ok ? "true" : "false",
@@ -146,11 +159,13 @@ static void print_zigzag_json(const fw_ship *s, const fw_zigzag_def *d, const fw
         snprintf(l2, sizeof l2, "%.2f", fw_rad_to_deg(r->limit2));
     else
         snprintf(l2, sizeof l2, "null");
-    printf("{\"ship\": \"%s\", \"speed_kn\": %.3f, \"angle_deg\": %.2f, \"side\": \"%s\", "
+    printf("{\"ship\": ");
+    fw_json_string(stdout, s->name);
+    printf(", \"speed_kn\": %.3f, \"angle_deg\": %.2f, \"side\": \"%s\", "
            "\"propeller_rps\": %.4f, \"initial_turning_time_s\": %.2f, \"L_over_V_s\": %.3f, "
            "\"overshoot1_deg\": %.3f, \"overshoot2_deg\": %.3f, \"limit1_deg\": %.2f, "
            "\"limit2_deg\": %s, \"imo_ok1\": %s, \"imo_ok2\": %s}",
-           s->name, fw_ms_to_kn(d->speed), fw_rad_to_deg(d->angle),
+           fw_ms_to_kn(d->speed), fw_rad_to_deg(d->angle),
            d->first_side > 0 ? "starboard" : "port", r->propeller, r->t_first_execute,
            r->L_over_V, fw_rad_to_deg(r->overshoot1), fw_rad_to_deg(r->overshoot2),
            fw_rad_to_deg(r->limit1), l2, r->ok1 ? "true" : "false", r->ok2 ? "true" : "false");
@@ -241,91 +256,120 @@ static void rate_row(double trial, double sim, double ours)
     printf(" %9.3f (%+5.1f%%)\n", fw_rad_to_deg(ours), 100 * (ours / trial - 1));
 }
 
+/* The time history of one manoeuvre into --csv-dir/NAME. */
+static fw_status write_csv_in(const opts *o, const fw_history *h, const char *name,
+                              fw_error *err)
+{
+    char path[1100];
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", o->csv_dir, name) >= sizeof path)
+        return fw_fail(err, FW_EINPUT, "--csv-dir %s: path too long", o->csv_dir);
+    return fw_history_write_csv(h, path, err);
+}
+
+/* One sea-trial turn against the trial; *ok &= its IMO verdicts. */
+static fw_status report_turn(const fw_ship *ship, const opts *o, const fw_trial_turn *t,
+                             bool first, bool *ok, fw_error *err)
+{
+    fw_turning_def d = fw_trial_turning_def(t);
+    fw_turning_result r;
+    fw_history h = {0};
+    fw_status st = fw_turning_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
+    if (!st && o->csv_dir) {
+        char name[64];
+        snprintf(name, sizeof name, "turning_%s_%.2fkn.csv", t->rudder > 0 ? "starboard" : "port",
+                 fw_ms_to_kn(t->speed));
+        st = write_csv_in(o, &h, name, err);
+    }
+    fw_history_free(&h);
+    if (st)
+        return st;
+    *ok &= r.advance_ok && r.tactical_ok;
+    if (o->json) {
+        char extra[512];
+        snprintf(extra, sizeof extra,
+                 ", \"trial_advance_m\": %.1f, \"trial_transfer_m\": %.1f, "
+                 "\"trial_tactical_diameter_m\": %.1f, \"trial_steady_rate_degps\": %.4f, "
+                 "\"sim_advance_m\": %.1f, \"sim_transfer_m\": %.1f, "
+                 "\"sim_tactical_diameter_m\": %.1f, \"sim_steady_rate_degps\": %.4f",
+                 t->advance, t->transfer, t->tactical_diameter, fw_rad_to_deg(t->steady_rate),
+                 t->sim_advance, t->sim_transfer, t->sim_tactical_diameter,
+                 fw_rad_to_deg(t->sim_steady_rate));
+        printf("%s", first ? "" : ", ");
+        print_turning_json(ship, d.speed, d.rudder, &r, extra);
+        return FW_OK;
+    }
+    print_turning_text(ship, d.speed, d.rudder, &r);
+    printf("\n  %-19s %9s %18s %18s\n", "against the trial", "trial", "other simulator",
+           "fairway");
+    pct_row("advance m", t->advance, t->sim_advance, r.advance, 1.0);
+    pct_row("transfer m", t->transfer, t->sim_transfer, r.transfer, 1.0);
+    pct_row("tactical diam. m", t->tactical_diameter, t->sim_tactical_diameter,
+            r.tactical_diameter, 1.0);
+    rate_row(t->steady_rate, t->sim_steady_rate, r.steady_rate);
+    printf("\n");
+    return FW_OK;
+}
+
+/* The angle/angle zig-zag at speed (m/s); *ok &= its IMO verdicts. */
+static fw_status report_zigzag(const fw_ship *ship, const opts *o, double speed, double angle,
+                               bool first, bool *ok, fw_error *err)
+{
+    fw_zigzag_def d = fw_default_zigzag_def();
+    d.speed = speed;
+    d.angle = fw_deg_to_rad(angle);
+    fw_zigzag_result r;
+    fw_history h = {0};
+    fw_status st = fw_zigzag_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
+    if (!st && o->csv_dir) {
+        char name[64];
+        snprintf(name, sizeof name, "zigzag_%.0f_%.2fkn.csv", angle, fw_ms_to_kn(d.speed));
+        st = write_csv_in(o, &h, name, err);
+    }
+    fw_history_free(&h);
+    if (st)
+        return st;
+    *ok &= r.ok1 && r.ok2;
+    if (o->json) {
+        printf("%s", first ? "" : ", ");
+        print_zigzag_json(ship, &d, &r);
+    } else {
+        print_zigzag_text(ship, &d, &r);
+        printf("\n");
+    }
+    return FW_OK;
+}
+
 static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
 {
-    char trial_path[600];
-    if (o->trial)
-        snprintf(trial_path, sizeof trial_path, "%s", o->trial);
-    else
-        snprintf(trial_path, sizeof trial_path, "%s/scenarios/ships/%s-trial.yaml", fw_data_root(),
-                 ship->name);
+    char trial_path[1100];
+    size_t n = o->trial ? (size_t)snprintf(trial_path, sizeof trial_path, "%s", o->trial)
+                        : (size_t)snprintf(trial_path, sizeof trial_path,
+                                           "%s/scenarios/ships/%s-trial.yaml", fw_data_root(),
+                                           ship->name);
+    if (n >= sizeof trial_path)
+        return fw_report((fw_fail(err, FW_EINPUT, "%s: path too long",
+                                  o->trial ? "--trial" : "FAIRWAY_DATA"), err));
     fw_trial trial;
     if (fw_trial_load(trial_path, &trial, err))
         return fw_report(err);
     bool all_ok = true;
-    if (o->json)
-        printf("{\"ship\": \"%s\", \"turns\": [", ship->name);
-    else
+    if (o->json) {
+        printf("{\"ship\": ");
+        fw_json_string(stdout, ship->name);
+        printf(", \"turns\": [");
+    } else {
         printf("Manoeuvring report: %s (L = %.1f m), trial data %s\n\n", ship->name, ship->L,
                trial_path);
-    for (int i = 0; i < trial.nturns; i++) {
-        const fw_trial_turn *t = &trial.turns[i];
-        fw_turning_def d = fw_trial_turning_def(t);
-        fw_turning_result r;
-        fw_history h = {0};
-        fw_status st = fw_turning_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
-        if (!st && o->csv_dir) {
-            char path[700];
-            snprintf(path, sizeof path, "%s/turning_%s_%.2fkn.csv", o->csv_dir,
-                     t->rudder > 0 ? "starboard" : "port", fw_ms_to_kn(t->speed));
-            st = fw_history_write_csv(&h, path, err);
-        }
-        fw_history_free(&h);
-        if (st)
-            return fw_report(err);
-        all_ok &= r.advance_ok && r.tactical_ok;
-        if (o->json) {
-            char extra[512];
-            snprintf(extra, sizeof extra,
-                     ", \"trial_advance_m\": %.1f, \"trial_transfer_m\": %.1f, "
-                     "\"trial_tactical_diameter_m\": %.1f, \"trial_steady_rate_degps\": %.4f, "
-                     "\"sim_advance_m\": %.1f, \"sim_transfer_m\": %.1f, "
-                     "\"sim_tactical_diameter_m\": %.1f, \"sim_steady_rate_degps\": %.4f",
-                     t->advance, t->transfer, t->tactical_diameter, fw_rad_to_deg(t->steady_rate),
-                     t->sim_advance, t->sim_transfer, t->sim_tactical_diameter,
-                     fw_rad_to_deg(t->sim_steady_rate));
-            printf("%s", i ? ", " : "");
-            print_turning_json(ship, d.speed, d.rudder, &r, extra);
-            continue;
-        }
-        print_turning_text(ship, d.speed, d.rudder, &r);
-        printf("\n  %-19s %9s %18s %18s\n", "against the trial", "trial", "other simulator",
-               "fairway");
-        pct_row("advance m", t->advance, t->sim_advance, r.advance, 1.0);
-        pct_row("transfer m", t->transfer, t->sim_transfer, r.transfer, 1.0);
-        pct_row("tactical diam. m", t->tactical_diameter, t->sim_tactical_diameter,
-                r.tactical_diameter, 1.0);
-        rate_row(t->steady_rate, t->sim_steady_rate, r.steady_rate);
-        printf("\n");
     }
+    for (int i = 0; i < trial.nturns; i++)
+        if (report_turn(ship, o, &trial.turns[i], i == 0, &all_ok, err))
+            return fw_report(err);
     if (o->json)
         printf("], \"zigzags\": [");
     const double angles[2] = {10.0, 20.0};
-    for (int k = 0; k < 2; k++) {
-        fw_zigzag_def d = fw_default_zigzag_def();
-        d.speed = trial.turns[0].speed;
-        d.angle = fw_deg_to_rad(angles[k]);
-        fw_zigzag_result r;
-        fw_history h = {0};
-        fw_status st = fw_zigzag_run(ship, &d, &r, o->csv_dir ? &h : NULL, err);
-        if (!st && o->csv_dir) {
-            char path[700];
-            snprintf(path, sizeof path, "%s/zigzag_%.0f_%.2fkn.csv", o->csv_dir, angles[k],
-                     fw_ms_to_kn(d.speed));
-            st = fw_history_write_csv(&h, path, err);
-        }
-        fw_history_free(&h);
-        if (st)
+    for (int k = 0; k < 2; k++)
+        if (report_zigzag(ship, o, trial.turns[0].speed, angles[k], k == 0, &all_ok, err))
             return fw_report(err);
-        all_ok &= r.ok1 && r.ok2;
-        if (o->json) {
-            printf("%s", k ? ", " : "");
-            print_zigzag_json(ship, &d, &r);
-        } else {
-            print_zigzag_text(ship, &d, &r);
-            printf("\n");
-        }
-    }
     if (o->json)
         printf("], \"imo_ok\": %s}\n", all_ok ? "true" : "false");
     else

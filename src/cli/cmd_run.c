@@ -3,12 +3,20 @@
  * Every scenario file is loaded and checked before anything is created, so a
  * bad file leaves no output behind.  Each run writes into a hidden temporary
  * directory next to its final place and is renamed into place at the end.
+ *
+ * The runs execute in a child process; this process only waits for it.  On
+ * Ctrl-C or SIGTERM (which the run itself, SUMO inside, cannot stop cleanly)
+ * the child is stopped, its unfinished temporary directory removed, and the
+ * message says which finished runs were kept.
  */
+#include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "avoid/helm_search.h"
@@ -38,7 +46,10 @@ static void help(void)
            "  --json        print the summaries as a JSON array instead of the table\n"
            "\n"
            "The same scenario and seed give byte-identical result files.\n"
-           "Exit codes: 0 ok, 1 a run failed, 2 bad input (nothing is written).\n");
+           "Ctrl-C or SIGTERM stop the runs: finished runs are kept, the unfinished one\n"
+           "is removed.\n"
+           "Exit codes: 0 ok, 1 a run failed or was interrupted, 2 bad input (nothing is\n"
+           "written).\n");
 }
 
 static void row(const fw_run_summary *s)
@@ -56,122 +67,245 @@ static void row(const fw_run_summary *s)
            s->status != FW_RUN_OK ? fw_run_status_name(s->status) : (s->colregs_ok ? "ok" : "colregs?"));
 }
 
-int fw_cmd_run(int argc, char **argv)
+typedef struct run_opts {
+    const char *out, *mode;
+    bool json;
+    const char **files;
+    int nf;
+    fw_scenario **scn;
+    fw_run_def def;
+} run_opts;
+
+/* Returns -1 to go on, else the exit code. */
+static int parse_options(int argc, char **argv, run_opts *o, fw_error *err)
 {
     fw_args a = {argc, argv, 0};
-    fw_error err = {0};
-    const char *out = "runs", *mode = "embedded", *v;
-    bool json = false;
-    const char **files = calloc((size_t)argc + 1, sizeof *files);
-    int nf = 0;
-    if (!files)
-        return 1;
+    const char *v;
     while (a.i < a.argc) {
         if (fw_is_help(a.argv[a.i])) {
             help();
-            free(files);
             return 0;
-        } else if (fw_args_opt(&a, "--out", &v, &err)) {
+        } else if (fw_args_opt(&a, "--out", &v, err)) {
             if (!v)
-                return free(files), fw_report(&err);
-            out = v;
-        } else if (fw_args_opt(&a, "--sumo", &v, &err)) {
+                return fw_report(err);
+            o->out = v;
+        } else if (fw_args_opt(&a, "--sumo", &v, err)) {
             if (!v)
-                return free(files), fw_report(&err);
-            mode = v;
+                return fw_report(err);
+            o->mode = v;
         } else if (fw_args_flag(&a, "--json")) {
-            json = true;
+            o->json = true;
         } else if (a.argv[a.i][0] == '-' && a.argv[a.i][1]) {
             fprintf(stderr, "fairway run: unknown option '%s' (see --help)\n", a.argv[a.i]);
-            free(files);
             return 2;
         } else {
-            files[nf++] = a.argv[a.i++];
+            o->files[o->nf++] = a.argv[a.i++];
         }
     }
-    fw_run_def def = fw_default_run_def();
-    if (nf == 0) {
-        fw_fail(&err, FW_EINPUT, "no scenario given (see fairway run --help)");
+    if (o->nf == 0)
+        fw_fail(err, FW_EINPUT, "no scenario given (see fairway run --help)");
+    else if (!fw_traffic_mode_parse(o->mode, &o->def.mode, err))
+        fw_check_sumo_mode("--sumo", &o->def.mode, err);
+    return err->status ? fw_report(err) : -1;
+}
+
+/* Every scenario loaded and checked, and --out made, before any run. */
+static int load_all(run_opts *o, fw_error *err)
+{
+    if (!(o->scn = calloc((size_t)o->nf, sizeof *o->scn)))
+        return fw_report((fw_fail(err, FW_ERUN, "out of memory"), err));
+    for (int i = 0; i < o->nf; i++) {
+        o->scn[i] = malloc(sizeof **o->scn);
+        if (!o->scn[i])
+            return fw_report((fw_fail(err, FW_ERUN, "out of memory"), err));
+        if (fw_scenario_load(o->files[i], o->scn[i], err))
+            return fw_report(err);
+        for (int j = 0; j < i; j++)
+            if (strcmp(o->scn[i]->name, o->scn[j]->name) == 0)
+                return fw_report((fw_fail(err, FW_EINPUT,
+                                          "%s and %s have the same name '%s' (one output directory)",
+                                          o->files[j], o->files[i], o->scn[i]->name),
+                                  err));
+    }
+    if (strlen(o->out) > 700)
+        return fw_report((fw_fail(err, FW_EINPUT, "--out: path too long"), err));
+    if (fw_mkdirs(o->out, "--out", err))
+        return fw_report(err);
+    for (int i = 0; i < o->nf; i++)
+        fw_warn_nomoto_speed(&o->scn[i]->ship, fw_ms_to_kn(o->scn[i]->speed), o->files[i],
+                             "own_ship.speed_kn");
+    return -1;
+}
+
+/* --out is at most 700 characters (load_all) and a name 63: the run's paths
+ * fit in 1024 bytes, never cut. */
+static void tmp_name(const run_opts *o, int i, long pid, char *out, size_t n)
+{
+    snprintf(out, n, "%s/.%s.tmp.%ld", o->out, o->scn[i]->name, pid);
+}
+
+/* One scenario into DIR/NAME; *fatal when the remaining runs must not go on. */
+static int run_one(run_opts *o, int i, bool first, bool *fatal, fw_error *err)
+{
+    char tmp[1024], dst[1024];
+    tmp_name(o, i, (long)getpid(), tmp, sizeof tmp);
+    snprintf(dst, sizeof dst, "%s/%s", o->out, o->scn[i]->name);
+    *fatal = true;
+    fw_remove_tree(tmp);
+    if (mkdir(tmp, 0777) != 0)
+        return fw_report((fw_fail(err, FW_ERUN, "cannot create %s", tmp), err));
+    o->def.scenario = o->scn[i];
+    o->def.dir = tmp;
+    fw_run_summary sum;
+    fw_encounter *enc = NULL;
+    int ne = 0;
+    fw_status st = fw_run_scenario(&o->def, &sum, &enc, &ne, err);
+    if (st == FW_EINPUT) {
+        fw_remove_tree(tmp);
+        free(enc);
+        return fw_report(err);
+    }
+    /* a failed run keeps its directory: the log says what happened */
+    fw_remove_tree(dst);
+    if (rename(tmp, dst) != 0) {
+        fw_remove_tree(tmp);
+        free(enc);
+        return fw_report((fw_fail(err, FW_ERUN, "cannot rename %s to %s", tmp, dst), err));
+    }
+    *fatal = false;
+    if (st)
+        fprintf(stderr, "fairway run: %s: %s\n", o->scn[i]->name, err->msg);
+    if (o->json) {
+        printf("%s\n", first ? "" : ",");
+        fw_summary_json(stdout, &sum, enc, ne, "  ");
     } else {
-        fw_traffic_mode_parse(mode, &def.mode, &err);
+        row(&sum);
     }
-    if (err.status) {
-        free(files);
-        return fw_report(&err);
-    }
-    /* everything checked before anything is created */
-    fw_scenario **scn = calloc((size_t)nf, sizeof *scn);
-    int rc = 0;
-    for (int i = 0; i < nf && !rc; i++) {
-        scn[i] = malloc(sizeof **scn);
-        if (!scn[i] || fw_scenario_load(files[i], scn[i], &err))
-            rc = scn[i] ? fw_report(&err) : 1;
-        for (int j = 0; j < i && !rc; j++)
-            if (strcmp(scn[i]->name, scn[j]->name) == 0) {
-                fw_fail(&err, FW_EINPUT, "%s and %s have the same name '%s' (one output directory)",
-                        files[j], files[i], scn[i]->name);
-                rc = fw_report(&err);
-            }
-    }
-    if (!rc && (strlen(out) > 700 || fw_mkdirs(out, "--out", &err)))
-        rc = fw_report(err.status ? &err : (fw_fail(&err, FW_EINPUT, "--out: path too long"), &err));
-    if (!rc && !json)
+    fflush(stdout);
+    free(enc);
+    return st ? 1 : 0;
+}
+
+/* The child's part: every run, each reported on fd (its index) once it is
+ * in place. */
+static int run_all(run_opts *o, int fd, fw_error *err)
+{
+    if (!o->json)
         printf("%-24s %8s %-6s %-9s %-17s %8s %7s %9s %9s  %s\n", "scenario", "min_d_m", "domain",
                "collision", "action_s side deg", "max_helm", "return", "path_+m", "lost_s",
                "status");
-    bool first = true, started = !rc;
-    if (started && json)
+    else
         printf("[");
-    for (int i = 0; i < nf && started; i++) {
-        char tmp[1024], dst[1024];
-        snprintf(tmp, sizeof tmp, "%s/.%s.tmp.%ld", out, scn[i]->name, (long)getpid());
-        snprintf(dst, sizeof dst, "%s/%s", out, scn[i]->name);
-        fw_remove_tree(tmp);
-        if (mkdir(tmp, 0777) != 0) {
-            rc = fw_report((fw_fail(&err, FW_ERUN, "cannot create %s", tmp), &err));
+    int rc = 0, done = 0;
+    for (int i = 0; i < o->nf; i++) {
+        bool fatal;
+        int r = run_one(o, i, done == 0, &fatal, err);
+        if (fatal) {
+            rc = r;
             break;
         }
-        def.scenario = scn[i];
-        def.dir = tmp;
-        fw_run_summary sum;
-        fw_encounter *enc = NULL;
-        int ne = 0;
-        fw_status st = fw_run_scenario(&def, &sum, &enc, &ne, &err);
-        if (st == FW_EINPUT) {
-            fw_remove_tree(tmp);
-            free(enc);
-            rc = fw_report(&err);
-            break;
-        }
-        /* a failed run keeps its directory: the log says what happened */
-        fw_remove_tree(dst);
-        if (rename(tmp, dst) != 0) {
-            fw_remove_tree(tmp);
-            free(enc);
-            rc = fw_report((fw_fail(&err, FW_ERUN, "cannot rename %s to %s", tmp, dst), &err));
-            break;
-        }
-        if (st) {
-            fprintf(stderr, "fairway run: %s: %s\n", scn[i]->name, err.msg);
-            rc = 1;
-        }
-        if (json) {
-            printf("%s\n", first ? "" : ",");
-            fw_summary_json(stdout, &sum, enc, ne, "  ");
-        } else {
-            row(&sum);
-        }
-        first = false;
-        fflush(stdout);
-        free(enc);
-        if (st)
-            rc = 1;
+        done++;
+        rc = r ? r : rc;
+        unsigned char idx[4] = {(unsigned char)(i >> 24), (unsigned char)(i >> 16),
+                                (unsigned char)(i >> 8), (unsigned char)i};
+        if (write(fd, idx, sizeof idx) != (ssize_t)sizeof idx)
+            break; /* the parent is gone */
     }
-    if (started && json)
-        printf("%s]\n", first ? "" : "\n");
-    for (int i = 0; i < nf; i++)
-        free(scn[i]);
-    free(scn);
-    free(files);
+    if (o->json)
+        printf("%s]\n", done ? "\n" : "");
+    fflush(stdout);
+    return rc;
+}
+
+static volatile sig_atomic_t g_child = 0, g_signal = 0;
+
+static void forward(int sig)
+{
+    g_signal = sig;
+    if (g_child > 0)
+        kill((pid_t)g_child, sig);
+}
+
+/* After the child died of a signal: remove its unfinished directory, say
+ * what was kept. */
+static int interrupted(run_opts *o, pid_t pid, int sig, int fd)
+{
+    bool *kept = calloc((size_t)o->nf, sizeof *kept);
+    unsigned char idx[4];
+    while (kept && read(fd, idx, sizeof idx) == (ssize_t)sizeof idx) {
+        int i = idx[0] << 24 | idx[1] << 16 | idx[2] << 8 | idx[3];
+        if (i >= 0 && i < o->nf)
+            kept[i] = true;
+    }
+    int n = 0;
+    for (int i = 0; i < o->nf; i++) {
+        char tmp[1024];
+        tmp_name(o, i, (long)pid, tmp, sizeof tmp);
+        fw_remove_tree(tmp);
+        n += kept && kept[i];
+    }
+    fflush(stdout);
+    fprintf(stderr, "\nfairway run: %s; kept %d finished run%s in %s%s", strsignal(sig), n,
+            n == 1 ? "" : "s", o->out, n ? ":" : "");
+    for (int i = 0; i < o->nf; i++)
+        if (kept && kept[i])
+            fprintf(stderr, " %s", o->scn[i]->name);
+    fprintf(stderr, "; the unfinished run was removed\n");
+    free(kept);
+    return 1;
+}
+
+/* Runs run_all in a child and waits, forwarding SIGINT and SIGTERM. */
+static int supervise(run_opts *o, fw_error *err)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return fw_report((fw_fail(err, FW_ERUN, "pipe: %s", strerror(errno)), err));
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0)
+        return fw_report((fw_fail(err, FW_ERUN, "fork: %s", strerror(errno)), err));
+    if (pid == 0) {
+        /* a background job starts with SIGINT ignored: the child must die of it */
+        signal(SIGINT, SIG_DFL);
+        signal(SIGTERM, SIG_DFL);
+        close(fds[0]);
+        exit(run_all(o, fds[1], err));
+    }
+    close(fds[1]);
+    g_child = pid;
+    struct sigaction sa = {0}, old_int, old_term;
+    sa.sa_handler = forward;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+    g_child = 0;
+    int rc = WIFEXITED(status) ? WEXITSTATUS(status)
+                               : interrupted(o, pid, WIFSIGNALED(status) ? WTERMSIG(status) : 0,
+                                             fds[0]);
+    close(fds[0]);
+    return rc;
+}
+
+int fw_cmd_run(int argc, char **argv)
+{
+    fw_error err = {0};
+    run_opts o = {.out = "runs", .mode = "embedded", .def = fw_default_run_def()};
+    if (!(o.files = calloc((size_t)argc + 1, sizeof *o.files)))
+        return 1;
+    int rc = parse_options(argc, argv, &o, &err);
+    if (rc < 0)
+        rc = load_all(&o, &err);
+    if (rc < 0)
+        rc = supervise(&o, &err);
+    for (int i = 0; o.scn && i < o.nf; i++)
+        free(o.scn[i]);
+    free(o.scn);
+    free(o.files);
     return rc;
 }

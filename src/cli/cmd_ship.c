@@ -22,6 +22,9 @@ int fw_cmd_ship(int argc, char **argv)
         return argc < 1 ? 2 : 0;
     }
     fw_error err = {0};
+    if (argc > 1)
+        return fw_report((fw_fail(&err, FW_EINPUT, "ship: one ship at a time (unexpected '%s')",
+                                  argv[1]), &err));
     fw_ship ship;
     if (fw_ship_load(argv[0], &ship, &err))
         return fw_report(&err);

@@ -1,10 +1,15 @@
 /* fairway sweep: a study's runs into its SQLite database, in parallel. */
+#include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "core/files.h"
+#include "core/units.h"
 #include "study/study.h"
 #include "study/sweep.h"
 
@@ -50,119 +55,154 @@ static void dry_run(const fw_study *s)
     }
 }
 
-int fw_cmd_sweep(int argc, char **argv)
+typedef struct sweep_opts {
+    fw_sweep_def def;
+    const char *file;
+    bool dry;
+} sweep_opts;
+
+/* An integer option within [lo, hi] (hi = INT_MAX: no upper bound). */
+static fw_status parse_count(const char *opt, const char *v, long lo, long hi, int *out,
+                             fw_error *err)
+{
+    long n;
+    fw_status st = fw_parse_long(opt, v, &n, err);
+    if (st)
+        return st;
+    if (n < lo && hi == INT_MAX)
+        return fw_fail(err, FW_EINPUT, "%s %ld: give at least %ld", opt, n, lo);
+    if (n < lo || n > hi)
+        return fw_fail(err, FW_EINPUT, "%s %ld: give %ld to %ld", opt, n, lo, hi);
+    *out = (int)n;
+    return FW_OK;
+}
+
+static fw_status parse_progress(const char *v, fw_progress_kind *out, fw_error *err)
+{
+    static const char *const kinds[] = {"auto", "bar", "lines", "none"};
+    for (int k = 0; k < 4; k++)
+        if (strcmp(v, kinds[k]) == 0) {
+            *out = (fw_progress_kind)k;
+            return FW_OK;
+        }
+    return fw_fail(err, FW_EINPUT, "--progress %s: use auto, bar, lines or none", v);
+}
+
+/* One option or the study file at a.i; FW_OK and a.i moved past it. */
+static fw_status parse_one(fw_args *a, sweep_opts *o, fw_error *err)
+{
+    fw_sweep_def *def = &o->def;
+    const char *v;
+    if (fw_args_opt(a, "--db", &v, err))
+        def->db = v;
+    else if (fw_args_opt(a, "--jobs", &v, err))
+        return err->status ? err->status : parse_count("--jobs", v, 1, 1024, &def->jobs, err);
+    else if (fw_args_opt(a, "--limit", &v, err))
+        return err->status ? err->status
+                           : parse_count("--limit", v, 1, INT_MAX, &def->limit, err);
+    else if (fw_args_opt(a, "--sumo", &v, err)) {
+        if (err->status || fw_traffic_mode_parse(v, &def->mode, err) ||
+            fw_check_sumo_mode("--sumo", &def->mode, err))
+            return err->status;
+        if (def->mode.kind == FW_TRAFFIC_GUI)
+            return fw_fail(err, FW_EINPUT, "--sumo gui: a sweep runs without windows; use "
+                                           "fairway run for a look at one run");
+    } else if (fw_args_opt(a, "--keep", &v, err))
+        def->keep_dir = v;
+    else if (fw_args_opt(a, "--progress", &v, err))
+        return err->status ? err->status : parse_progress(v, &def->progress, err);
+    else if (fw_args_flag(a, "--retry-failed"))
+        def->retry_failed = true;
+    else if (fw_args_flag(a, "--dry-run"))
+        o->dry = true;
+    else if (err->status)
+        return err->status;
+    else if (a->argv[a->i][0] == '-')
+        return fw_fail(err, FW_EINPUT, "unknown option %s (see fairway sweep --help)",
+                       a->argv[a->i]);
+    else if (!o->file)
+        o->file = a->argv[a->i++];
+    else
+        return fw_fail(err, FW_EINPUT, "one study file at a time (got %s and %s)", o->file,
+                       a->argv[a->i]);
+    return err->status;
+}
+
+/* Returns -1 to go on, else the exit code. */
+static int parse_options(int argc, char **argv, sweep_opts *o, fw_error *err)
 {
     fw_args a = {argc, argv, 0};
-    fw_error err = {0};
-    fw_sweep_def def = fw_default_sweep_def();
-    const char *file = NULL, *v;
-    bool dry = false;
     while (a.i < a.argc) {
         if (fw_is_help(a.argv[a.i])) {
             help();
             return 0;
         }
-        if (fw_args_opt(&a, "--db", &v, &err)) {
-            def.db = v;
-        } else if (fw_args_opt(&a, "--jobs", &v, &err)) {
-            long n;
-            if (fw_parse_long("--jobs", v, &n, &err))
-                return fw_report(&err);
-            if (n < 1 || n > 1024) {
-                fw_fail(&err, FW_EINPUT, "--jobs %ld: give 1 to 1024", n);
-                return fw_report(&err);
-            }
-            def.jobs = (int)n;
-        } else if (fw_args_opt(&a, "--limit", &v, &err)) {
-            long n;
-            if (fw_parse_long("--limit", v, &n, &err))
-                return fw_report(&err);
-            if (n < 1) {
-                fw_fail(&err, FW_EINPUT, "--limit %ld: give at least 1", n);
-                return fw_report(&err);
-            }
-            def.limit = (int)n;
-        } else if (fw_args_opt(&a, "--sumo", &v, &err)) {
-            if (fw_traffic_mode_parse(v, &def.mode, &err))
-                return fw_report(&err);
-            if (def.mode.kind == FW_TRAFFIC_GUI) {
-                fw_fail(&err, FW_EINPUT, "--sumo gui: a sweep runs without windows; use "
-                                         "fairway run for a look at one run");
-                return fw_report(&err);
-            }
-        } else if (fw_args_opt(&a, "--keep", &v, &err)) {
-            def.keep_dir = v;
-        } else if (fw_args_opt(&a, "--progress", &v, &err)) {
-            static const char *const kinds[] = {"auto", "bar", "lines", "none"};
-            int k = 0;
-            while (k < 4 && strcmp(v, kinds[k]) != 0)
-                k++;
-            if (k == 4) {
-                fw_fail(&err, FW_EINPUT, "--progress %s: use auto, bar, lines or none", v);
-                return fw_report(&err);
-            }
-            def.progress = (fw_progress_kind)k;
-        } else if (fw_args_flag(&a, "--retry-failed")) {
-            def.retry_failed = true;
-        } else if (fw_args_flag(&a, "--dry-run")) {
-            dry = true;
-        } else if (err.status) {
-            return fw_report(&err);
-        } else if (a.argv[a.i][0] == '-') {
-            fw_fail(&err, FW_EINPUT, "unknown option %s (see fairway sweep --help)", a.argv[a.i]);
-            return fw_report(&err);
-        } else if (!file) {
-            file = a.argv[a.i++];
-        } else {
-            fw_fail(&err, FW_EINPUT, "one study file at a time (got %s and %s)", file,
-                    a.argv[a.i]);
-            return fw_report(&err);
-        }
+        if (parse_one(&a, o, err))
+            return fw_report(err);
     }
-    if (!file) {
-        fw_fail(&err, FW_EINPUT, "no study file (see fairway sweep --help)");
-        return fw_report(&err);
-    }
-    if (!def.db && !dry) {
-        fw_fail(&err, FW_EINPUT, "--db FILE is required: where the results go");
-        return fw_report(&err);
-    }
+    if (!o->file)
+        return fw_report((fw_fail(err, FW_EINPUT, "no study file (see fairway sweep --help)"), err));
+    if (!o->def.db && !o->dry)
+        return fw_report(
+            (fw_fail(err, FW_EINPUT, "--db FILE is required: where the results go"), err));
+    return -1;
+}
+
+static int finish(const fw_sweep_def *def, fw_status st, const fw_sweep_result *res, bool root,
+                  fw_error *err)
+{
+    if (!root)
+        return st ? (int)st : 0;
+    if (st)
+        return fw_report(err);
+    if (res->interrupted)
+        fprintf(stderr, "fairway: sweep interrupted; %d runs are in %s, run the same "
+                        "command again to resume\n",
+                res->skipped + res->done + res->failed, def->db);
+    if (res->failed || res->failed_before)
+        fprintf(stderr, "fairway: %d runs failed (their reasons are in %s, table runs); "
+                        "--retry-failed runs them again\n",
+                res->failed + res->failed_before, def->db);
+    return res->interrupted || res->failed || res->failed_before ? 1 : 0;
+}
+
+int fw_cmd_sweep(int argc, char **argv)
+{
+    fw_error err = {0};
+    sweep_opts o = {.def = fw_default_sweep_def()};
+    int rc = parse_options(argc, argv, &o, &err);
+    if (rc >= 0)
+        return rc;
     fw_study *s = malloc(sizeof *s);
-    if (!s) {
-        fw_fail(&err, FW_ERUN, "out of memory");
-        return fw_report(&err);
-    }
+    if (!s)
+        return fw_report((fw_fail(&err, FW_ERUN, "out of memory"), &err));
     /* the whole study is checked before any run starts */
-    if (fw_study_load(file, s, &err)) {
+    if (fw_study_load(o.file, s, &err)) {
         free(s);
         return fw_report(&err);
     }
-    if (dry) {
+    if (o.dry) {
         dry_run(s);
         free(s);
         return 0;
     }
-    def.study = s;
+    fw_warn_nomoto_speed(&s->base.ship, fw_ms_to_kn(s->base.speed), s->scenario_file,
+                         "own_ship.speed_kn");
+    /* --keep is made (and checked) before the database exists: a file there
+     * would otherwise fail every run */
+    if (o.def.keep_dir && (fw_mkdirs(o.def.keep_dir, "--keep", &err) ||
+                           (access(o.def.keep_dir, W_OK | X_OK) != 0 &&
+                            fw_fail(&err, FW_EINPUT, "--keep %s: cannot write in it: %s",
+                                    o.def.keep_dir, strerror(errno))))) {
+        free(s);
+        return fw_report(&err);
+    }
+    o.def.study = s;
     fw_sweep_result res;
     bool root = true;
-    fw_status st = fw_sweep_under_mpi() ? fw_sweep_mpi(&def, &res, &root, &err)
-                                        : fw_sweep_local(&def, &res, &err);
-    int rc = 0;
-    if (!root) {
-        rc = st ? (int)st : 0;
-    } else if (st) {
-        rc = fw_report(&err);
-    } else {
-        if (res.interrupted)
-            fprintf(stderr, "fairway: sweep interrupted; %d runs are in %s, run the same "
-                            "command again to resume\n",
-                    res.skipped + res.done + res.failed, def.db);
-        if (res.failed || res.failed_before)
-            fprintf(stderr, "fairway: %d runs failed (their reasons are in %s, table runs); "
-                            "--retry-failed runs them again\n",
-                    res.failed + res.failed_before, def.db);
-        rc = res.interrupted || res.failed || res.failed_before ? 1 : 0;
-    }
+    fw_status st = fw_sweep_under_mpi() ? fw_sweep_mpi(&o.def, &res, &root, &err)
+                                        : fw_sweep_local(&o.def, &res, &err);
+    rc = finish(&o.def, st, &res, root, &err);
     free(s);
     return rc;
 }

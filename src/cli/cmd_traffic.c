@@ -189,8 +189,14 @@ int fw_cmd_traffic(int argc, char **argv)
         return fw_report((fw_fail(&err, FW_EINPUT, "--ships %ld: must be 0..100000", ships), &err));
     if (!(duration > 0.0 && duration <= 30 * 86400.0))
         return fw_report((fw_fail(&err, FW_EINPUT, "--duration %g: must be in (0, 30 days]", duration), &err));
-    if (!(step > 0.0 && step <= 60.0))
-        return fw_report((fw_fail(&err, FW_EINPUT, "--step %g: must be in (0, 60] s", step), &err));
+    /* SUMO's clock counts milliseconds; scenarios step 0.1 to 10 s */
+    if (!(step >= 0.1 && step <= 60.0))
+        return fw_report((fw_fail(&err, FW_EINPUT, "--step %g: must be 0.1 to 60 s", step), &err));
+    if (duration / step > 1e7)
+        return fw_report((fw_fail(&err, FW_EINPUT, "--duration %g with --step %g: %.0f steps, at "
+                                  "most 10000000", duration, step, ceil(duration / step)), &err));
+    if (!(density >= 0.0 && density <= 100.0))
+        return fw_report((fw_fail(&err, FW_EINPUT, "--density %g: must be 0..100", density), &err));
     if (!(radius > 0.0 && radius <= 100.0))
         return fw_report((fw_fail(&err, FW_EINPUT, "--radius %g: must be in (0, 100] nm", radius), &err));
     if (!(speed >= 0.0 && speed <= 40.0))
@@ -199,6 +205,11 @@ int fw_cmd_traffic(int argc, char **argv)
         return fw_report((fw_fail(&err, FW_EINPUT, "--every %ld: must be 1 or more", every), &err));
     if (seed < 0)
         return fw_report((fw_fail(&err, FW_EINPUT, "--seed %ld: must be 0 or more", seed), &err));
+    fw_traffic_mode m;
+    if (fw_traffic_mode_parse(mode, &m, &err) || fw_check_sumo_mode("--sumo", &m, &err) ||
+        fw_check_out_file("--routes", routes, true, &err) ||
+        fw_check_out_file("--log", log, true, &err))
+        return fw_report(&err);
     return run(network, ships, density, duration, step, radius, speed, seed, every, mode, log,
                routes);
 }

@@ -251,8 +251,16 @@ fw_status fw_calibrate(fw_ship *ship, const fw_trial *trial, fw_calibration *cal
     return FW_OK;
 }
 
-fw_status fw_calibration_write(const fw_ship *ship, const fw_trial *trial,
-                               const fw_calibration *cal, fw_error *err)
+/* The new ship file must load as a ship before it replaces the old one. */
+static fw_status check_ship(const char *tmp_path, void *ctx, fw_error *err)
+{
+    (void)ctx;
+    fw_ship probe;
+    return fw_ship_load(tmp_path, &probe, err);
+}
+
+static fw_status set_coefficients(fw_yaml_edit *ed, const fw_ship *ship, const fw_trial *trial,
+                                  const fw_calibration *cal, fw_error *err)
 {
     fw_ship probe = *ship;
     for (int j = 0; j < cal->n; j++) {
@@ -263,10 +271,22 @@ fw_status fw_calibration_write(const fw_ship *ship, const fw_trial *trial,
         snprintf(value, sizeof value, "%.6g", cal->after[j] / scale);
         snprintf(comment, sizeof comment, "[CAL] fairway calibrate: was %.6g (x%.3f)",
                  cal->before[j] / scale, cal->after[j] / cal->before[j]);
-        fw_status st = fw_yaml_set_scalar(ship->file, section, trial->tune[j], value, comment, err);
+        fw_status st = fw_yaml_edit_scalar(ed, section, trial->tune[j], value, comment, err);
         if (st)
             return st;
     }
+    return FW_OK;
+}
+
+fw_status fw_calibration_write(const fw_ship *ship, const fw_trial *trial,
+                               const fw_calibration *cal, fw_error *err)
+{
+    /* every edit is made in memory and the file replaced once: a failure at
+     * any point leaves the ship file as it was */
+    fw_yaml_edit *ed = NULL;
+    fw_status st = fw_yaml_edit_open(ship->file, &ed, err);
+    if (st || (st = set_coefficients(ed, ship, trial, cal, err)))
+        goto out;
     /* Name the trial file relative to the data root, so the note stays true
      * wherever the repository is checked out. */
     const char *trial_name = trial->file;
@@ -285,9 +305,17 @@ fw_status fw_calibration_write(const fw_ship *ship, const fw_trial *trial,
         used += (size_t)snprintf(text + used, sizeof text - used, "#   %-14s %.6g -> %.6g\n",
                                  trial->tune[j], cal->before[j], cal->after[j]);
     if (used < sizeof text)
-        snprintf(text + used, sizeof text - used,
-                 "# RMS relative error %.1f%% -> %.1f%%, largest %.1f%% -> %.1f%%.\n",
-                 100 * cal->rms_before, 100 * cal->rms_after, 100 * cal->max_before,
-                 100 * cal->max_after);
-    return fw_yaml_set_comment_block(ship->file, "calibration", text, err);
+        used += (size_t)snprintf(text + used, sizeof text - used,
+                                 "# RMS relative error %.1f%% -> %.1f%%, largest %.1f%% -> %.1f%%.\n",
+                                 100 * cal->rms_before, 100 * cal->rms_after,
+                                 100 * cal->max_before, 100 * cal->max_after);
+    if (used >= sizeof text) {
+        st = fw_fail(err, FW_ERUN, "%s: calibration note too long", ship->file);
+        goto out;
+    }
+    if (!(st = fw_yaml_edit_comment_block(ed, "calibration", text, err)))
+        st = fw_yaml_edit_save(ed, NULL, check_ship, NULL, err);
+out:
+    fw_yaml_edit_free(ed);
+    return st;
 }

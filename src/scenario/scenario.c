@@ -1,6 +1,7 @@
 /* Scenario files: the schema, checked field by field (see scenario.h). */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/units.h"
@@ -134,6 +135,15 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
         fw_network_files nf;
         fw_error nerr = {0};
         if (fw_network_find(s->network, &nf, &nerr))
+            return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",
+                              "%s", nerr.msg);
+        /* the demand is read by every run: a bad one is refused now, not per run */
+        fw_demand *dm = malloc(sizeof *dm);
+        if (!dm)
+            return fw_fail(err, FW_ERUN, "out of memory");
+        fw_status dst = fw_demand_load(nf.demand, dm, &nerr);
+        free(dm);
+        if (dst)
             return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",
                               "%s", nerr.msg);
     }
@@ -291,7 +301,9 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
     static const char *const keys[] = {"name", "description", "own_ship", "traffic",
                                        "avoidance", "survey", "run", "outputs", NULL};
     memset(s, 0, sizeof *s);
-    snprintf(s->file, sizeof s->file, "%s", path);
+    if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
+        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
+                       sizeof s->file - 1);
     s->density = 1.0;
     s->reactions = fw_default_reactions_def();
     s->helm = fw_default_helm_def();

@@ -15,15 +15,15 @@ const char *fw_data_root(void)
     return (env && env[0]) ? env : FAIRWAY_DATA_DIR;
 }
 
-void fw_ship_path(const char *name_or_path, char *out, unsigned outsz)
+bool fw_ship_path(const char *name_or_path, char *out, unsigned outsz)
 {
     size_t len = strlen(name_or_path);
     bool is_path = strchr(name_or_path, '/') != NULL ||
                    (len > 5 && strcmp(name_or_path + len - 5, ".yaml") == 0);
-    if (is_path)
-        snprintf(out, outsz, "%s", name_or_path);
-    else
-        snprintf(out, outsz, "%s/scenarios/ships/%s.yaml", fw_data_root(), name_or_path);
+    int n = is_path ? snprintf(out, outsz, "%s", name_or_path)
+                    : snprintf(out, outsz, "%s/scenarios/ships/%s.yaml", fw_data_root(),
+                               name_or_path);
+    return n >= 0 && (unsigned)n < outsz;
 }
 
 double fw_ship_mass(const fw_ship *s) { return s->rho * s->volume; }

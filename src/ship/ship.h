@@ -106,8 +106,9 @@ typedef struct fw_ship {
  * is checked; errors name file, line and field and return FW_EINPUT. */
 fw_status fw_ship_load(const char *name_or_path, fw_ship *ship, fw_error *err);
 
-/* Resolves a ship name to its file path (without checking it exists). */
-void fw_ship_path(const char *name_or_path, char *out, unsigned outsz);
+/* Resolves a ship name to its file path (without checking it exists);
+ * false when the path does not fit in out. */
+bool fw_ship_path(const char *name_or_path, char *out, unsigned outsz);
 
 /* The data root: $FAIRWAY_DATA if set, else the build's FAIRWAY_DATA_DIR. */
 const char *fw_data_root(void);

@@ -212,7 +212,9 @@ fw_status fw_ship_load(const char *name_or_path, fw_ship *ship, fw_error *err)
 {
     memset(ship, 0, sizeof *ship);
     char path[512];
-    fw_ship_path(name_or_path, path, sizeof path);
+    if (!fw_ship_path(name_or_path, path, sizeof path))
+        return fw_fail(err, FW_EINPUT, "ship '%.100s...': path longer than %zu characters",
+                       name_or_path, sizeof path - 1);
     bool by_name = strcmp(path, name_or_path) != 0;
     FILE *probe = fopen(path, "rb");
     if (!probe) {

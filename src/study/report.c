@@ -114,7 +114,8 @@ static void rm_tree(const char *path)
 static fw_status mkdirs(const char *dir, fw_error *err)
 {
     char buf[1024];
-    snprintf(buf, sizeof buf, "%s", dir);
+    if (!fit(buf, sizeof buf, "%s", dir))
+        return fw_fail(err, FW_EINPUT, "--out %s: path too long", dir);
     for (char *p = buf + 1; *p; p++)
         if (*p == '/') {
             *p = '\0';
@@ -158,7 +159,8 @@ static fw_status check_target(const char *out, bool *exists, fw_error *err)
 static bool default_out(const char *db, char *out, size_t sz)
 {
     char buf[1024];
-    snprintf(buf, sizeof buf, "%s", db);
+    if (!fit(buf, sizeof buf, "%s", db))
+        return false;
     char *slash = strrchr(buf, '/');
     char *base = slash ? slash + 1 : buf;
     char *dot = strrchr(base, '.');

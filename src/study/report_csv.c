@@ -24,7 +24,8 @@ typedef struct csv {
 static fw_status csv_open(csv *c, const char *dir, const char *name, const char *header,
                           fw_error *err)
 {
-    snprintf(c->path, sizeof c->path, "%s/%s", dir, name);
+    if ((size_t)snprintf(c->path, sizeof c->path, "%s/%s", dir, name) >= sizeof c->path)
+        return fw_fail(err, FW_EINPUT, "%s: path too long", dir);
     c->f = fopen(c->path, "w");
     if (!c->f)
         return fw_fail(err, FW_ERUN, "cannot create %s", c->path);

@@ -6,11 +6,16 @@
  * rows it may have left are skipped.  Names the database does not define
  * (situations, types) are refused rather than guessed.
  */
+#include <ctype.h>
+#include <fcntl.h>
+#include <libgen.h>
 #include <math.h>
 #include <sqlite3.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "study/report_data.h"
 #include "study/schema.h"
@@ -376,6 +381,87 @@ static fw_status read_all(loader *L)
     return FW_OK;
 }
 
+/* Is the database in WAL mode (header bytes 18-19 are 2)? */
+static bool is_wal(const char *file)
+{
+    unsigned char h[20] = {0};
+    FILE *f = fopen(file, "rb");
+    if (!f)
+        return false;
+    size_t n = fread(h, 1, sizeof h, f);
+    fclose(f);
+    return n == sizeof h && h[18] == 2 && h[19] == 2;
+}
+
+static bool exists(const char *file, const char *ext, off_t *size)
+{
+    char path[1100];
+    struct stat sb;
+    snprintf(path, sizeof path, "%s%s", file, ext);
+    if (stat(path, &sb) != 0)
+        return false;
+    if (size)
+        *size = sb.st_size;
+    return true;
+}
+
+/* Opens file read-only.  A database a killed sweep left in WAL mode needs a
+ * -shm file, which a reader that cannot write the directory cannot create;
+ * then, when no -wal holds commits, it is opened immutable (nothing else can
+ * be writing it: a writer would have made the -wal). */
+static int open_ro(const char *file, sqlite3 **db)
+{
+    char *copy = strdup(file);
+    if (!copy)
+        return SQLITE_NOMEM;
+    bool dir_ro = access(dirname(copy), W_OK) != 0;
+    free(copy);
+    off_t wal = 0;
+    if (!dir_ro || !is_wal(file) || (exists(file, "-wal", &wal) && wal > 0))
+        return sqlite3_open_v2(file, db, SQLITE_OPEN_READONLY, NULL);
+    size_t n = strlen(file);
+    char *uri = malloc(3 * n + 32), *p = uri;
+    if (!uri)
+        return SQLITE_NOMEM;
+    p += sprintf(p, "file:");
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)file[i];
+        if (isalnum(c) || strchr("/-._~", c))
+            *p++ = (char)c;
+        else
+            p += sprintf(p, "%%%02X", c);
+    }
+    strcpy(p, "?immutable=1");
+    int rc = sqlite3_open_v2(uri, db, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, NULL);
+    free(uri);
+    return rc;
+}
+
+/* A reader of a WAL database creates -wal and -shm and cannot remove them;
+ * empty ones it made are removed, unless a sweep (holding the file's lock,
+ * store.c) is writing it. */
+static void tidy(const char *file, bool had_wal, bool had_shm)
+{
+    off_t wal = 0;
+    if ((had_wal || !exists(file, "-wal", &wal) || wal > 0) && (had_shm || !exists(file, "-shm", NULL)))
+        return;
+    int fd = open(file, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return;
+    if (flock(fd, LOCK_EX | LOCK_NB) == 0) {
+        char path[1100];
+        if (!had_wal && exists(file, "-wal", &wal) && wal == 0) {
+            snprintf(path, sizeof path, "%s-wal", file);
+            unlink(path);
+        }
+        if (!had_shm && !exists(file, "-wal", NULL)) {
+            snprintf(path, sizeof path, "%s-shm", file);
+            unlink(path);
+        }
+    }
+    close(fd);
+}
+
 fw_status fw_rep_load(fw_study_report *rep, const char *file, fw_error *err)
 {
     struct stat sb;
@@ -383,9 +469,12 @@ fw_status fw_rep_load(fw_study_report *rep, const char *file, fw_error *err)
         return fw_fail(err, FW_EINPUT, "%s: no such file", file);
     if (!S_ISREG(sb.st_mode))
         return fw_fail(err, FW_EINPUT, "%s: not a file", file);
-    snprintf(rep->db, sizeof rep->db, "%s", file);
+    if ((size_t)snprintf(rep->db, sizeof rep->db, "%s", file) >= sizeof rep->db)
+        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", file,
+                       sizeof rep->db - 1);
     loader L = {rep, NULL, file, err};
-    if (sqlite3_open_v2(file, &L.db, SQLITE_OPEN_READONLY, NULL) != SQLITE_OK) {
+    bool had_wal = exists(file, "-wal", NULL), had_shm = exists(file, "-shm", NULL);
+    if (open_ro(file, &L.db) != SQLITE_OK) {
         fw_fail(err, FW_EINPUT, "%s: cannot open (%s)", file, L.db ? sqlite3_errmsg(L.db) : "?");
         sqlite3_close(L.db);
         return FW_EINPUT;
@@ -399,5 +488,6 @@ fw_status fw_rep_load(fw_study_report *rep, const char *file, fw_error *err)
         st = read_all(&L);
     sqlite3_exec(L.db, "COMMIT", NULL, NULL, NULL);
     sqlite3_close(L.db);
+    tidy(file, had_wal, had_shm);
     return st;
 }

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/json.h"
 #include "study/report_data.h"
 
 /* The measures of the compact tables, in column order. */
@@ -205,7 +206,8 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
                           const char *dir, fw_error *err)
 {
     char path[1100], name[256];
-    snprintf(path, sizeof path, "%s/report.md", dir);
+    if ((size_t)snprintf(path, sizeof path, "%s/report.md", dir) >= sizeof path)
+        return fw_fail(err, FW_EINPUT, "%s: path too long", dir);
     FILE *f = fopen(path, "w");
     if (!f)
         return fw_fail(err, FW_ERUN, "cannot create %s", path);
@@ -237,26 +239,15 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
 
 /* JSON */
 
+/* Numbers as %.10g; strings through the project's escaping writer. */
 static void jnum(FILE *f, double x)
 {
-    if (isfinite(x))
-        fprintf(f, "%.10g", x);
-    else
-        fputs("null", f);
+    fw_json_number(f, x, "%.10g");
 }
 
 static void jstr(FILE *f, const char *s)
 {
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\')
-            fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20)
-            fprintf(f, "\\u%04x", *s);
-        else
-            fputc(*s, f);
-    }
-    fputc('"', f);
+    fw_json_string(f, s);
 }
 
 static void jest(FILE *f, const fw_estimate *e)
@@ -281,7 +272,9 @@ static void print_json(FILE *f, const fw_study_report *rep, const fw_study_repor
                "\"reference_m\": ",
             rep->n_runs, rep->n_failed, rep->n_total, rep->level);
     jnum(f, rep->reference_m);
-    fprintf(f, ", \"plots\": \"%s\", \"warnings\": [", plots[res->plots]);
+    fputs(", \"plots\": ", f);
+    jstr(f, plots[res->plots]);
+    fputs(", \"warnings\": [", f);
     for (int i = 0; i < rep->n_warnings; i++) {
         fputs(i ? ", " : "", f);
         jstr(f, rep->warnings[i].text);
@@ -303,8 +296,10 @@ static void print_json(FILE *f, const fw_study_report *rep, const fw_study_repor
     for (int i = 0; i < rep->n_pairs; i++) {
         const fw_rep_pair *p = &rep->pairs[i];
         const fw_rep_group *G = &rep->groups[p->group];
-        fprintf(f, "%s\n  {\"density\": %.10g, \"domain_m\": %.10g, \"measure\": \"%s\", \"diff\": ",
-                i ? "," : "", G->density, G->domain, fw_measures[p->measure].name);
+        fprintf(f, "%s\n  {\"density\": %.10g, \"domain_m\": %.10g, \"measure\": ",
+                i ? "," : "", G->density, G->domain);
+        jstr(f, fw_measures[p->measure].name);
+        fputs(", \"diff\": ", f);
         jest(f, &p->est);
         fprintf(f, ", \"significant\": %s}", significant(&p->est) ? "true" : "false");
     }

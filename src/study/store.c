@@ -1,10 +1,16 @@
 /* store.c - the study database (see store.h). */
+#include <errno.h>
+#include <fcntl.h>
 #include <inttypes.h>
+#include <libgen.h>
 #include <math.h>
 #include <sqlite3.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/units.h"
 #include "study/schema.h"
@@ -14,7 +20,13 @@ struct fw_store {
     sqlite3 *db;
     char path[1024];
     sqlite3_stmt *run, *enc, *trf;
+    int lock_fd;  /* flock'ed for as long as the store is open: one writer */
+    bool created; /* this open made the file: removed again when refused */
 };
+
+/* The lock of the store this process has open, closed in forked children so
+ * a run's process never holds it (see fw_store_child). */
+static int g_lock_fd = -1;
 
 static fw_status db_fail(fw_store *st, fw_error *err, const char *what)
 {
@@ -109,6 +121,97 @@ static fw_status write_meta(fw_store *st, const fw_study *s, const char *digest,
     return FW_OK;
 }
 
+/* One input's row in meta: key "input:ROLE", value "DIGEST PATH". */
+static void input_row(const fw_study_input *in, char *key, size_t keysz, char *val,
+                      size_t valsz)
+{
+    snprintf(key, keysz, "input:%s", in->role);
+    snprintf(val, valsz, "%016" PRIx64 " %s", in->digest, in->path);
+}
+
+/* Each input's digest and path, "input:ROLE" in meta.  On resume a changed
+ * file is named; a database from before these rows gets them now.  When the
+ * study's settings differ (same_digest false) the study file differs too, so
+ * it is another study unless its scenario or ship changed. */
+static fw_status check_inputs(fw_store *st, const fw_study *s, bool same_digest, fw_error *err)
+{
+    for (int i = 0; i < s->n_inputs; i++) {
+        const fw_study_input *in = &s->inputs[i];
+        if (!same_digest && strcmp(in->role, "study") == 0)
+            continue;
+        char key[64], old[1200], now[1200];
+        input_row(in, key, sizeof key, now, sizeof now);
+        fw_status r = meta_get(st, key, old, sizeof old, err);
+        if (r)
+            return r;
+        if (old[0] && strncmp(old, now, 16) != 0)
+            return fw_fail(err, FW_EINPUT,
+                           "%s: %s (the %s) changed since this database's sweep began: its runs "
+                           "would mix two inputs; restore the file, or give a new --db",
+                           st->path, in->path, in->role);
+    }
+    if (!same_digest)
+        return fw_fail(err, FW_EINPUT,
+                       "%s holds results of another study (or %s, its scenario or ship file "
+                       "changed since): resume only with the same files, or give a new --db",
+                       st->path, s->file);
+    for (int i = 0; i < s->n_inputs; i++) {
+        char key[64], now[1200];
+        input_row(&s->inputs[i], key, sizeof key, now, sizeof now);
+        fw_status r = meta_put(st, key, now, err);
+        if (r)
+            return r;
+    }
+    return FW_OK;
+}
+
+/* Before SQLite touches path: a directory, a missing parent or one we may
+ * not write in get a plain message, and the file is locked against a second
+ * sweep (refused at once, not after a busy wait or a UNIQUE failure). */
+static fw_status lock_path(fw_store *st, const char *path, fw_error *err)
+{
+    struct stat sb;
+    bool exists = stat(path, &sb) == 0;
+    if (exists && S_ISDIR(sb.st_mode))
+        return fw_fail(err, FW_EINPUT, "--db %s: is a directory, expected a database file", path);
+    if (!exists) {
+        char *copy = strdup(path);
+        if (!copy)
+            return fw_fail(err, FW_ERUN, "out of memory");
+        const char *dir = dirname(copy);
+        fw_status r = FW_OK;
+        if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
+            r = fw_fail(err, FW_EINPUT, "--db %s: no directory %s", path, dir);
+        else if (access(dir, W_OK | X_OK) != 0)
+            r = fw_fail(err, FW_EINPUT, "--db %s: cannot create it in %s: %s", path, dir,
+                        strerror(errno));
+        free(copy);
+        if (r)
+            return r;
+    }
+    st->lock_fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (st->lock_fd < 0)
+        return fw_fail(err, FW_EINPUT, "--db %s: cannot open it for writing: %s", path,
+                       strerror(errno));
+    st->created = !exists;
+    if (flock(st->lock_fd, LOCK_EX | LOCK_NB) != 0) {
+        st->created = false; /* the other sweep's file now */
+        return fw_fail(err, FW_EINPUT,
+                       "--db %s: another fairway sweep is writing this database; let it finish "
+                       "(or stop it), then run the same command again to resume",
+                       path);
+    }
+    g_lock_fd = st->lock_fd;
+    return FW_OK;
+}
+
+void fw_store_child(void)
+{
+    if (g_lock_fd >= 0)
+        close(g_lock_fd);
+    g_lock_fd = -1;
+}
+
 static const char kRunSql[] =
     "INSERT INTO runs(run_id, domain_m, density, replication, seed, status, reason, sim_s, "
     "wall_s, sumo_s, n_encounters, n_actions, min_dist_m, domain_entered, near_miss, collision, "
@@ -124,14 +227,52 @@ static const char kTrfSql[] =
     "INSERT INTO traffic_encounters(run_id, ship_a, ship_b, type, own, t_first_s, range0_m, "
     "dcpa0_m, tcpa0_s, min_dist_m, t_min_s) VALUES(?,?,?,?,?,?,?,?,?,?,?)";
 
+/* Schema, version and inputs checked and meta written, in one transaction. */
+static fw_status setup(fw_store *st, const fw_study *s, fw_error *err)
+{
+    fw_status r;
+    if ((r = exec(st, "BEGIN IMMEDIATE", err)))
+        return r;
+    if ((r = exec(st, FW_SCHEMA_SQL, err))) {
+        if (err)
+            err->status = FW_EINPUT;
+        r = FW_EINPUT;
+        goto rollback;
+    }
+    char version[64], old[64], digest[32];
+    snprintf(digest, sizeof digest, "%016" PRIx64, s->digest);
+    if ((r = meta_get(st, "schema_version", version, sizeof version, err)) ||
+        (r = meta_get(st, "study_digest", old, sizeof old, err)))
+        goto rollback;
+    if (version[0] && strcmp(version, FW_SCHEMA_VERSION) != 0) {
+        r = fw_fail(err, FW_EINPUT, "%s: database schema version %s, this fairway writes %s",
+                    st->path, version, FW_SCHEMA_VERSION);
+        goto rollback;
+    }
+    if ((r = check_inputs(st, s, !old[0] || strcmp(old, digest) == 0, err)) ||
+        (r = write_meta(st, s, digest, err)) || (r = exec(st, "COMMIT", err)))
+        goto rollback;
+    return FW_OK;
+rollback:
+    exec(st, "ROLLBACK", NULL);
+    return r;
+}
+
 fw_status fw_store_open(const char *path, const fw_study *s, fw_store **out, fw_error *err)
 {
     *out = NULL;
     fw_store *st = calloc(1, sizeof *st);
     if (!st)
         return fw_fail(err, FW_ERUN, "out of memory");
-    snprintf(st->path, sizeof st->path, "%s", path);
+    st->lock_fd = -1;
     fw_status r = FW_OK;
+    if ((size_t)snprintf(st->path, sizeof st->path, "%s", path) >= sizeof st->path) {
+        r = fw_fail(err, FW_EINPUT, "--db %s: path longer than %zu characters", path,
+                    sizeof st->path - 1);
+        goto fail;
+    }
+    if ((r = lock_path(st, path, err)))
+        goto fail;
     if (sqlite3_open_v2(path, &st->db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, NULL)) {
         r = fw_fail(err, FW_EINPUT, "%s: cannot open the database: %s", path,
                     st->db ? sqlite3_errmsg(st->db) : "out of memory");
@@ -139,7 +280,8 @@ fw_status fw_store_open(const char *path, const fw_study *s, fw_store **out, fw_
     }
     sqlite3_busy_timeout(st->db, 10000);
     /* WAL: a commit is one append, a killed writer leaves the file intact;
-     * NORMAL sync is durable against the process dying (not the machine) */
+     * NORMAL sync is durable against the process dying (not the machine).
+     * fw_store_close turns it back to a rollback journal for readers. */
     char *msg = NULL;
     if (sqlite3_exec(st->db, "PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;", NULL, NULL,
                      &msg) != SQLITE_OK) {
@@ -148,40 +290,8 @@ fw_status fw_store_open(const char *path, const fw_study *s, fw_store **out, fw_
         sqlite3_free(msg);
         goto fail;
     }
-    if ((r = exec(st, "BEGIN IMMEDIATE", err)))
+    if ((r = setup(st, s, err)))
         goto fail;
-    if ((r = exec(st, FW_SCHEMA_SQL, err))) {
-        r = FW_EINPUT;
-        if (err)
-            err->status = FW_EINPUT;
-        exec(st, "ROLLBACK", NULL);
-        goto fail;
-    }
-    char version[64], old[64], digest[32];
-    snprintf(digest, sizeof digest, "%016" PRIx64, s->digest);
-    if ((r = meta_get(st, "schema_version", version, sizeof version, err)) ||
-        (r = meta_get(st, "study_digest", old, sizeof old, err))) {
-        exec(st, "ROLLBACK", NULL);
-        goto fail;
-    }
-    if (version[0] && strcmp(version, FW_SCHEMA_VERSION) != 0) {
-        exec(st, "ROLLBACK", NULL);
-        r = fw_fail(err, FW_EINPUT, "%s: database schema version %s, this fairway writes %s",
-                    path, version, FW_SCHEMA_VERSION);
-        goto fail;
-    }
-    if (old[0] && strcmp(old, digest) != 0) {
-        exec(st, "ROLLBACK", NULL);
-        r = fw_fail(err, FW_EINPUT,
-                    "%s holds results of another study (or %s, its scenario or ship file "
-                    "changed since): resume only with the same files, or give a new --db",
-                    path, s->file);
-        goto fail;
-    }
-    if ((r = write_meta(st, s, digest, err)) || (r = exec(st, "COMMIT", err))) {
-        exec(st, "ROLLBACK", NULL);
-        goto fail;
-    }
     if (sqlite3_prepare_v2(st->db, kRunSql, -1, &st->run, NULL) ||
         sqlite3_prepare_v2(st->db, kEncSql, -1, &st->enc, NULL) ||
         sqlite3_prepare_v2(st->db, kTrfSql, -1, &st->trf, NULL)) {
@@ -191,6 +301,17 @@ fw_status fw_store_open(const char *path, const fw_study *s, fw_store **out, fw_
     *out = st;
     return FW_OK;
 fail:
+    if (st->created) {
+        /* refused: leave no database behind that the user did not have */
+        sqlite3_close(st->db);
+        st->db = NULL;
+        static const char *const ext[] = {"", "-wal", "-shm", "-journal"};
+        for (int i = 0; i < 4; i++) {
+            char f[1100];
+            snprintf(f, sizeof f, "%s%s", st->path, ext[i]);
+            unlink(f);
+        }
+    }
     fw_store_close(st);
     return r;
 }
@@ -202,7 +323,18 @@ void fw_store_close(fw_store *st)
     sqlite3_finalize(st->run);
     sqlite3_finalize(st->enc);
     sqlite3_finalize(st->trf);
+    /* back to a rollback journal: a reader (fairway report) then opens the
+     * file read-only, even in a directory it cannot write, and leaves no
+     * -wal or -shm beside it */
+    if (st->db && st->run)
+        sqlite3_exec(st->db, "PRAGMA wal_checkpoint(TRUNCATE); PRAGMA journal_mode=DELETE;",
+                     NULL, NULL, NULL);
     sqlite3_close(st->db);
+    if (st->lock_fd >= 0) {
+        if (g_lock_fd == st->lock_fd)
+            g_lock_fd = -1;
+        close(st->lock_fd);
+    }
     free(st);
 }
 

@@ -19,7 +19,13 @@ typedef struct fw_store fw_store;
 
 /* Opens (creating if needed) path for study s. */
 fw_status fw_store_open(const char *path, const fw_study *s, fw_store **out, fw_error *err);
+/* Closes st; the database is left with a rollback journal (not WAL), so
+ * readers need no write access.  Opening takes an exclusive lock on the file
+ * (flock): a second sweep on the same database is refused at once. */
 void fw_store_close(fw_store *st);
+
+/* In a forked child: drops the inherited lock so only the writer holds it. */
+void fw_store_child(void);
 
 /* done[run_id] = the run is in the database (ok, or failed when
  * count_failed); done has fw_study_run_count entries. */

@@ -5,7 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ship/ship.h"
 #include "study/study.h"
+#include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
 
 uint64_t fw_fnv1a(uint64_t h, const void *data, size_t n)
@@ -61,16 +63,16 @@ static fw_status read_levels(const yt_doc *doc, const yt_node *root, const char 
     return FW_OK;
 }
 
-/* The scenario path is relative to the study file's directory. */
-static void resolve(const char *study_file, const char *rel, char *out, size_t outsz)
+/* The scenario path is relative to the study file's directory; false when
+ * the result does not fit in out. */
+static bool resolve(const char *study_file, const char *rel, char *out, size_t outsz)
 {
-    if (rel[0] == '/') {
-        snprintf(out, outsz, "%s", rel);
-        return;
-    }
+    if (rel[0] == '/')
+        return (size_t)snprintf(out, outsz, "%s", rel) < outsz;
     char tmp[512];
-    snprintf(tmp, sizeof tmp, "%s", study_file);
-    snprintf(out, outsz, "%s/%s", dirname(tmp), rel);
+    if ((size_t)snprintf(tmp, sizeof tmp, "%s", study_file) >= sizeof tmp)
+        return false;
+    return (size_t)snprintf(out, outsz, "%s/%s", dirname(tmp), rel) < outsz;
 }
 
 static uint64_t file_digest(uint64_t h, const char *path)
@@ -84,6 +86,57 @@ static uint64_t file_digest(uint64_t h, const char *path)
         h = fw_fnv1a(h, buf, n);
     fclose(f);
     return h;
+}
+
+static fw_status add_input(fw_study *s, const char *role, const char *path, fw_error *err)
+{
+    if (s->n_inputs >= FW_STUDY_MAX_INPUTS)
+        return fw_fail(err, FW_ERUN, "%s: more than %d input files", s->file,
+                       FW_STUDY_MAX_INPUTS);
+    fw_study_input *in = &s->inputs[s->n_inputs];
+    if ((size_t)snprintf(in->path, sizeof in->path, "%s", path) >= sizeof in->path)
+        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
+                       sizeof in->path - 1);
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return fw_fail(err, FW_EINPUT, "%s: cannot read this input of study %s", path, s->file);
+    fclose(f);
+    in->role = role;
+    in->digest = file_digest(FW_FNV_INIT, path);
+    s->n_inputs++;
+    return FW_OK;
+}
+
+/* Every file a run of the study reads (see src/run/run.c): the study, its
+ * scenario and ship, and the network's demand, ship types and plain XML.
+ * The built net.xml is made from that XML (its header holds a timestamp and
+ * the build's paths, so its bytes are not compared); targets' tracks are
+ * written by each run, from the scenario. */
+static fw_status collect_inputs(fw_study *s, fw_error *err)
+{
+    fw_status st;
+    if ((st = add_input(s, "study", s->file, err)) ||
+        (st = add_input(s, "scenario", s->scenario_file, err)) ||
+        (st = add_input(s, "ship", s->base.ship.file, err)))
+        return st;
+    const char *net = s->base.network;
+    if (!net[0])
+        return FW_OK;
+    fw_network_files nf;
+    if ((st = fw_network_find(net, &nf, err)) || (st = add_input(s, "demand", nf.demand, err)) ||
+        (st = add_input(s, "ship_types", nf.types, err)))
+        return st;
+    static const char *const parts[][2] = {
+        {"network_nodes", "nod"}, {"network_edges", "edg"}, {"network_types", "typ"}};
+    for (int i = 0; i < 3; i++) {
+        char path[1024];
+        if ((size_t)snprintf(path, sizeof path, "%s/networks/%s/%s.%s.xml", fw_data_root(), net,
+                             net, parts[i][1]) >= sizeof path)
+            return fw_fail(err, FW_EINPUT, "FAIRWAY_DATA %s: path too long", fw_data_root());
+        if ((st = add_input(s, parts[i][0], path, err)))
+            return st;
+    }
+    return FW_OK;
 }
 
 static uint64_t digest(const fw_study *s)
@@ -109,7 +162,9 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
                                        "domains_m", "densities", "duration_s", "start",
                                        "encounter_m", "near_miss_m", NULL};
     memset(s, 0, sizeof *s);
-    snprintf(s->file, sizeof s->file, "%s", path);
+    if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
+        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
+                       sizeof s->file - 1);
     s->encounter_range = 1852.0;
     s->near_miss = 185.2;
     yt_doc *doc = NULL;
@@ -161,7 +216,11 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
                         "more than 10 million runs");
         goto out;
     }
-    resolve(path, scen, s->scenario_file, sizeof s->scenario_file);
+    if (!resolve(path, scen, s->scenario_file, sizeof s->scenario_file)) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "scenario"), "scenario",
+                        "path longer than %zu characters", sizeof s->scenario_file - 1);
+        goto out;
+    }
     if ((st = fw_scenario_load(s->scenario_file, &s->base, err))) {
         /* the scenario's own FILE:LINE message, with where it was named */
         char msg[sizeof err->msg];
@@ -192,6 +251,7 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
         goto out;
     }
     s->digest = digest(s);
+    st = collect_inputs(s, err);
 out:
     yt_free(doc);
     return st;

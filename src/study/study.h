@@ -29,6 +29,15 @@
 #include "scenario/scenario.h"
 
 #define FW_STUDY_MAX_LEVELS 32
+#define FW_STUDY_MAX_INPUTS 12
+
+/* One file a run of the study reads, and the digest of its bytes: a resumed
+ * sweep refuses when any of them changed, naming it. */
+typedef struct fw_study_input {
+    const char *role;  /* "study", "scenario", "ship", "demand", ... (static text) */
+    char path[1024];
+    uint64_t digest;
+} fw_study_input;
 
 typedef struct fw_study {
     char file[512];
@@ -48,6 +57,8 @@ typedef struct fw_study {
     double encounter_range;  /* m */
     double near_miss;        /* m */
     uint64_t digest;         /* of the settings and the scenario file: resume guard */
+    int n_inputs;            /* every file a run reads: study, scenario, ship, network */
+    fw_study_input inputs[FW_STUDY_MAX_INPUTS];
 } fw_study;
 
 typedef struct fw_study_run {

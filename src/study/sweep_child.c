@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "core/files.h"
+#include "study/store.h"
 #include "study/sweep.h"
 
 double fw_sweep_now(void)
@@ -24,14 +25,21 @@ double fw_sweep_now(void)
 fw_status fw_sweep_workdir(const fw_sweep_def *def, char *out, size_t outsz, fw_error *err)
 {
     if (def->keep_dir) {
-        if (mkdir(def->keep_dir, 0777) != 0 && errno != EEXIST)
-            return fw_fail(err, FW_EINPUT, "--keep %s: cannot create it: %s", def->keep_dir,
+        /* a file or an unwritable directory would fail every run: refuse now */
+        fw_status r = fw_mkdirs(def->keep_dir, "--keep", err);
+        if (r)
+            return r;
+        if (access(def->keep_dir, W_OK | X_OK) != 0)
+            return fw_fail(err, FW_EINPUT, "--keep %s: cannot write in it: %s", def->keep_dir,
                            strerror(errno));
-        snprintf(out, outsz, "%s", def->keep_dir);
+        if ((size_t)snprintf(out, outsz, "%s", def->keep_dir) >= outsz)
+            return fw_fail(err, FW_EINPUT, "--keep %s: path too long", def->keep_dir);
         return FW_OK;
     }
     const char *tmp = getenv("TMPDIR");
-    snprintf(out, outsz, "%s/fairway-sweep-XXXXXX", tmp && tmp[0] ? tmp : "/tmp");
+    if ((size_t)snprintf(out, outsz, "%s/fairway-sweep-XXXXXX", tmp && tmp[0] ? tmp : "/tmp") >=
+        outsz)
+        return fw_fail(err, FW_EINPUT, "TMPDIR %s: path too long", tmp);
     if (!mkdtemp(out))
         return fw_fail(err, FW_ERUN, "cannot create a work directory %s: %s", out,
                        strerror(errno));
@@ -55,7 +63,11 @@ void fw_sweep_exec(const fw_study *s, int run_id, const char *work_dir, bool kee
     fw_study_run r = fw_study_run_at(s, run_id);
     fw_study_scenario(s, &r, scn);
     char dir[1200];
-    snprintf(dir, sizeof dir, "%s/%s", work_dir, scn->name);
+    if ((size_t)snprintf(dir, sizeof dir, "%s/%s", work_dir, scn->name) >= sizeof dir) {
+        free(scn);
+        fw_outcome_failed(out, run_id, "run directory path too long");
+        return;
+    }
     fw_remove_tree(dir); /* left by an interrupted sweep with --keep */
     fw_error err = {0};
     if (mkdir(dir, 0777) != 0) {
@@ -123,6 +135,7 @@ fw_status fw_sweep_spawn(const fw_study *s, int run_id, const char *work_dir, bo
         prctl(PR_SET_PDEATHSIG, SIGKILL);
         if (getppid() != parent)
             _exit(4);
+        fw_store_child(); /* a dying child must not keep the database locked */
         signal(SIGINT, SIG_DFL);
         signal(SIGTERM, SIG_DFL);
         signal(SIGPIPE, SIG_DFL);

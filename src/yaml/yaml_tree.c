@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <yaml.h>
 
 /* libyaml gives a stream of events; a small recursive builder turns one
@@ -15,6 +16,7 @@ typedef struct builder {
     yaml_parser_t parser;
     const char *file;
     fw_error *err;
+    int depth; /* collections open around the node being built */
 } builder;
 
 static void node_free(yt_node *n)
@@ -154,13 +156,21 @@ static yt_node *build(builder *b, yaml_event_t *ev)
         }
         return n;
     case YAML_MAPPING_START_EVENT:
-        yaml_event_delete(ev);
-        n->kind = YT_MAP;
-        return build_collection(b, n, YAML_MAPPING_END_EVENT);
     case YAML_SEQUENCE_START_EVENT:
+        /* the builder recurses once per level: bound it, so a hostile file
+         * gets an error instead of a stack overflow */
+        if (b->depth >= YT_MAX_DEPTH) {
+            fw_fail_at(b->err, b->file, n->line, NULL,
+                       "nested deeper than %d levels", YT_MAX_DEPTH);
+            break;
+        }
+        n->kind = ev->type == YAML_MAPPING_START_EVENT ? YT_MAP : YT_SEQ;
         yaml_event_delete(ev);
-        n->kind = YT_SEQ;
-        return build_collection(b, n, YAML_SEQUENCE_END_EVENT);
+        b->depth++;
+        yt_node *done = build_collection(
+            b, n, n->kind == YT_MAP ? YAML_MAPPING_END_EVENT : YAML_SEQUENCE_END_EVENT);
+        b->depth--;
+        return done;
     case YAML_ALIAS_EVENT:
         fw_fail_at(b->err, b->file, n->line, NULL, "YAML aliases are not supported");
         break;
@@ -234,6 +244,13 @@ fw_status yt_load_file(const char *path, yt_doc **out, fw_error *err)
     FILE *f = fopen(path, "rb");
     if (!f)
         return fw_fail(err, FW_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+    /* fopen succeeds on a directory and libyaml then says only "input error" */
+    struct stat sb;
+    if (fstat(fileno(f), &sb) == 0 && !S_ISREG(sb.st_mode)) {
+        fclose(f);
+        return fw_fail(err, FW_EINPUT, "%s: is %s, expected a YAML file", path,
+                       S_ISDIR(sb.st_mode) ? "a directory" : "not a regular file");
+    }
     builder b = {.file = path, .err = err};
     if (!yaml_parser_initialize(&b.parser)) {
         fclose(f);

@@ -14,6 +14,9 @@
 
 #include "core/error.h"
 
+/* Deepest nesting of maps and sequences accepted (fairway's files use 4). */
+#define YT_MAX_DEPTH 64
+
 typedef enum yt_kind { YT_SCALAR, YT_MAP, YT_SEQ } yt_kind;
 
 typedef struct yt_node {
