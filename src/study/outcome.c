@@ -48,6 +48,10 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
     o->helm_orders = sum->helm_orders;
     o->near_miss = isfinite(sum->min_dist) && sum->min_dist < s->near_miss;
     o->traffic_ship_s = sum->survey ? sum->traffic_ship_s : NAN;
+    snprintf(o->behaviour, sizeof o->behaviour, "%s", fw_behaviour_name(sum->behaviour));
+    o->give_way = sum->n_give_way;
+    o->give_way_short = sum->n_give_way_short;
+    o->monitors = sum->monitors;
     o->traffic = n_sv > 0 ? calloc((size_t)n_sv, sizeof *o->traffic) : NULL;
     if (n_sv > 0 && !o->traffic)
         return fw_fail(err, FW_ERUN, "out of memory");

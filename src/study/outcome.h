@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "run/run.h"
+#include "survey/monitor.h"
 #include "study/study.h"
 
 typedef struct fw_outcome_encounter {
@@ -42,6 +43,9 @@ typedef struct fw_outcome {
     double max_helm_deg, path_length, path_lengthening, time_lost, rudder_work_deg_s;
     int helm_orders;
     double traffic_ship_s;
+    char behaviour[16];          /* colregs, blind */
+    int give_way, give_way_short;
+    fw_monitor_counts monitors;
     int n_enc, n_traffic;
     fw_outcome_encounter *enc;   /* owned */
     fw_outcome_traffic *traffic; /* owned */

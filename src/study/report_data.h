@@ -134,6 +134,16 @@ struct fw_study_report {
     int n_pairs;
     double bin_w[FW_REP_NSET];     /* CPA histogram bins [k w, (k + 1) w) */
     int n_bins[FW_REP_NSET];
+    /* the traffic monitors (survey/monitor.h) summed over the finished runs,
+     * and how many runs saw any; monitored false for a database written
+     * before they were recorded */
+    bool monitored;
+    long long mon[7];              /* sideways, teleport, overlap, appear, vanish,
+                                      start_close, stopped */
+    int mon_runs;
+    double max_lateral;            /* m/s, the largest in any run */
+    char behaviour[64];            /* the background ships': "colregs", "blind" or both */
+    long long give_way;            /* their speed orders */
 };
 
 /* report_load.c */

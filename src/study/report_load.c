@@ -366,6 +366,38 @@ static fw_status read_traffic(loader *L)
     return step_done(L, st, rc);
 }
 
+/* The traffic monitors and the background behaviour, summed over the
+ * finished runs; an older database without the columns has none. */
+static fw_status read_monitors(loader *L)
+{
+    fw_study_report *rep = L->rep;
+    sqlite3_stmt *st;
+    if (sqlite3_prepare_v2(L->db,
+                           "SELECT SUM(mon_sideways), SUM(mon_teleport), SUM(mon_overlap), "
+                           "SUM(mon_appear), SUM(mon_vanish), SUM(mon_start_close), "
+                           "SUM(mon_stopped), SUM(mon_sideways + mon_teleport + mon_overlap + "
+                           "mon_appear + mon_vanish + mon_start_close + mon_stopped > 0), "
+                           "MAX(max_lateral_mps), SUM(give_way), GROUP_CONCAT(DISTINCT behaviour) "
+                           "FROM runs WHERE status = 'ok'",
+                           -1, &st, NULL) != SQLITE_OK)
+        return FW_OK; /* written before the monitors: nothing to say */
+    int rc = sqlite3_step(st);
+    if (rc == SQLITE_ROW && sqlite3_column_type(st, 0) != SQLITE_NULL) {
+        rep->monitored = true;
+        for (int k = 0; k < 7; k++)
+            rep->mon[k] = sqlite3_column_int64(st, k);
+        rep->mon_runs = sqlite3_column_int(st, 7);
+        rep->max_lateral = sqlite3_column_double(st, 8);
+        rep->give_way = sqlite3_column_int64(st, 9);
+        const unsigned char *b = sqlite3_column_text(st, 10);
+        snprintf(rep->behaviour, sizeof rep->behaviour, "%s", b ? (const char *)b : "");
+        rc = SQLITE_DONE;
+    } else if (rc == SQLITE_ROW) {
+        rc = SQLITE_DONE;
+    }
+    return step_done(L, st, rc);
+}
+
 static fw_status read_all(loader *L)
 {
     if (read_meta(L) || read_failed(L) || read_runs(L))
@@ -376,7 +408,7 @@ static fw_status read_all(loader *L)
                            L->file, L->rep->n_failed, L->rep->reasons[0].text);
         return fw_fail(L->err, FW_EINPUT, "%s: no finished runs", L->file);
     }
-    if (make_groups(L) || read_encounters(L) || read_traffic(L))
+    if (make_groups(L) || read_encounters(L) || read_traffic(L) || read_monitors(L))
         return L->err->status;
     return FW_OK;
 }

@@ -202,6 +202,45 @@ static void md_paired(FILE *f, const fw_study_report *rep)
     fprintf(f, "%s\n", first ? "" : ".\n");
 }
 
+/* First thing after the title: whether the traffic behaved like ships. */
+static void md_monitors(FILE *f, const fw_study_report *rep)
+{
+    static const char *const what[7] = {"sideways jumps", "teleports",
+                                        "overlaps of background hulls",
+                                        "ships appearing within 2 nm",
+                                        "ships vanishing within 2 nm",
+                                        "ships within 2 nm at the start", "stopped ships"};
+    if (!rep->monitored) {
+        fprintf(f, "No traffic monitors recorded (a database written before fairway counted "
+                   "them).\n\n");
+        return;
+    }
+    long long total = 0;
+    for (int k = 0; k < 7; k++)
+        total += rep->mon[k];
+    if (total > 0) {
+        fprintf(f, "**Warning: the background traffic did what no ship can do** in %d of %d runs:",
+                rep->mon_runs, rep->n_runs);
+        bool first = true;
+        for (int k = 0; k < 7; k++)
+            if (rep->mon[k] > 0) {
+                fprintf(f, "%s %lld %s", first ? "" : ",", rep->mon[k], what[k]);
+                first = false;
+            }
+        fprintf(f, " (largest sideways speed %.2f m/s). Each event is a `monitor:` line in "
+                   "its run's run.log; read the collision and near-miss figures with them in "
+                   "mind.\n\n",
+                rep->max_lateral);
+    } else {
+        fprintf(f, "Traffic monitors: in none of the %d runs did a ship the own ship saw move "
+                   "sideways faster than 2 m/s (largest %.2f m/s), jump, overlap another's hull, "
+                   "appear, vanish or start within 2 nm, or stop.\n\n",
+                rep->n_runs, rep->max_lateral);
+    }
+    fprintf(f, "Background ships: %s (%lld give-way speed orders in all).\n\n",
+            rep->behaviour[0] ? rep->behaviour : "-", rep->give_way);
+}
+
 fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_result *res,
                           const char *dir, fw_error *err)
 {
@@ -213,6 +252,7 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
         return fw_fail(err, FW_ERUN, "cannot create %s", path);
     fprintf(f, "# Study report: %s\n\n",
             rep->study_name[0] ? rep->study_name : stem(rep->db, name, sizeof name));
+    md_monitors(f, rep);
     fprintf(f, "Database `%s`. Settings:", rep->db);
     for (int i = 0; i < rep->n_meta; i++)
         fprintf(f, "%s %s", i ? ";" : "", rep->meta[i].text);

@@ -20,7 +20,7 @@
 #ifndef FW_STUDY_SCHEMA_H
 #define FW_STUDY_SCHEMA_H
 
-#define FW_SCHEMA_VERSION "1"
+#define FW_SCHEMA_VERSION "2"
 
 #define FW_SCHEMA_SQL                                                                   \
     "CREATE TABLE IF NOT EXISTS meta(\n"                                                \
@@ -51,6 +51,17 @@
     "  rudder_work_deg_s REAL,\n"                                                       \
     "  helm_orders INTEGER,\n"                                                          \
     "  traffic_ship_s REAL,\n"                                                          \
+    "  behaviour TEXT,\n"                /* the background ships': colregs or blind */    \
+    "  give_way INTEGER,\n"              /* their speed orders (world/reactions.h) */     \
+    "  give_way_short INTEGER,\n"        /* of which no speed kept the passing distance */\
+    "  mon_sideways INTEGER,\n"          /* the traffic monitors (survey/monitor.h): */   \
+    "  mon_teleport INTEGER,\n"          /* what no ship can do, among the ships the */   \
+    "  mon_overlap INTEGER,\n"           /* own ship saw; zero for traffic that */        \
+    "  mon_appear INTEGER,\n"            /* behaves like ships */                         \
+    "  mon_vanish INTEGER,\n"                                                           \
+    "  mon_start_close INTEGER,\n"                                                      \
+    "  mon_stopped INTEGER,\n"                                                          \
+    "  max_lateral_mps REAL,\n"                                                         \
     "  UNIQUE(domain_m, density, replication));\n"                                      \
     "CREATE TABLE IF NOT EXISTS encounters(\n"                                          \
     "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \

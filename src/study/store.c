@@ -216,8 +216,10 @@ static const char kRunSql[] =
     "INSERT INTO runs(run_id, domain_m, density, replication, seed, status, reason, sim_s, "
     "wall_s, sumo_s, n_encounters, n_actions, min_dist_m, domain_entered, near_miss, collision, "
     "colregs_ok, max_helm_deg, path_length_m, path_lengthening_m, time_lost_s, "
-    "rudder_work_deg_s, helm_orders, traffic_ship_s) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
-    "?,?,?,?,?,?)";
+    "rudder_work_deg_s, helm_orders, traffic_ship_s, behaviour, give_way, give_way_short, "
+    "mon_sideways, mon_teleport, mon_overlap, mon_appear, mon_vanish, mon_start_close, "
+    "mon_stopped, max_lateral_mps) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
+    "?,?,?,?,?,?,?,?)";
 static const char kEncSql[] =
     "INSERT INTO encounters(run_id, target, target_type, situation, t_detect_s, dcpa0_m, "
     "tcpa0_s, threat, acted, t_act_s, act_side, act_helm_deg, min_dist_m, t_min_s, min_lambda, "
@@ -403,6 +405,15 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
     bind_num(q, i++, o->rudder_work_deg_s);
     sqlite3_bind_int(q, i++, o->helm_orders);
     bind_num(q, i++, o->traffic_ship_s);
+    sqlite3_bind_text(q, i++, o->behaviour, -1, SQLITE_STATIC);
+    sqlite3_bind_int(q, i++, o->give_way);
+    sqlite3_bind_int(q, i++, o->give_way_short);
+    const fw_monitor_counts *m = &o->monitors;
+    int mon[] = {m->sideways, m->teleport, m->overlap, m->appear, m->vanish, m->start_close,
+                 m->stopped};
+    for (size_t k = 0; k < sizeof mon / sizeof mon[0]; k++)
+        sqlite3_bind_int(q, i++, mon[k]);
+    bind_num(q, i++, m->max_lateral);
     return sqlite3_step(q);
 }
 
