@@ -96,15 +96,7 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     if (c->tracks)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
-    free(c->tracks);
-    free(c->have);
-    free(c->idx);
-    free(c->jlo);
-    free(c->jhi);
-    free(c->prep);
-    free(c->paths);
-    free(c->boxes);
-    free(c);
+    fw_free_each(9, c->tracks, c->have, c->idx, c->jlo, c->jhi, c->prep, c->paths, c->boxes, c);
 }
 
 void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
@@ -308,10 +300,9 @@ static fw_status ensure_scratch(fw_helm_ctx *c, int n, fw_error *err)
 {
     if (n <= c->cap)
         return FW_OK;
-    if (!fw_resize((void **)&c->idx, sizeof *c->idx, (size_t)n) ||
-        !fw_resize((void **)&c->jlo, sizeof *c->jlo, (size_t)n) ||
-        !fw_resize((void **)&c->jhi, sizeof *c->jhi, (size_t)n) ||
-        !fw_resize((void **)&c->prep, sizeof *c->prep, (size_t)n))
+    if (!fw_resize_each((size_t)n, 4, (void **)&c->idx, sizeof *c->idx,
+                        (void **)&c->jlo, sizeof *c->jlo, (void **)&c->jhi, sizeof *c->jhi,
+                        (void **)&c->prep, sizeof *c->prep))
         return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
     c->cap = n;
     return FW_OK;

@@ -61,8 +61,8 @@ int fw_idmap_intern(fw_idmap *t, const char *id, int *out)
         return -1;
     if (t->n == t->name_cap) {
         int cap = t->name_cap ? 2 * t->name_cap : 128;
-        if (!fw_resize((void **)&t->name, sizeof *t->name, (size_t)cap) ||
-            !fw_resize((void **)&t->hash, sizeof *t->hash, (size_t)cap))
+        if (!fw_resize_each((size_t)cap, 2, (void **)&t->name, sizeof *t->name,
+                            (void **)&t->hash, sizeof *t->hash))
             return -1;
         t->name_cap = cap;
     }

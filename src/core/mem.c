@@ -1,6 +1,7 @@
 /* mem.c - see mem.h. */
 #include "core/mem.h"
 
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdlib.h>
 
@@ -15,4 +16,27 @@ bool fw_resize(void **p, size_t elem, size_t n)
         return false;
     *p = q;
     return true;
+}
+
+bool fw_resize_each(size_t n, int k, ...)
+{
+    va_list ap;
+    va_start(ap, k);
+    bool ok = true;
+    for (int i = 0; i < k && ok; i++) {
+        void **p = va_arg(ap, void **);
+        size_t elem = va_arg(ap, size_t);
+        ok = fw_resize(p, elem, n);
+    }
+    va_end(ap);
+    return ok;
+}
+
+void fw_free_each(int n, ...)
+{
+    va_list ap;
+    va_start(ap, n);
+    for (int i = 0; i < n; i++)
+        free(va_arg(ap, void *));
+    va_end(ap);
 }

@@ -13,6 +13,15 @@
 
 bool fw_resize(void **p, size_t elem, size_t n);
 
+/* fw_resize of k arrays to n elements each; the arguments after k are k
+ * pairs (void **p, size_t elem).  False (every array as it then is, none
+ * lost) when memory runs out: the caller keeps its capacity unchanged. */
+bool fw_resize_each(size_t n, int k, ...);
+
+/* free() of each of the n pointers given (any may be NULL): a destructor's
+ * blocks in one line. */
+void fw_free_each(int n, ...);
+
 /* Capacity for n when cap is too small: at least double, at least n. */
 static inline int fw_grown_cap(int cap, int n) { return n > 2 * cap ? n : 2 * cap; }
 

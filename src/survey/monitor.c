@@ -76,13 +76,7 @@ void fw_monitor_destroy(fw_monitor *m)
     fw_idmap_free(&m->ids);
     sv_grid_free(&m->grid);
     sv_pairs_free(&m->pairs);
-    free(m->s);
-    free(m->prev);
-    free(m->cur);
-    free(m->x);
-    free(m->y);
-    free(m->bg);
-    free(m);
+    fw_free_each(7, m->s, m->prev, m->cur, m->x, m->y, m->bg, m);
 }
 
 const fw_monitor_counts *fw_monitor_counts_of(const fw_monitor *m) { return &m->c; }
@@ -108,11 +102,9 @@ static bool reserve(fw_monitor *m, int n)
     }
     if (n > m->ccap) {
         int cap = fw_grown_cap(m->ccap, n);
-        if (!fw_resize((void **)&m->prev, sizeof *m->prev, (size_t)cap) ||
-            !fw_resize((void **)&m->cur, sizeof *m->cur, (size_t)cap) ||
-            !fw_resize((void **)&m->x, sizeof *m->x, (size_t)cap) ||
-            !fw_resize((void **)&m->y, sizeof *m->y, (size_t)cap) ||
-            !fw_resize((void **)&m->bg, sizeof *m->bg, (size_t)cap))
+        if (!fw_resize_each((size_t)cap, 5, (void **)&m->prev, sizeof *m->prev,
+                            (void **)&m->cur, sizeof *m->cur, (void **)&m->x, sizeof *m->x,
+                            (void **)&m->y, sizeof *m->y, (void **)&m->bg, sizeof *m->bg))
             return false;
         m->ccap = cap;
     }

@@ -106,20 +106,8 @@ void fw_survey_destroy(fw_survey *sv)
     fw_idmap_free(&sv->ids);
     sv_pairs_free(&sv->pairs);
     sv_grid_free(&sv->grid);
-    free(sv->seen);
-    free(sv->cid);
-    free(sv->x);
-    free(sv->y);
-    free(sv->vx);
-    free(sv->vy);
-    free(sv->rec);
-    free(sv->rec_a);
-    free(sv->rec_b);
-    free(sv->touched);
-    free(sv->t_seen);
-    free(sv->active);
-    free(sv->is_open);
-    free(sv);
+    fw_free_each(14, sv->seen, sv->cid, sv->x, sv->y, sv->vx, sv->vy, sv->rec, sv->rec_a,
+                     sv->rec_b, sv->touched, sv->t_seen, sv->active, sv->is_open, sv);
 }
 
 static bool reserve_step(fw_survey *sv, int n)
@@ -127,11 +115,9 @@ static bool reserve_step(fw_survey *sv, int n)
     if (n <= sv->cap)
         return true;
     int cap = fw_grown_cap(sv->cap, n);
-    if (!fw_resize((void **)&sv->cid, sizeof *sv->cid, (size_t)cap) ||
-        !fw_resize((void **)&sv->x, sizeof *sv->x, (size_t)cap) ||
-        !fw_resize((void **)&sv->y, sizeof *sv->y, (size_t)cap) ||
-        !fw_resize((void **)&sv->vx, sizeof *sv->vx, (size_t)cap) ||
-        !fw_resize((void **)&sv->vy, sizeof *sv->vy, (size_t)cap))
+    if (!fw_resize_each((size_t)cap, 5, (void **)&sv->cid, sizeof *sv->cid,
+                        (void **)&sv->x, sizeof *sv->x, (void **)&sv->y, sizeof *sv->y,
+                        (void **)&sv->vx, sizeof *sv->vx, (void **)&sv->vy, sizeof *sv->vy))
         return false;
     sv->cap = cap;
     return true;
@@ -142,13 +128,13 @@ static bool reserve_records(fw_survey *sv)
     if (sv->nrec < sv->rec_cap)
         return true;
     int cap = sv->rec_cap ? 2 * sv->rec_cap : 64;
-    if (!fw_resize((void **)&sv->rec, sizeof *sv->rec, (size_t)cap) ||
-        !fw_resize((void **)&sv->rec_a, sizeof *sv->rec_a, (size_t)cap) ||
-        !fw_resize((void **)&sv->rec_b, sizeof *sv->rec_b, (size_t)cap) ||
-        !fw_resize((void **)&sv->touched, sizeof *sv->touched, (size_t)cap) ||
-        !fw_resize((void **)&sv->t_seen, sizeof *sv->t_seen, (size_t)cap) ||
-        !fw_resize((void **)&sv->active, sizeof *sv->active, (size_t)cap) ||
-        !fw_resize((void **)&sv->is_open, sizeof *sv->is_open, (size_t)cap))
+    if (!fw_resize_each((size_t)cap, 7, (void **)&sv->rec, sizeof *sv->rec,
+                        (void **)&sv->rec_a, sizeof *sv->rec_a,
+                        (void **)&sv->rec_b, sizeof *sv->rec_b,
+                        (void **)&sv->touched, sizeof *sv->touched,
+                        (void **)&sv->t_seen, sizeof *sv->t_seen,
+                        (void **)&sv->active, sizeof *sv->active,
+                        (void **)&sv->is_open, sizeof *sv->is_open))
         return false;
     sv->rec_cap = cap;
     return true;

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/mem.h"
 #include "survey/survey_index.h"
 
 /* Bounding boxes up to this many cells per point are numbered densely. */
@@ -228,16 +229,7 @@ void sv_brute_pairs(const double *x, const double *y, int n, double r, sv_pair_f
 
 void sv_grid_free(sv_grid *g)
 {
-    free(g->px);
-    free(g->py);
-    free(g->cell_of);
-    free(g->order);
-    free(g->xs);
-    free(g->ys);
-    free(g->count);
-    free(g->start);
-    free(g->cx);
-    free(g->cy);
-    free(g->slot);
+    fw_free_each(11, g->px, g->py, g->cell_of, g->order, g->xs, g->ys, g->count, g->start, g->cx,
+                     g->cy, g->slot);
     memset(g, 0, sizeof *g);
 }

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/mem.h"
 #include "geom/geom.h"
 #include "traffic/source.h"
 
@@ -180,9 +181,7 @@ static fw_status kin_area(fw_source *s, const fw_target **v, int *n, fw_error *e
 static void kin_destroy(fw_source *s)
 {
     kin_source *k = (kin_source *)s;
-    free(k->ships);
-    free(k->out);
-    free(k);
+    fw_free_each(3, k->ships, k->out, k);
 }
 
 static const fw_source_ops kin_ops = {.name = "kinematic", .place = kin_place,

@@ -260,9 +260,7 @@ static void ss_destroy(fw_source *s)
 {
     sumo_source *k = (sumo_source *)s;
     fw_traffic_close(k->tr);
-    free(k->sorted);
-    free(k->labels);
-    free(k);
+    fw_free_each(3, k->sorted, k->labels, k);
 }
 
 static const fw_source_ops sumo_ops = {.name = "sumo", .place = ss_place, .advance = ss_advance,

@@ -340,16 +340,9 @@ void fw_traffic_close(fw_traffic *t)
     }
     if (t->child > 0)
         fw_spawn_stop(t->child);
-    free(t->raw.v);
-    free(t->ctx.v);
-    free(t->ships);
-    free(t->area);
+    fw_free_each(4, t->raw.v, t->ctx.v, t->ships, t->area);
     fw_idmap_free(&t->ids);
-    free(t->conv);
-    free(t->last_e);
-    free(t->last_n);
-    free(t->last_step);
-    free(t);
+    fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
 }
 
 static fw_status alive(const fw_traffic *t, fw_error *err)
@@ -486,9 +479,9 @@ static fw_status follow_motion(fw_traffic *t, int k, fw_error *err)
         return fw_fail(err, FW_ERUN, "out of memory for ship ids");
     if (i >= t->last_cap) {
         int cap = fw_grown_cap(t->last_cap, i + 1);
-        if (!fw_resize((void **)&t->last_e, sizeof *t->last_e, (size_t)cap) ||
-            !fw_resize((void **)&t->last_n, sizeof *t->last_n, (size_t)cap) ||
-            !fw_resize((void **)&t->last_step, sizeof *t->last_step, (size_t)cap))
+        if (!fw_resize_each((size_t)cap, 3, (void **)&t->last_e, sizeof *t->last_e,
+                            (void **)&t->last_n, sizeof *t->last_n,
+                            (void **)&t->last_step, sizeof *t->last_step))
             return fw_fail(err, FW_ERUN, "out of memory for ship ids");
         for (int j = t->last_cap; j < cap; j++)
             t->last_step[j] = -2;

@@ -84,12 +84,7 @@ void fw_reactions_destroy(fw_reactions *r)
     if (!r)
         return;
     fw_idmap_free(&r->ids);
-    free(r->s);
-    free(r->list);
-    free(r->sn);
-    free(r->cs);
-    free(r->log);
-    free(r);
+    fw_free_each(6, r->s, r->list, r->sn, r->cs, r->log, r);
 }
 
 const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n)
@@ -457,8 +452,8 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
         all[m] = *own;
         all[m++].own = true;
     }
-    if (!fw_resize((void **)&r->sn, sizeof *r->sn, (size_t)m) ||
-        !fw_resize((void **)&r->cs, sizeof *r->cs, (size_t)m)) {
+    if (!fw_resize_each((size_t)m, 2, (void **)&r->sn, sizeof *r->sn,
+                        (void **)&r->cs, sizeof *r->cs)) {
         free(all);
         return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
     }

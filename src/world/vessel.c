@@ -93,9 +93,7 @@ void fw_vessel_free(fw_vessel *v)
     fw_stepper_destroy(v->st);
     fw_track_free(&v->one);
     fw_controller_destroy(v->ctl);
-    free(v->view);
-    free(v->as);
-    free(v->order);
+    fw_free_each(3, v->view, v->as, v->order);
 }
 
 fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err)
