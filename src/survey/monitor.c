@@ -242,7 +242,8 @@ fw_status fw_monitor_step(fw_monitor *m, double t, const fw_target *own, const f
         }
     }
     overlaps(m, ships, n);
-    memcpy(m->prev, m->cur, sizeof *m->cur * (size_t)n);
+    if (n > 0) /* none seen yet: the arrays may still be NULL */
+        memcpy(m->prev, m->cur, sizeof *m->cur * (size_t)n);
     m->nprev = n;
     return m->oom ? fw_fail(err, FW_ERUN, "monitor: out of memory for ship pairs") : FW_OK;
 }
