@@ -109,3 +109,13 @@ void fw_progress_end(fw_progress *p, int done, int failed)
     }
     free(p);
 }
+
+void fw_progress_count(fw_progress *p, const fw_study *s, const fw_outcome *o,
+                       fw_sweep_result *res)
+{
+    if (strcmp(o->status, "ok") == 0)
+        res->done++;
+    else
+        res->failed++;
+    fw_progress_run(p, s, o, res->done, res->failed);
+}

@@ -161,11 +161,7 @@ fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error
                 fw_outcome_free(&o);
                 break;
             }
-            if (strcmp(o.status, "ok") == 0)
-                res->done++;
-            else
-                res->failed++;
-            fw_progress_run(prog, s, &o, res->done, res->failed);
+            fw_progress_count(prog, s, &o, res);
             fw_outcome_free(&o);
         }
         if (!m)

@@ -95,6 +95,9 @@ fw_progress *fw_progress_start(const fw_sweep_def *def, int todo, int total, int
 void fw_progress_run(fw_progress *p, const fw_study *s, const fw_outcome *o, int done,
                      int failed);
 void fw_progress_tick(fw_progress *p, int done, int failed, int running);
+/* A committed run counted (done or failed) and shown. */
+void fw_progress_count(fw_progress *p, const fw_study *s, const fw_outcome *o,
+                       fw_sweep_result *res);
 void fw_progress_end(fw_progress *p, int done, int failed);
 
 double fw_sweep_now(void); /* s, monotonic */

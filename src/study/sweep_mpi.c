@@ -120,13 +120,8 @@ static fw_status root(const fw_sweep_def *def, fw_store *st, const int *pending,
                 r = fw_fail(err, FW_ERUN, "rank %d: %s", stt.MPI_SOURCE, uerr.msg);
             continue;
         }
-        if (!r && !(r = fw_store_commit(st, s, &o, err))) {
-            if (strcmp(o.status, "ok") == 0)
-                res->done++;
-            else
-                res->failed++;
-            fw_progress_run(prog, s, &o, res->done, res->failed);
-        }
+        if (!r && !(r = fw_store_commit(st, s, &o, err)))
+            fw_progress_count(prog, s, &o, res);
         fw_outcome_free(&o);
     }
     fw_progress_end(prog, res->done, res->failed);
