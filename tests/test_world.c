@@ -373,6 +373,40 @@ static void test_strait_traffic_monitors(void)
            ne, m->max_lateral, sum.n_give_way, m->overlap);
 }
 
+/* A scenario with a network and explicit targets: both kinds of traffic
+ * come through SUMO (the route files are a list), the explicit one with its
+ * scenario label. */
+static void test_network_and_targets(void)
+{
+    static fw_scenario s;
+    char file[512], dir[600];
+    fw_error err = {0};
+    snprintf(file, sizeof file, "%s/tests/data/network_targets.yaml", fw_data_root());
+    CHECK_MSG(fw_scenario_load(file, &s, &err) == FW_OK, "%s", err.msg);
+    snprintf(dir, sizeof dir, "%s/nt", tmp_root);
+    mkdir(dir, 0777);
+    fw_run_def def = fw_default_run_def();
+    def.scenario = &s;
+    def.dir = dir;
+    fw_run_summary sum;
+    fw_encounter *e = NULL;
+    int ne = 0;
+    CHECK_MSG(fw_run_scenario(&def, &sum, &e, &ne, &err) == FW_OK, "%s", err.msg);
+    int explicit = -1, network = 0;
+    for (int i = 0; i < ne; i++) {
+        if (strcmp(e[i].id, "X1") == 0)
+            explicit = i;
+        else
+            network++;
+    }
+    CHECK_MSG(explicit >= 0 && strcmp(e[explicit].type, "tug") == 0, "the explicit target: %s",
+              explicit >= 0 ? e[explicit].type : "not met");
+    CHECK_MSG(network > 0, "no network ship met (%d encounters)", ne);
+    printf("  network and targets: %d network ships and the explicit target (%s) met\n", network,
+           explicit >= 0 ? e[explicit].type : "-");
+    free(e);
+}
+
 /* own.csv's helm order and mode columns, and the act lines of run.log. */
 static int decisions(const char *dir, char *out, size_t size)
 {
@@ -464,6 +498,7 @@ int main(void)
     TEST_RUN(test_reactive_traffic);
     TEST_RUN(test_threat_during_return);
     TEST_RUN(test_strait_traffic_monitors);
+    TEST_RUN(test_network_and_targets);
     TEST_RUN(test_paper_case_without_sumo);
     char cmd[400];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);

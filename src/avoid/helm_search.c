@@ -61,8 +61,11 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     if (!(def->domain.size > 0.0) || !(def->domain.fore_aft_ratio > 0.0))
         return fw_fail(err, FW_EINPUT, "helm search: the domain needs positive axes");
     if (!ship->nomoto.present)
-        return fw_fail(err, FW_EINPUT, "ship '%s' has no Nomoto knowledge base (nomoto:)",
-                       ship->name);
+        return fw_fail(err, FW_EINPUT,
+                       "ship '%s' has no Nomoto knowledge base (nomoto:), which the avoidance "
+                       "predicts its tracks with: make one with 'fairway identify --ship %s "
+                       "--out FILE' and use FILE as the ship",
+                       ship->name, ship->name);
     fw_helm_ctx *c = calloc(1, sizeof *c);
     if (!c)
         return fw_fail(err, FW_ERUN, "out of memory");

@@ -203,9 +203,20 @@ static fw_status check_def(const fw_traffic_def *d, fw_error *err)
         const char *what[3] = {"network", "route", "additional"};
         if (!d->net_file)
             return fw_fail(err, FW_EINPUT, "no network file given");
-        for (int i = 0; i < 3; i++)
-            if (files[i] && access(files[i], R_OK) != 0)
-                return fw_fail(err, FW_EINPUT, "%s file '%s' cannot be read", what[i], files[i]);
+        for (int i = 0; i < 3; i++) {
+            /* SUMO takes comma-separated lists: each file checked */
+            for (const char *p = files[i]; p && *p;) {
+                size_t n = strcspn(p, ",");
+                char one[1200];
+                if (n >= sizeof one)
+                    return fw_fail(err, FW_EINPUT, "%s file name too long: %.60s...", what[i], p);
+                memcpy(one, p, n);
+                one[n] = '\0';
+                if (access(one, R_OK) != 0)
+                    return fw_fail(err, FW_EINPUT, "%s file '%s' cannot be read", what[i], one);
+                p += n + (p[n] == ',');
+            }
+        }
     }
     return FW_OK;
 }
