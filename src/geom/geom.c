@@ -49,6 +49,44 @@ bool fw_hulls_overlap(double e1, double n1, double psi1, double l1, double b1, d
     return true;
 }
 
+/* The four corners (east, north) of a hull rectangle. */
+static void corners(double e, double n, double psi, double l, double b, double c[4][2])
+{
+    double s = sin(psi), k = cos(psi);
+    static const double sx[4] = {1, 1, -1, -1}, sy[4] = {1, -1, -1, 1};
+    for (int i = 0; i < 4; i++) {
+        double x = 0.5 * l * sx[i], y = 0.5 * b * sy[i]; /* ahead, to starboard */
+        c[i][0] = e + x * s + y * k;
+        c[i][1] = n + x * k - y * s;
+    }
+}
+
+/* Distance from point p to the segment a-b. */
+static double point_segment(const double p[2], const double a[2], const double b[2])
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], q = dx * dx + dy * dy;
+    double t = q > 0.0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / q : 0.0;
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    return hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+}
+
+double fw_hull_distance(double e1, double n1, double psi1, double l1, double b1, double e2,
+                        double n2, double psi2, double l2, double b2)
+{
+    if (fw_hulls_overlap(e1, n1, psi1, l1, b1, e2, n2, psi2, l2, b2))
+        return 0.0;
+    /* apart: the closest points are a corner of one and an edge of the other */
+    double c1[4][2], c2[4][2], d = INFINITY;
+    corners(e1, n1, psi1, l1, b1, c1);
+    corners(e2, n2, psi2, l2, b2, c2);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            d = fmin(d, point_segment(c1[i], c2[j], c2[(j + 1) % 4]));
+            d = fmin(d, point_segment(c2[i], c1[j], c1[(j + 1) % 4]));
+        }
+    return d;
+}
+
 void fw_target_path(const fw_target *t, double dt, int n, double *east, double *north,
                     double *course)
 {

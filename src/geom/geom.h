@@ -93,4 +93,9 @@ double fw_domain_reach(const fw_domain_def *dom, const fw_target *t);
 bool fw_hulls_overlap(double e1, double n1, double psi1, double l1, double b1, double e2,
                       double n2, double psi2, double l2, double b2);
 
+/* Shortest distance between the two hull rectangles (0 when they overlap):
+ * the hull-to-hull measure of closest approaches and near misses. */
+double fw_hull_distance(double e1, double n1, double psi1, double l1, double b1, double e2,
+                        double n2, double psi2, double l2, double b2);
+
 #endif

@@ -82,6 +82,10 @@ void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm,
             fw_rad_to_deg(helm), n, mode);
 }
 
+/* m: hull-to-hull distances are measured for targets whose hulls could be
+ * this close (a near miss is 0.1 nm) */
+static const double kHullWatch = 1852.0;
+
 static fw_encounter *find(fw_records *r, const char *id)
 {
     int i = fw_idmap_find(&r->ids, id);
@@ -114,6 +118,7 @@ static fw_status add(fw_records *r, double t, const fw_target *ts, const fw_asse
     e->tcpa0 = as->tcpa;
     e->min_dist = INFINITY;
     e->min_lambda = INFINITY;
+    e->min_hull = INFINITY;
     e->t_act = NAN;
     *out = e;
     return FW_OK;
@@ -154,11 +159,17 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
     if (lam < 1.0)
         e->domain_entered = true;
     /* hulls can only touch within half the sum of their diagonals */
+    /* hull to hull: the hulls can only touch within half the sum of their
+     * diagonals, and it is worth measuring only within a near miss of that */
     double reach = 0.5 * (hypot(r->s->ship.Loa, r->s->ship.B) + hypot(ts->length, ts->breadth));
-    if (d <= reach && fw_hulls_overlap(own->east, own->north, own->psi, r->s->ship.Loa,
-                                       r->s->ship.B, ts->east, ts->north, ts->course, ts->length,
-                                       ts->breadth))
-        e->collision = true;
+    if (d <= reach + kHullWatch) {
+        double h = fw_hull_distance(own->east, own->north, own->psi, r->s->ship.Loa, r->s->ship.B,
+                                    ts->east, ts->north, ts->course, ts->length, ts->breadth);
+        if (h < e->min_hull)
+            e->min_hull = h;
+        if (h == 0.0)
+            e->collision = true;
+    }
     if (record_row && r->tgt)
         fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s\n", t, ts->id, ts->east,
                 ts->north, fw_heading_deg(ts->course), fw_ms_to_kn(ts->speed), d,
@@ -207,7 +218,9 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
             s->scenario, fw_run_status_name(s->status), s->t_end);
     fprintf(f, "%s  \"min_distance_m\": ", ind);
     num(f, "%.1f", s->min_dist);
-    fprintf(f, ", \"closest_target\": \"%s\",\n", s->min_dist_id);
+    fprintf(f, ", \"closest_target\": \"%s\", \"min_hull_distance_m\": ", s->min_dist_id);
+    num(f, "%.1f", s->min_hull);
+    fprintf(f, ",\n");
     fprintf(f, "%s  \"domain_entered\": %s, \"collision\": %s, \"colregs_ok\": %s,\n", ind,
             s->domain_entered ? "true" : "false", s->collision ? "true" : "false",
             s->colregs_ok ? "true" : "false");
@@ -257,11 +270,13 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
         num(f, "%.1f", x->t_act);
         fprintf(f, ", \"act_side\": \"%s\", \"act_helm_deg\": %.1f, \"primary\": %s, "
                    "\"min_distance_m\": %.1f, \"t_min_s\": %.1f, \"min_domain_ratio\": %.3f, "
-                   "\"domain_entered\": %s, \"collision\": %s, \"colregs_ok\": %s}",
+                   "\"domain_entered\": %s, \"collision\": %s, \"colregs_ok\": %s, \"min_hull_m\": ",
                 fw_side_name(x->act_side), fw_rad_to_deg(fabs(x->act_helm)),
                 x->primary ? "true" : "false", x->min_dist, x->t_min, x->min_lambda,
                 x->domain_entered ? "true" : "false", x->collision ? "true" : "false",
                 x->colregs_ok ? "true" : "false");
+        num(f, "%.1f", x->min_hull);
+        fputc('}', f);
     }
     fprintf(f, "%s]\n%s}", n ? "\n  " : "", ind);
 }
@@ -290,6 +305,7 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
 {
     sum->n_encounters = r->n;
     sum->min_dist = INFINITY;
+    sum->min_hull = INFINITY;
     sum->colregs_ok = true;
     for (int i = 0; i < r->n; i++) {
         fw_encounter *e = &r->e[i];
@@ -304,6 +320,7 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
             sum->min_dist = e->min_dist;
             snprintf(sum->min_dist_id, sizeof sum->min_dist_id, "%s", e->id);
         }
+        sum->min_hull = fmin(sum->min_hull, e->min_hull);
         sum->domain_entered |= e->domain_entered;
         sum->collision |= e->collision;
         sum->colregs_ok &= e->colregs_ok;
@@ -313,15 +330,17 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
         return FW_ERUN;
     fprintf(f, "id,type,length_m,breadth_m,situation,t_detect_s,dcpa_m,tcpa_s,threat,t_act_s,"
                "act_side,act_helm_deg,primary,min_distance_m,t_min_s,min_domain_ratio,"
-               "domain_entered,collision,colregs_ok\n");
+               "domain_entered,collision,colregs_ok,min_hull_m\n");
     for (int i = 0; i < r->n; i++) {
         const fw_encounter *e = &r->e[i];
         fprintf(f, "%s,%s,%.1f,%.1f,%s,%.1f,%.1f,%.1f,%d,", e->id, e->type, e->length, e->breadth,
                 fw_situation_name(e->situation), e->t_detect, e->dcpa0, e->tcpa0, e->threat);
         num(f, "%.1f", e->t_act);
-        fprintf(f, ",%s,%.1f,%d,%.1f,%.1f,%.3f,%d,%d,%d\n", fw_side_name(e->act_side),
+        fprintf(f, ",%s,%.1f,%d,%.1f,%.1f,%.3f,%d,%d,%d,", fw_side_name(e->act_side),
                 fw_rad_to_deg(fabs(e->act_helm)), e->primary, e->min_dist, e->t_min,
                 e->min_lambda, e->domain_entered, e->collision, e->colregs_ok);
+        num(f, "%.1f", e->min_hull);
+        fputc('\n', f);
     }
     if (fclose(f) != 0)
         return fw_fail(err, FW_ERUN, "cannot write %s/encounters.csv", r->dir);

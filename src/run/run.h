@@ -50,6 +50,7 @@ typedef struct fw_encounter {
     fw_situation act_situation; /* situation when the own ship acted */
     bool primary;           /* that action was for this target */
     double min_dist, t_min; /* m, s: centre distance */
+    double min_hull;        /* m, hull to hull (0: touched; INFINITY if never within 1 nm) */
     double min_lambda;      /* smallest normalised domain radius reached (< 1 = inside) */
     bool domain_entered;
     bool collision;         /* hulls overlapped */
@@ -67,6 +68,7 @@ typedef struct fw_run_summary {
     double t_end;           /* s */
     int n_encounters;
     double min_dist;        /* m, over all targets, INFINITY if none */
+    double min_hull;        /* m, hull to hull over all targets (INFINITY: none within 1 nm) */
     char min_dist_id[64];
     bool domain_entered, collision, colregs_ok;
     bool acted;

@@ -52,6 +52,7 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
     o->give_way = sum->n_give_way;
     o->give_way_short = sum->n_give_way_short;
     o->monitors = sum->monitors;
+    o->min_hull = isfinite(sum->min_hull) ? sum->min_hull : NAN;
     o->traffic = n_sv > 0 ? calloc((size_t)n_sv, sizeof *o->traffic) : NULL;
     if (n_sv > 0 && !o->traffic)
         return fw_fail(err, FW_ERUN, "out of memory");
@@ -97,6 +98,7 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
         y->near_miss = x->min_dist < s->near_miss;
         y->collision = x->collision;
         y->colregs_ok = x->colregs_ok;
+        y->min_hull = isfinite(x->min_hull) ? x->min_hull : NAN;
     }
     return FW_OK;
 }

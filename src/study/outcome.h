@@ -24,6 +24,7 @@ typedef struct fw_outcome_encounter {
     double t_act, act_helm_deg;     /* NAN when it never acted */
     double min_dist, t_min, min_lambda;
     int domain_entered, near_miss, collision, colregs_ok;
+    double min_hull;                /* m, NAN if never within 1 nm */
 } fw_outcome_encounter;
 
 typedef struct fw_outcome_traffic {
@@ -46,6 +47,7 @@ typedef struct fw_outcome {
     char behaviour[16];          /* colregs, blind */
     int give_way, give_way_short;
     fw_monitor_counts monitors;
+    double min_hull;                /* m, NAN if no target within 1 nm */
     int n_enc, n_traffic;
     fw_outcome_encounter *enc;   /* owned */
     fw_outcome_traffic *traffic; /* owned */

@@ -14,6 +14,10 @@
  * survey area, the own ship included and flagged) use "head-on", "overtaking",
  * "crossing".
  *
+ * Distances: min_dist_m are centre to centre (the paper's and the domain's
+ * measure), min_hull_m hull to hull (the rectangles' closest points; 0 when
+ * they touched); near_miss is centre to centre below the study's near_miss_m.
+ *
  * Exposure: the own ship sails sim_s seconds per run; traffic_ship_s is the
  * sum over steps of the ships in the survey area times the step (ship-seconds).
  */
@@ -62,6 +66,7 @@
     "  mon_start_close INTEGER,\n"                                                      \
     "  mon_stopped INTEGER,\n"                                                          \
     "  max_lateral_mps REAL,\n"                                                         \
+    "  min_hull_m REAL,\n"               /* hull to hull; NULL: none within 1 nm */      \
     "  UNIQUE(domain_m, density, replication));\n"                                      \
     "CREATE TABLE IF NOT EXISTS encounters(\n"                                          \
     "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \
@@ -74,6 +79,7 @@
     "  min_dist_m REAL, t_min_s REAL, min_lambda REAL,\n"                               \
     "  domain_entered INTEGER, near_miss INTEGER, collision INTEGER,\n"                 \
     "  colregs_ok INTEGER,\n"                                                           \
+    "  min_hull_m REAL,\n"               /* hull to hull; NULL: never within 1 nm */     \
     "  PRIMARY KEY(run_id, target));\n"                                                 \
     "CREATE TABLE IF NOT EXISTS traffic_encounters(\n"                                  \
     "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \

@@ -218,13 +218,13 @@ static const char kRunSql[] =
     "colregs_ok, max_helm_deg, path_length_m, path_lengthening_m, time_lost_s, "
     "rudder_work_deg_s, helm_orders, traffic_ship_s, behaviour, give_way, give_way_short, "
     "mon_sideways, mon_teleport, mon_overlap, mon_appear, mon_vanish, mon_start_close, "
-    "mon_stopped, max_lateral_mps) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
-    "?,?,?,?,?,?,?,?)";
+    "mon_stopped, max_lateral_mps, min_hull_m) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
+    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 static const char kEncSql[] =
     "INSERT INTO encounters(run_id, target, target_type, situation, t_detect_s, dcpa0_m, "
     "tcpa0_s, threat, acted, t_act_s, act_side, act_helm_deg, min_dist_m, t_min_s, min_lambda, "
-    "domain_entered, near_miss, collision, colregs_ok) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
-    "?,?)";
+    "domain_entered, near_miss, collision, colregs_ok, min_hull_m) VALUES(?,?,?,?,?,?,?,?,?,?,?,"
+    "?,?,?,?,?,?,?,?,?)";
 static const char kTrfSql[] =
     "INSERT INTO traffic_encounters(run_id, ship_a, ship_b, type, own, t_first_s, range0_m, "
     "dcpa0_m, tcpa0_s, min_dist_m, t_min_s) VALUES(?,?,?,?,?,?,?,?,?,?,?)";
@@ -414,6 +414,7 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
     for (size_t k = 0; k < sizeof mon / sizeof mon[0]; k++)
         sqlite3_bind_int(q, i++, mon[k]);
     bind_num(q, i++, m->max_lateral);
+    bind_num(q, i++, o->min_hull);
     return sqlite3_step(q);
 }
 
@@ -441,6 +442,7 @@ static int enc_row(sqlite3_stmt *q, int run_id, const fw_outcome_encounter *e)
     sqlite3_bind_int(q, i++, e->near_miss);
     sqlite3_bind_int(q, i++, e->collision);
     sqlite3_bind_int(q, i++, e->colregs_ok);
+    bind_num(q, i++, e->min_hull);
     return sqlite3_step(q);
 }
 
