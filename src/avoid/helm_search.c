@@ -10,7 +10,6 @@
 
 #include "core/units.h"
 
-
 struct fw_helm_ctx {
     const fw_ship *ship;
     fw_helm_def def;
@@ -47,6 +46,16 @@ fw_helm_def fw_default_helm_def(void)
                          .domain = fw_default_domain_def(),
                          .colregs = fw_default_colregs_def(),
                          .track = fw_default_track_def()};
+}
+
+void fw_helm_ctx_destroy(fw_helm_ctx *c)
+{
+    if (!c)
+        return;
+    if (c->tracks)
+        for (int i = 0; i < 2 * c->nh + 2; i++)
+            fw_track_free(&c->tracks[i]);
+    fw_free_each(9, c->tracks, c->have, c->idx, c->jlo, c->jhi, c->prep, c->paths, c->boxes, c);
 }
 
 fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_helm_ctx **out,
@@ -90,16 +99,6 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     }
     *out = c;
     return FW_OK;
-}
-
-void fw_helm_ctx_destroy(fw_helm_ctx *c)
-{
-    if (!c)
-        return;
-    if (c->tracks)
-        for (int i = 0; i < 2 * c->nh + 2; i++)
-            fw_track_free(&c->tracks[i]);
-    fw_free_each(9, c->tracks, c->have, c->idx, c->jlo, c->jhi, c->prep, c->paths, c->boxes, c);
 }
 
 void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)

@@ -9,6 +9,25 @@
 #include "yaml/yaml_edit.h"
 #include "yaml/yaml_tree.h"
 
+
+/* The measured (or simulated) values of a turning row: advance, transfer,
+ * tactical diameter (m) and the steady rate (read in deg/s, kept in rad/s);
+ * 0 where not given. */
+static fw_status turn_values(const yt_doc *doc, const yt_node *m, const char *path,
+                             double *advance, double *transfer, double *tactical,
+                             double *steady_rate, fw_error *err)
+{
+    double rate = 0.0;
+    fw_status st;
+    if ((st = yt_opt_number(doc, m, path, "advance_m", 1.0, 1e5, advance, err)) ||
+        (st = yt_opt_number(doc, m, path, "transfer_m", 1.0, 1e5, transfer, err)) ||
+        (st = yt_opt_number(doc, m, path, "tactical_diameter_m", 1.0, 1e5, tactical, err)) ||
+        (st = yt_opt_number(doc, m, path, "steady_rate_degps", 0.01, 20.0, &rate, err)))
+        return st;
+    *steady_rate = fw_deg_to_rad(rate);
+    return FW_OK;
+}
+
 static fw_status load_turn(const yt_doc *doc, const yt_node *m, const char *path,
                            fw_trial_turn *t, fw_error *err)
 {
@@ -27,26 +46,18 @@ static fw_status load_turn(const yt_doc *doc, const yt_node *m, const char *path
         static const char *const sim_allowed[] = {"advance_m", "transfer_m",
                                                   "tactical_diameter_m", "steady_rate_degps",
                                                   NULL};
-        double srate = 0.0;
         if ((st = yt_check_keys(doc, sim, simpath, sim_allowed, err)) ||
-            (st = yt_opt_number(doc, sim, simpath, "advance_m", 1.0, 1e5, &t->sim_advance, err)) ||
-            (st = yt_opt_number(doc, sim, simpath, "transfer_m", 1.0, 1e5, &t->sim_transfer, err)) ||
-            (st = yt_opt_number(doc, sim, simpath, "tactical_diameter_m", 1.0, 1e5,
-                                &t->sim_tactical_diameter, err)) ||
-            (st = yt_opt_number(doc, sim, simpath, "steady_rate_degps", 0.01, 20.0, &srate, err)))
+            (st = turn_values(doc, sim, simpath, &t->sim_advance, &t->sim_transfer,
+                              &t->sim_tactical_diameter, &t->sim_steady_rate, err)))
             return st;
-        t->sim_steady_rate = fw_deg_to_rad(srate);
     }
     char side[32];
-    double kn, deg, rate = 0.0;
+    double kn, deg;
     if ((st = yt_req_string(doc, m, path, "side", side, sizeof side, err)) ||
         (st = yt_req_number(doc, m, path, "speed_kn", 0.5, 40.0, &kn, err)) ||
         (st = yt_req_number(doc, m, path, "rudder_deg", 1.0, 45.0, &deg, err)) ||
-        (st = yt_opt_number(doc, m, path, "advance_m", 1.0, 1e5, &t->advance, err)) ||
-        (st = yt_opt_number(doc, m, path, "transfer_m", 1.0, 1e5, &t->transfer, err)) ||
-        (st = yt_opt_number(doc, m, path, "tactical_diameter_m", 1.0, 1e5,
-                            &t->tactical_diameter, err)) ||
-        (st = yt_opt_number(doc, m, path, "steady_rate_degps", 0.01, 20.0, &rate, err)))
+        (st = turn_values(doc, m, path, &t->advance, &t->transfer, &t->tactical_diameter,
+                          &t->steady_rate, err)))
         return st;
     double sign;
     if (strcmp(side, "starboard") == 0)
@@ -61,8 +72,7 @@ static fw_status load_turn(const yt_doc *doc, const yt_node *m, const char *path
     }
     t->speed = fw_kn_to_ms(kn);
     t->rudder = sign * fw_deg_to_rad(deg);
-    t->steady_rate = fw_deg_to_rad(rate);
-    if (t->advance == 0 && t->transfer == 0 && t->tactical_diameter == 0 && rate == 0)
+    if (t->advance == 0 && t->transfer == 0 && t->tactical_diameter == 0 && t->steady_rate == 0)
         return fw_fail_at(err, doc->file, m->line, path, "no measured value in this row");
     return FW_OK;
 }

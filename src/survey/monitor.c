@@ -53,6 +53,16 @@ int fw_monitor_total(const fw_monitor_counts *c)
            c->stopped;
 }
 
+void fw_monitor_destroy(fw_monitor *m)
+{
+    if (!m)
+        return;
+    fw_idmap_free(&m->ids);
+    sv_grid_free(&m->grid);
+    sv_pairs_free(&m->pairs);
+    fw_free_each(7, m->s, m->prev, m->cur, m->x, m->y, m->bg, m);
+}
+
 fw_status fw_monitor_create(const fw_monitor_def *def, FILE *log, fw_monitor **out,
                             fw_error *err)
 {
@@ -67,16 +77,6 @@ fw_status fw_monitor_create(const fw_monitor_def *def, FILE *log, fw_monitor **o
     m->log = log;
     *out = m;
     return FW_OK;
-}
-
-void fw_monitor_destroy(fw_monitor *m)
-{
-    if (!m)
-        return;
-    fw_idmap_free(&m->ids);
-    sv_grid_free(&m->grid);
-    sv_pairs_free(&m->pairs);
-    fw_free_each(7, m->s, m->prev, m->cur, m->x, m->y, m->bg, m);
 }
 
 const fw_monitor_counts *fw_monitor_counts_of(const fw_monitor *m) { return &m->c; }

@@ -295,6 +295,22 @@ static fw_status start(fw_traffic *t, fw_error *err)
     return fw_fail(err, FW_EINPUT, "unknown SUMO mode");
 }
 
+void fw_traffic_close(fw_traffic *t)
+{
+    if (!t)
+        return;
+    if (t->be) {
+        t->be->close();
+        if (t->be == &fw_backend_libsumo)
+            embedded_open = false;
+    }
+    if (t->child > 0)
+        fw_spawn_stop(t->child);
+    fw_free_each(4, t->raw.v, t->ctx.v, t->ships, t->area);
+    fw_idmap_free(&t->ids);
+    fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
+}
+
 fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error *err)
 {
     *out = NULL;
@@ -338,22 +354,6 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
     }
     *out = t;
     return FW_OK;
-}
-
-void fw_traffic_close(fw_traffic *t)
-{
-    if (!t)
-        return;
-    if (t->be) {
-        t->be->close();
-        if (t->be == &fw_backend_libsumo)
-            embedded_open = false;
-    }
-    if (t->child > 0)
-        fw_spawn_stop(t->child);
-    fw_free_each(4, t->raw.v, t->ctx.v, t->ships, t->area);
-    fw_idmap_free(&t->ids);
-    fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
 }
 
 static fw_status alive(const fw_traffic *t, fw_error *err)

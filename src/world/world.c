@@ -26,6 +26,19 @@ fw_world_def fw_default_world_def(void)
     return d;
 }
 
+void fw_world_destroy(fw_world *w)
+{
+    if (!w)
+        return;
+    for (int i = 0; i < w->nv; i++) {
+        fw_vessel_free(w->v[i]);
+        free(w->v[i]);
+    }
+    fw_source_destroy(w->source);
+    fw_reactions_destroy(w->react);
+    free(w);
+}
+
 fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err)
 {
     *out = NULL;
@@ -53,19 +66,6 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
     }
     *out = w;
     return FW_OK;
-}
-
-void fw_world_destroy(fw_world *w)
-{
-    if (!w)
-        return;
-    for (int i = 0; i < w->nv; i++) {
-        fw_vessel_free(w->v[i]);
-        free(w->v[i]);
-    }
-    fw_source_destroy(w->source);
-    fw_reactions_destroy(w->react);
-    free(w);
 }
 
 fw_status fw_world_add_vessel(fw_world *w, const fw_vessel_def *def, fw_vessel **out,
