@@ -9,6 +9,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/files.h"
+
 bool fw_args_opt(fw_args *a, const char *name, const char **value, fw_error *err)
 {
     if (a->i >= a->argc)
@@ -126,18 +128,7 @@ fw_status fw_check_out_file(const char *opt, const char *path, bool replace, fw_
             return fw_fail(err, FW_EINPUT, "%s %s: file exists (give --force to replace it)",
                            opt, path);
     }
-    char *copy = strdup(path);
-    if (!copy)
-        return fw_fail(err, FW_ERUN, "out of memory");
-    const char *dir = dirname(copy);
-    fw_status st = FW_OK;
-    if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
-        st = fw_fail(err, FW_EINPUT, "%s %s: no directory %s", opt, path, dir);
-    else if (access(dir, W_OK | X_OK) != 0)
-        st = fw_fail(err, FW_EINPUT, "%s %s: cannot write in %s: %s", opt, path, dir,
-                     strerror(errno));
-    free(copy);
-    return st;
+    return fw_check_parent_dir(opt, path, "cannot write in", err);
 }
 
 fw_status fw_check_speed(const char *opt, double kn, double lo, fw_error *err)

@@ -3,6 +3,8 @@
 #include <stdarg.h>
 #include <errno.h>
 #include <ftw.h>
+#include <libgen.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -69,4 +71,21 @@ fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *e
         return fw_fail(err, FW_ERUN, "%s: write failed: %s", path, strerror(e));
     }
     return FW_OK;
+}
+
+fw_status fw_check_parent_dir(const char *opt, const char *path, const char *cannot,
+                              fw_error *err)
+{
+    char *copy = strdup(path);
+    if (!copy)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    const char *dir = dirname(copy);
+    struct stat sb;
+    fw_status st = FW_OK;
+    if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
+        st = fw_fail(err, FW_EINPUT, "%s %s: no directory %s", opt, path, dir);
+    else if (access(dir, W_OK | X_OK) != 0)
+        st = fw_fail(err, FW_EINPUT, "%s %s: %s %s: %s", opt, path, cannot, dir, strerror(errno));
+    free(copy);
+    return st;
 }

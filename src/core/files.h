@@ -15,6 +15,12 @@ void fw_remove_tree(const char *path);
  * what names the option or field in the error ("--out"). */
 fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err);
 
+/* The directory a file is to be written in: there, a directory, and ours to
+ * write in.  FW_EINPUT "OPT PATH: no directory DIR" or "OPT PATH: CANNOT DIR:
+ * reason" (cannot: "cannot write in", "cannot create it in"). */
+fw_status fw_check_parent_dir(const char *opt, const char *path, const char *cannot,
+                              fw_error *err);
+
 /* Finishes a file written under a temporary name: flushes, syncs and closes
  * f, then renames tmp to path, so a reader never finds a partial file where a
  * complete one is expected.  On any failure tmp is removed and path left as

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/files.h"
 #include "core/units.h"
 #include "study/schema.h"
 #include "study/store.h"
@@ -174,21 +175,9 @@ static fw_status lock_path(fw_store *st, const char *path, fw_error *err)
     bool exists = stat(path, &sb) == 0;
     if (exists && S_ISDIR(sb.st_mode))
         return fw_fail(err, FW_EINPUT, "--db %s: is a directory, expected a database file", path);
-    if (!exists) {
-        char *copy = strdup(path);
-        if (!copy)
-            return fw_fail(err, FW_ERUN, "out of memory");
-        const char *dir = dirname(copy);
-        fw_status r = FW_OK;
-        if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
-            r = fw_fail(err, FW_EINPUT, "--db %s: no directory %s", path, dir);
-        else if (access(dir, W_OK | X_OK) != 0)
-            r = fw_fail(err, FW_EINPUT, "--db %s: cannot create it in %s: %s", path, dir,
-                        strerror(errno));
-        free(copy);
-        if (r)
-            return r;
-    }
+    fw_status r;
+    if (!exists && (r = fw_check_parent_dir("--db", path, "cannot create it in", err)))
+        return r;
     st->lock_fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0666);
     if (st->lock_fd < 0)
         return fw_fail(err, FW_EINPUT, "--db %s: cannot open it for writing: %s", path,
