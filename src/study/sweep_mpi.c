@@ -46,8 +46,9 @@ static void send_run(int rank, int run_id)
     MPI_Send(&run_id, 1, MPI_INT, rank, TAG_WORK, MPI_COMM_WORLD);
 }
 
-/* Ranks 1..: run what rank 0 sends until it sends -1. */
-static void worker(const fw_sweep_def *def, const char *work)
+/* Ranks 1..: run what rank 0 sends until it sends -1.  Without a work
+ * directory (work "") every run is answered failed, saying why. */
+static void worker(const fw_sweep_def *def, const char *work, const char *why)
 {
     for (;;) {
         int run_id;
@@ -57,8 +58,10 @@ static void worker(const fw_sweep_def *def, const char *work)
         fw_child c;
         fw_outcome o;
         fw_error err = {0};
-        if (fw_sweep_spawn(def->study, run_id, work, def->keep_dir != NULL, &def->mode, &c,
-                           &err)) {
+        if (!work[0]) {
+            fw_outcome_failed(&o, run_id, why);
+        } else if (fw_sweep_spawn(def->study, run_id, work, def->keep_dir != NULL, &def->mode,
+                                  &c, &err)) {
             fw_outcome_failed(&o, run_id, err.msg);
         } else {
             while (!fw_sweep_read(&c))
@@ -181,22 +184,8 @@ fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_r
     if (go) {
         if (rank == 0)
             r = root(def, st, pending, n_pending, size, res, err);
-        else if (work[0])
-            worker(def, work);
-        else /* no work directory: answer every run as failed */
-            for (;;) {
-                int run_id;
-                MPI_Recv(&run_id, 1, MPI_INT, 0, TAG_WORK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-                if (run_id < 0)
-                    break;
-                fw_outcome o;
-                unsigned char *buf = NULL;
-                size_t n = 0;
-                fw_outcome_failed(&o, run_id, err ? err->msg : "no work directory");
-                fw_outcome_pack(&o, &buf, &n, NULL);
-                MPI_Send(buf, (int)n, MPI_BYTE, 0, TAG_RESULT, MPI_COMM_WORLD);
-                free(buf);
-            }
+        else
+            worker(def, work, err ? err->msg : "no work directory");
     }
     if (rank != 0 && work[0] && !def->keep_dir)
         fw_remove_tree(work);
