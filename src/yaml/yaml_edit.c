@@ -573,25 +573,3 @@ fw_status fw_yaml_set_scalar(const char *path, const char *section, const char *
     fw_yaml_edit_free(ed);
     return st;
 }
-
-fw_status fw_yaml_set_comment_block(const char *path, const char *tag, const char *text,
-                                    fw_error *err)
-{
-    fw_yaml_edit *ed = NULL;
-    fw_status st = fw_yaml_edit_open(path, &ed, err);
-    if (!st && !(st = fw_yaml_edit_comment_block(ed, tag, text, err)))
-        st = fw_yaml_edit_save(ed, NULL, NULL, NULL, err);
-    fw_yaml_edit_free(ed);
-    return st;
-}
-
-fw_status fw_yaml_replace_block(const char *path, const char *key, const char *text,
-                                fw_error *err)
-{
-    fw_yaml_edit *ed = NULL;
-    fw_status st = fw_yaml_edit_open(path, &ed, err);
-    if (!st && !(st = fw_yaml_edit_block(ed, key, text, err)))
-        st = fw_yaml_edit_save(ed, NULL, NULL, NULL, err);
-    fw_yaml_edit_free(ed);
-    return st;
-}

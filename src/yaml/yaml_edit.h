@@ -58,12 +58,9 @@ typedef fw_status (*fw_yaml_check)(const char *tmp_path, void *ctx, fw_error *er
 fw_status fw_yaml_edit_save(const fw_yaml_edit *ed, const char *path, fw_yaml_check check,
                             void *ctx, fw_error *err);
 
-/* One-edit conveniences: open, edit, save over the same file. */
+/* One edit: open, edit, save over the same file (the tests' convenience;
+ * the commands use a session for several edits and one save). */
 fw_status fw_yaml_set_scalar(const char *path, const char *section, const char *key,
                              const char *value, const char *comment, fw_error *err);
-fw_status fw_yaml_set_comment_block(const char *path, const char *tag, const char *text,
-                                    fw_error *err);
-fw_status fw_yaml_replace_block(const char *path, const char *key, const char *text,
-                                fw_error *err);
 
 #endif
