@@ -104,6 +104,14 @@ fw_status fw_parse_list(const char *opt, const char *text, double *out, int max,
     }
 }
 
+bool fw_args_help(const fw_args *a, void (*help)(void))
+{
+    if (a->i >= a->argc || !fw_is_help(a->argv[a->i]))
+        return false;
+    help();
+    return true;
+}
+
 bool fw_is_help(const char *arg)
 {
     return strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0;

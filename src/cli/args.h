@@ -24,6 +24,9 @@ typedef struct fw_args {
 /* If argv[i] is option `name` (with or without "=VALUE"), consumes it, stores
  * the value in *value (NULL for flags) and returns true. */
 bool fw_args_opt(fw_args *a, const char *name, const char **value, fw_error *err);
+/* The argument at hand is --help or -h: the command's help is printed (the
+ * caller then exits 0). */
+bool fw_args_help(const fw_args *a, void (*help)(void));
 bool fw_args_flag(fw_args *a, const char *name);
 
 fw_status fw_parse_double(const char *opt, const char *text, double *out, fw_error *err);

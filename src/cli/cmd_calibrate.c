@@ -52,10 +52,8 @@ int fw_cmd_calibrate(int argc, char **argv)
     fw_args a = {argc, argv, 0};
     while (a.i < argc) {
         const char *v;
-        if (fw_is_help(argv[a.i])) {
-            help();
+        if (fw_args_help(&a, help))
             return 0;
-        }
         if (fw_args_flag(&a, "--write"))
             write = true;
         else if (fw_args_opt(&a, "--ship", &v, &err))

@@ -136,10 +136,8 @@ static int parse_options(int argc, char **argv, helm_in *in, fw_error *err)
     fw_args a = {argc, argv, 0};
     const char *val;
     while (a.i < argc) {
-        if (fw_is_help(argv[a.i])) {
-            help();
+        if (fw_args_help(&a, help))
             return 0;
-        }
         if (fw_args_flag(&a, "--json")) {
             in->json = true;
         } else if (fw_args_opt(&a, "--ship", &in->ship_name, err)) {

@@ -47,10 +47,9 @@ int fw_cmd_report(int argc, char **argv)
     bool json = false;
     const char *v;
     while (a.i < a.argc) {
-        if (fw_is_help(a.argv[a.i])) {
-            help();
+        if (fw_args_help(&a, help))
             return 0;
-        } else if (fw_args_opt(&a, "--out", &v, &err)) {
+        else if (fw_args_opt(&a, "--out", &v, &err)) {
             if (!v)
                 return fw_report(&err);
             def.out = v;

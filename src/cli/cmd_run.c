@@ -82,10 +82,9 @@ static int parse_options(int argc, char **argv, run_opts *o, fw_error *err)
     fw_args a = {argc, argv, 0};
     const char *v;
     while (a.i < a.argc) {
-        if (fw_is_help(a.argv[a.i])) {
-            help();
+        if (fw_args_help(&a, help))
             return 0;
-        } else if (fw_args_opt(&a, "--out", &v, err)) {
+        else if (fw_args_opt(&a, "--out", &v, err)) {
             if (!v)
                 return fw_report(err);
             o->out = v;

@@ -133,10 +133,8 @@ static int parse_options(int argc, char **argv, sweep_opts *o, fw_error *err)
 {
     fw_args a = {argc, argv, 0};
     while (a.i < a.argc) {
-        if (fw_is_help(a.argv[a.i])) {
-            help();
+        if (fw_args_help(&a, help))
             return 0;
-        }
         if (parse_one(&a, o, err))
             return fw_report(err);
     }

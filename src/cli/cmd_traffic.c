@@ -143,10 +143,9 @@ int fw_cmd_traffic(int argc, char **argv)
     double density = 1.0, duration = 600.0, step = 1.0, radius = 6.0, speed = 12.0;
     while (a.i < a.argc) {
         fw_status st = FW_OK;
-        if (fw_is_help(a.argv[a.i])) {
-            help();
+        if (fw_args_help(&a, help))
             return 0;
-        } else if (fw_args_opt(&a, "--network", &v, &err)) {
+        else if (fw_args_opt(&a, "--network", &v, &err)) {
             if (!v)
                 return fw_report(&err);
             network = v;
