@@ -186,6 +186,16 @@ static void print_zigzag_text(const fw_ship *s, const fw_zigzag_def *d, const fw
         printf("  second overshoot     %6.2f deg   (no IMO limit)\n", fw_rad_to_deg(r->overshoot2));
 }
 
+/* A manoeuvre's time history to --csv (when asked and the run worked); the
+ * history freed either way. */
+static fw_status csv_out(fw_history *h, const opts *o, fw_status st, fw_error *err)
+{
+    if (!st && o->csv)
+        st = fw_history_write_csv(h, o->csv, err);
+    fw_history_free(h);
+    return st;
+}
+
 static int run_turning(const fw_ship *ship, const opts *o, fw_error *err)
 {
     if (!o->have_speed || !o->have_rudder)
@@ -197,10 +207,7 @@ static int run_turning(const fw_ship *ship, const opts *o, fw_error *err)
     fw_turning_result r;
     fw_history h = {0};
     fw_status st = fw_turning_run(ship, &d, &r, o->csv ? &h : NULL, err);
-    if (!st && o->csv)
-        st = fw_history_write_csv(&h, o->csv, err);
-    fw_history_free(&h);
-    if (st)
+    if ((st = csv_out(&h, o, st, err)))
         return fw_report(err);
     if (o->json) {
         print_turning_json(ship, d.speed, d.rudder, &r, NULL);
@@ -222,10 +229,7 @@ static int run_zigzag(const fw_ship *ship, const opts *o, fw_error *err)
     fw_zigzag_result r;
     fw_history h = {0};
     fw_status st = fw_zigzag_run(ship, &d, &r, o->csv ? &h : NULL, err);
-    if (!st && o->csv)
-        st = fw_history_write_csv(&h, o->csv, err);
-    fw_history_free(&h);
-    if (st)
+    if ((st = csv_out(&h, o, st, err)))
         return fw_report(err);
     if (o->json) {
         print_zigzag_json(ship, &d, &r);
