@@ -319,15 +319,8 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
     if (st)
         return st;
     const yt_node *root = doc->root;
-    if (!root || root->kind != YT_MAP) {
-        st = fw_fail_at(err, doc->file, root ? root->line : 1, "(top)",
-                        "expected a map with name, own_ship, traffic, run");
-        goto out;
-    }
-    if ((st = yt_check_keys(doc, root, "", keys, err)) ||
-        (st = yt_req_string(doc, root, "", "name", s->name, sizeof s->name, err)) ||
-        (st = yt_opt_string(doc, root, "", "description", s->description, sizeof s->description,
-                            err)))
+    if ((st = yt_top_map(doc, keys, "name, own_ship, traffic, run", s->name, sizeof s->name,
+                         s->description, sizeof s->description, err)))
         goto out;
     if (!name_ok(s->name)) {
         st = fw_fail_at(err, doc->file, yt_key_line(root, "name"), "name",

@@ -174,15 +174,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
     const yt_node *root = doc->root, *start = NULL;
     char scen[512] = "";
     long reps = 0, seed = 1;
-    if (!root || root->kind != YT_MAP) {
-        st = fw_fail_at(err, doc->file, root ? root->line : 1, "(top)",
-                        "expected a map with name, scenario, replications, domains_m");
-        goto out;
-    }
-    if ((st = yt_check_keys(doc, root, "", keys, err)) ||
-        (st = yt_req_string(doc, root, "", "name", s->name, sizeof s->name, err)) ||
-        (st = yt_opt_string(doc, root, "", "description", s->description, sizeof s->description,
-                            err)) ||
+    if ((st = yt_top_map(doc, keys, "name, scenario, replications, domains_m", s->name,
+                         sizeof s->name, s->description, sizeof s->description, err)) ||
         (st = yt_req_string(doc, root, "", "scenario", scen, sizeof scen, err)) ||
         (st = yt_req_int(doc, root, "", "replications", 1, 100000, &reps, err)) ||
         (st = yt_opt_int(doc, root, "", "seed", 0, 2147483647L, &seed, err)) ||

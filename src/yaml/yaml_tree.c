@@ -511,3 +511,19 @@ fw_status yt_opt_seq(const yt_doc *doc, const yt_node *map, const char *path, co
 {
     return child(doc, map, path, key, YT_SEQ, false, out, err);
 }
+
+fw_status yt_top_map(const yt_doc *doc, const char *const *keys, const char *what, char *name,
+                     size_t name_size, char *description, size_t description_size,
+                     fw_error *err)
+{
+    const yt_node *root = doc->root;
+    if (!root || root->kind != YT_MAP)
+        return fw_fail_at(err, doc->file, root ? root->line : 1, "(top)", "expected a map with %s",
+                          what);
+    fw_status st;
+    if ((st = yt_check_keys(doc, root, "", keys, err)) ||
+        (st = yt_req_string(doc, root, "", "name", name, name_size, err)) ||
+        (st = yt_opt_string(doc, root, "", "description", description, description_size, err)))
+        return st;
+    return FW_OK;
+}

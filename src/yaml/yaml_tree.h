@@ -85,4 +85,12 @@ fw_status yt_number(const yt_doc *doc, const yt_node *node, const char *field, d
 /* Joins a dotted path: out = path + "." + key (or key when path is empty). */
 const char *yt_path(char *out, size_t outsz, const char *path, const char *key);
 
+/* The top of a document that is a map of these keys with a name and an
+ * optional description (scenarios, studies): checked, and the two read.
+ * FW_EINPUT "FILE:LINE: (top): expected a map with WHAT" when it is not a
+ * map. */
+fw_status yt_top_map(const yt_doc *doc, const char *const *keys, const char *what, char *name,
+                     size_t name_size, char *description, size_t description_size,
+                     fw_error *err);
+
 #endif
