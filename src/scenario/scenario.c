@@ -92,18 +92,15 @@ static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *pa
         (st = yt_req_number(doc, t, path, "length_m", 5, 500, &o->length, err)) ||
         (st = yt_req_number(doc, t, path, "breadth_m", 1, 80, &o->breadth, err)))
         return st;
-    char f[96];
     if (!name_ok(o->id) || strlen(o->id) > 24)
-        return fw_fail_at(err, doc->file, yt_key_line(t, "id"), yt_path(f, sizeof f, path, "id"),
-                          "'%s': use up to 24 letters, digits, '-' or '_'", o->id);
+        return yt_fail_key(doc, t, path, "id", err, "'%s': use up to 24 letters, digits, '-' or '_'",
+                           o->id);
     if (!name_ok(o->type))
-        return fw_fail_at(err, doc->file, yt_key_line(t, "type"),
-                          yt_path(f, sizeof f, path, "type"),
-                          "'%s': use letters, digits, '-' or '_'", o->type);
+        return yt_fail_key(doc, t, path, "type", err, "'%s': use letters, digits, '-' or '_'",
+                           o->type);
     if (o->breadth > o->length)
-        return fw_fail_at(err, doc->file, yt_key_line(t, "breadth_m"),
-                          yt_path(f, sizeof f, path, "breadth_m"), "%g m exceeds the length %g m",
-                          o->breadth, o->length);
+        return yt_fail_key(doc, t, path, "breadth_m", err, "%g m exceeds the length %g m",
+                           o->breadth, o->length);
     o->course = fw_deg_to_rad(c);
     o->speed = fw_kn_to_ms(v);
     return FW_OK;

@@ -39,14 +39,13 @@ static fw_status load_stream(const yt_doc *doc, const yt_node *m, const char *pa
         (st = yt_req_number(doc, m, path, "per_hour", 0.0, 1000.0, &s->per_hour, err)) ||
         (st = yt_req_seq(doc, m, path, "edges", &edges, err)))
         return st;
-    char field[128];
     if (!plain_id(s->id))
-        return fw_fail_at(err, doc->file, yt_key_line(m, "id"), yt_path(field, sizeof field, path, "id"),
-                          "'%s' must be letters, digits, '_', '-' or '.'", s->id);
+        return yt_fail_key(doc, m, path, "id", err, "'%s' must be letters, digits, '_', '-' or '.'",
+                           s->id);
     if (!plain_id(s->types))
-        return fw_fail_at(err, doc->file, yt_key_line(m, "types"),
-                          yt_path(field, sizeof field, path, "types"),
-                          "'%s' must be letters, digits, '_', '-' or '.'", s->types);
+        return yt_fail_key(doc, m, path, "types", err,
+                           "'%s' must be letters, digits, '_', '-' or '.'", s->types);
+    char field[128];
     yt_path(field, sizeof field, path, "edges");
     if (edges->n < 1 || edges->n > FW_DEMAND_MAX_EDGES)
         return fw_fail_at(err, doc->file, edges->line, field, "needs 1 to %d edges",

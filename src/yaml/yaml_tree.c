@@ -1,5 +1,6 @@
 #include "yaml/yaml_tree.h"
 
+#include <stdarg.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -526,4 +527,16 @@ fw_status yt_top_map(const yt_doc *doc, const char *const *keys, const char *wha
         (st = yt_opt_string(doc, root, "", "description", description, description_size, err)))
         return st;
     return FW_OK;
+}
+
+fw_status yt_fail_key(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                      fw_error *err, const char *fmt, ...)
+{
+    char field[256], msg[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    return fw_fail_at(err, doc->file, yt_key_line(map, key), yt_path(field, sizeof field, path, key),
+                      "%s", msg);
 }

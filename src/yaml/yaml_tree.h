@@ -93,4 +93,8 @@ fw_status yt_top_map(const yt_doc *doc, const char *const *keys, const char *wha
                      size_t name_size, char *description, size_t description_size,
                      fw_error *err);
 
+/* FW_EINPUT located at the key of map: "FILE:LINE: PATH.KEY: message". */
+fw_status yt_fail_key(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                      fw_error *err, const char *fmt, ...) __attribute__((format(printf, 6, 7)));
+
 #endif
