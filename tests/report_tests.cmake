@@ -17,7 +17,7 @@ fw_cli_test(cli_report_not_db 2 "test.h: not a fairway study database"
             report ${CMAKE_CURRENT_SOURCE_DIR}/test.h)
 fw_cli_test(cli_report_bad_option 2 "unknown option '--frob'" report x.db --frob)
 fw_cli_test(cli_report_bad_reference 2 "--reference: 'big' is not a number" report x.db --reference big)
-fw_cli_test(cli_report_two_files 2 "one database at a time" report a.db b.db)
+fw_cli_test(cli_report_two_files 2 "one file at a time" report a.db b.db)
 fw_script_test(cli_report_plots 0 "^ok: report with plots" report_plots.sh $<TARGET_FILE:make_study_db>)
 fw_script_test(cli_report_bad 0 "^ok: refused, nothing written" report_bad.sh $<TARGET_FILE:make_study_db>)
 set_tests_properties(cli_report_plots PROPERTIES TIMEOUT 120)

@@ -46,31 +46,45 @@ bool fw_args_flag(fw_args *a, const char *name)
     return false;
 }
 
-fw_status fw_parse_double(const char *opt, const char *text, double *out, fw_error *err)
+/* Strict number reading shared by both parsers: the whole text, finite;
+ * out (a double or a long) is written only when the text is good. */
+static fw_status parse_number(const char *opt, const char *text, bool integer, void *out,
+                              fw_error *err)
 {
     if (!text)
         return fw_fail(err, FW_EINPUT, "option %s needs a value", opt);
     char *end = NULL;
     errno = 0;
-    double v = strtod(text, &end);
-    if (end == text || *end != '\0')
-        return fw_fail(err, FW_EINPUT, "%s: '%s' is not a number", opt, text);
-    if (!isfinite(v) || errno == ERANGE)
+    long l = integer ? strtol(text, &end, 10) : 0;
+    double d = integer ? 0.0 : strtod(text, &end);
+    if (end == text || *end != '\0' || (integer && errno == ERANGE))
+        return fw_fail(err, FW_EINPUT, "%s: '%s' is not %s", opt, text,
+                       integer ? "an integer" : "a number");
+    if (!isfinite(d) || errno == ERANGE)
         return fw_fail(err, FW_EINPUT, "%s: '%s' is not a finite number", opt, text);
-    *out = v;
+    if (integer)
+        *(long *)out = l;
+    else
+        *(double *)out = d;
     return FW_OK;
+}
+
+fw_status fw_parse_double(const char *opt, const char *text, double *out, fw_error *err)
+{
+    return parse_number(opt, text, false, out, err);
 }
 
 fw_status fw_parse_long(const char *opt, const char *text, long *out, fw_error *err)
 {
-    if (!text)
-        return fw_fail(err, FW_EINPUT, "option %s needs a value", opt);
-    char *end = NULL;
-    errno = 0;
-    long v = strtol(text, &end, 10);
-    if (end == text || *end != '\0' || errno == ERANGE)
-        return fw_fail(err, FW_EINPUT, "%s: '%s' is not an integer", opt, text);
-    *out = v;
+    return parse_number(opt, text, true, out, err);
+}
+
+fw_status fw_args_one_file(void *ctx, const char *arg, fw_error *err)
+{
+    const char **slot = ctx;
+    if (*slot)
+        return fw_fail(err, FW_EINPUT, "one file at a time ('%s' and '%s')", *slot, arg);
+    *slot = arg;
     return FW_OK;
 }
 
@@ -110,6 +124,77 @@ bool fw_args_help(const fw_args *a, void (*help)(void))
         return false;
     help();
     return true;
+}
+
+static fw_status store_option(const fw_opt *o, const char *v, fw_error *err)
+{
+    switch (o->kind) {
+    case FW_OPT_TEXT:
+        *(const char **)o->out = v;
+        return FW_OK;
+    case FW_OPT_DOUBLE:
+        return fw_parse_double(o->name, v, o->out, err);
+    case FW_OPT_LONG:
+        return fw_parse_long(o->name, v, o->out, err);
+    case FW_OPT_LIST:
+        return fw_parse_list(o->name, v, o->out, o->max, o->n, err);
+    case FW_OPT_FLAG:
+        *(bool *)o->out = true;
+        return FW_OK;
+    case FW_OPT_CALL:
+        return o->call(o->out, o->name, v, err);
+    }
+    return fw_fail(err, FW_ERUN, "%s: unknown option kind", o->name);
+}
+
+fw_arg_read fw_args_next(fw_args *a, const char *cmd, const fw_opt *opts, void (*help)(void),
+                         fw_error *err)
+{
+    if (fw_args_help(a, help))
+        return FW_ARG_HELP;
+    const char *arg = a->argv[a->i];
+    for (const fw_opt *o = opts; o->name; o++) {
+        const char *v = NULL;
+        bool hit = o->kind == FW_OPT_FLAG ? fw_args_flag(a, o->name)
+                                          : fw_args_opt(a, o->name, &v, err);
+        if (!hit)
+            continue;
+        if (err->status || store_option(o, v, err))
+            return FW_ARG_ERROR;
+        if (o->given)
+            *o->given = true;
+        return FW_ARG_OPTION;
+    }
+    if (arg[0] != '-' || !arg[1])
+        return FW_ARG_POSITIONAL;
+    fw_fail(err, FW_EINPUT, "%s: unknown option '%s' (see fairway %s --help)", cmd, arg, cmd);
+    return FW_ARG_ERROR;
+}
+
+int fw_args_parse(int argc, char **argv, const char *cmd, const fw_opt *opts,
+                  void (*help)(void), fw_args_positional positional, void *ctx, fw_error *err)
+{
+    fw_args a = {argc, argv, 0};
+    while (a.i < a.argc) {
+        switch (fw_args_next(&a, cmd, opts, help, err)) {
+        case FW_ARG_OPTION:
+            break;
+        case FW_ARG_HELP:
+            return 0;
+        case FW_ARG_POSITIONAL:
+            if (!positional)
+                fw_fail(err, FW_EINPUT, "%s: unexpected argument '%s' (see fairway %s --help)",
+                        cmd, argv[a.i], cmd);
+            else
+                positional(ctx, argv[a.i++], err);
+            if (err->status)
+                return fw_report(err);
+            break;
+        case FW_ARG_ERROR:
+            return fw_report(err);
+        }
+    }
+    return -1;
 }
 
 bool fw_is_help(const char *arg)

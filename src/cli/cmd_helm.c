@@ -106,19 +106,28 @@ typedef struct helm_in {
     double own_v[6];
 } helm_in;
 
-static fw_status parse_positive(const char *opt, const char *val, double *out, fw_error *err)
+static fw_status opt_positive(void *ctx, const char *opt, const char *val, fw_error *err)
 {
-    if (err->status || fw_parse_double(opt, val, out, err))
+    double *out = ctx;
+    if (fw_parse_double(opt, val, out, err))
         return err->status;
     if (!(*out > 0.0))
         return fw_fail(err, FW_EINPUT, "%s: must be positive", opt);
     return FW_OK;
 }
 
-static fw_status add_target(helm_in *in, const char *val, fw_error *err)
+static fw_status opt_own(void *ctx, const char *opt, const char *val, fw_error *err)
 {
+    helm_in *in = ctx;
+    in->own_text = val;
+    return parse_ship_state(opt, val, false, in->own_v, err);
+}
+
+static fw_status opt_target(void *ctx, const char *opt, const char *val, fw_error *err)
+{
+    helm_in *in = ctx;
     double v[6];
-    if (err->status || parse_ship_state("--target", val, true, v, err))
+    if (parse_ship_state(opt, val, true, v, err))
         return err->status;
     if (in->n >= MAX_TARGETS)
         return fw_fail(err, FW_EINPUT, "--target: at most %d targets", MAX_TARGETS);
@@ -133,34 +142,16 @@ static fw_status add_target(helm_in *in, const char *val, fw_error *err)
 /* Returns -1 to go on, else the exit code. */
 static int parse_options(int argc, char **argv, helm_in *in, fw_error *err)
 {
-    fw_args a = {argc, argv, 0};
-    const char *val;
-    while (a.i < argc) {
-        if (fw_args_help(&a, help))
-            return 0;
-        if (fw_args_flag(&a, "--json")) {
-            in->json = true;
-        } else if (fw_args_opt(&a, "--ship", &in->ship_name, err)) {
-            if (err->status || !in->ship_name)
-                return fw_report(err);
-        } else if (fw_args_opt(&a, "--own", &in->own_text, err)) {
-            if (err->status || parse_ship_state("--own", in->own_text, false, in->own_v, err))
-                return fw_report(err);
-        } else if (fw_args_opt(&a, "--target", &val, err)) {
-            if (add_target(in, val, err))
-                return fw_report(err);
-        } else if (fw_args_opt(&a, "--domain", &val, err)) {
-            if (parse_positive("--domain", val, &in->hdef.domain.size, err))
-                return fw_report(err);
-        } else if (fw_args_opt(&a, "--fore-aft-ratio", &val, err)) {
-            if (parse_positive("--fore-aft-ratio", val, &in->hdef.domain.fore_aft_ratio, err))
-                return fw_report(err);
-        } else {
-            return fw_report((fw_fail(err, FW_EINPUT,
-                                      "helm: unknown option '%s' (see fairway helm --help)",
-                                      argv[a.i]), err));
-        }
-    }
+    const fw_opt opts[] = {
+        FW_OPT("--json", FW_OPT_FLAG, &in->json), FW_OPT("--ship", FW_OPT_TEXT, &in->ship_name),
+        FW_OPT_FN("--own", opt_own, in),          FW_OPT_FN("--target", opt_target, in),
+        FW_OPT_FN("--domain", opt_positive, &in->hdef.domain.size),
+        FW_OPT_FN("--fore-aft-ratio", opt_positive, &in->hdef.domain.fore_aft_ratio),
+        FW_OPT_END,
+    };
+    int rc = fw_args_parse(argc, argv, "helm", opts, help, NULL, NULL, err);
+    if (rc >= 0)
+        return rc;
     if (!in->ship_name)
         return fw_report((fw_fail(err, FW_EINPUT, "helm: --ship is required"), err));
     if (!in->own_text)

@@ -64,31 +64,16 @@ typedef struct ident_grid {
 /* Returns -1 to go on, else the exit code. */
 static int parse_options(int argc, char **argv, ident_opts *o, fw_error *err)
 {
-    fw_args a = {argc, argv, 0};
-    const char *val;
-    while (a.i < argc) {
-        if (fw_args_help(&a, help))
-            return 0;
-        if (fw_args_flag(&a, "--force")) {
-            o->force = true;
-        } else if (fw_args_opt(&a, "--ship", &o->ship_name, err)) {
-        } else if (fw_args_opt(&a, "--out", &o->out_path, err)) {
-        } else if (fw_args_opt(&a, "--sides", &o->sides, err)) {
-        } else if (fw_args_opt(&a, "--speeds", &val, err)) {
-            if (!err->status)
-                fw_parse_list("--speeds", val, o->speeds, MAXV, &o->ns, err);
-        } else if (fw_args_opt(&a, "--rudders", &val, err)) {
-            if (!err->status)
-                fw_parse_list("--rudders", val, o->rudders, MAXV, &o->nr, err);
-        } else if (fw_args_opt(&a, "--duration", &val, err)) {
-            if (!err->status)
-                fw_parse_double("--duration", val, &o->duration, err);
-        } else {
-            fw_fail(err, FW_EINPUT, "identify: unknown option '%s'", argv[a.i]);
-        }
-        if (err->status)
-            return fw_report(err);
-    }
+    const fw_opt opts[] = {
+        FW_OPT("--force", FW_OPT_FLAG, &o->force),  FW_OPT("--ship", FW_OPT_TEXT, &o->ship_name),
+        FW_OPT("--out", FW_OPT_TEXT, &o->out_path), FW_OPT("--sides", FW_OPT_TEXT, &o->sides),
+        FW_OPT_LISTOF("--speeds", o->speeds, MAXV, &o->ns),
+        FW_OPT_LISTOF("--rudders", o->rudders, MAXV, &o->nr),
+        FW_OPT("--duration", FW_OPT_DOUBLE, &o->duration), FW_OPT_END,
+    };
+    int rc = fw_args_parse(argc, argv, "identify", opts, help, NULL, NULL, err);
+    if (rc >= 0)
+        return rc;
     if (!o->ship_name)
         return fw_report((fw_fail(err, FW_EINPUT, "identify: --ship is required"), err));
     const char *sides = o->sides;

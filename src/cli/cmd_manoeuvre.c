@@ -64,36 +64,21 @@ static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
 {
     memset(o, 0, sizeof *o);
     o->side = "starboard";
+    const fw_opt table[] = {
+        FW_OPT("--json", FW_OPT_FLAG, &o->json),     FW_OPT("--ship", FW_OPT_TEXT, &o->ship),
+        FW_OPT("--csv", FW_OPT_TEXT, &o->csv),       FW_OPT("--csv-dir", FW_OPT_TEXT, &o->csv_dir),
+        FW_OPT("--trial", FW_OPT_TEXT, &o->trial),   FW_OPT("--side", FW_OPT_TEXT, &o->side),
+        FW_OPT_SEEN("--speed", FW_OPT_DOUBLE, &o->speed, &o->have_speed),
+        FW_OPT_SEEN("--rudder", FW_OPT_DOUBLE, &o->rudder, &o->have_rudder),
+        FW_OPT_SEEN("--angle", FW_OPT_DOUBLE, &o->angle, &o->have_angle), FW_OPT_END,
+    };
     fw_args a = {argc, argv, 0};
     while (a.i < argc) {
-        const char *v = NULL;
-        fw_status st = FW_OK;
-        if (fw_args_flag(&a, "--json"))
-            o->json = true;
-        else if (fw_args_opt(&a, "--ship", &v, err))
-            o->ship = v;
-        else if (fw_args_opt(&a, "--csv", &v, err))
-            o->csv = v;
-        else if (fw_args_opt(&a, "--csv-dir", &v, err))
-            o->csv_dir = v;
-        else if (fw_args_opt(&a, "--trial", &v, err))
-            o->trial = v;
-        else if (fw_args_opt(&a, "--side", &v, err))
-            o->side = v;
-        else if (fw_args_opt(&a, "--speed", &v, err))
-            st = fw_parse_double("--speed", v, &o->speed, err), o->have_speed = true;
-        else if (fw_args_opt(&a, "--rudder", &v, err))
-            st = fw_parse_double("--rudder", v, &o->rudder, err), o->have_rudder = true;
-        else if (fw_args_opt(&a, "--angle", &v, err))
-            st = fw_parse_double("--angle", v, &o->angle, err), o->have_angle = true;
-        else
-            return fw_fail(err, FW_EINPUT, "manoeuvre: unknown option '%s' (see --help)",
-                           argv[a.i]);
-        if (err->status)
+        fw_arg_read r = fw_args_next(&a, "manoeuvre", table, help, err);
+        if (r == FW_ARG_POSITIONAL)
+            return fw_fail(err, FW_EINPUT, "manoeuvre: unexpected argument '%s'", argv[a.i]);
+        if (r != FW_ARG_OPTION)
             return err->status;
-        if (st)
-            return st;
-        (void)v;
     }
     if (o->side && strcmp(o->side, "starboard") && strcmp(o->side, "port"))
         return fw_fail(err, FW_EINPUT, "--side: '%s' is not starboard or port", o->side);

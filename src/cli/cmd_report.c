@@ -41,38 +41,22 @@ static void help(void)
 
 int fw_cmd_report(int argc, char **argv)
 {
-    fw_args a = {argc, argv, 0};
     fw_error err = {0};
     fw_study_report_def def = fw_default_study_report_def();
     bool json = false;
-    const char *v;
-    while (a.i < a.argc) {
-        if (fw_args_help(&a, help))
-            return 0;
-        else if (fw_args_opt(&a, "--out", &v, &err)) {
-            if (!v)
-                return fw_report(&err);
-            def.out = v;
-        } else if (fw_args_opt(&a, "--reference", &v, &err)) {
-            if (!v || fw_parse_double("--reference", v, &def.reference_m, &err))
-                return fw_report(&err);
-            if (!(def.reference_m > 0.0))
-                return fw_report((fw_fail(&err, FW_EINPUT, "--reference: must be positive"), &err));
-        } else if (fw_args_flag(&a, "--no-plots")) {
-            def.plots = false;
-        } else if (fw_args_flag(&a, "--json")) {
-            json = true;
-        } else if (a.argv[a.i][0] == '-' && a.argv[a.i][1]) {
-            fprintf(stderr, "fairway report: unknown option '%s' (see --help)\n", a.argv[a.i]);
-            return 2;
-        } else if (def.db) {
-            fprintf(stderr, "fairway report: one database at a time ('%s' and '%s')\n", def.db,
-                    a.argv[a.i]);
-            return 2;
-        } else {
-            def.db = a.argv[a.i++];
-        }
-    }
+    bool no_plots = false, ref_given = false;
+    const fw_opt opts[] = {
+        FW_OPT("--out", FW_OPT_TEXT, &def.out),
+        FW_OPT_SEEN("--reference", FW_OPT_DOUBLE, &def.reference_m, &ref_given),
+        FW_OPT("--no-plots", FW_OPT_FLAG, &no_plots), FW_OPT("--json", FW_OPT_FLAG, &json),
+        FW_OPT_END,
+    };
+    int rc = fw_args_parse(argc, argv, "report", opts, help, fw_args_one_file, &def.db, &err);
+    if (rc >= 0)
+        return rc;
+    def.plots = !no_plots;
+    if (ref_given && !(def.reference_m > 0.0))
+        return fw_report((fw_fail(&err, FW_EINPUT, "--reference: must be positive"), &err));
     if (!def.db)
         return fw_report((fw_fail(&err, FW_EINPUT, "no study database given (see fairway report --help)"), &err));
     fw_study_report *rep;

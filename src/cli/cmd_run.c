@@ -76,31 +76,24 @@ typedef struct run_opts {
     fw_run_def def;
 } run_opts;
 
+static fw_status add_file(void *ctx, const char *arg, fw_error *err)
+{
+    (void)err;
+    run_opts *o = ctx;
+    o->files[o->nf++] = arg;
+    return FW_OK;
+}
+
 /* Returns -1 to go on, else the exit code. */
 static int parse_options(int argc, char **argv, run_opts *o, fw_error *err)
 {
-    fw_args a = {argc, argv, 0};
-    const char *v;
-    while (a.i < a.argc) {
-        if (fw_args_help(&a, help))
-            return 0;
-        else if (fw_args_opt(&a, "--out", &v, err)) {
-            if (!v)
-                return fw_report(err);
-            o->out = v;
-        } else if (fw_args_opt(&a, "--sumo", &v, err)) {
-            if (!v)
-                return fw_report(err);
-            o->mode = v;
-        } else if (fw_args_flag(&a, "--json")) {
-            o->json = true;
-        } else if (a.argv[a.i][0] == '-' && a.argv[a.i][1]) {
-            fprintf(stderr, "fairway run: unknown option '%s' (see --help)\n", a.argv[a.i]);
-            return 2;
-        } else {
-            o->files[o->nf++] = a.argv[a.i++];
-        }
-    }
+    const fw_opt opts[] = {
+        FW_OPT("--out", FW_OPT_TEXT, &o->out), FW_OPT("--sumo", FW_OPT_TEXT, &o->mode),
+        FW_OPT("--json", FW_OPT_FLAG, &o->json), FW_OPT_END,
+    };
+    int rc = fw_args_parse(argc, argv, "run", opts, help, add_file, o, err);
+    if (rc >= 0)
+        return rc;
     if (o->nf == 0)
         fw_fail(err, FW_EINPUT, "no scenario given (see fairway run --help)");
     else if (!fw_traffic_mode_parse(o->mode, &o->def.mode, err))

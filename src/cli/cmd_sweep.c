@@ -88,56 +88,48 @@ static fw_status parse_progress(const char *v, fw_progress_kind *out, fw_error *
     return fw_fail(err, FW_EINPUT, "--progress %s: use auto, bar, lines or none", v);
 }
 
-/* One option or the study file at a.i; FW_OK and a.i moved past it. */
-static fw_status parse_one(fw_args *a, sweep_opts *o, fw_error *err)
+static fw_status opt_jobs(void *ctx, const char *name, const char *v, fw_error *err)
 {
-    fw_sweep_def *def = &o->def;
-    const char *v;
-    if (fw_args_opt(a, "--db", &v, err))
-        def->db = v;
-    else if (fw_args_opt(a, "--jobs", &v, err))
-        return err->status ? err->status : parse_count("--jobs", v, 1, 1024, &def->jobs, err);
-    else if (fw_args_opt(a, "--limit", &v, err))
-        return err->status ? err->status
-                           : parse_count("--limit", v, 1, INT_MAX, &def->limit, err);
-    else if (fw_args_opt(a, "--sumo", &v, err)) {
-        if (err->status || fw_traffic_mode_parse(v, &def->mode, err) ||
-            fw_check_sumo_mode("--sumo", &def->mode, err))
-            return err->status;
-        if (def->mode.kind == FW_TRAFFIC_GUI)
-            return fw_fail(err, FW_EINPUT, "--sumo gui: a sweep runs without windows; use "
-                                           "fairway run for a look at one run");
-    } else if (fw_args_opt(a, "--keep", &v, err))
-        def->keep_dir = v;
-    else if (fw_args_opt(a, "--progress", &v, err))
-        return err->status ? err->status : parse_progress(v, &def->progress, err);
-    else if (fw_args_flag(a, "--retry-failed"))
-        def->retry_failed = true;
-    else if (fw_args_flag(a, "--dry-run"))
-        o->dry = true;
-    else if (err->status)
+    return parse_count(name, v, 1, 1024, ctx, err);
+}
+
+static fw_status opt_limit(void *ctx, const char *name, const char *v, fw_error *err)
+{
+    return parse_count(name, v, 1, INT_MAX, ctx, err);
+}
+
+static fw_status opt_progress(void *ctx, const char *name, const char *v, fw_error *err)
+{
+    (void)name;
+    return parse_progress(v, ctx, err);
+}
+
+static fw_status opt_sumo(void *ctx, const char *name, const char *v, fw_error *err)
+{
+    fw_traffic_mode *mode = ctx;
+    if (fw_traffic_mode_parse(v, mode, err) || fw_check_sumo_mode(name, mode, err))
         return err->status;
-    else if (a->argv[a->i][0] == '-')
-        return fw_fail(err, FW_EINPUT, "unknown option %s (see fairway sweep --help)",
-                       a->argv[a->i]);
-    else if (!o->file)
-        o->file = a->argv[a->i++];
-    else
-        return fw_fail(err, FW_EINPUT, "one study file at a time (got %s and %s)", o->file,
-                       a->argv[a->i]);
-    return err->status;
+    if (mode->kind == FW_TRAFFIC_GUI)
+        return fw_fail(err, FW_EINPUT, "--sumo gui: a sweep runs without windows; use "
+                                       "fairway run for a look at one run");
+    return FW_OK;
 }
 
 /* Returns -1 to go on, else the exit code. */
 static int parse_options(int argc, char **argv, sweep_opts *o, fw_error *err)
 {
-    fw_args a = {argc, argv, 0};
-    while (a.i < a.argc) {
-        if (fw_args_help(&a, help))
-            return 0;
-        if (parse_one(&a, o, err))
-            return fw_report(err);
-    }
+    fw_sweep_def *def = &o->def;
+    const fw_opt opts[] = {
+        FW_OPT("--db", FW_OPT_TEXT, &def->db),      FW_OPT_FN("--jobs", opt_jobs, &def->jobs),
+        FW_OPT_FN("--limit", opt_limit, &def->limit), FW_OPT_FN("--sumo", opt_sumo, &def->mode),
+        FW_OPT("--keep", FW_OPT_TEXT, &def->keep_dir),
+        FW_OPT_FN("--progress", opt_progress, &def->progress),
+        FW_OPT("--retry-failed", FW_OPT_FLAG, &def->retry_failed),
+        FW_OPT("--dry-run", FW_OPT_FLAG, &o->dry),  FW_OPT_END,
+    };
+    int rc = fw_args_parse(argc, argv, "sweep", opts, help, fw_args_one_file, &o->file, err);
+    if (rc >= 0)
+        return rc;
     if (!o->file)
         return fw_report((fw_fail(err, FW_EINPUT, "no study file (see fairway sweep --help)"), err));
     if (!o->def.db && !o->dry)

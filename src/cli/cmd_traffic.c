@@ -135,55 +135,23 @@ static int run(const char *network, long ships, double density, double duration,
 
 int fw_cmd_traffic(int argc, char **argv)
 {
-    fw_args a = {argc, argv, 0};
     fw_error err = {0};
     const char *network = "channel", *mode = "embedded", *log = "fairway-traffic.log",
-               *routes = "fairway-traffic.rou.xml", *v;
+               *routes = "fairway-traffic.rou.xml";
     long ships = 50, seed = 1, every = 60;
     double density = 1.0, duration = 600.0, step = 1.0, radius = 6.0, speed = 12.0;
-    while (a.i < a.argc) {
-        fw_status st = FW_OK;
-        if (fw_args_help(&a, help))
-            return 0;
-        else if (fw_args_opt(&a, "--network", &v, &err)) {
-            if (!v)
-                return fw_report(&err);
-            network = v;
-        } else if (fw_args_opt(&a, "--ships", &v, &err)) {
-            st = fw_parse_long("--ships", v, &ships, &err);
-        } else if (fw_args_opt(&a, "--density", &v, &err)) {
-            st = fw_parse_double("--density", v, &density, &err);
-        } else if (fw_args_opt(&a, "--duration", &v, &err)) {
-            st = fw_parse_double("--duration", v, &duration, &err);
-        } else if (fw_args_opt(&a, "--step", &v, &err)) {
-            st = fw_parse_double("--step", v, &step, &err);
-        } else if (fw_args_opt(&a, "--radius", &v, &err)) {
-            st = fw_parse_double("--radius", v, &radius, &err);
-        } else if (fw_args_opt(&a, "--speed", &v, &err)) {
-            st = fw_parse_double("--speed", v, &speed, &err);
-        } else if (fw_args_opt(&a, "--seed", &v, &err)) {
-            st = fw_parse_long("--seed", v, &seed, &err);
-        } else if (fw_args_opt(&a, "--every", &v, &err)) {
-            st = fw_parse_long("--every", v, &every, &err);
-        } else if (fw_args_opt(&a, "--sumo", &v, &err)) {
-            if (!v)
-                return fw_report(&err);
-            mode = v;
-        } else if (fw_args_opt(&a, "--log", &v, &err)) {
-            if (!v)
-                return fw_report(&err);
-            log = v;
-        } else if (fw_args_opt(&a, "--routes", &v, &err)) {
-            if (!v)
-                return fw_report(&err);
-            routes = v;
-        } else {
-            fprintf(stderr, "fairway traffic: unknown option '%s' (see --help)\n", a.argv[a.i]);
-            return 2;
-        }
-        if (st)
-            return fw_report(&err);
-    }
+    const fw_opt opts[] = {
+        FW_OPT("--network", FW_OPT_TEXT, &network), FW_OPT("--sumo", FW_OPT_TEXT, &mode),
+        FW_OPT("--ships", FW_OPT_LONG, &ships),     FW_OPT("--seed", FW_OPT_LONG, &seed),
+        FW_OPT("--density", FW_OPT_DOUBLE, &density), FW_OPT("--step", FW_OPT_DOUBLE, &step),
+        FW_OPT("--duration", FW_OPT_DOUBLE, &duration), FW_OPT("--every", FW_OPT_LONG, &every),
+        FW_OPT("--radius", FW_OPT_DOUBLE, &radius), FW_OPT("--speed", FW_OPT_DOUBLE, &speed),
+        FW_OPT("--log", FW_OPT_TEXT, &log),         FW_OPT("--routes", FW_OPT_TEXT, &routes),
+        FW_OPT_END,
+    };
+    int rc = fw_args_parse(argc, argv, "traffic", opts, help, NULL, NULL, &err);
+    if (rc >= 0)
+        return rc;
     if (ships < 0 || ships > 100000)
         return fw_report((fw_fail(&err, FW_EINPUT, "--ships %ld: must be 0..100000", ships), &err));
     if (!(duration > 0.0 && duration <= 30 * 86400.0))

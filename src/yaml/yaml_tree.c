@@ -473,8 +473,8 @@ fw_status yt_opt_bool(const yt_doc *doc, const yt_node *map, const char *path, c
     return fw_fail_at(err, doc->file, n->line, field, "expected true or false");
 }
 
-static fw_status child(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                       yt_kind kind, bool required, const yt_node **out, fw_error *err)
+fw_status yt_child(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                   yt_kind kind, bool required, const yt_node **out, fw_error *err)
 {
     char field[256];
     yt_path(field, sizeof field, path, key);
@@ -487,30 +487,6 @@ static fw_status child(const yt_doc *doc, const yt_node *map, const char *path, 
                           kind == YT_MAP ? "mapping of fields" : "list");
     *out = n;
     return FW_OK;
-}
-
-fw_status yt_req_map(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                     const yt_node **out, fw_error *err)
-{
-    return child(doc, map, path, key, YT_MAP, true, out, err);
-}
-
-fw_status yt_opt_map(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                     const yt_node **out, fw_error *err)
-{
-    return child(doc, map, path, key, YT_MAP, false, out, err);
-}
-
-fw_status yt_req_seq(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                     const yt_node **out, fw_error *err)
-{
-    return child(doc, map, path, key, YT_SEQ, true, out, err);
-}
-
-fw_status yt_opt_seq(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                     const yt_node **out, fw_error *err)
-{
-    return child(doc, map, path, key, YT_SEQ, false, out, err);
 }
 
 fw_status yt_top_map(const yt_doc *doc, const char *const *keys, const char *what, char *name,

@@ -69,14 +69,16 @@ fw_status yt_opt_bool(const yt_doc *doc, const yt_node *map, const char *path, c
                       bool *out, fw_error *err);
 /* Fetches a child map or sequence, failing with a located error when it is
  * missing (req) or of the wrong kind. */
-fw_status yt_req_map(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                     const yt_node **out, fw_error *err);
-fw_status yt_opt_map(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                     const yt_node **out, fw_error *err);
-fw_status yt_req_seq(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                     const yt_node **out, fw_error *err);
-fw_status yt_opt_seq(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
-                     const yt_node **out, fw_error *err);
+fw_status yt_child(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
+                   yt_kind kind, bool required, const yt_node **out, fw_error *err);
+#define yt_req_map(doc, map, path, key, out, err) \
+    yt_child(doc, map, path, key, YT_MAP, true, out, err)
+#define yt_opt_map(doc, map, path, key, out, err) \
+    yt_child(doc, map, path, key, YT_MAP, false, out, err)
+#define yt_req_seq(doc, map, path, key, out, err) \
+    yt_child(doc, map, path, key, YT_SEQ, true, out, err)
+#define yt_opt_seq(doc, map, path, key, out, err) \
+    yt_child(doc, map, path, key, YT_SEQ, false, out, err)
 
 /* Parses a scalar node as a finite number; fails with a located error. */
 fw_status yt_number(const yt_doc *doc, const yt_node *node, const char *field, double *out,
