@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "core/files.h"
+#include "core/json.h"
 #include "avoid/helm_search.h"
 #include "core/idmap.h"
 #include "core/mem.h"
@@ -202,23 +203,31 @@ fw_encounter *fw_records_encounters(fw_records *r, int *n)
     return r->e;
 }
 
+/* summary.json's numbers: null when not finite */
 static void num(FILE *f, const char *fmt, double v)
 {
-    if (isfinite(v))
-        fprintf(f, fmt, v);
-    else
-        fputs("null", f);
+    fw_json_number(f, v, fmt);
+}
+
+/* a text field from files (scenario name, ship ids and types): escaped */
+static void str(FILE *f, const char *key, const char *v)
+{
+    fprintf(f, "\"%s\": ", key);
+    fw_json_string(f, v);
 }
 
 void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, int n,
                      const char *ind)
 {
     fprintf(f, "%s{\n", ind);
-    fprintf(f, "%s  \"scenario\": \"%s\", \"status\": \"%s\", \"t_end_s\": %.1f,\n", ind,
-            s->scenario, fw_run_status_name(s->status), s->t_end);
+    fprintf(f, "%s  ", ind);
+    str(f, "scenario", s->scenario);
+    fprintf(f, ", \"status\": \"%s\", \"t_end_s\": %.1f,\n", fw_run_status_name(s->status), s->t_end);
     fprintf(f, "%s  \"min_distance_m\": ", ind);
     num(f, "%.1f", s->min_dist);
-    fprintf(f, ", \"closest_target\": \"%s\", \"min_hull_distance_m\": ", s->min_dist_id);
+    fprintf(f, ", ");
+    str(f, "closest_target", s->min_dist_id);
+    fprintf(f, ", \"min_hull_distance_m\": ");
     num(f, "%.1f", s->min_hull);
     fprintf(f, ",\n");
     fprintf(f, "%s  \"domain_entered\": %s, \"collision\": %s, \"colregs_ok\": %s,\n", ind,
@@ -262,9 +271,13 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {
         const fw_encounter *x = &e[i];
-        fprintf(f, "%s\n%s    {\"id\": \"%s\", \"type\": \"%s\", \"situation\": \"%s\", "
-                   "\"t_detect_s\": %.1f, \"dcpa_m\": %.1f, \"tcpa_s\": %.1f, \"threat\": %s, ",
-                i ? "," : "", ind, x->id, x->type, fw_situation_name(x->situation), x->t_detect, x->dcpa0, x->tcpa0,
+        fprintf(f, "%s\n%s    {", i ? "," : "", ind);
+        str(f, "id", x->id);
+        fprintf(f, ", ");
+        str(f, "type", x->type);
+        fprintf(f, ", \"situation\": \"%s\", \"t_detect_s\": %.1f, \"dcpa_m\": %.1f, "
+                   "\"tcpa_s\": %.1f, \"threat\": %s, ",
+                fw_situation_name(x->situation), x->t_detect, x->dcpa0, x->tcpa0,
                 x->threat ? "true" : "false");
         fprintf(f, "\"t_act_s\": ");
         num(f, "%.1f", x->t_act);
