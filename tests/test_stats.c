@@ -222,6 +222,136 @@ static void test_wilson(void)
     CHECK_NEAR(hit / 4000.0, 0.95, 0.03);
 }
 
+/* The gamma function's pieces against closed forms: P(1, x) = 1 - e^-x,
+ * P(2, x) = 1 - (1 + x) e^-x; the quantile inverts the function. */
+static void test_gamma(void)
+{
+    CHECK_NEAR(fw_inc_gamma(1.0, 0.7), 1.0 - exp(-0.7), 1e-14);
+    CHECK_NEAR(fw_inc_gamma(2.0, 3.0), 1.0 - 4.0 * exp(-3.0), 1e-14);
+    CHECK_NEAR(fw_inc_gamma(2.0, 30.0), 1.0 - 31.0 * exp(-30.0), 1e-14);
+    /* P(1/2, x) = erf(sqrt x) */
+    CHECK_NEAR(fw_inc_gamma(0.5, 2.0), erf(sqrt(2.0)), 1e-14);
+    for (double a = 0.5; a < 200.0; a *= 3.0)
+        for (double p = 0.01; p < 1.0; p += 0.245)
+            CHECK_NEAR(fw_inc_gamma(a, fw_gamma_quantile(p, a)), p, 1e-12);
+    /* chi-square table (any statistics text): 95th percentile of 1, 10 df */
+    CHECK_NEAR(fw_chi2_quantile(0.95, 1), 3.841, 5e-4);
+    CHECK_NEAR(fw_chi2_quantile(0.95, 10), 18.307, 5e-4);
+    CHECK_NEAR(fw_chi2_quantile(0.025, 6), 1.237, 5e-4);
+    CHECK(isnan(fw_gamma_quantile(0.5, 0.0)) && fw_gamma_quantile(0.0, 2.0) == 0.0);
+}
+
+/* Garwood's exact Poisson interval against the published 95% table (e.g.
+ * Ulm 1990, Am J Epidemiol 131:373): k = 0 gives [0, 3.689], the "rule of
+ * three" with its exact value -ln 0.025. */
+static void test_poisson_exact(void)
+{
+    static const double tab[][3] = {{0, 0.0, 3.689}, {1, 0.0253, 5.572}, {2, 0.242, 7.225},
+                                    {3, 0.619, 8.767}, {5, 1.623, 11.668}, {10, 4.795, 18.390}};
+    for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++) {
+        fw_estimate e = fw_poisson_exact((long long)tab[i][0], 1.0, 0.95);
+        CHECK_NEAR(e.lo, tab[i][1], 5e-4 * fmax(1.0, tab[i][1]));
+        CHECK_NEAR(e.hi, tab[i][2], 5e-4 * tab[i][2]);
+        CHECK(e.mean == tab[i][0]);
+    }
+    CHECK_NEAR(fw_poisson_exact(0, 1.0, 0.95).hi, -log(0.025), 1e-10);
+    /* 3 events in 10 hours: 0.3 per hour, [0.0619, 0.877] */
+    fw_estimate e = fw_poisson_exact(3, 10.0, 0.95);
+    CHECK_NEAR(e.mean, 0.3, 1e-15);
+    CHECK_NEAR(e.lo, 0.0619, 5e-5);
+    CHECK_NEAR(e.hi, 0.8767, 5e-5);
+    /* 90%: k = 0 gives -ln 0.05 = 2.996 */
+    CHECK_NEAR(fw_poisson_exact(0, 1.0, 0.90).hi, 2.996, 5e-4);
+    CHECK(isnan(fw_poisson_exact(1, 0.0, 0.95).mean) && isnan(fw_poisson_exact(-1, 1, 0.95).hi));
+}
+
+/* Clopper-Pearson against its closed form at k = 0 (1 - (alpha/2)^(1/n))
+ * and published values (e.g. Newcombe 1998, Stat Med 17:857, table I). */
+static void test_clopper_pearson(void)
+{
+    fw_estimate e = fw_clopper_pearson(0, 10, 0.95);
+    CHECK(e.lo == 0.0 && e.mean == 0.0);
+    CHECK_NEAR(e.hi, 0.3085, 5e-5);
+    CHECK_NEAR(fw_clopper_pearson(0, 20, 0.95).hi, 1.0 - pow(0.025, 1.0 / 20), 1e-10);
+    CHECK_NEAR(fw_clopper_pearson(0, 20, 0.95).hi, 0.1684, 5e-5);
+    e = fw_clopper_pearson(3, 10, 0.95);
+    CHECK_NEAR(e.lo, 0.0667, 5e-5);
+    CHECK_NEAR(e.hi, 0.6525, 5e-5);
+    e = fw_clopper_pearson(1, 20, 0.95);
+    CHECK_NEAR(e.lo, 0.00127, 5e-6);
+    CHECK_NEAR(e.hi, 0.2487, 5e-5);
+    /* symmetric: k of n mirrors n - k */
+    fw_estimate a = fw_clopper_pearson(4, 17, 0.95), b = fw_clopper_pearson(13, 17, 0.95);
+    CHECK_NEAR(a.lo, 1.0 - b.hi, 1e-12);
+    CHECK_NEAR(a.hi, 1.0 - b.lo, 1e-12);
+    CHECK(fw_clopper_pearson(5, 5, 0.95).hi == 1.0);
+    CHECK(isnan(fw_clopper_pearson(1, 0, 0.95).mean));
+}
+
+/* The conditional binomial difference: 6 events against 0 is significant at
+ * 95% (two-sided binomial p = 2 / 64 = 0.031), 5 against 0 is not (0.0625). */
+static void test_count_difference(void)
+{
+    fw_estimate e = fw_count_difference(0, 6, 1.0, 0.95);
+    CHECK(e.mean == -6.0 && e.n == 6);
+    CHECK_NEAR(e.lo, -6.0, 1e-12);
+    CHECK_NEAR(e.hi, 6.0 * (2.0 * (1.0 - pow(0.025, 1.0 / 6)) - 1.0), 1e-10);
+    CHECK(e.hi < 0.0);
+    e = fw_count_difference(0, 5, 1.0, 0.95);
+    CHECK(e.lo < 0.0 && e.hi > 0.0);
+    /* scaled to a rate: 12 - 4 events in 20 hours is 0.4 per hour */
+    e = fw_count_difference(12, 4, 1.0 / 20.0, 0.95);
+    CHECK_NEAR(e.mean, 0.4, 1e-15);
+    fw_estimate p = fw_clopper_pearson(12, 16, 0.95);
+    CHECK_NEAR(e.lo, 16.0 * (2.0 * p.lo - 1.0) / 20.0, 1e-12);
+    /* binomial test of 12 of 16 at p = 1/2: two-sided 0.077, not significant */
+    CHECK(e.lo < 0.0);
+    e = fw_count_difference(0, 0, 1.0, 0.95);
+    CHECK(e.mean == 0.0 && isnan(e.lo) && isnan(e.hi));
+}
+
+/* The bootstrap: reproducible from its seed, another seed another interval,
+ * the point estimate the statistic of the data, the interval around it. */
+static void test_bootstrap(void)
+{
+    double x[30], y[30];
+    rng_state = 99;
+    for (int i = 0; i < 30; i++) {
+        x[i] = 100.0 + 20.0 * normal();
+        y[i] = 1.0 + (double)(i % 4);
+    }
+    fw_estimate a = fw_bootstrap_median(x, 30, 2000, 1, 0.95);
+    fw_estimate b = fw_bootstrap_median(x, 30, 2000, 1, 0.95);
+    CHECK(a.lo == b.lo && a.hi == b.hi && a.mean == b.mean);
+    double s[30];
+    for (int i = 0; i < 30; i++)
+        s[i] = x[i];
+    int k = fw_sort(s, 30);
+    CHECK(a.mean == fw_quantile_sorted(s, k, 0.5) && a.n == 30);
+    CHECK(a.lo <= a.mean && a.mean <= a.hi && a.hi - a.lo < 40.0);
+    /* the ratio of sums; a constant ratio has a zero-width interval */
+    double num[30], sx = 0.0, sy = 0.0;
+    for (int i = 0; i < 30; i++) {
+        num[i] = 0.25 * y[i];
+        sx += x[i];
+        sy += y[i];
+    }
+    fw_estimate r = fw_bootstrap_ratio(num, y, 30, 500, 7, 0.95);
+    CHECK_NEAR(r.mean, 0.25, 1e-15);
+    CHECK_NEAR(r.lo, 0.25, 1e-15);
+    CHECK_NEAR(r.hi, 0.25, 1e-15);
+    r = fw_bootstrap_ratio(x, y, 30, 500, 7, 0.95);
+    CHECK_NEAR(r.mean, sx / sy, 1e-12);
+    CHECK(r.lo < r.mean && r.mean < r.hi);
+    /* a ratio's resampled values are all different: another seed moves the ends */
+    fw_estimate r2 = fw_bootstrap_ratio(x, y, 30, 500, 8, 0.95);
+    CHECK(r2.lo != r.lo && r2.hi != r.hi);
+    CHECK(fw_bootstrap_ratio(x, y, 30, 500, 7, 0.95).lo == r.lo);
+    /* NaN units are left out */
+    x[3] = NAN;
+    CHECK(fw_bootstrap_median(x, 30, 100, 1, 0.95).n == 29);
+}
+
 int main(void)
 {
     TEST_RUN(test_t_table);
@@ -232,5 +362,10 @@ int main(void)
     TEST_RUN(test_paired);
     TEST_RUN(test_percentiles);
     TEST_RUN(test_wilson);
+    TEST_RUN(test_gamma);
+    TEST_RUN(test_poisson_exact);
+    TEST_RUN(test_clopper_pearson);
+    TEST_RUN(test_count_difference);
+    TEST_RUN(test_bootstrap);
     return TEST_EXIT();
 }
