@@ -2,12 +2,19 @@
 """Pictures of one `fairway report` directory (drawn from its CSVs only).
 
 Writes into the report directory (or --out):
-  rates.png            encounters, domain violations, near misses, manoeuvres per own-ship hour,
-                       path lengthening and time lost against domain size, with interval bars
+  rates.png            encounters, domain violations, near misses, collisions, runs with a
+                       collision, manoeuvres per own-ship hour, path lengthening and time lost
+                       against domain size, with interval bars (each measure's own interval:
+                       summary.csv's method column)
   encounter_types.png  own-ship encounters per hour by type (head-on, overtaking, crossing)
   cpa_hist.png         CPA histograms of the own ship's encounters, one panel per domain size
   traffic.png          traffic-level encounters per 1000 ship-hours by type
   paired.png           paired differences from the reference domain size, with interval bars
+  behaviour.png        colregs - blind background traffic (a study that swept it), paired
+
+Domain sizes are discrete settings: markers with interval bars, no lines between them.  A
+series is one density and background behaviour.  A measure that is 0 everywhere with no
+interval above 0 gets no invented axis range: the panel says so.
 
     /usr/bin/python3 analysis/plot_study.py REPORT_DIR [--level 0.95] [--out DIR]
 
@@ -30,6 +37,8 @@ RATES = [
     ("encounters_per_h", "Own-ship encounters", "encounters per ship-hour"),
     ("domain_violations_per_h", "Domain violations", "violations per ship-hour"),
     ("near_misses_per_h", "Near misses", "near misses per ship-hour"),
+    ("collisions_per_h", "Collisions (hull contact)", "collisions per ship-hour"),
+    ("collision_run_fraction", "Runs with a collision", "share of runs"),
     ("manoeuvres_per_h", "Avoidance manoeuvres", "manoeuvres per ship-hour"),
     ("path_lengthening_m_per_h", "Path lengthening", "metres per ship-hour"),
     ("time_lost_s_per_h", "Time lost", "seconds per ship-hour"),
@@ -48,6 +57,7 @@ def fail(msg):
 def load(d):
     need = {
         "summary.csv": {"density", "domain_m", "measure", "n", "mean", "ci_low", "ci_high"},
+        "behaviour.csv": {"density", "domain_m", "measure", "n", "mean", "ci_low", "ci_high"},
         "paired.csv": {"density", "domain_m", "reference_m", "measure", "n", "mean", "ci_low", "ci_high"},
         "traffic.csv": {"density", "domain_m", "type", "n", "mean_per_1000_ship_h", "ci_low", "ci_high"},
         "cpa_hist.csv": {"density", "domain_m", "set", "bin_low_m", "bin_high_m", "count"},
@@ -62,6 +72,9 @@ def load(d):
         missing = cols - set(df.columns)
         if missing:
             fail(f"{path}: not a fairway report table (no column {', '.join(sorted(missing))})")
+        if "behaviour" not in df.columns:
+            df["behaviour"] = ""
+        df["behaviour"] = df["behaviour"].fillna("").astype(str)
         out[name] = df
     return out
 
@@ -81,13 +94,32 @@ def offsets(values, k, n):
 
 
 def series(ax, df, x, mean, label, k, n, **kw):
+    """Markers with interval bars at each domain size: the sizes are settings, not a continuum."""
     df = df.sort_values(x)
-    ax.errorbar(df[x] + offsets(df[x], k, n), df[mean], yerr=yerr(df, mean), marker="o", ms=4,
-                capsize=3, lw=1.2, label=label, **kw)
+    ax.errorbar(df[x] + offsets(df[x], k, n), df[mean], yerr=yerr(df, mean), marker="o", ms=5,
+                capsize=3, ls="none", elinewidth=1.2, label=label, **kw)
+    ax.set_xticks(sorted(df[x].unique()))
 
 
-def density_label(dens, n):
-    return f"density {dens:g}" if n > 1 else None
+def settings(df):
+    """The series of a table: its (density, behaviour) pairs."""
+    return sorted({(d, b) for d, b in zip(df["density"], df["behaviour"])})
+
+
+def setting_label(key, keys):
+    dens, beh = key
+    parts = []
+    if len({k[0] for k in keys}) > 1:
+        parts.append(f"density {dens:g}")
+    if len({k[1] for k in keys}) > 1:
+        parts.append(f"{beh} traffic")
+    return ", ".join(parts) or None
+
+
+def all_zero(sub):
+    """Every mean and every interval end 0 (or absent): nothing to scale an axis on."""
+    vals = pd.concat([sub["mean"], sub["ci_low"], sub["ci_high"]]).dropna()
+    return len(sub) > 0 and (vals == 0).all()
 
 
 def empty(ax, text):
@@ -100,30 +132,36 @@ def finish(fig, path):
     plt.close(fig)
 
 
-def plot_rates(summary, level, path, paired=None):
+def plot_rates(summary, level, path, paired=None, title_override=None):
     """rates.png, or with `paired` the differences from the reference (paired.png)."""
     data = summary if paired is None else paired
-    fig, axes = plt.subplots(2, 3, figsize=(13, 7.5))
-    densities = sorted(data["density"].unique())
+    fig, axes = plt.subplots(2, 4, figsize=(17, 7.5))
+    keys = settings(data)
     for ax, (name, title, unit) in zip(axes.flat, RATES):
         sub = data[data.measure == name]
-        for k, dens in enumerate(densities):
-            s = sub[sub.density == dens]
+        for k, key in enumerate(keys):
+            s = sub[(sub.density == key[0]) & (sub.behaviour == key[1])]
             if len(s):
-                series(ax, s, "domain_m", "mean", density_label(dens, len(densities)), k, len(densities))
+                series(ax, s, "domain_m", "mean", setting_label(key, keys), k, len(keys))
         if paired is not None:
             ax.axhline(0.0, color="k", lw=0.7)
         if not len(sub):
             empty(ax, "no data")
+        elif all_zero(sub):
+            # no range to show: one tick at 0 rather than matplotlib's invented +-0.05
+            ax.set_yticks([0.0])
+            empty(ax, "0 in every setting")
         ax.set_title(title)
         ax.set_xlabel(DOMAIN_LABEL)
         ax.set_ylabel(unit if paired is None else f"difference, {unit}")
         ax.grid(alpha=0.3)
-        if len(densities) > 1 and len(sub):
+        if len(keys) > 1 and len(sub) and not all_zero(sub):
             ax.legend(fontsize=7)
     pct = f"{100 * level:.0f}%"
     if paired is None:
-        fig.suptitle(f"Mean over replications with {pct} confidence intervals")
+        fig.suptitle(f"Each measure with its {pct} interval (method per measure: summary.csv)")
+    elif title_override:
+        fig.suptitle(title_override)
     else:
         ref = ", ".join(f"{r:g} m" for r in sorted(paired["reference_m"].unique())) or "-"
         fig.suptitle(f"Paired differences from the {ref} domain (same traffic per replication), {pct} intervals")
@@ -131,13 +169,15 @@ def plot_rates(summary, level, path, paired=None):
 
 
 def plot_types(summary, level, path):
-    densities = sorted(summary["density"].unique())
-    fig, axes = plt.subplots(1, len(densities), figsize=(6.5 * len(densities), 4.5), squeeze=False)
-    for ax, dens in zip(axes.flat, densities):
+    keys = settings(summary)
+    fig, axes = plt.subplots(1, len(keys), figsize=(6.5 * len(keys), 4.5), squeeze=False)
+    for ax, key in zip(axes.flat, keys):
         for k, (name, label) in enumerate(TYPES):
-            s = summary[(summary.measure == name) & (summary.density == dens)]
+            s = summary[(summary.measure == name) & (summary.density == key[0]) &
+                        (summary.behaviour == key[1])]
             series(ax, s, "domain_m", "mean", label, k, len(TYPES))
-        ax.set_title(f"Own-ship encounters by type{f', density {dens:g}' if len(densities) > 1 else ''}")
+        lab = setting_label(key, keys)
+        ax.set_title(f"Own-ship encounters by type{f', {lab}' if lab else ''}")
         ax.set_xlabel(DOMAIN_LABEL)
         ax.set_ylabel("encounters per ship-hour")
         ax.grid(alpha=0.3)
@@ -149,7 +189,7 @@ def plot_types(summary, level, path):
 def plot_cpa(hist, path):
     own = hist[hist.set == "own"]
     domains = sorted(own["domain_m"].unique())
-    densities = sorted(own["density"].unique())
+    keys = settings(own)
     n = max(len(domains), 1)
     cols = min(4, n)
     rows = math.ceil(n / cols)
@@ -159,13 +199,14 @@ def plot_cpa(hist, path):
     if not domains:
         empty(axes.flat[0], "no own-ship encounters with a CPA")
     for ax, dom in zip(axes.flat, domains):
-        for dens in densities:
-            s = own[(own.domain_m == dom) & (own.density == dens)].sort_values("bin_low_m")
+        for key in keys:
+            s = own[(own.domain_m == dom) & (own.density == key[0]) &
+                    (own.behaviour == key[1])].sort_values("bin_low_m")
             if not len(s):
                 continue
             edges = np.append(s["bin_low_m"].to_numpy(), s["bin_high_m"].to_numpy()[-1])
-            ax.stairs(s["count"].to_numpy(), edges, fill=len(densities) == 1, alpha=0.7,
-                      label=density_label(dens, len(densities)))
+            ax.stairs(s["count"].to_numpy(), edges, fill=len(keys) == 1, alpha=0.7,
+                      label=setting_label(key, keys))
         ax.axvline(dom, color="k", ls="--", lw=1, label="domain size")
         ax.set_title(f"domain {dom:g} m")
         ax.set_xlabel("CPA: closest centre distance (metres)")
@@ -177,10 +218,13 @@ def plot_cpa(hist, path):
 
 
 def plot_traffic(traffic, level, path):
-    densities = sorted(traffic["density"].unique())
-    fig, axes = plt.subplots(1, len(densities), figsize=(6.5 * len(densities), 4.5), squeeze=False)
-    for ax, dens in zip(axes.flat, densities):
-        t = traffic[(traffic.density == dens) & traffic.mean_per_1000_ship_h.notna()]
+    keys = settings(traffic)
+    fig, axes = plt.subplots(1, len(keys), figsize=(6.5 * len(keys), 4.5), squeeze=False)
+    for ax, key in zip(axes.flat, keys):
+        dens = key[0]
+        lab = setting_label(key, keys)
+        t = traffic[(traffic.density == dens) & (traffic.behaviour == key[1]) &
+                    traffic.mean_per_1000_ship_h.notna()]
         for k, typ in enumerate(TRAFFIC_TYPES):
             s = t[t.type == typ]
             if len(s):
@@ -189,7 +233,7 @@ def plot_traffic(traffic, level, path):
             empty(ax, "no traffic-level exposure recorded")
         else:
             ax.legend(fontsize=8)
-        ax.set_title(f"Traffic-level encounters{f', density {dens:g}' if len(densities) > 1 else ''}")
+        ax.set_title(f"Traffic-level encounters{f', {lab}' if lab else ''}")
         ax.set_xlabel(DOMAIN_LABEL)
         ax.set_ylabel("encounters per 1000 ship-hours")
         ax.grid(alpha=0.3)
@@ -216,7 +260,14 @@ def main():
     plot_cpa(t["cpa_hist.csv"], os.path.join(out, "cpa_hist.png"))
     plot_traffic(t["traffic.csv"], a.level, os.path.join(out, "traffic.png"))
     plot_rates(t["summary.csv"], a.level, os.path.join(out, "paired.png"), paired=t["paired.csv"])
-    print(f"wrote {out}/rates.png, encounter_types.png, cpa_hist.png, traffic.png, paired.png")
+    wrote = "rates.png, encounter_types.png, cpa_hist.png, traffic.png, paired.png"
+    if len(t["behaviour.csv"]):
+        plot_rates(t["summary.csv"], a.level, os.path.join(out, "behaviour.png"),
+                   paired=t["behaviour.csv"],
+                   title_override=f"colregs - blind background traffic (paired by replication), "
+                                  f"{100 * a.level:.0f}% intervals (counts: exact conditional)")
+        wrote += ", behaviour.png"
+    print(f"wrote {out}/{wrote}")
 
 
 if __name__ == "__main__":

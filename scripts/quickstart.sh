@@ -2,8 +2,8 @@
 # quickstart.sh main|test - install what is missing, build, then run the main job or the tests.
 #
 #   main  runs the default Monte Carlo study (scenarios/studies/strait-domain.yaml:
-#         the C-3 crossing the strait in heavy traffic, 4 domain sizes x 20
-#         replications of one simulated hour) into out/strait-domain.db and writes its
+#         the C-3 crossing the strait in heavy traffic, 4 domain sizes x colregs and
+#         blind background ships x 20 replications of one simulated hour) into out/strait-domain.db and writes its
 #         report (CSV, PNG, Markdown) into out/strait-domain-report/; before that it
 #         prints the C-3 manoeuvring report (out/manoeuvres/) and runs the paper's five
 #         encounter cases and the 22 Imazu cases (out/runs/, out/imazu.png)

@@ -13,6 +13,7 @@
 #include "study/report.h"
 #include "study/schema.h"
 #include "study_db.h"
+#include "study/stats.h"
 #include "test.h"
 
 static char dir[256];
@@ -143,8 +144,11 @@ static void test_hand_summary(void)
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=crossing_give_way_per_h", "mean"), 4.0, 1e-9);
     /* domain violations 2, 1, 3 of 4, 6, 5 encounters in half an hour */
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=domain_violations_per_h", "mean"), 4.0, 1e-9);
-    CHECK_NEAR(csv_get(p, "domain_m=100,measure=domain_violation_fraction", "mean"),
-               (0.5 + 1.0 / 6.0 + 0.6) / 3.0, 1e-9);
+    /* ... pooled: 6 of 15, not the mean of the runs' shares */
+    CHECK_NEAR(csv_get(p, "domain_m=100,measure=domain_violation_fraction", "mean"), 0.4, 1e-9);
+    /* 6 violations in 1.5 h: 4 per hour, Garwood [2.202, 13.06] / 1.5 */
+    CHECK_NEAR(csv_get(p, "domain_m=100,measure=domain_violations_per_h", "ci_low"), 2.202 / 1.5, 5e-4);
+    CHECK_NEAR(csv_get(p, "domain_m=100,measure=domain_violations_per_h", "ci_high"), 13.06 / 1.5, 5e-3);
     CHECK_NEAR(csv_get(p, "domain_m=500,measure=domain_violations_per_h", "mean"), 2.0 / 3.0, 1e-9);
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=near_misses_per_h", "mean"), 2.0, 1e-9);
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=collisions_per_h", "mean"), 2.0 / 3.0, 1e-9);
@@ -183,11 +187,16 @@ static void test_hand_paired(void)
     CHECK_NEAR(csv_get(p, w, "sd"), sd, 1e-9);
     CHECK_NEAR(csv_get(p, w, "ci_low"), 20.0 / 3.0 - t2 * sd / sqrt(3.0), 1e-7);
     CHECK(csv_get(p, w, "significant") == 1);
-    /* domain violations per hour: -4, -2, -4 */
+    /* domain violations per hour: -4, -2, -4, i.e. 1 event at 500 m against 6 at 100 m in
+     * 1.5 h; given the 7, 1 of 7 at 500 m: Clopper-Pearson [0.00361, 0.5787], so the
+     * difference is 7 (2p - 1) / 1.5 in [-4.63, 0.735]: not significant (binomial p 0.125),
+     * where the paired t said it was */
     w = "domain_m=500,measure=domain_violations_per_h";
     CHECK_NEAR(csv_get(p, w, "mean"), -10.0 / 3.0, 1e-9);
-    CHECK_NEAR(csv_get(p, w, "ci_high"), -10.0 / 3.0 + t2 * sd / sqrt(3.0), 1e-7);
-    CHECK(csv_get(p, w, "significant") == 1);
+    CHECK_NEAR(csv_get(p, w, "ci_low"), 7.0 * (2.0 * 0.00361 - 1.0) / 1.5, 1e-4);
+    CHECK_NEAR(csv_get(p, w, "ci_high"), 7.0 * (2.0 * 0.5787 - 1.0) / 1.5, 5e-4);
+    CHECK(csv_get(p, w, "significant") == 0);
+    CHECK(csv_get(p, w, "n") == 3);
     /* same traffic, same encounters: a zero difference with a zero-width interval, not significant */
     CHECK(csv_get(p, "domain_m=500,measure=encounters_per_h", "mean") == 0.0);
     CHECK(csv_get(p, "domain_m=500,measure=encounters_per_h", "significant") == 0);
@@ -253,17 +262,19 @@ static void test_hand_md(void)
     CHECK_CONTAINS(md, "# Study report: synthetic");
     CHECK_CONTAINS(md, "6 finished and counted, 1 failed, 7 in the database");
     CHECK_CONTAINS(md, "1 x \"SUMO error: vehicle teleported\"");
-    CHECK_CONTAINS(md, "| 1 | 100 | 3 | 10.0 [5.03, 15.0] |");
+    CHECK_CONTAINS(md, "| 1 | - | 100 | 3 | 10.0 [5.03, 15.0] |");
     CHECK_CONTAINS(md, "1/3 [0.061, 0.79]");
     CHECK_CONTAINS(md, "## Paired differences from the 100 m domain");
     /* paired: violations -4, -2, -4; manoeuvres 6, 6, 8; path 400, 400, 600; time lost
      * 120, 110, 180 per hour; encounters, near misses and collision runs not significant */
-    CHECK_CONTAINS(md, "| 1 | 500 | 3 | - | **-3.33 [-6.20, -0.46]** | - | - | **6.67 [3.80, 9.54]** | "
+    /* the violations' difference (1 event against 6 in 1.5 h) is no longer significant: exact */
+    CHECK_CONTAINS(md, "| 1 | - | 500 | 3 | - | - | - | - | **6.67 [3.80, 9.54]** | "
                        "**467 [180, 754]** | **137 [42.6, 231]** |");
+    CHECK_CONTAINS(md, "- domain violations /h: pooled count / pooled hours, exact Poisson (Garwood)");
     CHECK_CONTAINS(md, "Also significant somewhere: closest approach of the run (m); largest helm "
                        "(deg); helm orders per hour.");
     CHECK_CONTAINS(md, "Not drawn (--no-plots)");
-    CHECK_CONTAINS(md, "near_miss_m = 200");
+    CHECK_CONTAINS(md, "| near_miss_m | 200 |");
     CHECK(strstr(md, "schema_version") == NULL);
     free(md);
 }
@@ -338,6 +349,60 @@ static void test_refusals(void)
     expect_refused(p, "run 3 has status ok but sim_s");
 }
 
+/* The behaviour axis: the hand study sailed twice, as colregs and as blind
+ * traffic, the blind copy with every encounter inside the domain.  colregs -
+ * blind is paired per (density, domain), counts with the conditional binomial. */
+static void test_behaviours(void)
+{
+    char db_path[300], out[300], p[400];
+    snprintf(db_path, sizeof db_path, "%s/beh.db", dir);
+    snprintf(out, sizeof out, "%s/beh", dir);
+    CHECK(sdb_hand(db_path) == 0);
+    sqlite3 *db;
+    sqlite3_open(db_path, &db);
+    CHECK(sdb_exec(db, "UPDATE runs SET behaviour = 'colregs';"
+                       "CREATE TEMP TABLE r AS SELECT * FROM runs;"
+                       "UPDATE r SET run_id = run_id + 100, behaviour = 'blind';"
+                       "INSERT INTO runs SELECT * FROM r;"
+                       "CREATE TEMP TABLE e AS SELECT * FROM encounters;"
+                       "UPDATE e SET run_id = run_id + 100, domain_entered = 1;"
+                       "INSERT INTO encounters SELECT * FROM e;") == 0);
+    sqlite3_close(db);
+    fw_error err = {0};
+    fw_study_report_result res;
+    CHECK_MSG(report(db_path, out, NAN, false, &res, &err) == FW_OK, "%s", err.msg);
+    snprintf(p, sizeof p, "%s/behaviour.csv", out);
+    /* 100 m: 6 violations (colregs) against all 15 encounters (blind) in 1.5 h each */
+    const char *w = "behaviour=colregs,domain_m=100,reference_behaviour=blind,"
+                    "measure=domain_violations_per_h";
+    fw_estimate cp = fw_clopper_pearson(6, 21, 0.95);
+    CHECK_NEAR(csv_get(p, w, "mean"), -6.0, 1e-9);
+    CHECK_NEAR(csv_get(p, w, "ci_low"), 21.0 * (2.0 * cp.lo - 1.0) / 1.5, 1e-9);
+    CHECK_NEAR(csv_get(p, w, "ci_high"), 21.0 * (2.0 * cp.hi - 1.0) / 1.5, 1e-9);
+    /* 6 of 21 at p = 1/2: P(X <= 6) = 82160 / 2^21 = 0.039, two-sided 0.078: not significant */
+    CHECK(csv_get(p, w, "significant") == 0);
+    /* the same traffic otherwise: no discordant pair of collision runs, a zero difference */
+    w = "behaviour=colregs,domain_m=100,measure=collision_run_fraction";
+    CHECK(csv_get(p, w, "mean") == 0.0 && csv_get(p, w, "ci_low") == 0.0 &&
+          csv_get(p, w, "ci_high") == 0.0);
+    CHECK(csv_get(p, w, "n") == 3);
+    /* the domain-size pairs stay within a behaviour */
+    snprintf(p, sizeof p, "%s/paired.csv", out);
+    CHECK_NEAR(csv_get(p, "behaviour=blind,domain_m=500,measure=manoeuvres_per_h", "mean"),
+               20.0 / 3.0, 1e-9);
+    snprintf(p, sizeof p, "%s/report.md", out);
+    char *md = slurp(p);
+    CHECK(md != NULL);
+    if (md) {
+        CHECK_CONTAINS(md, "## Background behaviour: colregs - blind");
+        /* 1 violation against 15 at 500 m: significant; 6 against 15 at 100 m: not */
+        CHECK_CONTAINS(md, "| 1 | colregs | 100 | 3 | 0 [0, 0] | -6.00 [-10.8, 0.61] | 0 [-3.06, 3.06] |");
+        CHECK_CONTAINS(md, "| 1 | colregs | 500 | 3 | 0 [0, 0] | **-9.33 [-10.6, -4.22]** |");
+        CHECK_CONTAINS(md, "| 1 | blind | 100 | 3 | 10.0 [5.03, 15.0] | 10.0 [5.60, 16.5] |");
+    }
+    free(md);
+}
+
 /* Oddities that do not stop the report are named in it. */
 static void test_warnings(void)
 {
@@ -361,7 +426,8 @@ static void test_warnings(void)
     if (md) {
         CHECK_CONTAINS(md, "Warning: 1 run with runs.n_encounters different from its encounter rows");
         CHECK_CONTAINS(md, "Warning: density 2 has no finished runs with the reference domain");
-        CHECK_CONTAINS(md, "| 2 | 500 | 1 | 0 | 0 |");
+        /* one run: no t interval for the encounters; 0 domain violations in 1 h: [0, 3.69] */
+        CHECK_CONTAINS(md, "| 2 | - | 500 | 1 | 0 | 0 [0, 3.69] |");
     }
     free(md);
     /* the counts still come from the rows */
@@ -436,6 +502,7 @@ int main(void)
     TEST_RUN(test_reference);
     TEST_RUN(test_refusals);
     TEST_RUN(test_warnings);
+    TEST_RUN(test_behaviours);
     TEST_RUN(test_directory);
     int rc = TEST_EXIT();
     if (rc == 0)

@@ -56,6 +56,32 @@ static void test_run_list(void)
     free(s);
 }
 
+/* With behaviours as a second axis: the domains of each behaviour sit inside
+ * the replication, and every run of a replication shares its seed and start,
+ * so colregs - blind is paired like the domain sizes are. */
+static void test_run_list_behaviours(void)
+{
+    fw_study *s = load("tests/data/study/behaviours.yaml");
+    CHECK(s->n_behaviours == 2);
+    CHECK(fw_study_run_count(s) == 12);
+    for (int id = 0; id < 12; id++) {
+        fw_study_run r = fw_study_run_at(s, id), r0 = fw_study_run_at(s, id - id % 4);
+        CHECK(r.replication == id / 4);
+        CHECK(r.domain == s->domains[id % 2]);
+        CHECK(r.behaviour == ((id / 2) % 2 ? FW_BEHAVIOUR_BLIND : FW_BEHAVIOUR_COLREGS));
+        CHECK(r.seed == r0.seed && r.d_along == r0.d_along && r.d_across == r0.d_across);
+        fw_scenario scn;
+        fw_study_scenario(s, &r, &scn);
+        CHECK(scn.reactions.behaviour == r.behaviour);
+    }
+    /* the axis is part of the study: another digest than the same study without it */
+    fw_study *t = load("tests/data/study/small.yaml");
+    CHECK(t->n_behaviours == 1 && t->behaviours[0] == t->base.reactions.behaviour);
+    CHECK(t->digest != s->digest);
+    free(t);
+    free(s);
+}
+
 static fw_outcome sample(int run_id)
 {
     fw_outcome o;
@@ -166,6 +192,7 @@ static void test_store(void)
 int main(void)
 {
     TEST_RUN(test_run_list);
+    TEST_RUN(test_run_list_behaviours);
     TEST_RUN(test_outcome_bytes);
     TEST_RUN(test_store);
     return TEST_EXIT();

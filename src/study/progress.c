@@ -81,8 +81,9 @@ void fw_progress_run(fw_progress *p, const fw_study *s, const fw_outcome *o, int
     fw_study_run r = fw_study_run_at(s, o->run_id);
     char eta[32];
     eta_text(p, done + failed, eta, sizeof eta);
-    fprintf(p->f, "[%d/%d] run %d (domain %.0f m, density %g, replication %d): %s", done + failed,
-            p->todo, o->run_id, r.domain, r.density, r.replication, o->status);
+    fprintf(p->f, "[%d/%d] run %d (domain %.0f m, density %g, %s, replication %d): %s",
+            done + failed, p->todo, o->run_id, r.domain, r.density, fw_behaviour_name(r.behaviour),
+            r.replication, o->status);
     if (strcmp(o->status, "ok") == 0)
         fprintf(p->f, ", %d encounters, %.1f s", o->n_enc, o->wall_s);
     else

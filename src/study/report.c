@@ -76,6 +76,7 @@ void fw_study_report_free(fw_study_report *rep)
     free(rep->groups);
     free(rep->runs);
     free(rep->pairs);
+    free(rep->bpairs);
     free_counts(rep->meta, rep->n_meta);
     free_counts(rep->reasons, rep->n_reasons);
     free_counts(rep->warnings, rep->n_warnings);

@@ -5,11 +5,14 @@
  *   summary.csv    own-ship measures per (density, domain): mean, 95% interval
  *   traffic.csv    traffic-level encounters per 1000 ship-hours by type
  *   paired.csv     differences from the reference domain, same replications
+ *   behaviour.csv  colregs - blind of the same density and domain (a study that
+ *                  swept the background behaviour), same replications
  *   cpa.csv        pooled CPA percentiles per setting and encounter type
  *   cpa_hist.csv   CPA histograms on one set of bins per own/traffic
  *
  * Long format (one row per setting and measure) so a new measure is a new
- * row, not a new column.  A missing number is an empty field.
+ * row, not a new column.  A missing number is an empty field.  A setting is
+ * (density, behaviour, domain_m); behaviour is empty in a database without it.
  */
 #include <math.h>
 #include <stdio.h>
@@ -59,19 +62,32 @@ static void estimate(FILE *f, const fw_estimate *e)
     num(f, e->hi);
 }
 
+/* ",density,behaviour,domain_m" of a group. */
+static void setting(FILE *f, const fw_rep_group *G)
+{
+    fprintf(f, "%.12g,%s,%.12g", G->density, G->behaviour, G->domain);
+}
+
+/* The name of a measure's interval method in the CSVs. */
+static const char *method_name(fw_measure_id m)
+{
+    static const char *const names[] = {"t", "poisson_exact", "wilson", "bootstrap_ratio"};
+    return names[fw_measures[m].method];
+}
+
 static fw_status write_runs(const fw_study_report *rep, const char *dir, fw_error *err)
 {
     csv c;
     char header[2048];
-    int k = snprintf(header, sizeof header, "run_id,density,domain_m,replication,seed,sim_h");
+    int k = snprintf(header, sizeof header, "run_id,density,behaviour,domain_m,replication,seed,sim_h");
     for (int m = 0; m < FW_NMEASURES && k < (int)sizeof header; m++)
         k += snprintf(header + k, sizeof header - (size_t)k, ",%s", fw_measures[m].name);
     if (csv_open(&c, dir, "runs.csv", header, err))
         return err->status;
     for (int i = 0; i < rep->n_runs; i++) {
         const fw_rep_run *r = &rep->runs[i];
-        fprintf(c.f, "%lld,%.12g,%.12g,%d,%lld", r->run_id, r->density, r->domain, r->replication,
-                r->seed);
+        fprintf(c.f, "%lld,%.12g,%s,%.12g,%d,%lld", r->run_id, r->density, r->behaviour, r->domain,
+                r->replication, r->seed);
         num(c.f, r->sim_s / 3600.0);
         for (int m = 0; m < FW_NMEASURES; m++)
             num(c.f, r->m[m]);
@@ -83,16 +99,18 @@ static fw_status write_runs(const fw_study_report *rep, const char *dir, fw_erro
 static fw_status write_summary(const fw_study_report *rep, const char *dir, fw_error *err)
 {
     csv c;
-    if (csv_open(&c, dir, "summary.csv", "density,domain_m,measure,n,mean,sd,ci_low,ci_high", err))
+    if (csv_open(&c, dir, "summary.csv",
+                 "density,behaviour,domain_m,measure,n,mean,sd,ci_low,ci_high,method", err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
         for (int m = 0; m < FW_NMEASURES; m++) {
             if (fw_measures[m].traffic)
                 continue;
             const fw_rep_group *G = &rep->groups[g];
-            fprintf(c.f, "%.12g,%.12g,%s", G->density, G->domain, fw_measures[m].name);
+            setting(c.f, G);
+            fprintf(c.f, ",%s", fw_measures[m].name);
             estimate(c.f, &G->est[m]);
-            fputc('\n', c.f);
+            fprintf(c.f, ",%s\n", method_name((fw_measure_id)m));
         }
     return csv_close(&c, err);
 }
@@ -101,16 +119,16 @@ static fw_status write_traffic(const fw_study_report *rep, const char *dir, fw_e
 {
     csv c;
     if (csv_open(&c, dir, "traffic.csv",
-                 "density,domain_m,type,n,encounters,traffic_ship_h,mean_per_1000_ship_h,sd,"
-                 "ci_low,ci_high",
+                 "density,behaviour,domain_m,type,n,encounters,traffic_ship_h,mean_per_1000_ship_h,"
+                 "sd,ci_low,ci_high",
                  err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
         for (int t = 0; t < FW_REP_NTYPE; t++) {
             const fw_rep_group *G = &rep->groups[g];
             const fw_estimate *e = &G->est[FW_M_TRAFFIC_ALL + t];
-            fprintf(c.f, "%.12g,%.12g,%s,%d,%lld", G->density, G->domain, fw_rep_type_names[t],
-                    e->n, G->traffic_count[t]);
+            setting(c.f, G);
+            fprintf(c.f, ",%s,%d,%lld", fw_rep_type_names[t], e->n, G->traffic_count[t]);
             num(c.f, G->traffic_ship_s / 3600.0);
             num(c.f, e->mean);
             num(c.f, e->sd);
@@ -121,20 +139,25 @@ static fw_status write_traffic(const fw_study_report *rep, const char *dir, fw_e
     return csv_close(&c, err);
 }
 
-static fw_status write_paired(const fw_study_report *rep, const char *dir, fw_error *err)
+static fw_status write_pairs(const fw_study_report *rep, const fw_rep_pair *pairs, int n,
+                             const char *dir, const char *name, fw_error *err)
 {
     csv c;
-    if (csv_open(&c, dir, "paired.csv",
-                 "density,domain_m,reference_m,measure,n,mean,sd,ci_low,ci_high,significant", err))
+    if (csv_open(&c, dir, name,
+                 "density,behaviour,domain_m,reference_m,reference_behaviour,measure,n,mean,sd,"
+                 "ci_low,ci_high,significant,method",
+                 err))
         return err->status;
-    for (int i = 0; i < rep->n_pairs; i++) {
-        const fw_rep_pair *p = &rep->pairs[i];
-        const fw_rep_group *G = &rep->groups[p->group];
-        fprintf(c.f, "%.12g,%.12g,%.12g,%s", G->density, G->domain, rep->groups[p->ref_group].domain,
-                fw_measures[p->measure].name);
+    for (int i = 0; i < n; i++) {
+        const fw_rep_pair *p = &pairs[i];
+        const fw_rep_group *G = &rep->groups[p->group], *R = &rep->groups[p->ref_group];
+        setting(c.f, G);
+        fprintf(c.f, ",%.12g,%s,%s", R->domain, R->behaviour, fw_measures[p->measure].name);
         estimate(c.f, &p->est);
         /* the interval excludes zero: the difference is significant at the level */
-        fprintf(c.f, ",%d\n", p->est.lo > 0.0 || p->est.hi < 0.0);
+        fw_ci_method m = fw_measures[p->measure].method;
+        fprintf(c.f, ",%d,%s\n", p->est.lo > 0.0 || p->est.hi < 0.0,
+                m == FW_CI_POISSON || m == FW_CI_WILSON ? "conditional_binomial" : "paired_t");
     }
     return csv_close(&c, err);
 }
@@ -144,15 +167,16 @@ static const double cpa_q[] = {0.05, 0.25, 0.50, 0.75, 0.95};
 static fw_status write_cpa(const fw_study_report *rep, const char *dir, fw_error *err)
 {
     csv c;
-    if (csv_open(&c, dir, "cpa.csv", "density,domain_m,set,type,n,p5_m,p25_m,p50_m,p75_m,p95_m", err))
+    if (csv_open(&c, dir, "cpa.csv",
+                 "density,behaviour,domain_m,set,type,n,p5_m,p25_m,p50_m,p75_m,p95_m", err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
         for (int s = 0; s < FW_REP_NSET; s++)
             for (int t = 0; t < FW_REP_NTYPE; t++) {
                 const fw_rep_group *G = &rep->groups[g];
                 const fw_rep_values *v = &G->cpa[s][t];
-                fprintf(c.f, "%.12g,%.12g,%s,%s,%d", G->density, G->domain, fw_rep_set_names[s],
-                        fw_rep_type_names[t], v->n);
+                setting(c.f, G);
+                fprintf(c.f, ",%s,%s,%d", fw_rep_set_names[s], fw_rep_type_names[t], v->n);
                 for (size_t q = 0; q < sizeof cpa_q / sizeof cpa_q[0]; q++)
                     num(c.f, fw_quantile_sorted(v->v, v->n, cpa_q[q]));
                 fputc('\n', c.f);
@@ -163,15 +187,17 @@ static fw_status write_cpa(const fw_study_report *rep, const char *dir, fw_error
 static fw_status write_hist(const fw_study_report *rep, const char *dir, fw_error *err)
 {
     csv c;
-    if (csv_open(&c, dir, "cpa_hist.csv", "density,domain_m,set,bin_low_m,bin_high_m,count", err))
+    if (csv_open(&c, dir, "cpa_hist.csv", "density,behaviour,domain_m,set,bin_low_m,bin_high_m,count",
+                 err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
         for (int s = 0; s < FW_REP_NSET; s++) {
             const fw_rep_group *G = &rep->groups[g];
-            for (int b = 0; b < rep->n_bins[s]; b++)
-                fprintf(c.f, "%.12g,%.12g,%s,%.12g,%.12g,%d\n", G->density, G->domain,
-                        fw_rep_set_names[s], b * rep->bin_w[s], (b + 1) * rep->bin_w[s],
-                        G->hist[s][b]);
+            for (int b = 0; b < rep->n_bins[s]; b++) {
+                setting(c.f, G);
+                fprintf(c.f, ",%s,%.12g,%.12g,%d\n", fw_rep_set_names[s], b * rep->bin_w[s],
+                        (b + 1) * rep->bin_w[s], G->hist[s][b]);
+            }
         }
     return csv_close(&c, err);
 }
@@ -179,7 +205,10 @@ static fw_status write_hist(const fw_study_report *rep, const char *dir, fw_erro
 fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_error *err)
 {
     if (write_runs(rep, dir, err) || write_summary(rep, dir, err) ||
-        write_traffic(rep, dir, err) || write_paired(rep, dir, err) || write_cpa(rep, dir, err) ||
+        write_traffic(rep, dir, err) ||
+        write_pairs(rep, rep->pairs, rep->n_pairs, dir, "paired.csv", err) ||
+        write_pairs(rep, rep->bpairs, rep->n_bpairs, dir, "behaviour.csv", err) ||
+        write_cpa(rep, dir, err) ||
         write_hist(rep, dir, err))
         return err->status;
     return FW_OK;

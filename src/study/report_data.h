@@ -56,12 +56,29 @@ typedef enum fw_measure_id {
     FW_NMEASURES
 } fw_measure_id;
 
+/* How a measure's interval is made (the report names it for each measure):
+ *   T        mean over replications, Student t (the replication is the unit)
+ *   POISSON  a count of rare events: the pooled count over the pooled hours
+ *            with Garwood's exact interval; paired differences by the
+ *            conditional binomial (fw_count_difference)
+ *   WILSON   a yes/no outcome per run: Wilson over runs; paired differences
+ *            by the conditional binomial on the discordant pairs (McNemar)
+ *   RATIO    a ratio of pooled counts: percentile bootstrap over runs */
+typedef enum fw_ci_method { FW_CI_T, FW_CI_POISSON, FW_CI_WILSON, FW_CI_RATIO } fw_ci_method;
+
+extern const char *const fw_ci_method_text[];  /* for people, by fw_ci_method */
+
 typedef struct fw_measure {
     const char *name;     /* CSV name, unit in it */
     const char *label;    /* for people */
-    bool share;           /* a 0/1 outcome per run: Wilson interval over runs */
+    fw_ci_method method;
     bool traffic;         /* traffic.csv rather than summary.csv */
 } fw_measure;
+
+/* Bootstrap resamples and the seed every bootstrap of a report starts from:
+ * the same database gives the same report to the digit. */
+enum { FW_REP_BOOT_REPS = 2000 };
+#define FW_REP_BOOT_SEED 20260101u
 
 extern const fw_measure fw_measures[FW_NMEASURES];
 
@@ -69,6 +86,7 @@ extern const fw_measure fw_measures[FW_NMEASURES];
 typedef struct fw_rep_run {
     long long run_id, seed;
     double domain, density;
+    char behaviour[16];                     /* the background ships': colregs, blind */
     int replication;
     double sim_s, traffic_ship_s;           /* exposure; traffic NAN if not recorded */
     double n_actions, helm_orders;          /* NAN if NULL */
@@ -93,15 +111,19 @@ extern const char *const fw_rep_set_names[FW_REP_NSET];
 
 typedef struct fw_rep_group {
     double density, domain;
+    char behaviour[16];
     int n_runs;
     fw_estimate est[FW_NMEASURES];
+    fw_estimate cpa_median;                         /* own-ship CPA, bootstrap interval */
     fw_rep_values cpa[FW_REP_NSET][FW_REP_NTYPE];  /* sorted after loading */
     long long traffic_count[FW_REP_NTYPE];          /* pooled over the runs */
     double traffic_ship_s;
     int *hist[FW_REP_NSET];                          /* CPA histogram of the type "all" */
 } fw_rep_group;
 
-/* Paired difference of one measure: group minus the reference of its density. */
+/* Paired difference of one measure: group minus the reference of its density
+ * and behaviour (pairs), or the colregs group minus the blind one of the same
+ * density and domain (behaviour_pairs). */
 typedef struct fw_rep_pair {
     int group, ref_group;
     fw_measure_id measure;
@@ -132,6 +154,8 @@ struct fw_study_report {
     double reference_m;
     fw_rep_pair *pairs;
     int n_pairs;
+    fw_rep_pair *bpairs;           /* colregs - blind, FW_NMEASURES per (density, domain) */
+    int n_bpairs;
     double bin_w[FW_REP_NSET];     /* CPA histogram bins [k w, (k + 1) w) */
     int n_bins[FW_REP_NSET];
     /* the traffic monitors (survey/monitor.h) summed over the finished runs,

@@ -91,6 +91,9 @@ static int cmp_group(const void *pa, const void *pb)
     const fw_rep_group *a = pa, *b = pb;
     if (a->density != b->density)
         return a->density < b->density ? -1 : 1;
+    int c = strcmp(a->behaviour, b->behaviour);
+    if (c)
+        return c;
     return (a->domain > b->domain) - (a->domain < b->domain);
 }
 
@@ -191,7 +194,7 @@ static fw_status read_runs(loader *L)
     if (prepare(L,
                 "SELECT run_id, domain_m, density, replication, seed, sim_s, n_actions, "
                 "min_dist_m, near_miss, collision, max_helm_deg, path_lengthening_m, "
-                "time_lost_s, helm_orders, traffic_ship_s, n_encounters "
+                "time_lost_s, helm_orders, traffic_ship_s, n_encounters, behaviour "
                 "FROM runs WHERE status = 'ok' ORDER BY run_id",
                 &st))
         return L->err->status;
@@ -224,6 +227,7 @@ static fw_status read_runs(loader *L)
         r->helm_orders = col_num(st, 13);
         r->traffic_ship_s = col_num(st, 14);
         r->n_encounters_col = sqlite3_column_type(st, 15) == SQLITE_NULL ? -1 : sqlite3_column_int64(st, 15);
+        snprintf(r->behaviour, sizeof r->behaviour, "%s", col_text(st, 16));
         /* without its exposure a run has no rates at all: the writer broke the contract */
         if (!(r->sim_s > 0.0) || !isfinite(r->sim_s) || !isfinite(r->domain) ||
             !isfinite(r->density) || r->replication < 0 || r->replication > 1000000) {
@@ -240,6 +244,14 @@ static fw_status read_runs(loader *L)
     return step_done(L, st, rc);
 }
 
+/* The group a run belongs to: its (density, behaviour, domain). */
+static fw_rep_group group_key(const fw_rep_run *r)
+{
+    fw_rep_group key = {.density = r->density, .domain = r->domain};
+    snprintf(key.behaviour, sizeof key.behaviour, "%s", r->behaviour);
+    return key;
+}
+
 static fw_status make_groups(loader *L)
 {
     fw_study_report *rep = L->rep;
@@ -247,21 +259,17 @@ static fw_status make_groups(loader *L)
     if (!rep->groups)
         return oom(L);
     for (int i = 0; i < rep->n_runs; i++) {
-        fw_rep_run *r = &rep->runs[i];
+        fw_rep_group key = group_key(&rep->runs[i]);
         int g = 0;
-        while (g < rep->n_groups &&
-               !(rep->groups[g].density == r->density && rep->groups[g].domain == r->domain))
+        while (g < rep->n_groups && cmp_group(&rep->groups[g], &key) != 0)
             g++;
-        if (g == rep->n_groups) {
-            rep->groups[g].density = r->density;
-            rep->groups[g].domain = r->domain;
-            rep->n_groups++;
-        }
+        if (g == rep->n_groups)
+            rep->groups[rep->n_groups++] = key;
     }
     qsort(rep->groups, (size_t)rep->n_groups, sizeof *rep->groups, cmp_group);
     for (int i = 0; i < rep->n_runs; i++) {
         fw_rep_run *r = &rep->runs[i];
-        fw_rep_group key = {.density = r->density, .domain = r->domain};
+        fw_rep_group key = group_key(r);
         fw_rep_group *g = bsearch(&key, rep->groups, (size_t)rep->n_groups, sizeof key, cmp_group);
         r->group = (int)(g - rep->groups);
         g->n_runs++;

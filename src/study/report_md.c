@@ -6,6 +6,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/json.h"
@@ -49,7 +50,7 @@ const char *fw_rep_fmt(char *buf, double x)
 static const char *cell(char *out, size_t sz, const fw_estimate *e, bool share)
 {
     char m[32], lo[32], hi[32];
-    if (share && e->n > 0)
+    if (share && e->n > 0 && !isnan(e->mean))
         snprintf(m, sizeof m, "%d/%d", (int)lround(e->mean * e->n), e->n);
     else
         fw_rep_fmt(m, e->mean);
@@ -62,8 +63,18 @@ static const char *cell(char *out, size_t sz, const fw_estimate *e, bool share)
 
 static double cpa_median(const fw_rep_group *G)
 {
-    const fw_rep_values *v = &G->cpa[FW_REP_OWN][FW_REP_ALL];
-    return fw_quantile_sorted(v->v, v->n, 0.5);
+    return G->cpa_median.mean;
+}
+
+static bool is_share(fw_measure_id m)
+{
+    return fw_measures[m].method == FW_CI_WILSON;
+}
+
+/* The background behaviour of a group, "-" for a database without it. */
+static const char *beh(const fw_rep_group *G)
+{
+    return G->behaviour[0] ? G->behaviour : "-";
 }
 
 static const char *stem(const char *path, char *buf, size_t sz)
@@ -106,34 +117,39 @@ static void md_runs(FILE *f, const fw_study_report *rep)
 static void md_key_table(FILE *f, const fw_study_report *rep)
 {
     char c[96], m[32];
-    fprintf(f, "## Key measures\n\nMean over replications with its %.0f%% confidence interval "
-               "(Student t across replications; for rare events its lower end would fall below "
-               "zero and is cut at 0, where these non-negative measures end; runs with a "
-               "collision: Wilson). Rates are per own-ship hour; CPA is the "
-               "closest centre distance of an encounter, pooled over replications.\n\n",
+    fprintf(f, "## Key measures\n\nEach value with its %.0f%% confidence interval; the "
+               "interval of each measure is made as follows:\n\n",
             100 * rep->level);
-    fprintf(f, "| density | domain (m) | runs |");
+    for (int k = 0; k < NKEY; k++)
+        fprintf(f, "- %s: %s\n", key_head[k], fw_ci_method_text[fw_measures[key[k]].method]);
+    fprintf(f, "- CPA median: the median of the pooled encounters' closest centre distances, "
+               "percentile bootstrap over encounters (%d resamples, fixed seed; encounters of one "
+               "run share its traffic, so it is somewhat narrow)\n\n"
+               "Rates are per own-ship hour. A t interval's lower end below 0 is cut at 0.\n\n",
+            FW_REP_BOOT_REPS);
+    fprintf(f, "| density | traffic | domain (m) | runs |");
     for (int k = 0; k < NKEY; k++)
         fprintf(f, " %s |", key_head[k]);
-    fprintf(f, " CPA median (m) |\n|---|---|---|");
+    fprintf(f, " CPA median (m) |\n|---|---|---|---|");
     for (int k = 0; k <= NKEY; k++)
         fprintf(f, "---|");
     fprintf(f, "\n");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "| %g | %g | %d |", G->density, G->domain, G->n_runs);
+        fprintf(f, "| %g | %s | %g | %d |", G->density, beh(G), G->domain, G->n_runs);
         for (int k = 0; k < NKEY; k++)
-            fprintf(f, " %s |", cell(c, sizeof c, &G->est[key[k]], fw_measures[key[k]].share));
-        fprintf(f, " %s |\n", fw_rep_fmt(m, cpa_median(G)));
+            fprintf(f, " %s |", cell(c, sizeof c, &G->est[key[k]], is_share(key[k])));
+        fprintf(f, " %s |\n", cell(c, sizeof c, &G->cpa_median, false));
     }
-    fprintf(f, "\nTraffic level (all ships in the survey area), encounters per 1000 ship-hours:\n\n"
-               "| density | domain (m) |");
+    (void)m;
+    fprintf(f, "\nTraffic level (all ships in the survey area), encounters per 1000 ship-hours "
+               "(Student t over replications):\n\n| density | traffic | domain (m) |");
     for (int t = 0; t < FW_REP_NTYPE; t++)
         fprintf(f, " %s |", fw_rep_type_names[t]);
-    fprintf(f, "\n|---|---|---|---|---|---|\n");
+    fprintf(f, "\n|---|---|---|---|---|---|---|\n");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "| %g | %g |", G->density, G->domain);
+        fprintf(f, "| %g | %s | %g |", G->density, beh(G), G->domain);
         for (int t = 0; t < FW_REP_NTYPE; t++)
             fprintf(f, " %s |", cell(c, sizeof c, &G->est[FW_M_TRAFFIC_ALL + t], false));
         fprintf(f, "\n");
@@ -146,12 +162,64 @@ static bool significant(const fw_estimate *e)
     return e->lo > 0.0 || e->hi < 0.0;
 }
 
+/* The rows of a paired table: one per compared setting, one column per key
+ * measure; `all` shows every difference (significant ones in bold), else
+ * only the significant ones and a dash for the others. */
+static void pair_table(FILE *f, const fw_study_report *rep, const fw_rep_pair *pairs, int n,
+                       bool all)
+{
+    char c[96];
+    fprintf(f, "| density | traffic | domain (m) | pairs |");
+    for (int k = 0; k < NKEY; k++)
+        fprintf(f, " %s |", key_head[k]);
+    fprintf(f, "\n|---|---|---|---|");
+    for (int k = 0; k < NKEY; k++)
+        fprintf(f, "---|");
+    fprintf(f, "\n");
+    for (int i = 0; i < n; i += FW_NMEASURES) {
+        /* fw_rep_compute stores the pairs of a setting together, in measure order */
+        const fw_rep_pair *p = &pairs[i];
+        const fw_rep_group *G = &rep->groups[p->group];
+        fprintf(f, "| %g | %s | %g | %d |", G->density, beh(G), G->domain,
+                p[FW_M_ENCOUNTERS].est.n);
+        for (int k = 0; k < NKEY; k++) {
+            const fw_estimate *e = &p[key[k]].est;
+            if (significant(e))
+                fprintf(f, " **%s** |", cell(c, sizeof c, e, false));
+            else if (all)
+                fprintf(f, " %s |", cell(c, sizeof c, e, false));
+            else
+                fprintf(f, " - |");
+        }
+        fprintf(f, "\n");
+    }
+}
+
+/* colregs - blind, when the study swept the behaviour. */
+static void md_behaviour(FILE *f, const fw_study_report *rep)
+{
+    if (rep->n_bpairs == 0)
+        return;
+    fprintf(f, "## Background behaviour: colregs - blind\n\n"
+               "Replication i of both behaviours sailed the same seed and start, so each "
+               "difference is paired. Counts of rare events (domain violations, near misses): "
+               "the difference of the pooled counts per hour, with the exact conditional "
+               "interval (given the events of both, the colregs share is binomial; its "
+               "Clopper-Pearson interval p mapped through n (2p - 1) / hours: it excludes 0 "
+               "exactly when the exact test of equal rates rejects). Runs with a collision: the "
+               "same on the discordant pairs (exact McNemar), as a difference of shares. The "
+               "other measures: paired t. Bold: the %.0f%% interval excludes 0; behaviour.csv "
+               "has every measure.\n\n",
+            100 * rep->level);
+    pair_table(f, rep, rep->bpairs, rep->n_bpairs, true);
+    fprintf(f, "\n");
+}
+
 /* One row per compared setting, one column per key measure: the significant
  * differences in bold with their interval, the others as a dash, so the page
  * shows at a glance what the domain size changes. */
 static void md_paired(FILE *f, const fw_study_report *rep)
 {
-    char c[96];
     fprintf(f, "## Paired differences from the %g m domain\n\n", rep->reference_m);
     if (rep->n_pairs == 0) {
         fprintf(f, "Only one domain size: nothing to compare.\n\n");
@@ -161,31 +229,12 @@ static void md_paired(FILE *f, const fw_study_report *rep)
     for (int i = 0; i < rep->n_pairs; i++)
         n_sig += significant(&rep->pairs[i].est);
     fprintf(f, "Replication i of every domain size sailed the same traffic, so each difference "
-               "(domain minus %g m) is taken within a replication. Shown: the differences whose "
+               "(domain minus %g m) is taken within a replication (rare-event counts and runs "
+               "with a collision: the exact conditional binomial interval; the others paired t). Shown: the differences whose "
                "%.0f%% interval excludes zero; - marks one that does not. %d of %d differences "
                "over all measures are significant; paired.csv has them all.\n\n",
             rep->reference_m, 100 * rep->level, n_sig, rep->n_pairs);
-    fprintf(f, "| density | domain (m) | pairs |");
-    for (int k = 0; k < NKEY; k++)
-        fprintf(f, " %s |", key_head[k]);
-    fprintf(f, "\n|---|---|---|");
-    for (int k = 0; k < NKEY; k++)
-        fprintf(f, "---|");
-    fprintf(f, "\n");
-    for (int i = 0; i < rep->n_pairs; i += FW_NMEASURES) {
-        /* fw_rep_compute stores the pairs of a setting together, in measure order */
-        const fw_rep_pair *p = &rep->pairs[i];
-        const fw_rep_group *G = &rep->groups[p->group];
-        fprintf(f, "| %g | %g | %d |", G->density, G->domain, p[FW_M_ENCOUNTERS].est.n);
-        for (int k = 0; k < NKEY; k++) {
-            const fw_estimate *e = &p[key[k]].est;
-            if (significant(e))
-                fprintf(f, " **%s** |", cell(c, sizeof c, e, false));
-            else
-                fprintf(f, " - |");
-        }
-        fprintf(f, "\n");
-    }
+    pair_table(f, rep, rep->pairs, rep->n_pairs, false);
     /* the other measures, named once if any of their differences is significant */
     bool first = true;
     for (int m = 0; m < FW_NMEASURES; m++) {
@@ -241,6 +290,38 @@ static void md_monitors(FILE *f, const fw_study_report *rep)
             rep->behaviour[0] ? rep->behaviour : "-", rep->give_way);
 }
 
+/* The study's settings as a table, the ones that define it first. */
+static void md_settings(FILE *f, const fw_study_report *rep)
+{
+    static const char *const first[] = {"study_description", "scenario", "ship", "network",
+                                        "domains_m", "densities", "behaviours", "replications",
+                                        "duration_s", "near_miss_m", "encounter_m", NULL};
+    fprintf(f, "## Settings\n\nDatabase `%s`.\n\n", rep->db);
+    if (rep->n_meta == 0) {
+        fprintf(f, "None recorded.\n\n");
+        return;
+    }
+    fprintf(f, "| setting | value |\n|---|---|\n");
+    bool *shown = calloc((size_t)rep->n_meta, sizeof *shown);
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 0; pass == 1 || first[k]; k++) {
+            for (int i = 0; i < rep->n_meta; i++) {
+                const char *t = rep->meta[i].text, *eq = strstr(t, " = ");
+                size_t kl = eq ? (size_t)(eq - t) : strlen(t);
+                bool match = pass == 1 || (strlen(first[k]) == kl && !strncmp(t, first[k], kl));
+                if (!match || (shown && shown[i]) || !eq)
+                    continue;
+                fprintf(f, "| %.*s | %s |\n", (int)kl, t, eq + 3);
+                if (shown)
+                    shown[i] = true;
+            }
+            if (pass == 1)
+                break;
+        }
+    free(shown);
+    fprintf(f, "\n");
+}
+
 fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_result *res,
                           const char *dir, fw_error *err)
 {
@@ -253,24 +334,26 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
     fprintf(f, "# Study report: %s\n\n",
             rep->study_name[0] ? rep->study_name : stem(rep->db, name, sizeof name));
     md_monitors(f, rep);
-    fprintf(f, "Database `%s`. Settings:", rep->db);
-    for (int i = 0; i < rep->n_meta; i++)
-        fprintf(f, "%s %s", i ? ";" : "", rep->meta[i].text);
-    fprintf(f, "%s\n\n", rep->n_meta ? "." : " none recorded.");
+    md_settings(f, rep);
     md_runs(f, rep);
     md_key_table(f, rep);
     md_paired(f, rep);
+    md_behaviour(f, rep);
     fprintf(f, "## Plots\n\n");
-    if (res->plots == FW_PLOTS_DRAWN)
+    if (res->plots == FW_PLOTS_DRAWN) {
         for (int i = 0; i < fw_rep_n_plots; i++)
             fprintf(f, "![%s](%s)\n\n", fw_rep_plot_titles[i], fw_rep_plots[i]);
+        if (rep->n_bpairs)
+            fprintf(f, "![Paired differences colregs - blind](behaviour.png)\n\n");
+    }
     else if (res->plots == FW_PLOTS_SKIPPED)
         fprintf(f, "Not drawn (--no-plots).\n\n");
     else
         fprintf(f, "**Plotting failed:** %s. The tables above and the CSVs are complete.\n\n",
                 res->plot_msg);
-    fprintf(f, "Tables: summary.csv (every own-ship measure), traffic.csv, paired.csv, cpa.csv "
-               "(CPA percentiles by type), cpa_hist.csv, runs.csv (per run).\n");
+    fprintf(f, "Tables: summary.csv (every own-ship measure, with its interval method), "
+               "traffic.csv, paired.csv, behaviour.csv (colregs - blind), cpa.csv (CPA "
+               "percentiles by type), cpa_hist.csv, runs.csv (per run).\n");
     int bad = ferror(f);
     if (fclose(f) != 0 || bad)
         return fw_fail(err, FW_ERUN, "cannot write %s", path);
@@ -301,6 +384,23 @@ static void jest(FILE *f, const fw_estimate *e)
     fputs("}", f);
 }
 
+static void json_pairs(FILE *f, const fw_study_report *rep, const char *name,
+                       const fw_rep_pair *pairs, int n)
+{
+    fprintf(f, "],\n \"%s\": [", name);
+    for (int i = 0; i < n; i++) {
+        const fw_rep_pair *p = &pairs[i];
+        const fw_rep_group *G = &rep->groups[p->group];
+        fprintf(f, "%s\n  {\"density\": %.10g, \"behaviour\": ", i ? "," : "", G->density);
+        jstr(f, G->behaviour);
+        fprintf(f, ", \"domain_m\": %.10g, \"measure\": ", G->domain);
+        jstr(f, fw_measures[p->measure].name);
+        fputs(", \"diff\": ", f);
+        jest(f, &p->est);
+        fprintf(f, ", \"significant\": %s}", significant(&p->est) ? "true" : "false");
+    }
+}
+
 static void print_json(FILE *f, const fw_study_report *rep, const fw_study_report_result *res)
 {
     static const char *const plots[] = {"skipped", "drawn", "failed"};
@@ -322,8 +422,9 @@ static void print_json(FILE *f, const fw_study_report *rep, const fw_study_repor
     fputs("],\n \"groups\": [", f);
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "%s\n  {\"density\": %.10g, \"domain_m\": %.10g, \"runs\": %d", g ? "," : "",
-                G->density, G->domain, G->n_runs);
+        fprintf(f, "%s\n  {\"density\": %.10g, \"behaviour\": ", g ? "," : "", G->density);
+        jstr(f, G->behaviour);
+        fprintf(f, ", \"domain_m\": %.10g, \"runs\": %d", G->domain, G->n_runs);
         for (int m = 0; m < FW_NMEASURES; m++) {
             fprintf(f, ",\n   \"%s\": ", fw_measures[m].name);
             jest(f, &G->est[m]);
@@ -332,17 +433,8 @@ static void print_json(FILE *f, const fw_study_report *rep, const fw_study_repor
         jnum(f, cpa_median(G));
         fputs("}", f);
     }
-    fputs("],\n \"paired\": [", f);
-    for (int i = 0; i < rep->n_pairs; i++) {
-        const fw_rep_pair *p = &rep->pairs[i];
-        const fw_rep_group *G = &rep->groups[p->group];
-        fprintf(f, "%s\n  {\"density\": %.10g, \"domain_m\": %.10g, \"measure\": ",
-                i ? "," : "", G->density, G->domain);
-        jstr(f, fw_measures[p->measure].name);
-        fputs(", \"diff\": ", f);
-        jest(f, &p->est);
-        fprintf(f, ", \"significant\": %s}", significant(&p->est) ? "true" : "false");
-    }
+    json_pairs(f, rep, "paired", rep->pairs, rep->n_pairs);
+    json_pairs(f, rep, "behaviour_paired", rep->bpairs, rep->n_bpairs);
     fputs("]}\n", f);
 }
 
@@ -357,15 +449,15 @@ void fw_study_report_print(FILE *f, const fw_study_report *rep, const fw_study_r
     fprintf(f, "%d runs counted, %d failed; reference domain %g m; mean [%.0f%% CI] across "
                "replications\n",
             rep->n_runs, rep->n_failed, rep->reference_m, 100 * rep->level);
-    fprintf(f, "%-8s %8s %5s", "density", "domain_m", "runs");
+    fprintf(f, "%-8s %-8s %8s %5s", "density", "traffic", "domain_m", "runs");
     for (int k = 0; k < NKEY; k++)
         fprintf(f, "  %-22.22s", key_head[k]);
     fprintf(f, "  %s\n", "CPA p50 m");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "%-8g %8g %5d", G->density, G->domain, G->n_runs);
+        fprintf(f, "%-8g %-8s %8g %5d", G->density, beh(G), G->domain, G->n_runs);
         for (int k = 0; k < NKEY; k++)
-            fprintf(f, "  %-22s", cell(c, sizeof c, &G->est[key[k]], fw_measures[key[k]].share));
+            fprintf(f, "  %-22s", cell(c, sizeof c, &G->est[key[k]], is_share(key[k])));
         fprintf(f, "  %s\n", fw_rep_fmt(m, cpa_median(G)));
     }
     for (int i = 0; i < rep->n_warnings; i++)

@@ -1,15 +1,18 @@
 /* report_stats.c - from runs to the report's numbers.
  *
  * Each run gives one value of each measure (a rate per own-ship hour, a
- * fraction, a largest value); a setting's estimate is the mean over its
- * replications with a Student-t interval, because replications are the
- * independent units - encounters within one run share the run's traffic and
- * are not.  Yes/no outcomes per run (a collision happened) get a Wilson
- * interval instead, which does not collapse to [0, 0] when none happened.
- * Every measure here is non-negative, so a t interval reaching below 0 (rare
- * events: near misses in one run of twenty) is cut at 0.
+ * fraction, a largest value).  Each measure has its interval method
+ * (fw_ci_method, report_data.h): common measures the mean over replications
+ * with a Student-t interval, because replications are the independent units -
+ * encounters within one run share the run's traffic and are not; rare events
+ * (domain violations, near misses, collisions) the pooled count over the
+ * pooled hours with the exact Poisson interval, which a t interval (cut at 0
+ * for one event in twenty runs) is not; yes/no outcomes per run Wilson; the
+ * share of encounters entering the domain a bootstrap of the ratio.
  * Paired differences use replication i of both settings: same traffic, so
- * most of the traffic's variation cancels.
+ * most of the traffic's variation cancels; counts get the conditional
+ * binomial (fw_count_difference), which stays right at 0 or 3 events.
+ * The behaviour axis: colregs - blind of the same density and domain.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -17,31 +20,38 @@
 
 #include "study/report_data.h"
 
+const char *const fw_ci_method_text[] = {
+    [FW_CI_T] = "mean over replications, Student t",
+    [FW_CI_POISSON] = "pooled count / pooled hours, exact Poisson (Garwood)",
+    [FW_CI_WILSON] = "share of runs, Wilson score",
+    [FW_CI_RATIO] = "ratio of pooled counts, percentile bootstrap over runs",
+};
+
 const fw_measure fw_measures[FW_NMEASURES] = {
-    [FW_M_ENCOUNTERS] = {"encounters_per_h", "own-ship encounters per hour", false, false},
-    [FW_M_HEAD_ON] = {"head_on_per_h", "head-on encounters per hour", false, false},
-    [FW_M_OVERTAKING] = {"overtaking_per_h", "overtaking encounters (either way) per hour", false, false},
-    [FW_M_CROSSING] = {"crossing_per_h", "crossing encounters (give-way or stand-on) per hour", false, false},
-    [FW_M_SIT_OVERTAKING] = {"overtaking_own_per_h", "own ship overtaking per hour", false, false},
-    [FW_M_SIT_OVERTAKEN] = {"being_overtaken_per_h", "own ship being overtaken per hour", false, false},
-    [FW_M_SIT_GIVE_WAY] = {"crossing_give_way_per_h", "crossing, own ship gives way, per hour", false, false},
-    [FW_M_SIT_STAND_ON] = {"crossing_stand_on_per_h", "crossing, own ship stands on, per hour", false, false},
-    [FW_M_DOMAIN] = {"domain_violations_per_h", "domain violations per hour", false, false},
-    [FW_M_DOMAIN_FRACTION] = {"domain_violation_fraction", "share of encounters entering the domain", false, false},
-    [FW_M_NEAR_MISS] = {"near_misses_per_h", "near misses per hour", false, false},
-    [FW_M_COLLISION] = {"collisions_per_h", "collisions per hour", false, false},
-    [FW_M_NEAR_MISS_RUNS] = {"near_miss_run_fraction", "share of runs with a near miss", true, false},
-    [FW_M_COLLISION_RUNS] = {"collision_run_fraction", "share of runs with a collision", true, false},
-    [FW_M_MIN_CPA] = {"min_cpa_m", "closest approach of the run (m)", false, false},
-    [FW_M_MANOEUVRES] = {"manoeuvres_per_h", "avoidance manoeuvres per hour", false, false},
-    [FW_M_MAX_HELM] = {"max_helm_deg", "largest helm (deg)", false, false},
-    [FW_M_HELM_ORDERS] = {"helm_orders_per_h", "helm orders per hour", false, false},
-    [FW_M_PATH] = {"path_lengthening_m_per_h", "path lengthening (m per hour)", false, false},
-    [FW_M_TIME_LOST] = {"time_lost_s_per_h", "time lost (s per hour)", false, false},
-    [FW_M_TRAFFIC_ALL] = {"traffic_encounters_per_1000_ship_h", "traffic encounters per 1000 ship-hours", false, true},
-    [FW_M_TRAFFIC_HEAD_ON] = {"traffic_head_on_per_1000_ship_h", "traffic head-on per 1000 ship-hours", false, true},
-    [FW_M_TRAFFIC_OVERTAKING] = {"traffic_overtaking_per_1000_ship_h", "traffic overtaking per 1000 ship-hours", false, true},
-    [FW_M_TRAFFIC_CROSSING] = {"traffic_crossing_per_1000_ship_h", "traffic crossing per 1000 ship-hours", false, true},
+    [FW_M_ENCOUNTERS] = {"encounters_per_h", "own-ship encounters per hour", FW_CI_T, false},
+    [FW_M_HEAD_ON] = {"head_on_per_h", "head-on encounters per hour", FW_CI_T, false},
+    [FW_M_OVERTAKING] = {"overtaking_per_h", "overtaking encounters (either way) per hour", FW_CI_T, false},
+    [FW_M_CROSSING] = {"crossing_per_h", "crossing encounters (give-way or stand-on) per hour", FW_CI_T, false},
+    [FW_M_SIT_OVERTAKING] = {"overtaking_own_per_h", "own ship overtaking per hour", FW_CI_T, false},
+    [FW_M_SIT_OVERTAKEN] = {"being_overtaken_per_h", "own ship being overtaken per hour", FW_CI_T, false},
+    [FW_M_SIT_GIVE_WAY] = {"crossing_give_way_per_h", "crossing, own ship gives way, per hour", FW_CI_T, false},
+    [FW_M_SIT_STAND_ON] = {"crossing_stand_on_per_h", "crossing, own ship stands on, per hour", FW_CI_T, false},
+    [FW_M_DOMAIN] = {"domain_violations_per_h", "domain violations per hour", FW_CI_POISSON, false},
+    [FW_M_DOMAIN_FRACTION] = {"domain_violation_fraction", "share of encounters entering the domain", FW_CI_RATIO, false},
+    [FW_M_NEAR_MISS] = {"near_misses_per_h", "near misses per hour", FW_CI_POISSON, false},
+    [FW_M_COLLISION] = {"collisions_per_h", "collisions per hour", FW_CI_POISSON, false},
+    [FW_M_NEAR_MISS_RUNS] = {"near_miss_run_fraction", "share of runs with a near miss", FW_CI_WILSON, false},
+    [FW_M_COLLISION_RUNS] = {"collision_run_fraction", "share of runs with a collision", FW_CI_WILSON, false},
+    [FW_M_MIN_CPA] = {"min_cpa_m", "closest approach of the run (m)", FW_CI_T, false},
+    [FW_M_MANOEUVRES] = {"manoeuvres_per_h", "avoidance manoeuvres per hour", FW_CI_T, false},
+    [FW_M_MAX_HELM] = {"max_helm_deg", "largest helm (deg)", FW_CI_T, false},
+    [FW_M_HELM_ORDERS] = {"helm_orders_per_h", "helm orders per hour", FW_CI_T, false},
+    [FW_M_PATH] = {"path_lengthening_m_per_h", "path lengthening (m per hour)", FW_CI_T, false},
+    [FW_M_TIME_LOST] = {"time_lost_s_per_h", "time lost (s per hour)", FW_CI_T, false},
+    [FW_M_TRAFFIC_ALL] = {"traffic_encounters_per_1000_ship_h", "traffic encounters per 1000 ship-hours", FW_CI_T, true},
+    [FW_M_TRAFFIC_HEAD_ON] = {"traffic_head_on_per_1000_ship_h", "traffic head-on per 1000 ship-hours", FW_CI_T, true},
+    [FW_M_TRAFFIC_OVERTAKING] = {"traffic_overtaking_per_1000_ship_h", "traffic overtaking per 1000 ship-hours", FW_CI_T, true},
+    [FW_M_TRAFFIC_CROSSING] = {"traffic_crossing_per_1000_ship_h", "traffic crossing per 1000 ship-hours", FW_CI_T, true},
 };
 
 static double flag(double v)
@@ -81,24 +91,60 @@ static void run_measures(fw_rep_run *r)
         m[FW_M_TRAFFIC_ALL + t] = r->n_traffic[t] / kh;
 }
 
-static fw_estimate group_estimate(const fw_study_report *rep, int g, fw_measure_id id, double *buf)
+static int run_encounters(const fw_rep_run *r)
+{
+    int n = 0;
+    for (int k = 0; k < FW_REP_NSIT; k++)
+        n += r->n_sit[k];
+    return n;
+}
+
+/* The events of a POISSON measure in run r: its rate times its hours. */
+static long long run_count(const fw_rep_run *r, fw_measure_id id)
+{
+    return llround(r->m[id] * r->sim_s / 3600.0);
+}
+
+static fw_estimate group_estimate(const fw_study_report *rep, int g, fw_measure_id id, double *buf,
+                                  double *buf2)
 {
     int n = 0, k = 0, ok = 0;
-    for (int i = 0; i < rep->n_runs; i++)
-        if (rep->runs[i].group == g) {
-            double v = rep->runs[i].m[id];
-            buf[n++] = v;
-            if (!isnan(v)) {
-                ok++;
-                k += v != 0.0;
-            }
+    long long events = 0;
+    double hours = 0.0;
+    for (int i = 0; i < rep->n_runs; i++) {
+        const fw_rep_run *r = &rep->runs[i];
+        if (r->group != g)
+            continue;
+        double v = r->m[id];
+        buf2[n] = run_encounters(r);
+        buf[n++] = id == FW_M_DOMAIN_FRACTION ? r->n_domain : v;
+        if (!isnan(v)) {
+            ok++;
+            k += v != 0.0;
+            events += run_count(r, id);
+            hours += r->sim_s / 3600.0;
         }
-    if (fw_measures[id].share)
+    }
+    fw_estimate e;
+    switch (fw_measures[id].method) {
+    case FW_CI_WILSON:
         return fw_wilson(k, ok, rep->level);
-    fw_estimate e = fw_mean_ci(buf, n, rep->level);
-    if (e.lo < 0.0)
-        e.lo = 0.0;
-    return e;
+    case FW_CI_POISSON:
+        e = fw_poisson_exact(events, hours, rep->level);
+        e.n = ok;
+        e.sd = fw_sd(buf, n);
+        return e;
+    case FW_CI_RATIO:
+        e = fw_bootstrap_ratio(buf, buf2, n, FW_REP_BOOT_REPS, FW_REP_BOOT_SEED, rep->level);
+        e.sd = NAN;
+        return e;
+    case FW_CI_T:
+    default:
+        e = fw_mean_ci(buf, n, rep->level);
+        if (e.lo < 0.0)
+            e.lo = 0.0;
+        return e;
+    }
 }
 
 /* A round bin width near x: 1, 2, 2.5 or 5 times a power of ten. */
@@ -137,52 +183,124 @@ static fw_status histograms(fw_study_report *rep, fw_error *err)
     return FW_OK;
 }
 
-static fw_status paired(fw_study_report *rep, fw_error *err)
+/* Measure m of group g minus the same of group ref, replication by
+ * replication: the runs of one replication sailed the same traffic.  a, b,
+ * ha, hb: n_reps values each (scratch). */
+static fw_estimate pair_estimate(const fw_study_report *rep, int g, int ref, fw_measure_id m,
+                                 double *a, double *b, double *ha, double *hb)
+{
+    int nr = rep->n_reps;
+    for (int i = 0; i < nr; i++)
+        a[i] = b[i] = ha[i] = hb[i] = NAN;
+    for (int i = 0; i < rep->n_runs; i++) {
+        const fw_rep_run *r = &rep->runs[i];
+        if (r->group == g || r->group == ref) {
+            (r->group == g ? a : b)[r->replication] = r->m[m];
+            (r->group == g ? ha : hb)[r->replication] = r->sim_s / 3600.0;
+        }
+    }
+    fw_estimate t = fw_paired_ci(a, b, nr, rep->level);
+    fw_ci_method method = fw_measures[m].method;
+    if (method != FW_CI_POISSON && method != FW_CI_WILSON)
+        return t;
+    /* counts: the conditional binomial, on the events (POISSON) or on the
+     * discordant pairs (WILSON), over the replications both sides have */
+    long long x = 0, y = 0;
+    double hours = 0.0;
+    int pairs = 0;
+    for (int i = 0; i < nr; i++) {
+        if (isnan(a[i]) || isnan(b[i]))
+            continue;
+        pairs++;
+        if (method == FW_CI_WILSON) {
+            x += a[i] != 0.0 && b[i] == 0.0;
+            y += a[i] == 0.0 && b[i] != 0.0;
+        } else {
+            x += llround(a[i] * ha[i]);
+            y += llround(b[i] * hb[i]);
+            hours += 0.5 * (ha[i] + hb[i]);
+        }
+    }
+    if (pairs == 0)
+        return t;
+    fw_estimate e = fw_count_difference(x, y, method == FW_CI_WILSON ? 1.0 / pairs : 1.0 / hours,
+                                        rep->level);
+    e.n = pairs;
+    e.sd = t.sd;
+    if (x + y == 0) /* no events on either side in any pair: exactly no difference seen */
+        e.lo = e.hi = 0.0;
+    return e;
+}
+
+static fw_status add_pairs(fw_study_report *rep, fw_rep_pair *out, int *n_out, int g, int ref,
+                           fw_error *err)
 {
     int nr = rep->n_reps > 0 ? rep->n_reps : 1;
-    double *a = malloc((size_t)nr * sizeof *a), *b = malloc((size_t)nr * sizeof *b);
-    rep->pairs = malloc((size_t)rep->n_groups * FW_NMEASURES * sizeof *rep->pairs);
-    if (!a || !b || !rep->pairs) {
-        free(a);
-        free(b);
+    double *buf = malloc((size_t)nr * 4 * sizeof *buf);
+    if (!buf)
         return fw_fail(err, FW_ERUN, "out of memory");
+    for (int m = 0; m < FW_NMEASURES; m++) {
+        fw_rep_pair *p = &out[(*n_out)++];
+        p->group = g;
+        p->ref_group = ref;
+        p->measure = (fw_measure_id)m;
+        p->est = pair_estimate(rep, g, ref, (fw_measure_id)m, buf, buf + nr, buf + 2 * nr,
+                               buf + 3 * nr);
     }
+    free(buf);
+    return FW_OK;
+}
+
+/* Every setting against the reference domain of its density and behaviour. */
+static fw_status paired(fw_study_report *rep, fw_error *err)
+{
+    rep->pairs = malloc((size_t)rep->n_groups * FW_NMEASURES * sizeof *rep->pairs);
+    if (!rep->pairs)
+        return fw_fail(err, FW_ERUN, "out of memory");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
         if (G->domain == rep->reference_m)
             continue;
         int ref = -1;
         for (int h = 0; h < rep->n_groups; h++)
-            if (rep->groups[h].density == G->density && rep->groups[h].domain == rep->reference_m)
+            if (rep->groups[h].density == G->density && rep->groups[h].domain == rep->reference_m &&
+                strcmp(rep->groups[h].behaviour, G->behaviour) == 0)
                 ref = h;
         if (ref < 0) {
-            char msg[200];
+            char msg[200], b[32] = "";
+            if (G->behaviour[0])
+                snprintf(b, sizeof b, " (%s traffic)", G->behaviour);
             snprintf(msg, sizeof msg,
-                     "density %g has no finished runs with the reference domain: no paired "
-                     "differences for it", G->density);
+                     "density %g%s has no finished runs with the reference domain: no paired "
+                     "differences for it", G->density, b);
             if (fw_rep_note(&rep->warnings, &rep->n_warnings, msg))
-                return free(a), free(b), fw_fail(err, FW_ERUN, "out of memory");
+                return fw_fail(err, FW_ERUN, "out of memory");
             continue;
         }
-        for (int m = 0; m < FW_NMEASURES; m++) {
-            for (int i = 0; i < nr; i++)
-                a[i] = b[i] = NAN;
-            for (int i = 0; i < rep->n_runs; i++) {
-                const fw_rep_run *r = &rep->runs[i];
-                if (r->group == g)
-                    a[r->replication] = r->m[m];
-                else if (r->group == ref)
-                    b[r->replication] = r->m[m];
-            }
-            fw_rep_pair *p = &rep->pairs[rep->n_pairs++];
-            p->group = g;
-            p->ref_group = ref;
-            p->measure = (fw_measure_id)m;
-            p->est = fw_paired_ci(a, b, nr, rep->level);
+        if (add_pairs(rep, rep->pairs, &rep->n_pairs, g, ref, err))
+            return err->status;
+    }
+    return FW_OK;
+}
+
+/* colregs - blind for each (density, domain) that has both. */
+static fw_status behaviour_paired(fw_study_report *rep, fw_error *err)
+{
+    rep->bpairs = malloc((size_t)rep->n_groups * FW_NMEASURES * sizeof *rep->bpairs);
+    if (!rep->bpairs)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    for (int g = 0; g < rep->n_groups; g++) {
+        const fw_rep_group *G = &rep->groups[g];
+        if (strcmp(G->behaviour, "colregs") != 0)
+            continue;
+        for (int h = 0; h < rep->n_groups; h++) {
+            const fw_rep_group *H = &rep->groups[h];
+            if (H->density == G->density && H->domain == G->domain &&
+                strcmp(H->behaviour, "blind") == 0 &&
+                add_pairs(rep, rep->bpairs, &rep->n_bpairs, g, h, err))
+                return err->status;
         }
     }
-    free(a);
-    free(b);
     return FW_OK;
 }
 
@@ -213,16 +331,21 @@ fw_status fw_rep_compute(fw_study_report *rep, double reference_m, fw_error *err
 
     for (int i = 0; i < rep->n_runs; i++)
         run_measures(&rep->runs[i]);
-    double *buf = malloc((size_t)rep->n_runs * sizeof *buf);
+    double *buf = malloc((size_t)rep->n_runs * 2 * sizeof *buf);
     if (!buf)
         return fw_fail(err, FW_ERUN, "out of memory");
     for (int g = 0; g < rep->n_groups; g++) {
         fw_rep_group *G = &rep->groups[g];
         for (int m = 0; m < FW_NMEASURES; m++)
-            G->est[m] = group_estimate(rep, g, (fw_measure_id)m, buf);
+            G->est[m] = group_estimate(rep, g, (fw_measure_id)m, buf, buf + rep->n_runs);
         for (int s = 0; s < FW_REP_NSET; s++)
             for (int t = 0; t < FW_REP_NTYPE; t++)
                 fw_sort(G->cpa[s][t].v, G->cpa[s][t].n);
+        /* encounters of one run share its traffic: the bootstrap over pooled
+         * encounters is somewhat narrow; stated in the report */
+        const fw_rep_values *v = &G->cpa[FW_REP_OWN][FW_REP_ALL];
+        G->cpa_median = fw_bootstrap_median(v->v, v->n, FW_REP_BOOT_REPS, FW_REP_BOOT_SEED,
+                                            rep->level);
     }
     free(buf);
     for (int i = 0; i < rep->n_runs; i++) {
@@ -234,7 +357,7 @@ fw_status fw_rep_compute(fw_study_report *rep, double reference_m, fw_error *err
         for (int t = 0; t < FW_REP_NTYPE; t++)
             G->traffic_count[t] += r->n_traffic[t];
     }
-    if (histograms(rep, err) || paired(rep, err))
+    if (histograms(rep, err) || paired(rep, err) || behaviour_paired(rep, err))
         return err->status;
     return FW_OK;
 }

@@ -1,7 +1,7 @@
 /* schema.h - the SQLite schema of a study database (fairway sweep writes it,
  * fairway report and analysis/ read it).
  *
- * One row in `runs` per (domain, density, replication) of the study's run
+ * One row in `runs` per (domain, density, behaviour, replication) of the study's run
  * list; a run and all its rows are committed in one transaction, so a run is
  * either wholly in the database or not at all.  Units are in the column names
  * (m, s, deg); flags are 0/1.  `meta` holds the study's settings as text
@@ -24,7 +24,7 @@
 #ifndef FW_STUDY_SCHEMA_H
 #define FW_STUDY_SCHEMA_H
 
-#define FW_SCHEMA_VERSION "2"
+#define FW_SCHEMA_VERSION "3"
 
 #define FW_SCHEMA_SQL                                                                   \
     "CREATE TABLE IF NOT EXISTS meta(\n"                                                \
@@ -67,7 +67,7 @@
     "  mon_stopped INTEGER,\n"                                                          \
     "  max_lateral_mps REAL,\n"                                                         \
     "  min_hull_m REAL,\n"               /* hull to hull; NULL: none within 1 nm */      \
-    "  UNIQUE(domain_m, density, replication));\n"                                      \
+    "  UNIQUE(domain_m, density, behaviour, replication));\n"                          \
     "CREATE TABLE IF NOT EXISTS encounters(\n"                                          \
     "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \
     "  target TEXT NOT NULL,\n"                                                         \

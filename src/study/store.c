@@ -77,6 +77,12 @@ static fw_status write_meta(fw_store *st, const fw_study *s, const char *digest,
 {
     char num[64];
     fw_status r;
+    char beh[64] = "";
+    for (int i = 0; i < s->n_behaviours; i++)
+        snprintf(beh + strlen(beh), sizeof beh - strlen(beh), "%s%s", i ? "," : "",
+                 fw_behaviour_name(s->behaviours[i]));
+    if ((r = meta_put(st, "behaviours", beh, err)))
+        return r;
     const char *levels[2] = {"domains_m", "densities"};
     for (int k = 0; k < 2; k++) {
         char text[1024] = "";
@@ -202,10 +208,10 @@ void fw_store_child(void)
 }
 
 static const char kRunSql[] =
-    "INSERT INTO runs(run_id, domain_m, density, replication, seed, status, reason, sim_s, "
-    "wall_s, sumo_s, n_encounters, n_actions, min_dist_m, domain_entered, near_miss, collision, "
-    "colregs_ok, max_helm_deg, path_length_m, path_lengthening_m, time_lost_s, "
-    "rudder_work_deg_s, helm_orders, traffic_ship_s, behaviour, give_way, give_way_short, "
+    "INSERT INTO runs(run_id, domain_m, density, replication, seed, behaviour, status, reason, "
+    "sim_s, wall_s, sumo_s, n_encounters, n_actions, min_dist_m, domain_entered, near_miss, "
+    "collision, colregs_ok, max_helm_deg, path_length_m, path_lengthening_m, time_lost_s, "
+    "rudder_work_deg_s, helm_orders, traffic_ship_s, give_way, give_way_short, "
     "mon_sideways, mon_teleport, mon_overlap, mon_appear, mon_vanish, mon_start_close, "
     "mon_stopped, max_lateral_mps, min_hull_m) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
     "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
@@ -373,6 +379,8 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
     sqlite3_bind_double(q, i++, r.density);
     sqlite3_bind_int(q, i++, r.replication);
     sqlite3_bind_int64(q, i++, (sqlite3_int64)r.seed);
+    /* the study's level, also for a failed run: the pair (domain, behaviour) is its key */
+    sqlite3_bind_text(q, i++, fw_behaviour_name(r.behaviour), -1, SQLITE_STATIC);
     sqlite3_bind_text(q, i++, ok ? "ok" : "failed", -1, SQLITE_STATIC);
     sqlite3_bind_text(q, i++, ok ? "" : o->reason, -1, SQLITE_STATIC);
     bind_num(q, i++, o->sim_s);
@@ -394,7 +402,6 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
     bind_num(q, i++, o->rudder_work_deg_s);
     sqlite3_bind_int(q, i++, o->helm_orders);
     bind_num(q, i++, o->traffic_ship_s);
-    sqlite3_bind_text(q, i++, o->behaviour, -1, SQLITE_STATIC);
     sqlite3_bind_int(q, i++, o->give_way);
     sqlite3_bind_int(q, i++, o->give_way_short);
     const fw_monitor_counts *m = &o->monitors;

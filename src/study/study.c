@@ -63,6 +63,33 @@ static fw_status read_levels(const yt_doc *doc, const yt_node *root, const char 
     return FW_OK;
 }
 
+/* behaviours: [colregs, blind]: each a name fw_behaviour_parse knows, once. */
+static fw_status read_behaviours(const yt_doc *doc, const yt_node *root, fw_study *s,
+                                 fw_error *err)
+{
+    const yt_node *seq = NULL;
+    fw_status st = yt_opt_seq(doc, root, "", "behaviours", &seq, err);
+    if (st || !seq)
+        return st;
+    if (seq->n == 0 || seq->n > FW_STUDY_MAX_BEHAVIOURS)
+        return fw_fail_at(err, doc->file, seq->line, "behaviours", "give 1 to %d names, not %zu",
+                          FW_STUDY_MAX_BEHAVIOURS, seq->n);
+    for (size_t i = 0; i < seq->n; i++) {
+        const yt_node *it = seq->items[i];
+        char field[32];
+        snprintf(field, sizeof field, "behaviours[%zu]", i);
+        if (it->kind != YT_SCALAR || !it->str || fw_behaviour_parse(it->str, &s->behaviours[i]))
+            return fw_fail_at(err, doc->file, it->line, field,
+                              "'%s' is not a behaviour (colregs or blind)",
+                              it->str ? it->str : "");
+        for (size_t j = 0; j < i; j++)
+            if (s->behaviours[j] == s->behaviours[i])
+                return fw_fail_at(err, doc->file, it->line, field, "%s is listed twice", it->str);
+    }
+    s->n_behaviours = (int)seq->n;
+    return FW_OK;
+}
+
 /* The scenario path is relative to the study file's directory; false when
  * the result does not fit in out. */
 static bool resolve(const char *study_file, const char *rel, char *out, size_t outsz)
@@ -151,6 +178,8 @@ static uint64_t digest(const fw_study *s)
         k += snprintf(text + k, sizeof text - (size_t)k, "d%.17g|", s->domains[i]);
     for (int i = 0; i < s->n_densities && k < (int)sizeof text - 32; i++)
         k += snprintf(text + k, sizeof text - (size_t)k, "r%.17g|", s->densities[i]);
+    for (int i = 0; i < s->n_behaviours && k < (int)sizeof text - 32; i++)
+        k += snprintf(text + k, sizeof text - (size_t)k, "b%s|", fw_behaviour_name(s->behaviours[i]));
     uint64_t h = fw_fnv1a(FW_FNV_INIT, text, strlen(text));
     h = file_digest(h, s->scenario_file);
     return file_digest(h, s->base.ship.file);
@@ -159,8 +188,8 @@ static uint64_t digest(const fw_study *s)
 fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
 {
     static const char *const keys[] = {"name", "description", "scenario", "replications", "seed",
-                                       "domains_m", "densities", "duration_s", "start",
-                                       "encounter_m", "near_miss_m", NULL};
+                                       "domains_m", "densities", "behaviours", "duration_s",
+                                       "start", "encounter_m", "near_miss_m", NULL};
     memset(s, 0, sizeof *s);
     if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
         return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
@@ -183,6 +212,7 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
                           err)) ||
         (st = read_levels(doc, root, "densities", 0.0, 100.0, false, s->densities,
                           &s->n_densities, err)) ||
+        (st = read_behaviours(doc, root, s, err)) ||
         (st = yt_opt_number(doc, root, "", "encounter_m", 1.0, 1e6, &s->encounter_range, err)) ||
         (st = yt_opt_number(doc, root, "", "near_miss_m", 0.0, 1e6, &s->near_miss, err)) ||
         (st = yt_opt_map(doc, root, "", "start", &start, err)))
@@ -204,7 +234,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
     }
     s->replications = (int)reps;
     s->seed = (unsigned long)seed;
-    if ((long)s->replications * s->n_domains * (s->n_densities ? s->n_densities : 1) > 10000000L) {
+    if ((long)s->replications * s->n_domains * (s->n_densities ? s->n_densities : 1) *
+            (s->n_behaviours ? s->n_behaviours : 1) > 10000000L) {
         st = fw_fail_at(err, doc->file, yt_key_line(root, "replications"), "replications",
                         "more than 10 million runs");
         goto out;
@@ -225,6 +256,10 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
         st = fw_fail_at(err, doc->file, yt_key_line(root, "scenario"), "scenario",
                         "%s has no traffic (no network and no targets)", s->scenario_file);
         goto out;
+    }
+    if (s->n_behaviours == 0) {
+        s->n_behaviours = 1;
+        s->behaviours[0] = s->base.reactions.behaviour;
     }
     if (s->n_densities == 0) {
         s->n_densities = 1;
@@ -252,17 +287,20 @@ out:
 
 int fw_study_run_count(const fw_study *s)
 {
-    return s->n_densities * s->replications * s->n_domains;
+    return s->n_densities * s->replications * s->n_behaviours * s->n_domains;
 }
 
 fw_study_run fw_study_run_at(const fw_study *s, int run_id)
 {
     fw_study_run r = {.run_id = run_id};
+    int per_rep = s->n_domains * s->n_behaviours;
     r.domain_index = run_id % s->n_domains;
-    r.replication = (run_id / s->n_domains) % s->replications;
-    r.density_index = run_id / (s->n_domains * s->replications);
+    r.behaviour_index = (run_id / s->n_domains) % s->n_behaviours;
+    r.replication = (run_id / per_rep) % s->replications;
+    r.density_index = run_id / (per_rep * s->replications);
     r.domain = s->domains[r.domain_index];
     r.density = s->densities[r.density_index];
+    r.behaviour = s->behaviours[r.behaviour_index];
     /* the replication alone decides seed and start: common random numbers */
     uint64_t base = mix((uint64_t)s->seed * 0x100000001b3ull + (uint64_t)r.replication);
     r.seed = 1 + (unsigned long)(base % 2147483646ull);
@@ -277,6 +315,7 @@ void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *ou
     snprintf(out->name, sizeof out->name, "%.40s-%06d", s->name, r->run_id);
     out->helm.domain.size = r->domain;
     out->density = r->density;
+    out->reactions.behaviour = r->behaviour;
     out->seed = r->seed;
     out->duration = s->duration;
     double se = sin(out->course), ce = cos(out->course);

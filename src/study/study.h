@@ -1,11 +1,13 @@
-/* study.h - a Monte Carlo study: a base scenario, the domain sizes, densities
- * and replications to sweep, and the run list they make.
+/* study.h - a Monte Carlo study: a base scenario, the domain sizes, densities,
+ * background behaviours and replications to sweep, and the run list they make.
  *
  * Common random numbers: replication i has one seed (SUMO's and the demand's)
- * and one own-ship start for every domain size and density, so differences
- * between domain sizes are paired.  The run list is ordered replication-major
- * (all domains of replication 0, then of replication 1, ...), so a sweep cut
- * short still holds complete paired sets.  run_id is the index in that list.
+ * and one own-ship start for every domain size, behaviour and density, so
+ * differences between domain sizes and between behaviours are paired.  The
+ * run list is ordered replication-major (all domains of behaviour 0 of
+ * replication 0, then all domains of behaviour 1, then replication 1, ...), so
+ * a sweep cut short still holds complete paired sets.  run_id is the index in
+ * that list; with one behaviour it is the list of a study without the axis.
  *
  * A study file (YAML, units in the key names; errors "FILE:LINE: FIELD: ..."):
  *
@@ -15,6 +17,7 @@
  *   seed: 1
  *   domains_m: [150, 300, 600, 1000]
  *   densities: [1, 2]            # optional: the scenario's density
+ *   behaviours: [colregs, blind] # optional: the scenario's traffic.behaviour
  *   duration_s: 3600             # optional: the scenario's duration
  *   start: {along_m: 1000, across_m: 300}  # optional: own-ship start spread
  *   encounter_m: 1852            # optional: a target passing closer is an encounter
@@ -30,6 +33,7 @@
 
 #define FW_STUDY_MAX_LEVELS 32
 #define FW_STUDY_MAX_INPUTS 12
+#define FW_STUDY_MAX_BEHAVIOURS 2
 
 /* One file a run of the study reads, and the digest of its bytes: a resumed
  * sweep refuses when any of them changed, naming it. */
@@ -51,6 +55,8 @@ typedef struct fw_study {
     double domains[FW_STUDY_MAX_LEVELS];   /* m */
     int n_densities;
     double densities[FW_STUDY_MAX_LEVELS];
+    int n_behaviours;        /* 1 when the study does not sweep them */
+    fw_behaviour behaviours[FW_STUDY_MAX_BEHAVIOURS];
     double duration;         /* s */
     double start_along;      /* m, uniform spread of the start along the course */
     double start_across;     /* m, and across it */
@@ -64,9 +70,10 @@ typedef struct fw_study {
 typedef struct fw_study_run {
     int run_id;
     int replication;
-    int domain_index, density_index;
+    int domain_index, density_index, behaviour_index;
     double domain;           /* m */
     double density;
+    fw_behaviour behaviour;  /* of the background ships */
     unsigned long seed;
     double d_along, d_across; /* m, start offset of this replication */
 } fw_study_run;
@@ -78,8 +85,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err);
 int fw_study_run_count(const fw_study *s);
 /* Run run_id (0 <= run_id < fw_study_run_count). */
 fw_study_run fw_study_run_at(const fw_study *s, int run_id);
-/* The scenario of one run: the base with the run's domain, density, seed,
- * duration and start, named "<study>-<run_id>". */
+/* The scenario of one run: the base with the run's domain, density,
+ * behaviour, seed, duration and start, named "<study>-<run_id>". */
 void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *out);
 
 /* 64-bit FNV-1a, chained through h (start with FW_FNV_INIT). */
