@@ -56,10 +56,78 @@ static void test_domain(void)
     CHECK_NEAR(fw_domain_lambda(&dom, 0, 0, FW_PI, &t), 1.0, 1e-12);
 }
 
+static fw_hull_track track(double e, double n, double hdg_deg, double v, double l, double b)
+{
+    double h = hdg_deg * M_PI / 180.0;
+    fw_hull_track k = {e, n, h, v * sin(h), v * cos(h), l, b};
+    return k;
+}
+
+/* Brute force: the smallest hull distance sampled every dt up to t_end. */
+static double sampled_min(const fw_hull_track *a, const fw_hull_track *b, double t_end, double dt)
+{
+    double m = INFINITY;
+    for (double t = 0.0; t <= t_end; t += dt)
+        m = fmin(m, fw_hull_distance(a->east + a->ve * t, a->north + a->vn * t, a->heading,
+                                     a->length, a->breadth, b->east + b->ve * t,
+                                     b->north + b->vn * t, b->heading, b->length, b->breadth));
+    return m;
+}
+
+/* Geometric collision candidates on hand-built tracks: a hit, a miss by a
+ * metre, parallel tracks, a crossing, a pair already past. */
+static void test_hull_cpa(void)
+{
+    /* head-on on one line, two 100 x 20 m hulls closing at 10 m/s from 2000 m:
+     * bows meet at 190 s, sterns part at 210 s */
+    fw_hull_track a = track(0, 0, 0, 5, 100, 20), b = track(0, 2000, 180, 5, 100, 20);
+    double t = -1.0;
+    CHECK(fw_hull_cpa(&a, &b, INFINITY, &t) == 0.0);
+    CHECK(t >= 190.0 - 1e-6 && t <= 210.0 + 1e-6);
+    /* the same 21 m apart abeam: the sides pass 1 m apart (half breadths 10 + 10) */
+    b = track(21, 2000, 180, 5, 100, 20);
+    CHECK_NEAR(fw_hull_cpa(&a, &b, INFINITY, &t), 1.0, 1e-6);
+    CHECK(t >= 190.0 && t <= 210.0);
+    /* 19 m apart: contact by a metre */
+    b = track(19, 2000, 180, 5, 100, 20);
+    CHECK(fw_hull_cpa(&a, &b, INFINITY, NULL) == 0.0);
+    /* a horizon before the meeting: not yet */
+    b = track(0, 2000, 180, 5, 100, 20);
+    CHECK_NEAR(fw_hull_cpa(&a, &b, 100.0, &t), 2000.0 - 100.0 - 1000.0, 1e-6);
+    CHECK_NEAR(t, 100.0, 1e-9);
+    /* parallel, same speed, 50 m apart: no relative motion, 30 m for ever */
+    b = track(50, 0, 0, 5, 100, 20);
+    CHECK_NEAR(fw_hull_cpa(&a, &b, INFINITY, &t), 30.0, 1e-9);
+    CHECK(t == 0.0);
+    /* parallel, overtaking at 2 m/s more, 25 m apart: sides 5 m apart while alongside */
+    b = track(25, -500, 0, 7, 100, 20);
+    CHECK_NEAR(fw_hull_cpa(&a, &b, INFINITY, NULL), 5.0, 1e-6);
+    /* crossing at right angles, both at the origin at 200 s: a hit */
+    a = track(0, -1000, 0, 5, 100, 20);
+    b = track(1000, 0, 270, 5, 80, 15);
+    CHECK(fw_hull_cpa(&a, &b, INFINITY, NULL) == 0.0);
+    /* the crossing ship 150 m later: it passes astern, against brute force */
+    b = track(1150, 0, 270, 5, 80, 15);
+    double m = fw_hull_cpa(&a, &b, INFINITY, &t);
+    CHECK(m > 0.0);
+    CHECK_NEAR(m, sampled_min(&a, &b, 400.0, 0.001), 1e-3);
+    /* rotated hulls on an oblique crossing, against brute force */
+    a = track(-300, -900, 35, 6, 250, 40);
+    b = track(900, -100, 290, 4, 180, 30);
+    m = fw_hull_cpa(&a, &b, INFINITY, &t);
+    CHECK_NEAR(m, sampled_min(&a, &b, 600.0, 0.001), 1e-3);
+    /* already past and opening: the distance now */
+    a = track(0, 0, 0, 5, 100, 20);
+    b = track(0, -500, 180, 5, 100, 20);
+    CHECK_NEAR(fw_hull_cpa(&a, &b, INFINITY, &t), 400.0, 1e-9);
+    CHECK(t == 0.0);
+}
+
 int main(void)
 {
     TEST_RUN(test_body_frame_and_cpa);
     TEST_RUN(test_hull_distance);
+    TEST_RUN(test_hull_cpa);
     TEST_RUN(test_domain);
     return TEST_EXIT();
 }

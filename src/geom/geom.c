@@ -119,3 +119,62 @@ int fw_target_find(const fw_target *t, int n, const char *id)
             return i;
     return -1;
 }
+
+fw_hull_track fw_hull_track_of(const fw_target *t)
+{
+    fw_hull_track k = {.east = t->east, .north = t->north, .heading = t->course,
+                       .length = t->length, .breadth = t->breadth};
+    fw_velocity(t->speed, t->course, &k.ve, &k.vn);
+    return k;
+}
+
+static double track_distance(const fw_hull_track *a, const fw_hull_track *b, double t)
+{
+    return fw_hull_distance(a->east + a->ve * t, a->north + a->vn * t, a->heading, a->length,
+                            a->breadth, b->east + b->ve * t, b->north + b->vn * t, b->heading,
+                            b->length, b->breadth);
+}
+
+double fw_hull_cpa(const fw_hull_track *a, const fw_hull_track *b, double horizon, double *t_min)
+{
+    double dx = b->east - a->east, dy = b->north - a->north;
+    double ux = b->ve - a->ve, uy = b->vn - a->vn, u = hypot(ux, uy);
+    double tc, dc;
+    fw_cpa(dx, dy, ux, uy, &tc, &dc);
+    /* the hull distance h and the centre distance c satisfy c - R <= h <= c,
+     * R the sum of the half diagonals, so a minimiser has c <= dcpa + R:
+     * within w of the centres' TCPA */
+    double R = 0.5 * (hypot(a->length, a->breadth) + hypot(b->length, b->breadth));
+    double w = u > 1e-9 ? sqrt(fmax(0.0, (dc + R) * (dc + R) - dc * dc)) / u : 0.0;
+    double lo = fmax(0.0, tc - w), hi = fmin(horizon, tc + w);
+    if (!(u > 1e-9) || !(hi > lo)) {
+        /* no relative motion, or the closest approach is behind (or beyond
+         * the horizon): the nearest end of the interval */
+        double t = !(u > 1e-9) || tc + w <= 0.0 ? 0.0 : fmin(horizon, fmax(0.0, lo));
+        if (t_min)
+            *t_min = t;
+        return track_distance(a, b, t);
+    }
+    const double g = 0.5 * (sqrt(5.0) - 1.0);
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    double f1 = track_distance(a, b, x1), f2 = track_distance(a, b, x2);
+    for (int i = 0; i < 200 && hi - lo > 1e-9 && f1 + f2 > 0.0; i++) {
+        if (f1 <= f2) {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = track_distance(a, b, x1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = track_distance(a, b, x2);
+        }
+    }
+    double t = f1 <= f2 ? x1 : x2, f = fmin(f1, f2);
+    if (t_min)
+        *t_min = t;
+    return f;
+}

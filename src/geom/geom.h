@@ -5,7 +5,9 @@
  *   CPA/TCPA     closest point of approach of two ships at constant velocity
  *   domain       the own ship's domain, an ellipse aligned with its heading,
  *                grown by the other ship's hull (fw_domain_def below)
- *   hulls        do two oriented rectangles overlap (the collision test)
+ *   hulls        do two oriented rectangles overlap (the collision test), how
+ *                far apart are they, and how close would they come on straight
+ *                tracks (the geometric collision candidate)
  *
  * Used by the assessment and the helm search (src/avoid), the records
  * (src/run), the survey (src/survey), the scenario checks and the oracle.
@@ -97,5 +99,29 @@ bool fw_hulls_overlap(double e1, double n1, double psi1, double l1, double b1, d
  * the hull-to-hull measure of closest approaches and near misses. */
 double fw_hull_distance(double e1, double n1, double psi1, double l1, double b1, double e2,
                         double n2, double psi2, double l2, double b2);
+
+/* A hull on a straight track: where it is, its heading (the rectangle's
+ * orientation, kept), its velocity over ground and its size. */
+typedef struct fw_hull_track {
+    double east, north;  /* m, hull centre at t = 0 */
+    double heading;      /* rad */
+    double ve, vn;       /* m/s east, north */
+    double length, breadth;
+} fw_hull_track;
+
+/* The track of target t: its course is heading and direction of motion. */
+fw_hull_track fw_hull_track_of(const fw_target *t);
+
+/* Smallest hull-to-hull distance of a and b moving on their straight tracks
+ * over 0 <= t <= horizon (INFINITY: all the future), and when (t_min may be
+ * NULL).  0 means the hulls would come into contact: the two ships are a
+ * geometric collision candidate in the sense of Pedersen (1995) and IWRAP,
+ * "ships that would collide if no aversive manoeuvre were made", taken per
+ * encounter from its first detection.  Exact up to rounding: the headings
+ * stay fixed, so the distance is the distance of a point moving on a line
+ * from a convex set (the Minkowski difference of the rectangles), a convex
+ * function of t, minimised by golden-section search on a bracket around the
+ * centres' closest approach that holds every minimiser. */
+double fw_hull_cpa(const fw_hull_track *a, const fw_hull_track *b, double horizon, double *t_min);
 
 #endif
