@@ -403,6 +403,73 @@ static void test_behaviours(void)
     free(md);
 }
 
+static long long count_sql(sqlite3 *db, const char *sql)
+{
+    sqlite3_stmt *st = NULL;
+    long long n = -1;
+    if (sqlite3_prepare_v2(db, sql, -1, &st, NULL) == SQLITE_OK && sqlite3_step(st) == SQLITE_ROW)
+        n = sqlite3_column_int64(st, 0);
+    sqlite3_finalize(st);
+    return n;
+}
+
+/* The causation-factor table: the hand study's encounters marked as
+ * candidates when they entered the domain, the outcome from their flags
+ * (at 100 m: 3 crossing candidates, 1 collision),
+ * and two traffic pairs; the report's counts against SQL's own. */
+static void test_causation(void)
+{
+    char db_path[300], out[300], p[400];
+    snprintf(db_path, sizeof db_path, "%s/cand.db", dir);
+    snprintf(out, sizeof out, "%s/cand", dir);
+    CHECK(sdb_hand(db_path) == 0);
+    sqlite3 *db;
+    sqlite3_open(db_path, &db);
+    CHECK(sdb_exec(db, "UPDATE encounters SET candidate = domain_entered, cand_miss_m = 0, "
+                       "outcome = CASE WHEN collision THEN 'collision' WHEN near_miss THEN "
+                       "'near miss' WHEN domain_entered THEN 'domain' ELSE 'passed' END;"
+                       "INSERT INTO traffic_encounters(run_id, ship_a, ship_b, type, own, "
+                       "t_first_s, candidate, outcome) VALUES(0, 'a', 'b', 'crossing', 0, 10, 1, "
+                       "'collision'), (0, 'a', 'c', 'crossing', 0, 20, 1, 'passed'), "
+                       "(0, 'a', 'own', 'crossing', 1, 30, 1, 'collision')") == 0);
+    long long n_cand = count_sql(db, "SELECT COUNT(*) FROM encounters e JOIN runs r USING(run_id) "
+                                     "WHERE r.status = 'ok' AND r.domain_m = 100 AND candidate AND "
+                                     "situation IN ('crossing give-way', 'crossing stand-on')");
+    long long n_coll = count_sql(db, "SELECT COUNT(*) FROM encounters e JOIN runs r USING(run_id) "
+                                     "WHERE r.status = 'ok' AND r.domain_m = 100 AND candidate AND "
+                                     "outcome = 'collision' AND situation LIKE 'crossing%'");
+    sqlite3_close(db);
+    CHECK(n_cand == 3 && n_coll == 1);
+    fw_error err = {0};
+    fw_study_report_result res;
+    CHECK_MSG(report(db_path, out, NAN, false, &res, &err) == FW_OK, "%s", err.msg);
+    snprintf(p, sizeof p, "%s/causation.csv", out);
+    const char *w = "domain_m=100,set=own,type=crossing";
+    CHECK(csv_get(p, w, "candidates") == n_cand);
+    CHECK(csv_get(p, w, "collisions") == n_coll);
+    fw_estimate e = fw_clopper_pearson((int)n_coll, (int)n_cand, 0.95);
+    CHECK_NEAR(csv_get(p, w, "ci_high"), e.hi, 1e-9);
+    CHECK_NEAR(csv_get(p, w, "ci_low"), 0.00840, 5e-6); /* 1 of 3: [0.0084, 0.906] */
+    CHECK_NEAR(csv_get(p, w, "ci_high"), 0.9057, 5e-5);
+    CHECK_NEAR(csv_get(p, w, "iwrap"), 1.3e-4, 1e-12);
+    /* traffic: the two background pairs (the own ship's pair is not traffic), 1 of 2
+     * collided: Clopper-Pearson [0.0126, 0.987] */
+    w = "domain_m=100,set=traffic,type=crossing";
+    CHECK(csv_get(p, w, "candidates") == 2 && csv_get(p, w, "collisions") == 1);
+    CHECK_NEAR(csv_get(p, w, "ci_low"), 0.0126, 5e-5);
+    CHECK_NEAR(csv_get(p, w, "ci_high"), 0.9874, 5e-5);
+    CHECK(csv_get(p, "domain_m=100,set=traffic,type=head-on", "candidates") == 0);
+    snprintf(p, sizeof p, "%s/report.md", out);
+    char *md = slurp(p);
+    CHECK(md != NULL);
+    if (md) {
+        CHECK_CONTAINS(md, "## Measured causation factor");
+        CHECK_CONTAINS(md, "| traffic | 1 | - | 100 | 0 candidates | 0 candidates | 1/2 = 0.50 [0.013, 0.99] |");
+        CHECK_CONTAINS(md, "head-on 4.9e-05, overtaking 0.00011");
+    }
+    free(md);
+}
+
 /* Oddities that do not stop the report are named in it. */
 static void test_warnings(void)
 {
@@ -503,6 +570,7 @@ int main(void)
     TEST_RUN(test_refusals);
     TEST_RUN(test_warnings);
     TEST_RUN(test_behaviours);
+    TEST_RUN(test_causation);
     TEST_RUN(test_directory);
     int rc = TEST_EXIT();
     if (rc == 0)

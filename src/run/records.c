@@ -137,11 +137,24 @@ static bool action_ok(fw_situation situation, int side)
     return true;
 }
 
+/* The own ship's and the target's straight tracks from now: how close their
+ * hulls would come without manoeuvres (0: a geometric collision candidate). */
+static double candidate_miss(const fw_records *r, const fw_mmg_state *own, const fw_target *ts)
+{
+    double s = sin(own->psi), c = cos(own->psi);
+    fw_hull_track a = {own->east, own->north, own->psi, own->u * s + own->vm * c,
+                       own->u * c - own->vm * s, r->s->ship.Loa, r->s->ship.B};
+    fw_hull_track b = fw_hull_track_of(ts);
+    return fw_hull_cpa(&a, &b, INFINITY, NULL);
+}
+
 fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mmg_state *own,
                             const fw_assessment *as, bool record_row, fw_error *err)
 {
     fw_encounter *e = find(r, ts->id);
-    fw_status st = e ? FW_OK : add(r, t, ts, as, &e, err);
+    fw_status st = FW_OK;
+    if (!e && !(st = add(r, t, ts, as, &e, err)))
+        e->cand_miss = candidate_miss(r, own, ts);
     if (st)
         return st;
     if (as->enters_domain)

@@ -55,6 +55,9 @@ typedef struct fw_encounter {
     bool domain_entered;
     bool collision;         /* hulls overlapped */
     bool colregs_ok;
+    double cand_miss;       /* m, hull to hull on both straight tracks from first
+                               detection (geom.h fw_hull_cpa): 0 = a geometric
+                               collision candidate */
 } fw_encounter;
 
 typedef enum fw_run_status { FW_RUN_OK, FW_RUN_FAILED } fw_run_status;

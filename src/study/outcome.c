@@ -25,6 +25,15 @@ void fw_outcome_free(fw_outcome *o)
     o->n_enc = o->n_traffic = 0;
 }
 
+const char *fw_outcome_ended(bool collision, double min_hull, double near_miss, bool domain)
+{
+    if (collision || min_hull == 0.0)
+        return "collision";
+    if (min_hull < near_miss)
+        return "near miss";
+    return domain ? "domain" : "passed";
+}
+
 fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
                               const fw_run_summary *sum, const fw_encounter *e, int n,
                               const fw_survey_record *sv, int n_sv, fw_error *err)
@@ -69,6 +78,11 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
         y->tcpa0 = sv[i].tcpa0;
         y->min_dist = sv[i].min_dist;
         y->t_min = sv[i].t_min;
+        y->min_hull = isfinite(sv[i].min_hull) ? sv[i].min_hull : NAN;
+        y->cand_miss = sv[i].cand_miss;
+        y->candidate = sv[i].cand_miss == 0.0;
+        snprintf(y->outcome, sizeof y->outcome, "%s",
+                 fw_outcome_ended(false, sv[i].min_hull, s->near_miss, false));
     }
     o->enc = n > 0 ? calloc((size_t)n, sizeof *o->enc) : NULL;
     if (n > 0 && !o->enc) {
@@ -99,6 +113,10 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
         y->collision = x->collision;
         y->colregs_ok = x->colregs_ok;
         y->min_hull = isfinite(x->min_hull) ? x->min_hull : NAN;
+        y->cand_miss = x->cand_miss;
+        y->candidate = x->cand_miss == 0.0;
+        snprintf(y->outcome, sizeof y->outcome, "%s",
+                 fw_outcome_ended(x->collision, x->min_hull, s->near_miss, x->domain_entered));
     }
     return FW_OK;
 }

@@ -2,6 +2,11 @@
  * own-ship encounters and its traffic-level encounters, flat, with no
  * pointers into the run, so it can cross a pipe or an MPI message as bytes.
  *
+ * Every encounter, own-ship and traffic-level, says whether it was a
+ * geometric collision candidate (its straight tracks from first detection
+ * would have brought the hulls into contact, geom.h fw_hull_cpa) and how it
+ * ended (fw_outcome_ended): the causation factor is collisions / candidates.
+ *
  * A target counts as an own-ship encounter when it passed within the study's
  * encounter range or the own ship predicted it to enter its domain (a
  * "threat"); the ships merely seen on the radar are not kept.
@@ -25,13 +30,25 @@ typedef struct fw_outcome_encounter {
     double min_dist, t_min, min_lambda;
     int domain_entered, near_miss, collision, colregs_ok;
     double min_hull;                /* m, NAN if never within 1 nm */
+    double cand_miss;               /* m, straight tracks from first detection */
+    int candidate;                  /* cand_miss == 0: a geometric collision candidate */
+    char outcome[16];               /* fw_outcome_ended */
 } fw_outcome_encounter;
 
 typedef struct fw_outcome_traffic {
     char ship_a[64], ship_b[64], type[16];
     int own;
     double t_first, range0, dcpa0, tcpa0, min_dist, t_min;
+    double min_hull;                /* m, NAN if never within the survey's hull watch */
+    double cand_miss;
+    int candidate;
+    char outcome[16];
 } fw_outcome_traffic;
+
+/* How an encounter ended, the worst that happened: "collision" (the hulls
+ * touched), "near miss" (hull to hull closer than near_miss), "domain" (the
+ * own domain entered; own-ship encounters only) or "passed". */
+const char *fw_outcome_ended(bool collision, double min_hull, double near_miss, bool domain);
 
 typedef struct fw_outcome {
     int run_id;

@@ -7,6 +7,9 @@
  *   paired.csv     differences from the reference domain, same replications
  *   behaviour.csv  colregs - blind of the same density and domain (a study that
  *                  swept the background behaviour), same replications
+ *   causation.csv  geometric collision candidates per setting, set (own,
+ *                  traffic) and type, how they ended, the measured causation
+ *                  factor with its Clopper-Pearson interval and IWRAP's
  *   cpa.csv        pooled CPA percentiles per setting and encounter type
  *   cpa_hist.csv   CPA histograms on one set of bins per own/traffic
  *
@@ -202,13 +205,41 @@ static fw_status write_hist(const fw_study_report *rep, const char *dir, fw_erro
     return csv_close(&c, err);
 }
 
+static fw_status write_causation(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    csv c;
+    if (csv_open(&c, dir, "causation.csv",
+                 "density,behaviour,domain_m,set,type,candidates,collisions,near_misses,domain,"
+                 "passed,non_candidate_collisions,causation,ci_low,ci_high,iwrap",
+                 err))
+        return err->status;
+    for (int g = 0; g < rep->n_groups && rep->candidates; g++)
+        for (int s = 0; s < FW_REP_NSET; s++)
+            for (int t = 0; t < FW_REP_NTYPE; t++) {
+                const fw_rep_group *G = &rep->groups[g];
+                const long long *k = G->cand[s][t];
+                setting(c.f, G);
+                fprintf(c.f, ",%s,%s", fw_rep_set_names[s], fw_rep_type_names[t]);
+                for (int i = 0; i < FW_CAND_NSLOT; i++)
+                    fprintf(c.f, ",%lld", k[i]);
+                fw_estimate e = fw_clopper_pearson((int)k[FW_CAND_COLLISION], (int)k[FW_CAND_N],
+                                                   rep->level);
+                num(c.f, e.mean);
+                num(c.f, e.lo);
+                num(c.f, e.hi);
+                num(c.f, fw_iwrap_causation[t]);
+                fputc('\n', c.f);
+            }
+    return csv_close(&c, err);
+}
+
 fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_error *err)
 {
     if (write_runs(rep, dir, err) || write_summary(rep, dir, err) ||
         write_traffic(rep, dir, err) ||
         write_pairs(rep, rep->pairs, rep->n_pairs, dir, "paired.csv", err) ||
         write_pairs(rep, rep->bpairs, rep->n_bpairs, dir, "behaviour.csv", err) ||
-        write_cpa(rep, dir, err) ||
+        write_cpa(rep, dir, err) || write_causation(rep, dir, err) ||
         write_hist(rep, dir, err))
         return err->status;
     return FW_OK;

@@ -109,6 +109,16 @@ typedef struct fw_rep_values {
 enum { FW_REP_OWN, FW_REP_TRAFFIC, FW_REP_NSET };
 extern const char *const fw_rep_set_names[FW_REP_NSET];
 
+/* Geometric collision candidates and how they ended (schema.h), per set
+ * (own ship, traffic pairs without it) and type: candidates, then of them
+ * collision, near miss, domain, passed; and collisions of non-candidates. */
+enum { FW_CAND_N, FW_CAND_COLLISION, FW_CAND_NEAR, FW_CAND_DOMAIN, FW_CAND_PASSED, FW_CAND_OTHER_COLL,
+       FW_CAND_NSLOT };
+extern const char *const fw_cand_outcomes[4]; /* "collision", "near miss", "domain", "passed" */
+/* IWRAP Mk II's default causation factors by type (index fw_rep_type; "all": none):
+ * head-on 4.9e-5, overtaking 1.1e-4 (Fujii et al. 1974), crossing 1.3e-4 (Pedersen 1995). */
+extern const double fw_iwrap_causation[FW_REP_NTYPE];
+
 typedef struct fw_rep_group {
     double density, domain;
     char behaviour[16];
@@ -117,6 +127,7 @@ typedef struct fw_rep_group {
     fw_estimate cpa_median;                         /* own-ship CPA, bootstrap interval */
     fw_rep_values cpa[FW_REP_NSET][FW_REP_NTYPE];  /* sorted after loading */
     long long traffic_count[FW_REP_NTYPE];          /* pooled over the runs */
+    long long cand[FW_REP_NSET][FW_REP_NTYPE][FW_CAND_NSLOT]; /* candidates, pooled */
     double traffic_ship_s;
     int *hist[FW_REP_NSET];                          /* CPA histogram of the type "all" */
 } fw_rep_group;
@@ -167,6 +178,7 @@ struct fw_study_report {
     int mon_runs;
     double max_lateral;            /* m/s, the largest in any run */
     char behaviour[64];            /* the background ships': "colregs", "blind" or both */
+    bool candidates;               /* the database has the candidate columns filled */
     long long give_way;            /* their speed orders */
 };
 

@@ -24,6 +24,8 @@ const char *const fw_rep_situation_names[FW_REP_NSIT] = {
     "head-on", "overtaking", "being overtaken", "crossing give-way", "crossing stand-on"};
 const char *const fw_rep_type_names[FW_REP_NTYPE] = {"all", "head-on", "overtaking", "crossing"};
 const char *const fw_rep_set_names[FW_REP_NSET] = {"own", "traffic"};
+const char *const fw_cand_outcomes[4] = {"collision", "near miss", "domain", "passed"};
+const double fw_iwrap_causation[FW_REP_NTYPE] = {NAN, 4.9e-5, 1.1e-4, 1.3e-4};
 
 /* The traffic-level type an own-ship situation belongs to. */
 static const fw_rep_type sit_type[FW_REP_NSIT] = {FW_REP_T_HEAD_ON, FW_REP_T_OVERTAKING,
@@ -374,6 +376,52 @@ static fw_status read_traffic(loader *L)
     return step_done(L, st, rc);
 }
 
+/* Candidates and their outcomes: own-ship encounters by their folded
+ * situation, traffic pairs without the own ship (those are the own set). */
+static fw_status read_candidates(loader *L)
+{
+    static const char *const sql[FW_REP_NSET] = {
+        "SELECT run_id, situation, candidate, outcome FROM encounters WHERE candidate IS NOT NULL",
+        "SELECT run_id, type, candidate, outcome FROM traffic_encounters "
+        "WHERE own = 0 AND candidate IS NOT NULL"};
+    fw_study_report *rep = L->rep;
+    for (int set = 0; set < FW_REP_NSET; set++) {
+        sqlite3_stmt *st;
+        if (prepare(L, sql[set], &st))
+            return L->err->status;
+        int rc;
+        while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
+            fw_rep_run *r = find_run(rep, sqlite3_column_int64(st, 0));
+            if (!r)
+                continue;
+            const char *name = col_text(st, 1);
+            int t = name_index(fw_rep_type_names + 1, FW_REP_NTYPE - 1, name) + 1;
+            if (set == FW_REP_OWN) {
+                int k = name_index(fw_rep_situation_names, FW_REP_NSIT, name);
+                t = k < 0 ? -1 : (int)sit_type[k];
+            }
+            int o = name_index(fw_cand_outcomes, 4, col_text(st, 3));
+            if (t <= 0 || o < 0) {
+                sqlite3_finalize(st);
+                return fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown encounter type '%s' or "
+                               "outcome '%s'", L->file, r->run_id, name, col_text(st, 3));
+            }
+            long long *c = rep->groups[r->group].cand[set][t], *a = rep->groups[r->group].cand[set][0];
+            bool cand = sqlite3_column_int(st, 2) != 0;
+            rep->candidates = true;
+            if (cand) {
+                c[FW_CAND_N]++, a[FW_CAND_N]++;
+                c[FW_CAND_COLLISION + o]++, a[FW_CAND_COLLISION + o]++;
+            } else if (o == 0) {
+                c[FW_CAND_OTHER_COLL]++, a[FW_CAND_OTHER_COLL]++;
+            }
+        }
+        if (step_done(L, st, rc))
+            return L->err->status;
+    }
+    return FW_OK;
+}
+
 /* The traffic monitors and the background behaviour, summed over the
  * finished runs; an older database without the columns has none. */
 static fw_status read_monitors(loader *L)
@@ -416,7 +464,8 @@ static fw_status read_all(loader *L)
                            L->file, L->rep->n_failed, L->rep->reasons[0].text);
         return fw_fail(L->err, FW_EINPUT, "%s: no finished runs", L->file);
     }
-    if (make_groups(L) || read_encounters(L) || read_traffic(L) || read_monitors(L))
+    if (make_groups(L) || read_encounters(L) || read_traffic(L) || read_monitors(L) ||
+        read_candidates(L))
         return L->err->status;
     return FW_OK;
 }

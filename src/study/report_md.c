@@ -215,6 +215,107 @@ static void md_behaviour(FILE *f, const fw_study_report *rep)
     fprintf(f, "\n");
 }
 
+/* "k/n = p [lo, hi]" of collisions among candidates, Clopper-Pearson. */
+static const char *cf_cell(char *out, size_t sz, const long long *c, double level)
+{
+    if (c[FW_CAND_N] == 0)
+        return snprintf(out, sz, "0 candidates"), out;
+    fw_estimate e = fw_clopper_pearson((int)c[FW_CAND_COLLISION], (int)c[FW_CAND_N], level);
+    char m[32], lo[32], hi[32];
+    snprintf(out, sz, "%lld/%lld = %s [%s, %s]", c[FW_CAND_COLLISION], c[FW_CAND_N],
+             fw_rep_fmt(m, e.mean), fw_rep_fmt(lo, e.lo), fw_rep_fmt(hi, e.hi));
+    return out;
+}
+
+/* The candidates of a set summed over the groups of one behaviour (density
+ * too): what a causation factor needs is many candidates. */
+static void cf_pool(const fw_study_report *rep, int set, const char *behaviour,
+                    long long out[FW_REP_NTYPE][FW_CAND_NSLOT])
+{
+    memset(out, 0, sizeof(long long) * FW_REP_NTYPE * FW_CAND_NSLOT);
+    for (int g = 0; g < rep->n_groups; g++)
+        if (strcmp(rep->groups[g].behaviour, behaviour) == 0)
+            for (int t = 0; t < FW_REP_NTYPE; t++)
+                for (int k = 0; k < FW_CAND_NSLOT; k++)
+                    out[t][k] += rep->groups[g].cand[set][t][k];
+}
+
+static void cf_row(FILE *f, const char *lead, const long long c[FW_REP_NTYPE][FW_CAND_NSLOT],
+                   double level)
+{
+    char b[96];
+    fprintf(f, "%s", lead);
+    for (int t = 1; t < FW_REP_NTYPE; t++)
+        fprintf(f, " %s |", cf_cell(b, sizeof b, c[t], level));
+    fprintf(f, " %lld / %lld / %lld | %lld |\n", c[0][FW_CAND_NEAR], c[0][FW_CAND_DOMAIN],
+            c[0][FW_CAND_PASSED], c[0][FW_CAND_OTHER_COLL]);
+}
+
+/* The measured causation factor beside IWRAP's, and what the difference means. */
+static void md_causation(FILE *f, const fw_study_report *rep)
+{
+    if (!rep->candidates)
+        return;
+    char b[96], x[32], y[32], z[32];
+    fprintf(f, "## Measured causation factor\n\n"
+               "A geometric collision candidate is an encounter whose two straight tracks from "
+               "its first detection (own ship: first seen within the avoidance radius; traffic "
+               "pair: the survey's first detection) would bring the hulls into contact: the per "
+               "encounter form of Pedersen's (1995) and IWRAP's N_G, the collisions if no "
+               "aversive manoeuvre were made. The causation factor is collisions among the "
+               "candidates / candidates, with its exact (Clopper-Pearson) %.0f%% interval. "
+               "IWRAP Mk II defaults: head-on %s, overtaking %s (Fujii et al. 1974), crossing %s "
+               "(Pedersen 1995). Own ship: its encounters, by the situation at first detection; "
+               "traffic: pairs of background ships (the own ship's pairs are the own set). The "
+               "other candidates ended as near miss (hull to hull below near_miss_m) / domain "
+               "entered / passed; collisions of non-candidates are counted apart (they came from "
+               "manoeuvres).\n\n",
+            100 * rep->level, fw_rep_fmt(x, fw_iwrap_causation[1]),
+            fw_rep_fmt(y, fw_iwrap_causation[2]), fw_rep_fmt(z, fw_iwrap_causation[3]));
+    fprintf(f, "| set | density | traffic | domain (m) | head-on | overtaking | crossing | "
+               "near miss / domain / passed | non-candidate collisions |\n"
+               "|---|---|---|---|---|---|---|---|---|\n");
+    for (int set = 0; set < FW_REP_NSET; set++)
+        for (int g = 0; g < rep->n_groups; g++) {
+            const fw_rep_group *G = &rep->groups[g];
+            snprintf(b, sizeof b, "| %s | %g | %s | %g |", fw_rep_set_names[set], G->density,
+                     beh(G), G->domain);
+            cf_row(f, b, (const long long(*)[FW_CAND_NSLOT])G->cand[set], rep->level);
+        }
+    /* pooled over the domain sizes (and densities) of each behaviour */
+    long long pool[FW_REP_NTYPE][FW_CAND_NSLOT], n_all = 0, k_all = 0;
+    for (int set = 0; set < FW_REP_NSET; set++)
+        for (int g = 0; g < rep->n_groups; g++) {
+            bool first = true;
+            for (int h = 0; h < g; h++)
+                first &= strcmp(rep->groups[h].behaviour, rep->groups[g].behaviour) != 0;
+            if (!first)
+                continue;
+            cf_pool(rep, set, rep->groups[g].behaviour, pool);
+            snprintf(b, sizeof b, "| %s | all | %s | all |", fw_rep_set_names[set],
+                     beh(&rep->groups[g]));
+            cf_row(f, b, (const long long(*)[FW_CAND_NSLOT])pool, rep->level);
+            n_all += pool[0][FW_CAND_N];
+            k_all += pool[0][FW_CAND_COLLISION];
+        }
+    /* what the numbers can say: with k of n the interval is about k / n +- ...;
+     * at 0 of n the upper end is 1 - (alpha / 2)^(1 / n), about 3.7 / n */
+    double need = -log(0.5 * (1.0 - rep->level)) / fw_iwrap_causation[1];
+    fprintf(f, "\nWhat the difference from IWRAP means: IWRAP's factors are observed rates of "
+               "real ships with human watchkeepers (Fujii's Japanese straits in the 1970s, "
+               "Pedersen's crossings); the measured factor is P(collision | candidate) for this "
+               "avoidance policy and this traffic model, with perfect sensing and no human or "
+               "technical failure, so it is a different quantity that answers whether the "
+               "closed loop resolves the candidates it meets. It is read with its interval: "
+               "the study met %lld candidates in all (%lld of them collided), and with no "
+               "collision among n candidates the upper end is about 3.7 / n, so an interval "
+               "that reaches down to the head-on default of %s needs some %.0f candidates. A "
+               "factor well above IWRAP's says collisions in this model come from situations "
+               "the policy or the traffic model does not resolve (look at the non-candidate "
+               "collisions too: those were made by manoeuvres, not by the geometry).\n\n",
+            n_all, k_all, fw_rep_fmt(x, fw_iwrap_causation[1]), need);
+}
+
 /* One row per compared setting, one column per key measure: the significant
  * differences in bold with their interval, the others as a dash, so the page
  * shows at a glance what the domain size changes. */
@@ -339,6 +440,7 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
     md_key_table(f, rep);
     md_paired(f, rep);
     md_behaviour(f, rep);
+    md_causation(f, rep);
     fprintf(f, "## Plots\n\n");
     if (res->plots == FW_PLOTS_DRAWN) {
         for (int i = 0; i < fw_rep_n_plots; i++)

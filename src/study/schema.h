@@ -18,6 +18,16 @@
  * measure), min_hull_m hull to hull (the rectangles' closest points; 0 when
  * they touched); near_miss is centre to centre below the study's near_miss_m.
  *
+ * Collision candidates (candidate, cand_miss_m, outcome): an encounter is a
+ * geometric candidate when both ships' straight tracks from its first
+ * detection (own ship: the radar's first sight; traffic pair: the survey's
+ * first detection) bring the hulls into contact (cand_miss_m = 0), the per
+ * encounter form of Pedersen's (1995) and IWRAP's N_G, "would collide if no
+ * aversive manoeuvre were made".  outcome is the worst that happened:
+ * collision (hulls touched), near miss (hull to hull below near_miss_m),
+ * domain (own domain entered; own-ship encounters), passed.  The measured
+ * causation factor of a type is collisions among its candidates / candidates.
+ *
  * Exposure: the own ship sails sim_s seconds per run; traffic_ship_s is the
  * sum over steps of the ships in the survey area times the step (ship-seconds).
  */
@@ -80,6 +90,9 @@
     "  domain_entered INTEGER, near_miss INTEGER, collision INTEGER,\n"                 \
     "  colregs_ok INTEGER,\n"                                                           \
     "  min_hull_m REAL,\n"               /* hull to hull; NULL: never within 1 nm */     \
+    "  candidate INTEGER,\n"             /* geometric collision candidate (below) */     \
+    "  cand_miss_m REAL,\n"              /* hull to hull on the straight tracks */       \
+    "  outcome TEXT,\n"                  /* collision, near miss, domain, passed */      \
     "  PRIMARY KEY(run_id, target));\n"                                                 \
     "CREATE TABLE IF NOT EXISTS traffic_encounters(\n"                                  \
     "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \
@@ -88,6 +101,10 @@
     "  own INTEGER NOT NULL,\n"          /* one of the pair is the own ship */          \
     "  t_first_s REAL NOT NULL, range0_m REAL, dcpa0_m REAL, tcpa0_s REAL,\n"           \
     "  min_dist_m REAL, t_min_s REAL,\n"                                                \
+    "  min_hull_m REAL,\n"               /* hull to hull; NULL: never within 400 m */    \
+    "  candidate INTEGER,\n"                                                             \
+    "  cand_miss_m REAL,\n"                                                              \
+    "  outcome TEXT,\n"                  /* collision, near miss, passed */              \
     "  PRIMARY KEY(run_id, ship_a, ship_b, t_first_s));\n"
 
 #endif

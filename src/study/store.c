@@ -218,11 +218,12 @@ static const char kRunSql[] =
 static const char kEncSql[] =
     "INSERT INTO encounters(run_id, target, target_type, situation, t_detect_s, dcpa0_m, "
     "tcpa0_s, threat, acted, t_act_s, act_side, act_helm_deg, min_dist_m, t_min_s, min_lambda, "
-    "domain_entered, near_miss, collision, colregs_ok, min_hull_m) VALUES(?,?,?,?,?,?,?,?,?,?,?,"
-    "?,?,?,?,?,?,?,?,?)";
+    "domain_entered, near_miss, collision, colregs_ok, min_hull_m, candidate, cand_miss_m, "
+    "outcome) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 static const char kTrfSql[] =
     "INSERT INTO traffic_encounters(run_id, ship_a, ship_b, type, own, t_first_s, range0_m, "
-    "dcpa0_m, tcpa0_s, min_dist_m, t_min_s) VALUES(?,?,?,?,?,?,?,?,?,?,?)";
+    "dcpa0_m, tcpa0_s, min_dist_m, t_min_s, min_hull_m, candidate, cand_miss_m, outcome) "
+    "VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 
 /* Schema, version and inputs checked and meta written, in one transaction. */
 static fw_status setup(fw_store *st, const fw_study *s, fw_error *err)
@@ -439,6 +440,9 @@ static int enc_row(sqlite3_stmt *q, int run_id, const fw_outcome_encounter *e)
     sqlite3_bind_int(q, i++, e->collision);
     sqlite3_bind_int(q, i++, e->colregs_ok);
     bind_num(q, i++, e->min_hull);
+    sqlite3_bind_int(q, i++, e->candidate);
+    bind_num(q, i++, e->cand_miss);
+    sqlite3_bind_text(q, i++, e->outcome, -1, SQLITE_STATIC);
     return sqlite3_step(q);
 }
 
@@ -458,6 +462,10 @@ static int trf_row(sqlite3_stmt *q, int run_id, const fw_outcome_traffic *t)
     bind_num(q, i++, t->tcpa0);
     bind_num(q, i++, t->min_dist);
     bind_num(q, i++, t->t_min);
+    bind_num(q, i++, t->min_hull);
+    sqlite3_bind_int(q, i++, t->candidate);
+    bind_num(q, i++, t->cand_miss);
+    sqlite3_bind_text(q, i++, t->outcome, -1, SQLITE_STATIC);
     return sqlite3_step(q);
 }
 

@@ -156,6 +156,17 @@ static fw_survey_type pair_type(const fw_colregs_def *c, const fw_target *a,
     return FW_SURVEY_CROSSING;
 }
 
+/* Hull to hull for a pair whose centres are d apart, INFINITY when they are
+ * too far apart to be within FW_SURVEY_HULL_WATCH of touching. */
+static double hull_gap(const fw_target *a, const fw_target *b, double d)
+{
+    double reach = 0.5 * (hypot(a->length, a->breadth) + hypot(b->length, b->breadth));
+    if (d > reach + FW_SURVEY_HULL_WATCH)
+        return INFINITY;
+    return fw_hull_distance(a->east, a->north, a->course, a->length, a->breadth, b->east,
+                            b->north, b->course, b->length, b->breadth);
+}
+
 /* A pair within release range this step (i, j: positions in the step). */
 static void on_pair(void *ctx, int i, int j, double d2)
 {
@@ -172,6 +183,7 @@ static void on_pair(void *ctx, int i, int j, double d2)
             sv->rec[e].min_dist = d;
             sv->rec[e].t_min = sv->t;
         }
+        sv->rec[e].min_hull = fmin(sv->rec[e].min_hull, hull_gap(&sv->in[i], &sv->in[j], d));
         return;
     }
     if (!(d < sv->def.range))
@@ -218,6 +230,9 @@ static void on_pair(void *ctx, int i, int j, double d2)
     o->tcpa0 = tcpa;
     o->min_dist = d;
     o->t_min = sv->t;
+    o->min_hull = hull_gap(sa, sb, d);
+    fw_hull_track ka = fw_hull_track_of(sa), kb = fw_hull_track_of(sb);
+    o->cand_miss = fw_hull_cpa(&ka, &kb, INFINITY, NULL);
     o->length_a = sa->length;
     o->breadth_a = sa->breadth;
     o->length_b = sb->length;

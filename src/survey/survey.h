@@ -8,7 +8,8 @@
  * holds and is classified then (head-on, overtaking or crossing: fw_classify
  * from the smaller id's side, its roles folded into the pair's type, its
  * head-on test the reciprocal-course one, see fw_default_survey_def); it
- * tracks the smallest distance and ends when both ships are seen farther
+ * tracks the smallest distance (centre to centre, and hull to hull when
+ * close) and ends when both ships are seen farther
  * apart than range + hysteresis, so one pass is one record.  A ship missing
  * from a step (gone out of the area) keeps its episodes open for max_gap
  * seconds: a short absence is the same pass, a longer one ends it.
@@ -19,6 +20,12 @@
  * depend on the order of the ships in a step: every pair is evaluated with
  * the lexically smaller id first, and records are sorted by (t_first, ship_a,
  * ship_b).
+ *
+ * Collision candidates: at an episode's first detection the two ships'
+ * straight tracks are extrapolated (fw_hull_cpa); a hull-to-hull closest
+ * approach of 0 makes the pair a geometric candidate (Pedersen 1995, IWRAP's
+ * N_G, "would collide without aversive manoeuvres"), and the episode's
+ * min_hull says how it ended.
  *
  * Exposure: each step's ships count until the next step, so the ship-seconds
  * sum n_k (t_{k+1} - t_k) over the steps.
@@ -35,6 +42,9 @@
 #include "core/error.h"
 
 enum { FW_SURVEY_ID_MAX = FW_TARGET_ID_MAX }; /* room for an id and its NUL */
+/* m: hull distances are measured while the hulls are within this of touching
+ * (a near miss, 0.1 nm, and more) */
+#define FW_SURVEY_HULL_WATCH 400.0
 
 typedef struct fw_survey_def {
     double range;          /* m, 2000: centres closer than this ... */
@@ -67,6 +77,13 @@ typedef struct fw_survey_record {
     double t_first;                 /* s, first detection */
     double range0, dcpa0, tcpa0;    /* m, m, s at first detection */
     double min_dist, t_min;         /* m, s: smallest centre distance seen, and when */
+    double min_hull;                /* m, smallest hull-to-hull distance seen (0: the
+                                       hulls touched; INFINITY: never within a
+                                       FW_SURVEY_HULL_WATCH of touching) */
+    double cand_miss;               /* m, hull-to-hull closest approach of the two
+                                       straight tracks from first detection
+                                       (geom.h fw_hull_cpa): 0 = a geometric
+                                       collision candidate */
     double length_a, breadth_a;     /* m, at first detection */
     double length_b, breadth_b;
 } fw_survey_record;
