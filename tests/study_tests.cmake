@@ -26,7 +26,8 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
             "twice:4: domains_m\\[1\\]: 300 is listed twice"
             "duration:5: duration_s: 10.5 s is not a whole number of steps"
             "scenario:2: scenario: .*nowhere.yaml: cannot open"
-            "behaviour:5: behaviours\\[1\\]: 'polite' is not a behaviour")
+            "behaviour:5: behaviours\\[1\\]: 'polite' is not a behaviour"
+            "audit:6: audit.speed_change: give a fraction in \\(0, 1\\]")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_script_test(cli_sweep_bad_${name} 0 "ok: no database" sweep_bad.sh

@@ -24,7 +24,28 @@ struct fw_records {
     /* id -> index into e (core/idmap.h): a heavy-traffic hour meets
      * hundreds of ships and every step looks up each one in range */
     fw_idmap ids;
+    /* the own ship's heading and speed at each step with a target in sight:
+     * the COLREGs audit reads its manoeuvres from them */
+    double *h_t, *h_psi, *h_v;
+    int h_n, h_cap;
 };
+
+static fw_status history_push(fw_records *r, double t, const fw_mmg_state *x, fw_error *err)
+{
+    if (r->h_n > 0 && r->h_t[r->h_n - 1] >= t)
+        return FW_OK;
+    if (r->h_n == r->h_cap) {
+        int cap = fw_grown_cap(r->h_cap, 1024);
+        if (!fw_resize_each((size_t)cap, 3, (void **)&r->h_t, sizeof *r->h_t, (void **)&r->h_psi,
+                            sizeof *r->h_psi, (void **)&r->h_v, sizeof *r->h_v))
+            return fw_fail(err, FW_ERUN, "out of memory for the own ship's history");
+        r->h_cap = cap;
+    }
+    r->h_t[r->h_n] = t;
+    r->h_psi[r->h_n] = x->psi;
+    r->h_v[r->h_n++] = hypot(x->u, x->vm);
+    return FW_OK;
+}
 
 static FILE *open_in(const char *dir, const char *name, fw_error *err)
 {
@@ -70,6 +91,7 @@ void fw_records_close(fw_records *r)
         fclose(r->log);
     free(r->e);
     fw_idmap_free(&r->ids);
+    fw_free_each(3, r->h_t, r->h_psi, r->h_v);
     free(r);
 }
 
@@ -121,6 +143,7 @@ static fw_status add(fw_records *r, double t, const fw_target *ts, const fw_asse
     e->min_lambda = INFINITY;
     e->min_hull = INFINITY;
     e->t_act = NAN;
+    fw_audit_obs_init(&e->audit_obs);
     *out = e;
     return FW_OK;
 }
@@ -155,8 +178,9 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
     fw_status st = FW_OK;
     if (!e && !(st = add(r, t, ts, as, &e, err)))
         e->cand_miss = candidate_miss(r, own, ts);
-    if (st)
+    if (st || (st = history_push(r, t, own, err)))
         return st;
+    fw_audit_observe(&e->audit_obs, &r->s->audit, t, as->dcpa, as->tcpa);
     if (as->enters_domain)
         e->threat = true;
     double de = ts->east - own->east, dn = ts->north - own->north;
@@ -206,6 +230,7 @@ void fw_records_action(fw_records *r, double t, int side, double helm, const cha
         e->act_side = side;
         e->act_helm = helm;
         e->act_situation = as[i].situation;
+        e->audit_obs.tcpa_act = as[i].tcpa;
         e->primary = primary_id && strcmp(primary_id, e->id) == 0;
     }
 }
@@ -347,6 +372,9 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
             snprintf(sum->min_dist_id, sizeof sum->min_dist_id, "%s", e->id);
         }
         sum->min_hull = fmin(sum->min_hull, e->min_hull);
+        fw_audit_history h = {r->h_t, r->h_psi, r->h_v, r->h_n};
+        fw_audit_evaluate(&r->s->audit, e->situation, &e->audit_obs, e->acted, e->t_act,
+                          e->act_side, e->t_min, &h, &e->audit);
         sum->domain_entered |= e->domain_entered;
         sum->collision |= e->collision;
         sum->colregs_ok &= e->colregs_ok;

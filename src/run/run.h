@@ -58,6 +58,8 @@ typedef struct fw_encounter {
     double cand_miss;       /* m, hull to hull on both straight tracks from first
                                detection (geom.h fw_hull_cpa): 0 = a geometric
                                collision candidate */
+    fw_audit_obs audit_obs; /* what the COLREGs audit needs, noted each step */
+    fw_audit_result audit;  /* the audit (audit/audit.h), at the end of the run */
 } fw_encounter;
 
 typedef enum fw_run_status { FW_RUN_OK, FW_RUN_FAILED } fw_run_status;

@@ -304,6 +304,7 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
     s->density = 1.0;
     s->reactions = fw_default_reactions_def();
     s->helm = fw_default_helm_def();
+    s->audit = fw_default_audit_def();
     s->policy = fw_default_policy_def();
     s->radius = fw_nm_to_m(8.0); /* Imazu targets start 6 nm off: see them from the start */
     s->survey_radius = fw_nm_to_m(6.0);

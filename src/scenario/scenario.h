@@ -16,6 +16,7 @@
 
 #include <stdbool.h>
 
+#include "audit/audit.h"
 #include "avoid/policy.h"
 #include "core/error.h"
 #include "geom/geom.h"
@@ -45,6 +46,7 @@ typedef struct fw_scenario {
     fw_target targets[FW_SCN_MAX_TARGETS]; /* at t = 0; type: the label kept in the records */
     /* avoidance */
     fw_helm_def helm;
+    fw_audit_def audit;  /* the COLREGs audit's thresholds (defaults; a study sets them) */
     fw_policy_def policy;
     double radius;       /* m, range within which targets are seen */
     /* traffic-level survey (src/survey): every pair of ships in the area */

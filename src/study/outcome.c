@@ -117,6 +117,7 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
         y->candidate = x->cand_miss == 0.0;
         snprintf(y->outcome, sizeof y->outcome, "%s",
                  fw_outcome_ended(x->collision, x->min_hull, s->near_miss, x->domain_entered));
+        y->audit = x->audit;
     }
     return FW_OK;
 }

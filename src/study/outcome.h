@@ -33,6 +33,7 @@ typedef struct fw_outcome_encounter {
     double cand_miss;               /* m, straight tracks from first detection */
     int candidate;                  /* cand_miss == 0: a geometric collision candidate */
     char outcome[16];               /* fw_outcome_ended */
+    fw_audit_result audit;          /* the COLREGs audit (audit/audit.h) */
 } fw_outcome_encounter;
 
 typedef struct fw_outcome_traffic {

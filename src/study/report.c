@@ -78,6 +78,7 @@ void fw_study_report_free(fw_study_report *rep)
     free(rep->pairs);
     free(rep->bpairs);
     free_counts(rep->meta, rep->n_meta);
+    free_counts(rep->audit_notes, rep->n_audit_notes);
     free_counts(rep->reasons, rep->n_reasons);
     free_counts(rep->warnings, rep->n_warnings);
     free(rep);

@@ -10,6 +10,8 @@
  *   causation.csv  geometric collision candidates per setting, set (own,
  *                  traffic) and type, how they ended, the measured causation
  *                  factor with its Clopper-Pearson interval and IWRAP's
+ *   audit.csv      the COLREGs audit: audited and compliant own-ship encounters
+ *                  per setting and situation, Wilson interval of the share
  *   cpa.csv        pooled CPA percentiles per setting and encounter type
  *   cpa_hist.csv   CPA histograms on one set of bins per own/traffic
  *
@@ -233,6 +235,26 @@ static fw_status write_causation(const fw_study_report *rep, const char *dir, fw
     return csv_close(&c, err);
 }
 
+static fw_status write_audit(const fw_study_report *rep, const char *dir, fw_error *err)
+{
+    csv c;
+    if (csv_open(&c, dir, "audit.csv",
+                 "density,behaviour,domain_m,situation,audited,compliant,share,ci_low,ci_high", err))
+        return err->status;
+    for (int g = 0; g < rep->n_groups && rep->audited; g++)
+        for (int k = 0; k < FW_REP_NSIT; k++) {
+            const fw_rep_group *G = &rep->groups[g];
+            fw_estimate e = fw_wilson(G->compliant[k], G->audited[k], rep->level);
+            setting(c.f, G);
+            fprintf(c.f, ",%s,%d,%d", fw_rep_situation_names[k], G->audited[k], G->compliant[k]);
+            num(c.f, e.mean);
+            num(c.f, e.lo);
+            num(c.f, e.hi);
+            fputc('\n', c.f);
+        }
+    return csv_close(&c, err);
+}
+
 fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_error *err)
 {
     if (write_runs(rep, dir, err) || write_summary(rep, dir, err) ||
@@ -240,6 +262,7 @@ fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_erro
         write_pairs(rep, rep->pairs, rep->n_pairs, dir, "paired.csv", err) ||
         write_pairs(rep, rep->bpairs, rep->n_bpairs, dir, "behaviour.csv", err) ||
         write_cpa(rep, dir, err) || write_causation(rep, dir, err) ||
+        write_audit(rep, dir, err) ||
         write_hist(rep, dir, err))
         return err->status;
     return FW_OK;

@@ -128,6 +128,7 @@ typedef struct fw_rep_group {
     fw_rep_values cpa[FW_REP_NSET][FW_REP_NTYPE];  /* sorted after loading */
     long long traffic_count[FW_REP_NTYPE];          /* pooled over the runs */
     long long cand[FW_REP_NSET][FW_REP_NTYPE][FW_CAND_NSLOT]; /* candidates, pooled */
+    int audited[FW_REP_NSIT], compliant[FW_REP_NSIT]; /* the COLREGs audit, by situation */
     double traffic_ship_s;
     int *hist[FW_REP_NSET];                          /* CPA histogram of the type "all" */
 } fw_rep_group;
@@ -179,6 +180,9 @@ struct fw_study_report {
     double max_lateral;            /* m/s, the largest in any run */
     char behaviour[64];            /* the background ships': "colregs", "blind" or both */
     bool candidates;               /* the database has the candidate columns filled */
+    bool audited;                  /* ... and the COLREGs audit's */
+    fw_rep_count *audit_notes;     /* why encounters were not compliant, tallied */
+    int n_audit_notes;
     long long give_way;            /* their speed orders */
 };
 

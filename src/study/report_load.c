@@ -422,6 +422,33 @@ static fw_status read_candidates(loader *L)
     return FW_OK;
 }
 
+/* The COLREGs audit: audited and compliant encounters by situation, and why not. */
+static fw_status read_audit(loader *L)
+{
+    fw_study_report *rep = L->rep;
+    sqlite3_stmt *st;
+    if (prepare(L, "SELECT run_id, situation, compliant, audit_note FROM encounters "
+                   "WHERE compliant IS NOT NULL", &st))
+        return L->err->status;
+    int rc;
+    while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
+        fw_rep_run *r = find_run(rep, sqlite3_column_int64(st, 0));
+        int k = r ? name_index(fw_rep_situation_names, FW_REP_NSIT, col_text(st, 1)) : -1;
+        if (k < 0)
+            continue; /* a failed run's rows; unknown situations were refused before */
+        fw_rep_group *g = &rep->groups[r->group];
+        rep->audited = true;
+        g->audited[k]++;
+        bool ok = sqlite3_column_int(st, 2) != 0;
+        g->compliant[k] += ok;
+        if (!ok && fw_rep_note(&rep->audit_notes, &rep->n_audit_notes, col_text(st, 3))) {
+            sqlite3_finalize(st);
+            return oom(L);
+        }
+    }
+    return step_done(L, st, rc);
+}
+
 /* The traffic monitors and the background behaviour, summed over the
  * finished runs; an older database without the columns has none. */
 static fw_status read_monitors(loader *L)
@@ -465,7 +492,7 @@ static fw_status read_all(loader *L)
         return fw_fail(L->err, FW_EINPUT, "%s: no finished runs", L->file);
     }
     if (make_groups(L) || read_encounters(L) || read_traffic(L) || read_monitors(L) ||
-        read_candidates(L))
+        read_candidates(L) || read_audit(L))
         return L->err->status;
     return FW_OK;
 }

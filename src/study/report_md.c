@@ -316,6 +316,46 @@ static void md_causation(FILE *f, const fw_study_report *rep)
             n_all, k_all, fw_rep_fmt(x, fw_iwrap_causation[1]), need);
 }
 
+/* The shares of audited encounters that followed the rules, by situation. */
+static void md_audit(FILE *f, const fw_study_report *rep)
+{
+    if (!rep->audited)
+        return;
+    char c[96];
+    fprintf(f, "## COLREGs audit\n\n"
+               "Each own-ship encounter in which risk of collision existed (the predicted CPA "
+               "nearer than audit_risk_dcpa_m within audit_risk_tcpa_s) is audited against the "
+               "rule of its situation at first detection: give-way (rules 13, 14, 16 with 8): "
+               "acted, early (TCPA at the action at least audit_early_tcpa_s), substantial (a "
+               "course change of at least audit_course_change_deg or a speed reduction of at "
+               "least audit_speed_change), head-on and crossing to starboard; stand-on (rule "
+               "17): course and speed kept while TCPA > audit_rule17_may_tcpa_s, acted when the "
+               "risk was still there at audit_rule17_must_tcpa_s, crossing not to port. Shares "
+               "compliant with the Wilson %.0f%% interval; the thresholds are in the settings "
+               "above.\n\n| density | traffic | domain (m) |",
+            100 * rep->level);
+    for (int k = 0; k < FW_REP_NSIT; k++)
+        fprintf(f, " %s |", fw_rep_situation_names[k]);
+    fprintf(f, "\n|---|---|---|---|---|---|---|---|\n");
+    for (int g = 0; g < rep->n_groups; g++) {
+        const fw_rep_group *G = &rep->groups[g];
+        fprintf(f, "| %g | %s | %g |", G->density, beh(G), G->domain);
+        for (int k = 0; k < FW_REP_NSIT; k++) {
+            fw_estimate e = fw_wilson(G->compliant[k], G->audited[k], rep->level);
+            fprintf(f, " %s |", G->audited[k] ? cell(c, sizeof c, &e, true) : "-");
+        }
+        fprintf(f, "\n");
+    }
+    if (rep->n_audit_notes) {
+        fprintf(f, "\nNot compliant, why:");
+        for (int i = 0; i < rep->n_audit_notes; i++)
+            fprintf(f, "%s %d x %s", i ? ";" : "", rep->audit_notes[i].count,
+                    rep->audit_notes[i].text);
+        fprintf(f, ".\n");
+    }
+    fprintf(f, "\n");
+}
+
 /* One row per compared setting, one column per key measure: the significant
  * differences in bold with their interval, the others as a dash, so the page
  * shows at a glance what the domain size changes. */
@@ -441,6 +481,7 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
     md_paired(f, rep);
     md_behaviour(f, rep);
     md_causation(f, rep);
+    md_audit(f, rep);
     fprintf(f, "## Plots\n\n");
     if (res->plots == FW_PLOTS_DRAWN) {
         for (int i = 0; i < fw_rep_n_plots; i++)

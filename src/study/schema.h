@@ -28,6 +28,14 @@
  * domain (own domain entered; own-ship encounters), passed.  The measured
  * causation factor of a type is collisions among its candidates / candidates.
  *
+ * The COLREGs audit (audit/audit.h; thresholds in meta audit_*): rule (13,
+ * 14, 15) and role (give-way, stand-on) from the situation at first
+ * detection; t_risk_s / tcpa_risk_s when risk of collision first existed;
+ * tcpa_act_s the TCPA at the own ship's first action for it, whose largest
+ * course change and speed reduction (fraction) up to the CPA follow; early,
+ * substantial (rules 8, 16); rule17_phase of a stand-on action (1 keep, 2
+ * may, 3 must; 0 none); compliant 1/0 and audit_note saying why not.
+ *
  * Exposure: the own ship sails sim_s seconds per run; traffic_ship_s is the
  * sum over steps of the ships in the survey area times the step (ship-seconds).
  */
@@ -93,6 +101,12 @@
     "  candidate INTEGER,\n"             /* geometric collision candidate (below) */     \
     "  cand_miss_m REAL,\n"              /* hull to hull on the straight tracks */       \
     "  outcome TEXT,\n"                  /* collision, near miss, domain, passed */      \
+    "  rule INTEGER, role TEXT,\n"       /* the COLREGs audit (below) */                 \
+    "  t_risk_s REAL, tcpa_risk_s REAL, tcpa_act_s REAL,\n"                             \
+    "  course_change_deg REAL, speed_change REAL,\n"                                    \
+    "  early INTEGER, substantial INTEGER, rule17_phase INTEGER,\n"                     \
+    "  compliant INTEGER,\n"             /* NULL: not audited (no risk of collision) */  \
+    "  audit_note TEXT,\n"                                                              \
     "  PRIMARY KEY(run_id, target));\n"                                                 \
     "CREATE TABLE IF NOT EXISTS traffic_encounters(\n"                                  \
     "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \

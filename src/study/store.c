@@ -117,6 +117,15 @@ static fw_status write_meta(fw_store *st, const fw_study *s, const char *digest,
     PUTNUM("encounter_m", "%.3f", s->encounter_range);
     PUTNUM("near_miss_m", "%.3f", s->near_miss);
     PUTNUM("runs", "%d", fw_study_run_count(s));
+    const fw_audit_def *au = &s->base.audit;
+    PUTNUM("audit_risk_dcpa_m", "%.1f", au->risk_dcpa);
+    PUTNUM("audit_risk_tcpa_s", "%.1f", au->risk_tcpa);
+    PUTNUM("audit_course_change_deg", "%.1f", fw_rad_to_deg(au->course_change));
+    PUTNUM("audit_speed_change", "%.3f", au->speed_change);
+    PUTNUM("audit_early_tcpa_s", "%.1f", au->early_tcpa);
+    PUTNUM("audit_prompt_s", "%.1f", au->prompt);
+    PUTNUM("audit_rule17_may_tcpa_s", "%.1f", au->may_tcpa);
+    PUTNUM("audit_rule17_must_tcpa_s", "%.1f", au->must_tcpa);
     PUTNUM("survey", "%d", s->base.survey ? 1 : 0);
     if (s->base.survey) {
         PUTNUM("survey_radius_m", "%.1f", s->base.survey_radius);
@@ -219,7 +228,9 @@ static const char kEncSql[] =
     "INSERT INTO encounters(run_id, target, target_type, situation, t_detect_s, dcpa0_m, "
     "tcpa0_s, threat, acted, t_act_s, act_side, act_helm_deg, min_dist_m, t_min_s, min_lambda, "
     "domain_entered, near_miss, collision, colregs_ok, min_hull_m, candidate, cand_miss_m, "
-    "outcome) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
+    "outcome, rule, role, t_risk_s, tcpa_risk_s, tcpa_act_s, course_change_deg, speed_change, "
+    "early, substantial, rule17_phase, compliant, audit_note) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,"
+    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 static const char kTrfSql[] =
     "INSERT INTO traffic_encounters(run_id, ship_a, ship_b, type, own, t_first_s, range0_m, "
     "dcpa0_m, tcpa0_s, min_dist_m, t_min_s, min_hull_m, candidate, cand_miss_m, outcome) "
@@ -443,6 +454,22 @@ static int enc_row(sqlite3_stmt *q, int run_id, const fw_outcome_encounter *e)
     sqlite3_bind_int(q, i++, e->candidate);
     bind_num(q, i++, e->cand_miss);
     sqlite3_bind_text(q, i++, e->outcome, -1, SQLITE_STATIC);
+    const fw_audit_result *a = &e->audit;
+    sqlite3_bind_int(q, i++, a->rule);
+    sqlite3_bind_text(q, i++, fw_audit_role_name(a->role), -1, SQLITE_STATIC);
+    bind_num(q, i++, a->t_risk);
+    bind_num(q, i++, a->tcpa_risk);
+    bind_num(q, i++, a->tcpa_act);
+    bind_num(q, i++, a->acted ? fw_rad_to_deg(a->course_change) : NAN);
+    bind_num(q, i++, a->acted ? a->speed_change : NAN);
+    sqlite3_bind_int(q, i++, a->early);
+    sqlite3_bind_int(q, i++, a->substantial);
+    sqlite3_bind_int(q, i++, a->phase);
+    if (a->compliant < 0)
+        sqlite3_bind_null(q, i++);
+    else
+        sqlite3_bind_int(q, i++, a->compliant);
+    sqlite3_bind_text(q, i++, a->note, -1, SQLITE_STATIC);
     return sqlite3_step(q);
 }
 

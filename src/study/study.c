@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/units.h"
 #include "ship/ship.h"
 #include "study/study.h"
 #include "traffic/demand.h"
@@ -90,6 +91,46 @@ static fw_status read_behaviours(const yt_doc *doc, const yt_node *root, fw_stud
     return FW_OK;
 }
 
+/* audit: {risk_dcpa_m, ...}: the COLREGs audit's thresholds (audit/audit.h),
+ * each optional over its default, checked together. */
+static fw_status read_audit(const yt_doc *doc, const yt_node *root, fw_study *s, fw_error *err)
+{
+    static const char *const keys[] = {"risk_dcpa_m", "risk_tcpa_s", "course_change_deg",
+                                       "speed_change", "early_tcpa_s", "prompt_s",
+                                       "rule17_may_tcpa_s", "rule17_must_tcpa_s", NULL};
+    const yt_node *m = NULL;
+    fw_audit_def *a = &s->base.audit;
+    double course = fw_rad_to_deg(a->course_change);
+    fw_status st;
+    if ((st = yt_opt_map(doc, root, "", "audit", &m, err)) || !m)
+        return st;
+    if ((st = yt_check_keys(doc, m, "audit", keys, err)) ||
+        (st = yt_opt_number(doc, m, "audit", "risk_dcpa_m", -1e300, 1e300, &a->risk_dcpa, err)) ||
+        (st = yt_opt_number(doc, m, "audit", "risk_tcpa_s", -1e300, 1e300, &a->risk_tcpa, err)) ||
+        (st = yt_opt_number(doc, m, "audit", "course_change_deg", -1e300, 1e300, &course, err)) ||
+        (st = yt_opt_number(doc, m, "audit", "speed_change", -1e300, 1e300, &a->speed_change,
+                            err)) ||
+        (st = yt_opt_number(doc, m, "audit", "early_tcpa_s", -1e300, 1e300, &a->early_tcpa,
+                            err)) ||
+        (st = yt_opt_number(doc, m, "audit", "prompt_s", -1e300, 1e300, &a->prompt, err)) ||
+        (st = yt_opt_number(doc, m, "audit", "rule17_may_tcpa_s", -1e300, 1e300, &a->may_tcpa,
+                            err)) ||
+        (st = yt_opt_number(doc, m, "audit", "rule17_must_tcpa_s", -1e300, 1e300, &a->must_tcpa,
+                            err)))
+        return st;
+    a->course_change = fw_deg_to_rad(course);
+    char field[64];
+    fw_error e2 = {0};
+    if (fw_audit_check(a, field, sizeof field, &e2)) {
+        int line = yt_key_line(m, field);
+        char path[80];
+        snprintf(path, sizeof path, "audit.%s", field);
+        return fw_fail_at(err, doc->file, line > 0 ? line : m->line, path, "%s",
+                          strchr(e2.msg, ':') ? strchr(e2.msg, ':') + 2 : e2.msg);
+    }
+    return FW_OK;
+}
+
 /* The scenario path is relative to the study file's directory; false when
  * the result does not fit in out. */
 static bool resolve(const char *study_file, const char *rel, char *out, size_t outsz)
@@ -166,6 +207,26 @@ static fw_status collect_inputs(fw_study *s, fw_error *err)
     return FW_OK;
 }
 
+/* The base scenario, path relative to the study file; its own FILE:LINE
+ * message is kept, with where the study named it. */
+static fw_status load_base(const yt_doc *doc, const yt_node *root, const char *path,
+                           const char *scen, fw_study *s, fw_error *err)
+{
+    int line = yt_key_line(root, "scenario");
+    if (!resolve(path, scen, s->scenario_file, sizeof s->scenario_file))
+        return fw_fail_at(err, doc->file, line, "scenario", "path longer than %zu characters",
+                          sizeof s->scenario_file - 1);
+    if (fw_scenario_load(s->scenario_file, &s->base, err)) {
+        char msg[sizeof err->msg];
+        snprintf(msg, sizeof msg, "%s", err ? err->msg : "");
+        return fw_fail_at(err, doc->file, line, "scenario", "%s", msg);
+    }
+    if (s->base.n_targets == 0 && !s->base.network[0])
+        return fw_fail_at(err, doc->file, line, "scenario",
+                          "%s has no traffic (no network and no targets)", s->scenario_file);
+    return FW_OK;
+}
+
 static uint64_t digest(const fw_study *s)
 {
     /* the settings that decide the results, printed exactly, and the bytes of
@@ -178,6 +239,11 @@ static uint64_t digest(const fw_study *s)
         k += snprintf(text + k, sizeof text - (size_t)k, "d%.17g|", s->domains[i]);
     for (int i = 0; i < s->n_densities && k < (int)sizeof text - 32; i++)
         k += snprintf(text + k, sizeof text - (size_t)k, "r%.17g|", s->densities[i]);
+    const fw_audit_def *a = &s->base.audit;
+    k += snprintf(text + k, sizeof text - (size_t)k,
+                  "a%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g|", a->risk_dcpa, a->risk_tcpa,
+                  a->course_change, a->speed_change, a->early_tcpa, a->prompt, a->may_tcpa,
+                  a->must_tcpa);
     for (int i = 0; i < s->n_behaviours && k < (int)sizeof text - 32; i++)
         k += snprintf(text + k, sizeof text - (size_t)k, "b%s|", fw_behaviour_name(s->behaviours[i]));
     uint64_t h = fw_fnv1a(FW_FNV_INIT, text, strlen(text));
@@ -189,7 +255,7 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
 {
     static const char *const keys[] = {"name", "description", "scenario", "replications", "seed",
                                        "domains_m", "densities", "behaviours", "duration_s",
-                                       "start", "encounter_m", "near_miss_m", NULL};
+                                       "start", "encounter_m", "near_miss_m", "audit", NULL};
     memset(s, 0, sizeof *s);
     if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
         return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
@@ -240,23 +306,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
                         "more than 10 million runs");
         goto out;
     }
-    if (!resolve(path, scen, s->scenario_file, sizeof s->scenario_file)) {
-        st = fw_fail_at(err, doc->file, yt_key_line(root, "scenario"), "scenario",
-                        "path longer than %zu characters", sizeof s->scenario_file - 1);
+    if ((st = load_base(doc, root, path, scen, s, err)) || (st = read_audit(doc, root, s, err)))
         goto out;
-    }
-    if ((st = fw_scenario_load(s->scenario_file, &s->base, err))) {
-        /* the scenario's own FILE:LINE message, with where it was named */
-        char msg[sizeof err->msg];
-        snprintf(msg, sizeof msg, "%s", err ? err->msg : "");
-        st = fw_fail_at(err, doc->file, yt_key_line(root, "scenario"), "scenario", "%s", msg);
-        goto out;
-    }
-    if (s->base.n_targets == 0 && !s->base.network[0]) {
-        st = fw_fail_at(err, doc->file, yt_key_line(root, "scenario"), "scenario",
-                        "%s has no traffic (no network and no targets)", s->scenario_file);
-        goto out;
-    }
     if (s->n_behaviours == 0) {
         s->n_behaviours = 1;
         s->behaviours[0] = s->base.reactions.behaviour;

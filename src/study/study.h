@@ -22,6 +22,9 @@
  *   start: {along_m: 1000, across_m: 300}  # optional: own-ship start spread
  *   encounter_m: 1852            # optional: a target passing closer is an encounter
  *   near_miss_m: 185.2           # optional: closer is a near miss
+ *   audit: {risk_dcpa_m: 926, risk_tcpa_s: 1200, course_change_deg: 30,
+ *           speed_change: 0.25, early_tcpa_s: 480, prompt_s: 60, rule17_may_tcpa_s: 600,
+ *           rule17_must_tcpa_s: 240}  # optional: the COLREGs audit (audit/audit.h)
  */
 #ifndef FW_STUDY_H
 #define FW_STUDY_H
