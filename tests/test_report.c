@@ -349,17 +349,25 @@ static void test_refusals(void)
     expect_refused(p, "run 3 has status ok but sim_s");
 }
 
+/* A fresh hand database NAME.db in the test directory, open for changes,
+ * and the report directory NAME for it. */
+static sqlite3 *hand_copy(const char *name, char db_path[300], char out[300])
+{
+    snprintf(db_path, 300, "%s/%s.db", dir, name);
+    snprintf(out, 300, "%s/%s", dir, name);
+    CHECK(sdb_hand(db_path) == 0);
+    sqlite3 *db = NULL;
+    sqlite3_open(db_path, &db);
+    return db;
+}
+
 /* The behaviour axis: the hand study sailed twice, as colregs and as blind
  * traffic, the blind copy with every encounter inside the domain.  colregs -
  * blind is paired per (density, domain), counts with the conditional binomial. */
 static void test_behaviours(void)
 {
     char db_path[300], out[300], p[400];
-    snprintf(db_path, sizeof db_path, "%s/beh.db", dir);
-    snprintf(out, sizeof out, "%s/beh", dir);
-    CHECK(sdb_hand(db_path) == 0);
-    sqlite3 *db;
-    sqlite3_open(db_path, &db);
+    sqlite3 *db = hand_copy("beh", db_path, out);
     CHECK(sdb_exec(db, "UPDATE runs SET behaviour = 'colregs';"
                        "CREATE TEMP TABLE r AS SELECT * FROM runs;"
                        "UPDATE r SET run_id = run_id + 100, behaviour = 'blind';"
@@ -420,11 +428,7 @@ static long long count_sql(sqlite3 *db, const char *sql)
 static void test_causation(void)
 {
     char db_path[300], out[300], p[400];
-    snprintf(db_path, sizeof db_path, "%s/cand.db", dir);
-    snprintf(out, sizeof out, "%s/cand", dir);
-    CHECK(sdb_hand(db_path) == 0);
-    sqlite3 *db;
-    sqlite3_open(db_path, &db);
+    sqlite3 *db = hand_copy("cand", db_path, out);
     CHECK(sdb_exec(db, "UPDATE encounters SET candidate = domain_entered, cand_miss_m = 0, "
                        "outcome = CASE WHEN collision THEN 'collision' WHEN near_miss THEN "
                        "'near miss' WHEN domain_entered THEN 'domain' ELSE 'passed' END;"

@@ -287,13 +287,36 @@ static int name_index(const char *const *names, int n, const char *s)
     return -1;
 }
 
+/* One encounter's candidate flag and outcome (columns i, i + 1; NULL in a
+ * database whose writer did not fill them) into its group's tally. */
+static fw_status count_candidate(loader *L, sqlite3_stmt *st, int i, const fw_rep_run *r, int set,
+                                 int t)
+{
+    if (sqlite3_column_type(st, i) == SQLITE_NULL)
+        return FW_OK;
+    int o = name_index(fw_cand_outcomes, 4, col_text(st, i + 1));
+    if (o < 0)
+        return fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown encounter outcome '%s'", L->file,
+                       r->run_id, col_text(st, i + 1));
+    fw_study_report *rep = L->rep;
+    long long *c = rep->groups[r->group].cand[set][t], *a = rep->groups[r->group].cand[set][0];
+    rep->candidates = true;
+    if (sqlite3_column_int(st, i) != 0) {
+        c[FW_CAND_N]++, a[FW_CAND_N]++;
+        c[FW_CAND_COLLISION + o]++, a[FW_CAND_COLLISION + o]++;
+    } else if (o == 0) {
+        c[FW_CAND_OTHER_COLL]++, a[FW_CAND_OTHER_COLL]++;
+    }
+    return FW_OK;
+}
+
 static fw_status read_encounters(loader *L)
 {
     fw_study_report *rep = L->rep;
     sqlite3_stmt *st;
     if (prepare(L,
-                "SELECT run_id, situation, min_dist_m, domain_entered, near_miss, collision "
-                "FROM encounters",
+                "SELECT run_id, situation, min_dist_m, domain_entered, near_miss, collision, "
+                "candidate, outcome FROM encounters",
                 &st))
         return L->err->status;
     int rc;
@@ -313,6 +336,10 @@ static fw_status read_encounters(loader *L)
         r->n_domain += sqlite3_column_int(st, 3) != 0;
         r->n_near += sqlite3_column_int(st, 4) != 0;
         r->n_collision += sqlite3_column_int(st, 5) != 0;
+        if (count_candidate(L, st, 6, r, FW_REP_OWN, sit_type[s])) {
+            sqlite3_finalize(st);
+            return L->err->status;
+        }
         double d = col_num(st, 2);
         fw_rep_group *g = &rep->groups[r->group];
         if (!isnan(d) && (fw_rep_values_push(&g->cpa[FW_REP_OWN][FW_REP_ALL], d) ||
@@ -348,7 +375,8 @@ static fw_status read_traffic(loader *L)
 {
     fw_study_report *rep = L->rep;
     sqlite3_stmt *st;
-    if (prepare(L, "SELECT run_id, type, min_dist_m FROM traffic_encounters", &st))
+    if (prepare(L, "SELECT run_id, type, min_dist_m, own, candidate, outcome FROM traffic_encounters",
+                &st))
         return L->err->status;
     int rc;
     while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
@@ -365,6 +393,11 @@ static fw_status read_traffic(loader *L)
         }
         r->n_traffic[FW_REP_ALL]++;
         r->n_traffic[t]++;
+        /* the own ship's pairs are its encounters: the traffic set is the others */
+        if (sqlite3_column_int(st, 3) == 0 && count_candidate(L, st, 4, r, FW_REP_TRAFFIC, t)) {
+            sqlite3_finalize(st);
+            return L->err->status;
+        }
         double d = col_num(st, 2);
         fw_rep_group *g = &rep->groups[r->group];
         if (!isnan(d) && (fw_rep_values_push(&g->cpa[FW_REP_TRAFFIC][FW_REP_ALL], d) ||
@@ -374,52 +407,6 @@ static fw_status read_traffic(loader *L)
         }
     }
     return step_done(L, st, rc);
-}
-
-/* Candidates and their outcomes: own-ship encounters by their folded
- * situation, traffic pairs without the own ship (those are the own set). */
-static fw_status read_candidates(loader *L)
-{
-    static const char *const sql[FW_REP_NSET] = {
-        "SELECT run_id, situation, candidate, outcome FROM encounters WHERE candidate IS NOT NULL",
-        "SELECT run_id, type, candidate, outcome FROM traffic_encounters "
-        "WHERE own = 0 AND candidate IS NOT NULL"};
-    fw_study_report *rep = L->rep;
-    for (int set = 0; set < FW_REP_NSET; set++) {
-        sqlite3_stmt *st;
-        if (prepare(L, sql[set], &st))
-            return L->err->status;
-        int rc;
-        while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
-            fw_rep_run *r = find_run(rep, sqlite3_column_int64(st, 0));
-            if (!r)
-                continue;
-            const char *name = col_text(st, 1);
-            int t = name_index(fw_rep_type_names + 1, FW_REP_NTYPE - 1, name) + 1;
-            if (set == FW_REP_OWN) {
-                int k = name_index(fw_rep_situation_names, FW_REP_NSIT, name);
-                t = k < 0 ? -1 : (int)sit_type[k];
-            }
-            int o = name_index(fw_cand_outcomes, 4, col_text(st, 3));
-            if (t <= 0 || o < 0) {
-                sqlite3_finalize(st);
-                return fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown encounter type '%s' or "
-                               "outcome '%s'", L->file, r->run_id, name, col_text(st, 3));
-            }
-            long long *c = rep->groups[r->group].cand[set][t], *a = rep->groups[r->group].cand[set][0];
-            bool cand = sqlite3_column_int(st, 2) != 0;
-            rep->candidates = true;
-            if (cand) {
-                c[FW_CAND_N]++, a[FW_CAND_N]++;
-                c[FW_CAND_COLLISION + o]++, a[FW_CAND_COLLISION + o]++;
-            } else if (o == 0) {
-                c[FW_CAND_OTHER_COLL]++, a[FW_CAND_OTHER_COLL]++;
-            }
-        }
-        if (step_done(L, st, rc))
-            return L->err->status;
-    }
-    return FW_OK;
 }
 
 /* The COLREGs audit: audited and compliant encounters by situation, and why not. */
@@ -492,7 +479,7 @@ static fw_status read_all(loader *L)
         return fw_fail(L->err, FW_EINPUT, "%s: no finished runs", L->file);
     }
     if (make_groups(L) || read_encounters(L) || read_traffic(L) || read_monitors(L) ||
-        read_candidates(L) || read_audit(L))
+        read_audit(L))
         return L->err->status;
     return FW_OK;
 }

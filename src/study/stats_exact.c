@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "core/rng.h"
 #include "study/stats.h"
 
 /* P(a, x) by its series, good for x < a + 1. */
@@ -158,15 +159,6 @@ fw_estimate fw_count_difference(long long x, long long y, double scale, double l
     return e;
 }
 
-/* splitmix64 (the project's fixed-seed generator, as in study.c) */
-static uint64_t next(uint64_t *s)
-{
-    uint64_t z = (*s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
 static double stat_of(const double *a, const double *b, const int *idx, int n, double *tmp)
 {
     if (b) { /* ratio of sums */
@@ -211,7 +203,7 @@ static fw_estimate bootstrap(const double *a0, const double *b0, int n0, int rep
     int k = 0;
     for (int r = 0; r < reps; r++) {
         for (int i = 0; i < n; i++)
-            idx[i] = (int)(next(&s) % (uint64_t)n);
+            idx[i] = (int)(fw_splitmix64(&s) % (uint64_t)n);
         double v = stat_of(a, b0 ? b : NULL, idx, n, tmp);
         if (!isnan(v))
             st[k++] = v;

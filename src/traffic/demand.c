@@ -1,4 +1,5 @@
 #include "core/files.h"
+#include "core/rng.h"
 #include "traffic/demand.h"
 
 #include <ctype.h>
@@ -107,15 +108,6 @@ double fw_demand_rate(const fw_demand *d)
     return r;
 }
 
-/* splitmix64: a small, well-mixed generator for the fill ships' edges. */
-static uint64_t mix(uint64_t *s)
-{
-    uint64_t z = (*s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
 static void route(FILE *f, const fw_stream *s, int from)
 {
     fprintf(f, "    <route id=\"r_%s_%d\" edges=\"", s->id, from);
@@ -170,7 +162,7 @@ fw_status fw_demand_write(const fw_demand *d, const fw_demand_def *def, const ch
     for (int i = 0; i < d->n; i++)
         for (int j = 0; j < count[i]; j++) {
             const fw_stream *s = &d->streams[i];
-            int k = (int)(mix(&rng) % (uint64_t)s->n_edges);
+            int k = (int)(fw_splitmix64(&rng) % (uint64_t)s->n_edges);
             fprintf(f,
                     "    <vehicle id=\"%s_fill%d\" type=\"%s\" route=\"r_%s_%d\" depart=\"0\""
                     " departPos=\"random_free\" departLane=\"random\" departSpeed=\"desired\"/>\n",
