@@ -75,6 +75,9 @@ def load(d):
         if "behaviour" not in df.columns:
             df["behaviour"] = ""
         df["behaviour"] = df["behaviour"].fillna("").astype(str)
+        if "fore_aft_ratio" not in df.columns:
+            df["fore_aft_ratio"] = np.nan
+        df["fore_aft_ratio"] = df["fore_aft_ratio"].fillna(1.0)
         out[name] = df
     return out
 
@@ -102,17 +105,24 @@ def series(ax, df, x, mean, label, k, n, **kw):
 
 
 def settings(df):
-    """The series of a table: its (density, behaviour) pairs."""
-    return sorted({(d, b) for d, b in zip(df["density"], df["behaviour"])})
+    """The series of a table: its (density, behaviour, domain shape) triples."""
+    return sorted(set(zip(df["density"], df["behaviour"], df["fore_aft_ratio"])))
+
+
+def pick(df, key):
+    """The rows of one series."""
+    return df[(df.density == key[0]) & (df.behaviour == key[1]) & (df.fore_aft_ratio == key[2])]
 
 
 def setting_label(key, keys):
-    dens, beh = key
+    dens, beh, ratio = key
     parts = []
     if len({k[0] for k in keys}) > 1:
         parts.append(f"density {dens:g}")
     if len({k[1] for k in keys}) > 1:
         parts.append(f"{beh} traffic")
+    if len({k[2] for k in keys}) > 1:
+        parts.append(f"fore-aft {ratio:g}:1")
     return ", ".join(parts) or None
 
 
@@ -140,7 +150,7 @@ def plot_rates(summary, level, path, paired=None, title_override=None):
     for ax, (name, title, unit) in zip(axes.flat, RATES):
         sub = data[data.measure == name]
         for k, key in enumerate(keys):
-            s = sub[(sub.density == key[0]) & (sub.behaviour == key[1])]
+            s = pick(sub, key)
             if len(s):
                 series(ax, s, "domain_m", "mean", setting_label(key, keys), k, len(keys))
         if paired is not None:
@@ -173,8 +183,7 @@ def plot_types(summary, level, path):
     fig, axes = plt.subplots(1, len(keys), figsize=(6.5 * len(keys), 4.5), squeeze=False)
     for ax, key in zip(axes.flat, keys):
         for k, (name, label) in enumerate(TYPES):
-            s = summary[(summary.measure == name) & (summary.density == key[0]) &
-                        (summary.behaviour == key[1])]
+            s = pick(summary[summary.measure == name], key)
             series(ax, s, "domain_m", "mean", label, k, len(TYPES))
         lab = setting_label(key, keys)
         ax.set_title(f"Own-ship encounters by type{f', {lab}' if lab else ''}")
@@ -200,8 +209,7 @@ def plot_cpa(hist, path):
         empty(axes.flat[0], "no own-ship encounters with a CPA")
     for ax, dom in zip(axes.flat, domains):
         for key in keys:
-            s = own[(own.domain_m == dom) & (own.density == key[0]) &
-                    (own.behaviour == key[1])].sort_values("bin_low_m")
+            s = pick(own[own.domain_m == dom], key).sort_values("bin_low_m")
             if not len(s):
                 continue
             edges = np.append(s["bin_low_m"].to_numpy(), s["bin_high_m"].to_numpy()[-1])
@@ -221,10 +229,8 @@ def plot_traffic(traffic, level, path):
     keys = settings(traffic)
     fig, axes = plt.subplots(1, len(keys), figsize=(6.5 * len(keys), 4.5), squeeze=False)
     for ax, key in zip(axes.flat, keys):
-        dens = key[0]
         lab = setting_label(key, keys)
-        t = traffic[(traffic.density == dens) & (traffic.behaviour == key[1]) &
-                    traffic.mean_per_1000_ship_h.notna()]
+        t = pick(traffic[traffic.mean_per_1000_ship_h.notna()], key)
         for k, typ in enumerate(TRAFFIC_TYPES):
             s = t[t.type == typ]
             if len(s):

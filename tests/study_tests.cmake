@@ -27,7 +27,9 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
             "duration:5: duration_s: 10.5 s is not a whole number of steps"
             "scenario:2: scenario: .*nowhere.yaml: cannot open"
             "behaviour:5: behaviours\\[1\\]: 'polite' is not a behaviour"
-            "audit:6: audit.speed_change: give a fraction in \\(0, 1\\]")
+            "audit:6: audit.speed_change: give a fraction in \\(0, 1\\]"
+            "shape:5: fore_aft_ratios\\[1\\]: 0.1 is outside \\[0.2, 10\\]"
+            "units:5: domains_l: give domains_m or domains_l, not both")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_script_test(cli_sweep_bad_${name} 0 "ok: no database" sweep_bad.sh

@@ -474,6 +474,40 @@ static void test_causation(void)
     free(md);
 }
 
+/* Domain shapes: the hand study again with a 2.5:1 domain; each shape is
+ * its own setting, compared with the reference size of its own shape. */
+static void test_shapes(void)
+{
+    char db_path[300], out[300], p[400];
+    sqlite3 *db = hand_copy("shape", db_path, out);
+    CHECK(sdb_exec(db, "UPDATE runs SET fore_aft_ratio = 1;"
+                       "CREATE TEMP TABLE r AS SELECT * FROM runs;"
+                       "UPDATE r SET run_id = run_id + 100, fore_aft_ratio = 2.5;"
+                       "INSERT INTO runs SELECT * FROM r;"
+                       "CREATE TEMP TABLE e AS SELECT * FROM encounters;"
+                       "UPDATE e SET run_id = run_id + 100;"
+                       "INSERT INTO encounters SELECT * FROM e;") == 0);
+    sqlite3_close(db);
+    fw_error err = {0};
+    fw_study_report_result res;
+    CHECK_MSG(report(db_path, out, NAN, false, &res, &err) == FW_OK, "%s", err.msg);
+    snprintf(p, sizeof p, "%s/paired.csv", out);
+    CHECK_NEAR(csv_get(p, "domain_m=500,fore_aft_ratio=2.5,measure=manoeuvres_per_h", "mean"),
+               20.0 / 3.0, 1e-9);
+    snprintf(p, sizeof p, "%s/summary.csv", out);
+    CHECK_NEAR(csv_get(p, "domain_m=100,fore_aft_ratio=2.5,measure=encounters_per_h", "mean"),
+               10.0, 1e-9);
+    snprintf(p, sizeof p, "%s/report.md", out);
+    char *md = slurp(p);
+    CHECK(md != NULL);
+    if (md) {
+        CHECK_CONTAINS(md, "| 1 | - | 100 (2.5:1) | 3 | 10.0 [5.03, 15.0] |");
+        CHECK_CONTAINS(md, "| 1 | - | 100 | 3 | 10.0 [5.03, 15.0] |");
+        CHECK_CONTAINS(md, "| 1 | - | 500 (2.5:1) | 3 | - |");
+    }
+    free(md);
+}
+
 /* Oddities that do not stop the report are named in it. */
 static void test_warnings(void)
 {
@@ -575,6 +609,7 @@ int main(void)
     TEST_RUN(test_warnings);
     TEST_RUN(test_behaviours);
     TEST_RUN(test_causation);
+    TEST_RUN(test_shapes);
     TEST_RUN(test_directory);
     int rc = TEST_EXIT();
     if (rc == 0)

@@ -82,6 +82,28 @@ static void test_run_list_behaviours(void)
     free(s);
 }
 
+/* Domains in own-ship lengths and two shapes: the metres follow from the
+ * ship (the C-3, 333 m), the shapes sit inside the replication. */
+static void test_run_list_shapes(void)
+{
+    fw_study *s = load("tests/data/study/shapes.yaml");
+    CHECK(s->n_ratios == 2 && s->domains_in_lengths);
+    CHECK_NEAR(s->domains[0], s->base.ship.Loa, 1e-9);
+    CHECK_NEAR(s->domains[1], 2.0 * s->base.ship.Loa, 1e-9);
+    CHECK(s->base.ship.Loa > 300.0);
+    CHECK(fw_study_run_count(s) == 8);
+    for (int id = 0; id < 8; id++) {
+        fw_study_run r = fw_study_run_at(s, id), r0 = fw_study_run_at(s, id - id % 4);
+        CHECK(r.replication == id / 4);
+        CHECK(r.ratio == ((id / 2) % 2 ? 2.5 : 1.0));
+        CHECK(r.seed == r0.seed && r.d_along == r0.d_along);
+        fw_scenario scn;
+        fw_study_scenario(s, &r, &scn);
+        CHECK(scn.helm.domain.fore_aft_ratio == r.ratio && scn.helm.domain.size == r.domain);
+    }
+    free(s);
+}
+
 static fw_outcome sample(int run_id)
 {
     fw_outcome o;
@@ -193,6 +215,7 @@ int main(void)
 {
     TEST_RUN(test_run_list);
     TEST_RUN(test_run_list_behaviours);
+    TEST_RUN(test_run_list_shapes);
     TEST_RUN(test_outcome_bytes);
     TEST_RUN(test_store);
     return TEST_EXIT();

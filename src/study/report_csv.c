@@ -67,10 +67,14 @@ static void estimate(FILE *f, const fw_estimate *e)
     num(f, e->hi);
 }
 
-/* ",density,behaviour,domain_m" of a group. */
+/* The columns of a setting, first in every table but runs.csv ... */
+#define SETTING "density,behaviour,domain_m,fore_aft_ratio,"
+
+/* ... and their values for a group. */
 static void setting(FILE *f, const fw_rep_group *G)
 {
     fprintf(f, "%.12g,%s,%.12g", G->density, G->behaviour, G->domain);
+    num(f, G->ratio);
 }
 
 /* The name of a measure's interval method in the CSVs. */
@@ -84,15 +88,16 @@ static fw_status write_runs(const fw_study_report *rep, const char *dir, fw_erro
 {
     csv c;
     char header[2048];
-    int k = snprintf(header, sizeof header, "run_id,density,behaviour,domain_m,replication,seed,sim_h");
+    int k = snprintf(header, sizeof header, "run_id," SETTING "replication,seed,sim_h");
     for (int m = 0; m < FW_NMEASURES && k < (int)sizeof header; m++)
         k += snprintf(header + k, sizeof header - (size_t)k, ",%s", fw_measures[m].name);
     if (csv_open(&c, dir, "runs.csv", header, err))
         return err->status;
     for (int i = 0; i < rep->n_runs; i++) {
         const fw_rep_run *r = &rep->runs[i];
-        fprintf(c.f, "%lld,%.12g,%s,%.12g,%d,%lld", r->run_id, r->density, r->behaviour, r->domain,
-                r->replication, r->seed);
+        fprintf(c.f, "%lld,%.12g,%s,%.12g", r->run_id, r->density, r->behaviour, r->domain);
+        num(c.f, r->ratio);
+        fprintf(c.f, ",%d,%lld", r->replication, r->seed);
         num(c.f, r->sim_s / 3600.0);
         for (int m = 0; m < FW_NMEASURES; m++)
             num(c.f, r->m[m]);
@@ -105,7 +110,8 @@ static fw_status write_summary(const fw_study_report *rep, const char *dir, fw_e
 {
     csv c;
     if (csv_open(&c, dir, "summary.csv",
-                 "density,behaviour,domain_m,measure,n,mean,sd,ci_low,ci_high,method", err))
+                 SETTING "measure,n,mean,sd,ci_low,ci_high,method",
+                 err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
         for (int m = 0; m < FW_NMEASURES; m++) {
@@ -124,8 +130,8 @@ static fw_status write_traffic(const fw_study_report *rep, const char *dir, fw_e
 {
     csv c;
     if (csv_open(&c, dir, "traffic.csv",
-                 "density,behaviour,domain_m,type,n,encounters,traffic_ship_h,mean_per_1000_ship_h,"
-                 "sd,ci_low,ci_high",
+                 SETTING "type,n,encounters,traffic_ship_h,"
+                 "mean_per_1000_ship_h,sd,ci_low,ci_high",
                  err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
@@ -149,7 +155,7 @@ static fw_status write_pairs(const fw_study_report *rep, const fw_rep_pair *pair
 {
     csv c;
     if (csv_open(&c, dir, name,
-                 "density,behaviour,domain_m,reference_m,reference_behaviour,measure,n,mean,sd,"
+                 SETTING "reference_m,reference_behaviour,measure,n,mean,sd,"
                  "ci_low,ci_high,significant,method",
                  err))
         return err->status;
@@ -173,7 +179,7 @@ static fw_status write_cpa(const fw_study_report *rep, const char *dir, fw_error
 {
     csv c;
     if (csv_open(&c, dir, "cpa.csv",
-                 "density,behaviour,domain_m,set,type,n,p5_m,p25_m,p50_m,p75_m,p95_m", err))
+                 SETTING "set,type,n,p5_m,p25_m,p50_m,p75_m,p95_m", err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
         for (int s = 0; s < FW_REP_NSET; s++)
@@ -192,8 +198,8 @@ static fw_status write_cpa(const fw_study_report *rep, const char *dir, fw_error
 static fw_status write_hist(const fw_study_report *rep, const char *dir, fw_error *err)
 {
     csv c;
-    if (csv_open(&c, dir, "cpa_hist.csv", "density,behaviour,domain_m,set,bin_low_m,bin_high_m,count",
-                 err))
+    if (csv_open(&c, dir, "cpa_hist.csv",
+                 SETTING "set,bin_low_m,bin_high_m,count", err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
         for (int s = 0; s < FW_REP_NSET; s++) {
@@ -211,7 +217,7 @@ static fw_status write_causation(const fw_study_report *rep, const char *dir, fw
 {
     csv c;
     if (csv_open(&c, dir, "causation.csv",
-                 "density,behaviour,domain_m,set,type,candidates,collisions,near_misses,domain,"
+                 SETTING "set,type,candidates,collisions,near_misses,domain,"
                  "passed,non_candidate_collisions,causation,ci_low,ci_high,iwrap",
                  err))
         return err->status;
@@ -239,7 +245,9 @@ static fw_status write_audit(const fw_study_report *rep, const char *dir, fw_err
 {
     csv c;
     if (csv_open(&c, dir, "audit.csv",
-                 "density,behaviour,domain_m,situation,audited,compliant,share,ci_low,ci_high", err))
+                 SETTING "situation,audited,compliant,share,ci_low,"
+                 "ci_high",
+                 err))
         return err->status;
     for (int g = 0; g < rep->n_groups && rep->audited; g++)
         for (int k = 0; k < FW_REP_NSIT; k++) {

@@ -87,6 +87,7 @@ typedef struct fw_rep_run {
     long long run_id, seed;
     double domain, density;
     char behaviour[16];                     /* the background ships': colregs, blind */
+    double ratio;                           /* the domain's fore-aft ratio, NAN if not recorded */
     int replication;
     double sim_s, traffic_ship_s;           /* exposure; traffic NAN if not recorded */
     double n_actions, helm_orders;          /* NAN if NULL */
@@ -121,6 +122,7 @@ extern const double fw_iwrap_causation[FW_REP_NTYPE];
 
 typedef struct fw_rep_group {
     double density, domain;
+    double ratio;                                   /* fore-aft, NAN if not recorded */
     char behaviour[16];
     int n_runs;
     fw_estimate est[FW_NMEASURES];
@@ -200,6 +202,11 @@ fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_erro
 /* report_md.c */
 fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_result *res,
                           const char *dir, fw_error *err);
+/* A group's domain for people: "300", or "300 (2.5:1)" for a shape other
+ * than the circle. */
+const char *fw_rep_domain(char *buf, size_t sz, const fw_rep_group *G);
+/* Same shape (fore-aft ratio; two missing ones are the same). */
+bool fw_rep_same_shape(const fw_rep_group *a, const fw_rep_group *b);
 /* Numbers for people: about three significant figures, "-" for NaN. */
 const char *fw_rep_fmt(char *buf, double x);
 

@@ -96,6 +96,8 @@ static int cmp_group(const void *pa, const void *pb)
     int c = strcmp(a->behaviour, b->behaviour);
     if (c)
         return c;
+    if (!fw_rep_same_shape(a, b))
+        return isnan(a->ratio) ? -1 : isnan(b->ratio) ? 1 : a->ratio < b->ratio ? -1 : 1;
     return (a->domain > b->domain) - (a->domain < b->domain);
 }
 
@@ -196,7 +198,7 @@ static fw_status read_runs(loader *L)
     if (prepare(L,
                 "SELECT run_id, domain_m, density, replication, seed, sim_s, n_actions, "
                 "min_dist_m, near_miss, collision, max_helm_deg, path_lengthening_m, "
-                "time_lost_s, helm_orders, traffic_ship_s, n_encounters, behaviour "
+                "time_lost_s, helm_orders, traffic_ship_s, n_encounters, behaviour, fore_aft_ratio "
                 "FROM runs WHERE status = 'ok' ORDER BY run_id",
                 &st))
         return L->err->status;
@@ -230,6 +232,7 @@ static fw_status read_runs(loader *L)
         r->traffic_ship_s = col_num(st, 14);
         r->n_encounters_col = sqlite3_column_type(st, 15) == SQLITE_NULL ? -1 : sqlite3_column_int64(st, 15);
         snprintf(r->behaviour, sizeof r->behaviour, "%s", col_text(st, 16));
+        r->ratio = col_num(st, 17);
         /* without its exposure a run has no rates at all: the writer broke the contract */
         if (!(r->sim_s > 0.0) || !isfinite(r->sim_s) || !isfinite(r->domain) ||
             !isfinite(r->density) || r->replication < 0 || r->replication > 1000000) {
@@ -249,7 +252,7 @@ static fw_status read_runs(loader *L)
 /* The group a run belongs to: its (density, behaviour, domain). */
 static fw_rep_group group_key(const fw_rep_run *r)
 {
-    fw_rep_group key = {.density = r->density, .domain = r->domain};
+    fw_rep_group key = {.density = r->density, .domain = r->domain, .ratio = r->ratio};
     snprintf(key.behaviour, sizeof key.behaviour, "%s", r->behaviour);
     return key;
 }

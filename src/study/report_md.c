@@ -28,6 +28,20 @@ const char *const fw_rep_plot_titles[] = {
     "Traffic-level encounters", "Paired differences from the reference domain"};
 const int fw_rep_n_plots = sizeof fw_rep_plots / sizeof fw_rep_plots[0];
 
+bool fw_rep_same_shape(const fw_rep_group *a, const fw_rep_group *b)
+{
+    return (isnan(a->ratio) && isnan(b->ratio)) || a->ratio == b->ratio;
+}
+
+const char *fw_rep_domain(char *buf, size_t sz, const fw_rep_group *G)
+{
+    if (isnan(G->ratio) || G->ratio == 1.0)
+        snprintf(buf, sz, "%g", G->domain);
+    else
+        snprintf(buf, sz, "%g (%g:1)", G->domain, G->ratio);
+    return buf;
+}
+
 const char *fw_rep_fmt(char *buf, double x)
 {
     double a = fabs(x);
@@ -70,6 +84,9 @@ static bool is_share(fw_measure_id m)
 {
     return fw_measures[m].method == FW_CI_WILSON;
 }
+
+/* A group's domain cell (a compound literal: valid to the end of the statement). */
+#define DOM(G) fw_rep_domain((char[48]){0}, 48, (G))
 
 /* The background behaviour of a group, "-" for a database without it. */
 static const char *beh(const fw_rep_group *G)
@@ -136,7 +153,7 @@ static void md_key_table(FILE *f, const fw_study_report *rep)
     fprintf(f, "\n");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "| %g | %s | %g | %d |", G->density, beh(G), G->domain, G->n_runs);
+        fprintf(f, "| %g | %s | %s | %d |", G->density, beh(G), DOM(G), G->n_runs);
         for (int k = 0; k < NKEY; k++)
             fprintf(f, " %s |", cell(c, sizeof c, &G->est[key[k]], is_share(key[k])));
         fprintf(f, " %s |\n", cell(c, sizeof c, &G->cpa_median, false));
@@ -149,7 +166,7 @@ static void md_key_table(FILE *f, const fw_study_report *rep)
     fprintf(f, "\n|---|---|---|---|---|---|---|\n");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "| %g | %s | %g |", G->density, beh(G), G->domain);
+        fprintf(f, "| %g | %s | %s |", G->density, beh(G), DOM(G));
         for (int t = 0; t < FW_REP_NTYPE; t++)
             fprintf(f, " %s |", cell(c, sizeof c, &G->est[FW_M_TRAFFIC_ALL + t], false));
         fprintf(f, "\n");
@@ -180,7 +197,7 @@ static void pair_table(FILE *f, const fw_study_report *rep, const fw_rep_pair *p
         /* fw_rep_compute stores the pairs of a setting together, in measure order */
         const fw_rep_pair *p = &pairs[i];
         const fw_rep_group *G = &rep->groups[p->group];
-        fprintf(f, "| %g | %s | %g | %d |", G->density, beh(G), G->domain,
+        fprintf(f, "| %g | %s | %s | %d |", G->density, beh(G), DOM(G),
                 p[FW_M_ENCOUNTERS].est.n);
         for (int k = 0; k < NKEY; k++) {
             const fw_estimate *e = &p[key[k]].est;
@@ -332,8 +349,8 @@ static void md_causation(FILE *f, const fw_study_report *rep)
     for (int set = 0; set < FW_REP_NSET; set++)
         for (int g = 0; g < rep->n_groups; g++) {
             const fw_rep_group *G = &rep->groups[g];
-            snprintf(b, sizeof b, "| %s | %g | %s | %g |", fw_rep_set_names[set], G->density,
-                     beh(G), G->domain);
+            snprintf(b, sizeof b, "| %s | %g | %s | %s |", fw_rep_set_names[set], G->density,
+                     beh(G), DOM(G));
             cf_row(f, b, (const long long(*)[FW_CAND_NSLOT])G->cand[set], rep->level);
         }
     /* pooled over the domain sizes (and densities) of each behaviour */
@@ -372,7 +389,7 @@ static void md_audit(FILE *f, const fw_study_report *rep)
     fprintf(f, "\n|---|---|---|---|---|---|---|---|\n");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "| %g | %s | %g |", G->density, beh(G), G->domain);
+        fprintf(f, "| %g | %s | %s |", G->density, beh(G), DOM(G));
         for (int k = 0; k < FW_REP_NSIT; k++) {
             fw_estimate e = fw_wilson(G->compliant[k], G->audited[k], rep->level);
             fprintf(f, " %s |", G->audited[k] ? cell(c, sizeof c, &e, true) : "-");
@@ -603,7 +620,9 @@ static void print_json(FILE *f, const fw_study_report *rep, const fw_study_repor
         const fw_rep_group *G = &rep->groups[g];
         fprintf(f, "%s\n  {\"density\": %.10g, \"behaviour\": ", g ? "," : "", G->density);
         jstr(f, G->behaviour);
-        fprintf(f, ", \"domain_m\": %.10g, \"runs\": %d", G->domain, G->n_runs);
+        fprintf(f, ", \"domain_m\": %.10g, \"fore_aft_ratio\": ", G->domain);
+        jnum(f, G->ratio);
+        fprintf(f, ", \"runs\": %d", G->n_runs);
         for (int m = 0; m < FW_NMEASURES; m++) {
             fprintf(f, ",\n   \"%s\": ", fw_measures[m].name);
             jest(f, &G->est[m]);
@@ -634,7 +653,7 @@ void fw_study_report_print(FILE *f, const fw_study_report *rep, const fw_study_r
     fprintf(f, "  %s\n", "CPA p50 m");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "%-8g %-8s %8g %5d", G->density, beh(G), G->domain, G->n_runs);
+        fprintf(f, "%-8g %-8s %8s %5d", G->density, beh(G), DOM(G), G->n_runs);
         for (int k = 0; k < NKEY; k++)
             fprintf(f, "  %-22s", cell(c, sizeof c, &G->est[key[k]], is_share(key[k])));
         fprintf(f, "  %s\n", fw_rep_fmt(m, cpa_median(G)));

@@ -264,7 +264,8 @@ static fw_status paired(fw_study_report *rep, fw_error *err)
         int ref = -1;
         for (int h = 0; h < rep->n_groups; h++)
             if (rep->groups[h].density == G->density && rep->groups[h].domain == rep->reference_m &&
-                strcmp(rep->groups[h].behaviour, G->behaviour) == 0)
+                strcmp(rep->groups[h].behaviour, G->behaviour) == 0 &&
+                fw_rep_same_shape(&rep->groups[h], G))
                 ref = h;
         if (ref < 0) {
             char msg[200], b[32] = "";
@@ -296,7 +297,7 @@ static fw_status behaviour_paired(fw_study_report *rep, fw_error *err)
         for (int h = 0; h < rep->n_groups; h++) {
             const fw_rep_group *H = &rep->groups[h];
             if (H->density == G->density && H->domain == G->domain &&
-                strcmp(H->behaviour, "blind") == 0 &&
+                fw_rep_same_shape(H, G) && strcmp(H->behaviour, "blind") == 0 &&
                 add_pairs(rep, rep->bpairs, &rep->n_bpairs, g, h, err))
                 return err->status;
         }

@@ -1,7 +1,7 @@
 /* schema.h - the SQLite schema of a study database (fairway sweep writes it,
  * fairway report and analysis/ read it).
  *
- * One row in `runs` per (domain, density, behaviour, replication) of the study's run
+ * One row in `runs` per (domain size and shape, density, behaviour, replication) of the study's run
  * list; a run and all its rows are committed in one transaction, so a run is
  * either wholly in the database or not at all.  Units are in the column names
  * (m, s, deg); flags are 0/1.  `meta` holds the study's settings as text
@@ -51,6 +51,7 @@
     "CREATE TABLE IF NOT EXISTS runs(\n"                                                \
     "  run_id INTEGER PRIMARY KEY,\n"    /* index in the study's run list */            \
     "  domain_m REAL NOT NULL,\n"        /* transverse semi-axis of the domain */       \
+    "  fore_aft_ratio REAL,\n"           /* its shape: fore-aft / transverse semi-axis */ \
     "  density REAL NOT NULL,\n"         /* demand scale of the network */              \
     "  replication INTEGER NOT NULL,\n"  /* 0-based; same traffic for every domain */   \
     "  seed INTEGER NOT NULL,\n"         /* SUMO and demand seed of the replication */  \
@@ -85,7 +86,7 @@
     "  mon_stopped INTEGER,\n"                                                          \
     "  max_lateral_mps REAL,\n"                                                         \
     "  min_hull_m REAL,\n"               /* hull to hull; NULL: none within 1 nm */      \
-    "  UNIQUE(domain_m, density, behaviour, replication));\n"                          \
+    "  UNIQUE(domain_m, fore_aft_ratio, density, behaviour, replication));\n"          \
     "CREATE TABLE IF NOT EXISTS encounters(\n"                                          \
     "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \
     "  target TEXT NOT NULL,\n"                                                         \

@@ -83,11 +83,16 @@ static fw_status write_meta(fw_store *st, const fw_study *s, const char *digest,
                  fw_behaviour_name(s->behaviours[i]));
     if ((r = meta_put(st, "behaviours", beh, err)))
         return r;
-    const char *levels[2] = {"domains_m", "densities"};
-    for (int k = 0; k < 2; k++) {
+    const char *levels[4] = {"domains_m", "densities", "fore_aft_ratios", "domains_l"};
+    const double *values[4] = {s->domains, s->densities, s->ratios, s->domain_lengths};
+    const int counts[4] = {s->n_domains, s->n_densities, s->n_ratios,
+                           s->domains_in_lengths ? s->n_domains : 0};
+    for (int k = 0; k < 4; k++) {
         char text[1024] = "";
-        int n = k ? s->n_densities : s->n_domains;
-        const double *v = k ? s->densities : s->domains;
+        int n = counts[k];
+        const double *v = values[k];
+        if (k == 3 && n == 0)
+            continue;
         size_t len = 0;
         for (int i = 0; i < n && len < sizeof text - 32; i++)
             len += (size_t)snprintf(text + len, sizeof text - len, "%s%.6g", i ? "," : "", v[i]);
@@ -217,13 +222,14 @@ void fw_store_child(void)
 }
 
 static const char kRunSql[] =
-    "INSERT INTO runs(run_id, domain_m, density, replication, seed, behaviour, status, reason, "
+    "INSERT INTO runs(run_id, domain_m, fore_aft_ratio, density, replication, seed, behaviour, "
+    "status, reason, "
     "sim_s, wall_s, sumo_s, n_encounters, n_actions, min_dist_m, domain_entered, near_miss, "
     "collision, colregs_ok, max_helm_deg, path_length_m, path_lengthening_m, time_lost_s, "
     "rudder_work_deg_s, helm_orders, traffic_ship_s, give_way, give_way_short, "
     "mon_sideways, mon_teleport, mon_overlap, mon_appear, mon_vanish, mon_start_close, "
     "mon_stopped, max_lateral_mps, min_hull_m) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
-    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
+    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 static const char kEncSql[] =
     "INSERT INTO encounters(run_id, target, target_type, situation, t_detect_s, dcpa0_m, "
     "tcpa0_s, threat, acted, t_act_s, act_side, act_helm_deg, min_dist_m, t_min_s, min_lambda, "
@@ -388,6 +394,7 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
     sqlite3_clear_bindings(q);
     sqlite3_bind_int(q, i++, o->run_id);
     sqlite3_bind_double(q, i++, r.domain);
+    sqlite3_bind_double(q, i++, r.ratio);
     sqlite3_bind_double(q, i++, r.density);
     sqlite3_bind_int(q, i++, r.replication);
     sqlite3_bind_int64(q, i++, (sqlite3_int64)r.seed);

@@ -77,7 +77,7 @@ static fw_status read_behaviours(const yt_doc *doc, const yt_node *root, fw_stud
                           FW_STUDY_MAX_BEHAVIOURS, seq->n);
     for (size_t i = 0; i < seq->n; i++) {
         const yt_node *it = seq->items[i];
-        char field[32];
+        char field[48];
         snprintf(field, sizeof field, "behaviours[%zu]", i);
         if (it->kind != YT_SCALAR || !it->str || fw_behaviour_parse(it->str, &s->behaviours[i]))
             return fw_fail_at(err, doc->file, it->line, field,
@@ -89,6 +89,28 @@ static fw_status read_behaviours(const yt_doc *doc, const yt_node *root, fw_stud
     }
     s->n_behaviours = (int)seq->n;
     return FW_OK;
+}
+
+/* domains_m, or domains_l in own-ship lengths (made metres once the ship is
+ * loaded: fw_study_load), and fore_aft_ratios. */
+static fw_status read_domains(const yt_doc *doc, const yt_node *root, fw_study *s, fw_error *err)
+{
+    bool m = yt_get(root, "domains_m") != NULL, l = yt_get(root, "domains_l") != NULL;
+    if (m && l)
+        return fw_fail_at(err, doc->file, yt_key_line(root, "domains_l"), "domains_l",
+                          "give domains_m or domains_l, not both");
+    if (!m && !l)
+        return fw_fail_at(err, doc->file, 1, "domains_m",
+                          "required field is missing (or domains_l, in own-ship lengths)");
+    s->domains_in_lengths = l;
+    fw_status st = m ? read_levels(doc, root, "domains_m", 10.0, 20000.0, true, s->domains,
+                                   &s->n_domains, err)
+                     : read_levels(doc, root, "domains_l", 0.05, 60.0, true, s->domain_lengths,
+                                   &s->n_domains, err);
+    if (st)
+        return st;
+    return read_levels(doc, root, "fore_aft_ratios", 0.2, 10.0, false, s->ratios, &s->n_ratios,
+                       err);
 }
 
 /* audit: {risk_dcpa_m, ...}: the COLREGs audit's thresholds (audit/audit.h),
@@ -244,6 +266,8 @@ static uint64_t digest(const fw_study *s)
                   "a%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g|", a->risk_dcpa, a->risk_tcpa,
                   a->course_change, a->speed_change, a->early_tcpa, a->prompt, a->may_tcpa,
                   a->must_tcpa);
+    for (int i = 0; i < s->n_ratios && k < (int)sizeof text - 32; i++)
+        k += snprintf(text + k, sizeof text - (size_t)k, "f%.17g|", s->ratios[i]);
     for (int i = 0; i < s->n_behaviours && k < (int)sizeof text - 32; i++)
         k += snprintf(text + k, sizeof text - (size_t)k, "b%s|", fw_behaviour_name(s->behaviours[i]));
     uint64_t h = fw_fnv1a(FW_FNV_INIT, text, strlen(text));
@@ -254,7 +278,8 @@ static uint64_t digest(const fw_study *s)
 fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
 {
     static const char *const keys[] = {"name", "description", "scenario", "replications", "seed",
-                                       "domains_m", "densities", "behaviours", "duration_s",
+                                       "domains_m", "domains_l", "fore_aft_ratios", "densities",
+                                       "behaviours", "duration_s",
                                        "start", "encounter_m", "near_miss_m", "audit", NULL};
     memset(s, 0, sizeof *s);
     if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
@@ -274,8 +299,7 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
         (st = yt_req_string(doc, root, "", "scenario", scen, sizeof scen, err)) ||
         (st = yt_req_int(doc, root, "", "replications", 1, 100000, &reps, err)) ||
         (st = yt_opt_int(doc, root, "", "seed", 0, 2147483647L, &seed, err)) ||
-        (st = read_levels(doc, root, "domains_m", 10.0, 20000.0, true, s->domains, &s->n_domains,
-                          err)) ||
+        (st = read_domains(doc, root, s, err)) ||
         (st = read_levels(doc, root, "densities", 0.0, 100.0, false, s->densities,
                           &s->n_densities, err)) ||
         (st = read_behaviours(doc, root, s, err)) ||
@@ -301,7 +325,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
     s->replications = (int)reps;
     s->seed = (unsigned long)seed;
     if ((long)s->replications * s->n_domains * (s->n_densities ? s->n_densities : 1) *
-            (s->n_behaviours ? s->n_behaviours : 1) > 10000000L) {
+            (s->n_behaviours ? s->n_behaviours : 1) * (s->n_ratios ? s->n_ratios : 1) >
+        10000000L) {
         st = fw_fail_at(err, doc->file, yt_key_line(root, "replications"), "replications",
                         "more than 10 million runs");
         goto out;
@@ -312,6 +337,12 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
         s->n_behaviours = 1;
         s->behaviours[0] = s->base.reactions.behaviour;
     }
+    if (s->n_ratios == 0) {
+        s->n_ratios = 1;
+        s->ratios[0] = s->base.helm.domain.fore_aft_ratio;
+    }
+    for (int i = 0; s->domains_in_lengths && i < s->n_domains; i++)
+        s->domains[i] = s->domain_lengths[i] * s->base.ship.Loa;
     if (s->n_densities == 0) {
         s->n_densities = 1;
         s->densities[0] = s->base.density;
@@ -338,20 +369,22 @@ out:
 
 int fw_study_run_count(const fw_study *s)
 {
-    return s->n_densities * s->replications * s->n_behaviours * s->n_domains;
+    return s->n_densities * s->replications * s->n_behaviours * s->n_ratios * s->n_domains;
 }
 
 fw_study_run fw_study_run_at(const fw_study *s, int run_id)
 {
     fw_study_run r = {.run_id = run_id};
-    int per_rep = s->n_domains * s->n_behaviours;
+    int per_rep = s->n_domains * s->n_ratios * s->n_behaviours;
     r.domain_index = run_id % s->n_domains;
-    r.behaviour_index = (run_id / s->n_domains) % s->n_behaviours;
+    r.ratio_index = (run_id / s->n_domains) % s->n_ratios;
+    r.behaviour_index = (run_id / (s->n_domains * s->n_ratios)) % s->n_behaviours;
     r.replication = (run_id / per_rep) % s->replications;
     r.density_index = run_id / (per_rep * s->replications);
     r.domain = s->domains[r.domain_index];
     r.density = s->densities[r.density_index];
     r.behaviour = s->behaviours[r.behaviour_index];
+    r.ratio = s->ratios[r.ratio_index];
     /* the replication alone decides seed and start: common random numbers */
     uint64_t base = mix((uint64_t)s->seed * 0x100000001b3ull + (uint64_t)r.replication);
     r.seed = 1 + (unsigned long)(base % 2147483646ull);
@@ -365,6 +398,7 @@ void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *ou
     *out = s->base;
     snprintf(out->name, sizeof out->name, "%.40s-%06d", s->name, r->run_id);
     out->helm.domain.size = r->domain;
+    out->helm.domain.fore_aft_ratio = r->ratio;
     out->density = r->density;
     out->reactions.behaviour = r->behaviour;
     out->seed = r->seed;

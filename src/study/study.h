@@ -3,11 +3,13 @@
  *
  * Common random numbers: replication i has one seed (SUMO's and the demand's)
  * and one own-ship start for every domain size, behaviour and density, so
- * differences between domain sizes and between behaviours are paired.  The
- * run list is ordered replication-major (all domains of behaviour 0 of
- * replication 0, then all domains of behaviour 1, then replication 1, ...), so
+ * differences between domain sizes, shapes and behaviours are paired.  The
+ * run list is ordered replication-major (all domains of shape 0 and
+ * behaviour 0 of replication 0, then of shape 1, ..., then behaviour 1, then
+ * replication 1, ...), so
  * a sweep cut short still holds complete paired sets.  run_id is the index in
- * that list; with one behaviour it is the list of a study without the axis.
+ * that list; with one shape and one behaviour it is the list of a study
+ * without those axes.
  *
  * A study file (YAML, units in the key names; errors "FILE:LINE: FIELD: ..."):
  *
@@ -15,7 +17,9 @@
  *   scenario: ../traffic/strait-crossing.yaml  # relative to the study file
  *   replications: 10
  *   seed: 1
- *   domains_m: [150, 300, 600, 1000]
+ *   domains_m: [150, 300, 600, 1000]   # or domains_l: [0.5, 1, 2] in own-ship lengths
+ *   fore_aft_ratios: [1, 2.5]    # optional: the domain's shape (fore-aft / transverse
+ *                                # semi-axis; Fujii and Tanaka's 8 L x 3.2 L is 2.5)
  *   densities: [1, 2]            # optional: the scenario's density
  *   behaviours: [colregs, blind] # optional: the scenario's traffic.behaviour
  *   duration_s: 3600             # optional: the scenario's duration
@@ -58,6 +62,10 @@ typedef struct fw_study {
     double domains[FW_STUDY_MAX_LEVELS];   /* m */
     int n_densities;
     double densities[FW_STUDY_MAX_LEVELS];
+    bool domains_in_lengths; /* the file gave domains_l (domains[] is metres all the same) */
+    double domain_lengths[FW_STUDY_MAX_LEVELS]; /* own-ship lengths, when it did */
+    int n_ratios;            /* fore-aft ratios of the domain; 1 when not swept */
+    double ratios[FW_STUDY_MAX_LEVELS];
     int n_behaviours;        /* 1 when the study does not sweep them */
     fw_behaviour behaviours[FW_STUDY_MAX_BEHAVIOURS];
     double duration;         /* s */
@@ -73,8 +81,9 @@ typedef struct fw_study {
 typedef struct fw_study_run {
     int run_id;
     int replication;
-    int domain_index, density_index, behaviour_index;
+    int domain_index, density_index, behaviour_index, ratio_index;
     double domain;           /* m */
+    double ratio;            /* fore-aft / transverse semi-axis */
     double density;
     fw_behaviour behaviour;  /* of the background ships */
     unsigned long seed;
@@ -88,8 +97,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err);
 int fw_study_run_count(const fw_study *s);
 /* Run run_id (0 <= run_id < fw_study_run_count). */
 fw_study_run fw_study_run_at(const fw_study *s, int run_id);
-/* The scenario of one run: the base with the run's domain, density,
- * behaviour, seed, duration and start, named "<study>-<run_id>". */
+/* The scenario of one run: the base with the run's domain size and shape,
+ * density, behaviour, seed, duration and start, named "<study>-<run_id>". */
 void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *out);
 
 /* 64-bit FNV-1a, chained through h (start with FW_FNV_INIT). */

@@ -21,7 +21,7 @@ done
 for f in rates encounter_types cpa_hist traffic paired; do
   grep -q "]($f.png)" "$rep/report.md" || fail "report.md does not embed $f.png"
 done
-grep -q "^density,behaviour,domain_m,measure,n,mean,sd,ci_low,ci_high,method$" "$rep/summary.csv" || fail "summary.csv header"
+grep -q "^density,behaviour,domain_m,fore_aft_ratio,measure,n,mean,sd,ci_low,ci_high,method$" "$rep/summary.csv" || fail "summary.csv header"
 # 4 domain sizes x 2 densities, 20 own-ship measures each
 [ "$(tail -n +2 "$rep/summary.csv" | wc -l)" -eq 160 ] || fail "summary.csv rows: $(wc -l < "$rep/summary.csv")"
 grep -q "47 finished and counted, 2 failed, 49 in the database" "$rep/report.md" || fail "run counts"
@@ -48,5 +48,5 @@ grep -q "plotting failed" <<<"$out" || fail "no 'plotting failed' in: $out"
 
 # --reference picks the comparison
 "$FAIRWAY" report "$dir/study.db" --out "$dir/r" --no-plots --reference 600 >/dev/null || fail "--reference 600"
-grep -q "^1,,100,600,,manoeuvres_per_h," "$dir/r/paired.csv" || fail "paired.csv against 600 m"
+grep -q "^1,,100,,600,,manoeuvres_per_h," "$dir/r/paired.csv" || fail "paired.csv against 600 m"
 echo "ok: report with plots, json, failed plots, reference"
