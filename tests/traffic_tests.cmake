@@ -24,3 +24,9 @@ foreach(t cli_traffic_run cli_traffic_help cli_traffic_bad_network cli_traffic_b
           cli_traffic_bad_ships)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 60)
 endforeach()
+
+# Recorded tracks as a traffic source (traffic/source_track.h), and a study's
+# worst encounters exported as scenarios that replay them (fairway worst).
+fw_test(test_track test_track.c)
+fw_script_test(worst_replay 0 "ok: worst cases replayed within 10 m" worst_replay.sh)
+set_tests_properties(worst_replay PROPERTIES TIMEOUT 300 ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

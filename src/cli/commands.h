@@ -15,5 +15,6 @@ int fw_cmd_traffic(int argc, char **argv);
 int fw_cmd_run(int argc, char **argv);
 int fw_cmd_sweep(int argc, char **argv);
 int fw_cmd_report(int argc, char **argv);
+int fw_cmd_worst(int argc, char **argv);
 
 #endif

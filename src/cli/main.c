@@ -20,6 +20,7 @@ static const command commands[] = {
     {"run", fw_cmd_run, "run scenarios: SUMO traffic, MMG own ship, avoidance, full records"},
     {"sweep", fw_cmd_sweep, "Monte Carlo study: every run of a study file into a SQLite database"},
     {"report", fw_cmd_report, "statistics, tables, plots and a summary of a study database"},
+    {"worst", fw_cmd_worst, "a study's closest encounters as scenarios that replay them"},
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
 };
 

@@ -8,6 +8,7 @@
 #include "core/files.h"
 #include "core/units.h"
 #include "run/run.h"
+#include "traffic/source_track.h"
 #include "traffic/source_sumo.h"
 #include "world/controllers.h"
 #include "world/world.h"
@@ -76,7 +77,13 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
 {
     const fw_scenario *s = def->scenario;
     fw_source *src = NULL;
-    fw_status st = def->traffic == FW_RUN_TRAFFIC_KINEMATIC
+    fw_replay_def td = fw_default_replay_def();
+    td.file = s->tracks;
+    td.step = s->step;
+    td.radius = s->radius;
+    /* recorded tracks replay without SUMO, whatever the run asked for */
+    fw_status st = s->tracks[0] ? fw_replay_source_create(&td, &src, err)
+                   : def->traffic == FW_RUN_TRAFFIC_KINEMATIC
                        ? fw_run_kinematic_source(s, s->step, s->radius, &src, err)
                        : sumo_source(def, &src, err);
     if (st)

@@ -106,10 +106,42 @@ static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *pa
     return FW_OK;
 }
 
+/* traffic.tracks: a CSV of recorded tracks (traffic/source_track.h), its path
+ * relative to the scenario file; the traffic then is that alone. */
+static fw_status load_tracks(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err)
+{
+    char rel[512] = "";
+    fw_status st = yt_opt_string(doc, tr, "traffic", "tracks", rel, sizeof rel, err);
+    if (st || !rel[0])
+        return st;
+    int line = yt_key_line(tr, "tracks");
+    if (s->network[0] || yt_get(tr, "targets"))
+        return fw_fail_at(err, doc->file, line, "traffic.tracks",
+                          "recorded tracks are the whole traffic: no network or targets with them");
+    char dir[512];
+    snprintf(dir, sizeof dir, "%s", s->file);
+    char *slash = strrchr(dir, '/');
+    int k;
+    if (rel[0] == '/' || !slash) {
+        k = snprintf(s->tracks, sizeof s->tracks, "%s", rel);
+    } else {
+        *slash = '\0';
+        k = snprintf(s->tracks, sizeof s->tracks, "%s/%s", dir, rel);
+    }
+    if (k < 0 || (size_t)k >= sizeof s->tracks)
+        return fw_fail_at(err, doc->file, line, "traffic.tracks", "path too long");
+    FILE *f = fopen(s->tracks, "r");
+    if (!f)
+        return fw_fail_at(err, doc->file, line, "traffic.tracks", "%s: cannot open", s->tracks);
+    fclose(f);
+    return FW_OK;
+}
+
 static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenario *s,
                               fw_error *err)
 {
-    static const char *const keys[] = {"network", "density", "fill", "targets", "behaviour", NULL};
+    static const char *const keys[] = {"network", "density", "fill", "targets", "behaviour",
+                                       "tracks", NULL};
     const yt_node *tr, *seq = NULL;
     fw_status st;
     if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
@@ -166,9 +198,11 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
             s->n_targets++;
         }
     }
-    if (!s->network[0] && s->n_targets == 0)
+    if ((st = load_tracks(doc, tr, s, err)))
+        return st;
+    if (!s->network[0] && s->n_targets == 0 && !s->tracks[0])
         return fw_fail_at(err, doc->file, yt_key_line(root, "traffic"), "traffic",
-                          "needs a network or at least one target");
+                          "needs a network, recorded tracks or at least one target");
     return FW_OK;
 }
 

@@ -42,6 +42,7 @@ typedef struct fw_scenario {
     double density;      /* demand scale of the network's streams */
     int fill;            /* network ships placed along the routes at t = 0 */
     fw_reactions_def reactions; /* behaviour: colregs (default) or blind */
+    char tracks[1024];   /* recorded tracks (traffic/source_track.h) replayed, "" = none */
     int n_targets;
     fw_target targets[FW_SCN_MAX_TARGETS]; /* at t = 0; type: the label kept in the records */
     /* avoidance */

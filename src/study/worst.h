@@ -1,0 +1,51 @@
+/* worst.h - a study's worst encounters as scenarios that replay them.
+ *
+ * The N own-ship encounters of a study database with the smallest hull-to-hull
+ * distance (one per run) are sailed again: the run is rebuilt from the study
+ * file (its seed, start, domain and behaviour; the database's study digest
+ * must match, or the run would not be the same), run with every target it saw
+ * recorded at every step, and written as
+ *
+ *   DIR/case-K/tracks.csv      the targets' recorded tracks (traffic/source_track.h)
+ *   DIR/case-K/scenario.yaml   the study's base scenario with the run's own-ship
+ *                              start, domain, duration, and the tracks as its
+ *                              traffic (no network, no survey)
+ *
+ * and the scenario is run once more to check it replays the encounter: its
+ * closest approach to the same target, beside the database's and the re-run's.
+ * A replay differs from the original only where the rounding of the recorded
+ * positions (cm) and speeds moves a decision of the own ship.
+ */
+#ifndef FW_STUDY_WORST_H
+#define FW_STUDY_WORST_H
+
+#include <stdbool.h>
+
+#include "core/error.h"
+#include "traffic/traffic.h"
+
+typedef struct fw_worst_def {
+    const char *db;     /* the study database */
+    const char *study;  /* NULL: the study file named in its meta */
+    const char *out;    /* directory to write the cases into (created) */
+    int n;              /* cases, 1 by default */
+    fw_traffic_mode mode;
+} fw_worst_def;
+
+fw_worst_def fw_default_worst_def(void);
+
+typedef struct fw_worst_case {
+    int run_id;
+    char target[64];
+    double db_min;      /* m, centre to centre, as the database has it */
+    double db_hull;     /* m, hull to hull (NAN if not recorded) */
+    double rerun_min;   /* m, the run sailed again */
+    double replay_min;  /* m, the exported scenario */
+    char dir[1100];
+} fw_worst_case;
+
+/* Fills cases[0..*n-1] (room for def->n).  FW_EINPUT for a database or
+ * study that cannot be used, FW_ERUN when a run fails. */
+fw_status fw_worst_export(const fw_worst_def *def, fw_worst_case *cases, int *n, fw_error *err);
+
+#endif

@@ -1,0 +1,274 @@
+/* source_track.c - recorded tracks replayed as a traffic source (source_track.h). */
+#include "traffic/source_track.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/mem.h"
+#include "core/units.h"
+
+typedef struct trk_point {
+    double t, east, north, course, speed;
+} trk_point;
+
+typedef struct trk_ship {
+    fw_target info;  /* id, type, size; the position of the last query */
+    trk_point *p;    /* sorted by t */
+    int n, cap;
+    int cur;         /* the point at or before the present time */
+} trk_ship;
+
+typedef struct trk_source {
+    fw_source base;
+    fw_replay_def def;
+    trk_ship *ships; /* sorted by id */
+    int n;
+    long steps;
+    fw_target own;
+    bool placed;
+    fw_target *out;
+} trk_source;
+
+fw_replay_def fw_default_replay_def(void)
+{
+    return (fw_replay_def){.file = NULL, .step = 1.0, .radius = INFINITY, .max_gap = 1.5};
+}
+
+static double trk_time(const fw_source *s)
+{
+    const trk_source *k = (const trk_source *)s;
+    return (double)k->steps * k->def.step;
+}
+
+static double trk_step_length(const fw_source *s) { return ((const trk_source *)s)->def.step; }
+
+static fw_status trk_place(fw_source *s, const fw_target *own, fw_error *err)
+{
+    (void)err;
+    trk_source *k = (trk_source *)s;
+    k->own = *own;
+    k->placed = true;
+    return FW_OK;
+}
+
+static fw_status trk_advance(fw_source *s, fw_error *err)
+{
+    (void)err;
+    ((trk_source *)s)->steps++;
+    return FW_OK;
+}
+
+/* Where ship s is at time t; false when it is not there then. */
+static bool at(trk_ship *s, double t, double max_gap, fw_target *out)
+{
+    if (s->n == 0 || t < s->p[0].t - 1e-9 || t > s->p[s->n - 1].t + 1e-9)
+        return false;
+    while (s->cur + 1 < s->n && s->p[s->cur + 1].t <= t + 1e-9)
+        s->cur++;
+    while (s->cur > 0 && s->p[s->cur].t > t + 1e-9)
+        s->cur--;
+    const trk_point *a = &s->p[s->cur], *b = s->cur + 1 < s->n ? a + 1 : a;
+    if (b != a && b->t - a->t > max_gap && t > a->t + 1e-9)
+        return false; /* between two passes */
+    double w = b->t > a->t ? (t - a->t) / (b->t - a->t) : 0.0;
+    if (w < 0.0)
+        w = 0.0;
+    *out = s->info;
+    out->east = a->east + w * (b->east - a->east);
+    out->north = a->north + w * (b->north - a->north);
+    out->course = a->course;
+    out->speed = a->speed;
+    return true;
+}
+
+static fw_status trk_around(fw_source *s, const fw_target **v, int *n, fw_error *err)
+{
+    trk_source *k = (trk_source *)s;
+    *v = k->out;
+    *n = 0;
+    if (!k->placed)
+        return fw_fail(err, FW_ERUN, "track source: no query before the own ship is placed");
+    double t = trk_time(s);
+    for (int i = 0; i < k->n; i++) {
+        fw_target x;
+        if (at(&k->ships[i], t, k->def.max_gap, &x) &&
+            (isinf(k->def.radius) ||
+             hypot(x.east - k->own.east, x.north - k->own.north) <= k->def.radius))
+            k->out[(*n)++] = x;
+    }
+    return FW_OK;
+}
+
+static fw_status trk_area(fw_source *s, const fw_target **v, int *n, fw_error *err)
+{
+    (void)s;
+    *v = NULL;
+    *n = 0;
+    return fw_fail(err, FW_ERUN, "track source: no area query (a replay has no survey)");
+}
+
+static fw_status trk_set_speed(fw_source *s, const char *id, double speed, fw_error *err)
+{
+    (void)s, (void)id, (void)speed, (void)err;
+    return FW_OK; /* a recorded ship went as it went */
+}
+
+static void trk_destroy(fw_source *s)
+{
+    trk_source *k = (trk_source *)s;
+    for (int i = 0; i < k->n; i++)
+        free(k->ships[i].p);
+    fw_free_each(3, k->ships, k->out, k);
+}
+
+static const fw_source_ops trk_ops = {.name = "track", .place = trk_place,
+                                      .advance = trk_advance, .around = trk_around,
+                                      .area = trk_area, .set_speed = trk_set_speed,
+                                      .time = trk_time, .step_length = trk_step_length,
+                                      .destroy = trk_destroy};
+
+/* The columns a track file has (-1: absent). */
+enum { C_T, C_ID, C_E, C_N, C_COURSE, C_SPEED, C_TYPE, C_L, C_B, NCOL };
+static const char *const col_names[NCOL] = {"t_s",      "id",       "east_m",  "north_m", "course_deg",
+                                            "speed_kn", "type",     "length_m", "breadth_m"};
+
+static int split(char *line, char **f, int max)
+{
+    int n = 0;
+    line[strcspn(line, "\r\n")] = '\0';
+    for (char *p = line; n < max;) {
+        f[n++] = p;
+        char *c = strchr(p, ',');
+        if (!c)
+            break;
+        *c = '\0';
+        p = c + 1;
+    }
+    return n;
+}
+
+static fw_status header(const char *file, char *line, int col[NCOL], fw_error *err)
+{
+    char *f[64];
+    int n = split(line, f, 64);
+    for (int c = 0; c < NCOL; c++) {
+        col[c] = -1;
+        for (int i = 0; i < n; i++)
+            if (strcmp(f[i], col_names[c]) == 0)
+                col[c] = i;
+        if (c < C_TYPE && col[c] < 0)
+            return fw_fail(err, FW_EINPUT, "%s:1: no column %s", file, col_names[c]);
+    }
+    return FW_OK;
+}
+
+static trk_ship *ship_of(trk_source *k, const char *id)
+{
+    for (int i = k->n - 1; i >= 0; i--) /* rows come grouped by time: recent ships last */
+        if (strcmp(k->ships[i].info.id, id) == 0)
+            return &k->ships[i];
+    if (!fw_resize((void **)&k->ships, sizeof *k->ships, (size_t)k->n + 1))
+        return NULL;
+    trk_ship *s = &k->ships[k->n++];
+    memset(s, 0, sizeof *s);
+    snprintf(s->info.id, sizeof s->info.id, "%s", id);
+    return s;
+}
+
+static bool number(const char *s, double *v)
+{
+    char *end;
+    *v = strtod(s, &end);
+    return end != s && *end == '\0' && isfinite(*v);
+}
+
+/* One data row into its ship. */
+static fw_status row(trk_source *k, const char *file, int line_no, char *line, const int col[NCOL],
+                     fw_error *err)
+{
+    char *f[64];
+    int n = split(line, f, 64);
+    double v[NCOL] = {0};
+    for (int c = 0; c < NCOL; c++) {
+        if (col[c] < 0 || c == C_ID || c == C_TYPE)
+            continue;
+        if (col[c] >= n || !number(f[col[c]], &v[c]))
+            return fw_fail(err, FW_EINPUT, "%s:%d: %s: not a number", file, line_no, col_names[c]);
+    }
+    if (col[C_ID] >= n || !f[col[C_ID]][0] || strlen(f[col[C_ID]]) >= FW_TARGET_ID_MAX)
+        return fw_fail(err, FW_EINPUT, "%s:%d: id: empty or too long", file, line_no);
+    trk_ship *s = ship_of(k, f[col[C_ID]]);
+    if (!s || (s->n == s->cap && !fw_resize((void **)&s->p, sizeof *s->p,
+                                            (size_t)(s->cap = fw_grown_cap(s->cap, 64)))))
+        return fw_fail(err, FW_ERUN, "%s: out of memory", file);
+    if (col[C_TYPE] >= 0 && col[C_TYPE] < n)
+        snprintf(s->info.type, sizeof s->info.type, "%s", f[col[C_TYPE]]);
+    s->info.length = v[C_L];
+    s->info.breadth = v[C_B];
+    s->p[s->n++] = (trk_point){v[C_T], v[C_E], v[C_N], fw_deg_to_rad(v[C_COURSE]),
+                               fw_kn_to_ms(v[C_SPEED])};
+    return FW_OK;
+}
+
+static int cmp_point(const void *a, const void *b)
+{
+    double x = ((const trk_point *)a)->t, y = ((const trk_point *)b)->t;
+    return (x > y) - (x < y);
+}
+
+static int cmp_ship(const void *a, const void *b)
+{
+    return strcmp(((const trk_ship *)a)->info.id, ((const trk_ship *)b)->info.id);
+}
+
+static fw_status load(trk_source *k, const char *file, fw_error *err)
+{
+    FILE *fp = fopen(file, "r");
+    if (!fp)
+        return fw_fail(err, FW_EINPUT, "%s: cannot open the track file", file);
+    char line[4096];
+    int col[NCOL], line_no = 1;
+    fw_status st = fgets(line, sizeof line, fp) ? header(file, line, col, err)
+                                                : fw_fail(err, FW_EINPUT, "%s: empty", file);
+    while (!st && fgets(line, sizeof line, fp))
+        if (line[strspn(line, " \r\n")] != '\0')
+            st = row(k, file, ++line_no, line, col, err);
+        else
+            line_no++;
+    fclose(fp);
+    if (st)
+        return st;
+    qsort(k->ships, (size_t)k->n, sizeof *k->ships, cmp_ship);
+    for (int i = 0; i < k->n; i++) {
+        trk_ship *s = &k->ships[i];
+        qsort(s->p, (size_t)s->n, sizeof *s->p, cmp_point);
+        for (int j = 1; j < s->n; j++)
+            if (s->p[j].t == s->p[j - 1].t)
+                return fw_fail(err, FW_EINPUT, "%s: ship %s has two points at t = %g s", file,
+                               s->info.id, s->p[j].t);
+    }
+    return FW_OK;
+}
+
+fw_status fw_replay_source_create(const fw_replay_def *def, fw_source **out, fw_error *err)
+{
+    *out = NULL;
+    if (!def->file || !(def->step > 0.0) || !(def->radius > 0.0) || !(def->max_gap > 0.0))
+        return fw_fail(err, FW_EINPUT, "track source: a file, step > 0, radius > 0, gap > 0");
+    trk_source *k = calloc(1, sizeof *k);
+    if (!k)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    k->base.ops = &trk_ops;
+    k->def = *def;
+    fw_status st = load(k, def->file, err);
+    if (!st && !(k->out = malloc((size_t)(k->n > 0 ? k->n : 1) * sizeof *k->out)))
+        st = fw_fail(err, FW_ERUN, "out of memory");
+    if (st) {
+        trk_destroy(&k->base);
+        return st;
+    }
+    *out = &k->base;
+    return FW_OK;
+}

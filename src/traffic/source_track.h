@@ -1,0 +1,35 @@
+/* source_track.h - recorded tracks as a traffic source (source.h): the
+ * targets of a run replayed as they moved, whatever the own ship does now.
+ *
+ * The file is CSV with a header line naming at least
+ *   t_s,id,east_m,north_m,course_deg,speed_kn
+ * and optionally type,length_m,breadth_m (0 when absent); rows in any order.
+ * A ship is where its points put it, linearly between two of them (exact at
+ * a recorded time); it exists from its first point to its last and, between
+ * two points farther apart than max_gap, not at all (it had left the own
+ * ship's sight).  Course and speed are those of the point before.  The ships
+ * cannot be told to give way: set_speed does nothing, so a replay is of
+ * `blind` traffic (what the ships did, reactions included, is in the track).
+ *
+ * fairway's own runs write such files (the study's worst cases: `fairway
+ * worst`); AIS tracks converted to this layout replay the same way.
+ */
+#ifndef FW_TRAFFIC_SOURCE_TRACK_H
+#define FW_TRAFFIC_SOURCE_TRACK_H
+
+#include "traffic/source.h"
+
+typedef struct fw_replay_def {
+    const char *file;    /* the CSV */
+    double step;         /* s, > 0 */
+    double radius;       /* m, sight (hull centre to hull centre); INFINITY = all */
+    double max_gap;      /* s, 1.5: points farther apart are two passes */
+} fw_replay_def;
+
+fw_replay_def fw_default_replay_def(void);
+
+/* FW_EINPUT naming FILE:LINE for a row that cannot be read (a missing
+ * column, a number that is not one, a time twice for one ship). */
+fw_status fw_replay_source_create(const fw_replay_def *def, fw_source **out, fw_error *err);
+
+#endif

@@ -1,0 +1,105 @@
+/* test_track.c - the recorded-track traffic source (traffic/source_track.h):
+ * positions between and at the points, passes split by a gap, the sight
+ * radius, id order, and bad files named by line. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "core/units.h"
+#include "traffic/source_track.h"
+#include "test.h"
+
+static char path[64];
+
+static void write_file(const char *text)
+{
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+}
+
+static fw_source *open_source(double radius, fw_error *err)
+{
+    fw_replay_def d = fw_default_replay_def();
+    d.file = path;
+    d.step = 0.5;
+    d.radius = radius;
+    fw_source *s = NULL;
+    fw_status st = fw_replay_source_create(&d, &s, err);
+    return st ? NULL : s;
+}
+
+static void test_replay(void)
+{
+    /* b (listed first) sails east 1 s apart; a has two passes, 0-1 s and 5-6 s */
+    write_file("t_s,id,type,east_m,north_m,course_deg,speed_kn,length_m,breadth_m\n"
+               "0,b,cargo,100,0,90,10,150,20\n1,b,cargo,110,0,90,10,150,20\n"
+               "2,b,cargo,120,0,90,10,150,20\n"
+               "0,a,ferry,0,500,180,5,80,12\n1,a,ferry,0,495,180,5,80,12\n"
+               "5,a,ferry,0,400,180,5,80,12\n6,a,ferry,0,395,180,5,80,12\n");
+    fw_error err = {0};
+    fw_source *s = open_source(INFINITY, &err);
+    CHECK_MSG(s != NULL, "%s", err.msg);
+    if (!s)
+        return;
+    fw_target own = {.id = "own", .east = 0, .north = 0};
+    CHECK(fw_source_place(s, &own, &err) == FW_OK);
+    const fw_target *v;
+    int n;
+    CHECK(fw_source_around(s, &v, &n, &err) == FW_OK && n == 2);
+    CHECK(strcmp(v[0].id, "a") == 0 && strcmp(v[1].id, "b") == 0); /* id order */
+    CHECK(strcmp(v[1].type, "cargo") == 0 && v[1].length == 150.0 && v[1].breadth == 20.0);
+    CHECK_NEAR(v[1].course, M_PI / 2, 1e-12);
+    CHECK_NEAR(v[1].speed, fw_kn_to_ms(10.0), 1e-12);
+    fw_source_advance(s, &err); /* t = 0.5: halfway between the points */
+    CHECK_NEAR(fw_source_time(s), 0.5, 1e-12);
+    fw_source_around(s, &v, &n, &err);
+    CHECK(n == 2);
+    CHECK_NEAR(v[1].east, 105.0, 1e-9);
+    CHECK_NEAR(v[0].north, 497.5, 1e-9);
+    for (int k = 0; k < 3; k++)
+        fw_source_advance(s, &err); /* t = 2: a between its passes, b at its last point */
+    fw_source_around(s, &v, &n, &err);
+    CHECK(n == 1 && strcmp(v[0].id, "b") == 0);
+    CHECK_NEAR(v[0].east, 120.0, 1e-9);
+    fw_source_advance(s, &err); /* t = 2.5: b is gone */
+    fw_source_around(s, &v, &n, &err);
+    CHECK(n == 0);
+    for (int k = 0; k < 6; k++)
+        fw_source_advance(s, &err); /* t = 5.5: a's second pass */
+    fw_source_around(s, &v, &n, &err);
+    CHECK(n == 1 && strcmp(v[0].id, "a") == 0);
+    CHECK_NEAR(v[0].north, 397.5, 1e-9);
+    /* told to slow down: a recorded ship does what it did */
+    CHECK(fw_source_set_speed(s, "a", 0.0, &err) == FW_OK);
+    fw_source_destroy(s);
+    /* sight: only b within 200 m of the own ship */
+    s = open_source(200.0, &err);
+    fw_source_place(s, &own, &err);
+    fw_source_around(s, &v, &n, &err);
+    CHECK(n == 1 && strcmp(v[0].id, "b") == 0);
+    fw_source_destroy(s);
+}
+
+static void test_bad_files(void)
+{
+    fw_error err = {0};
+    write_file("t_s,id,east_m,north_m,course_deg\n0,a,0,0,90\n");
+    CHECK(open_source(INFINITY, &err) == NULL && strstr(err.msg, ":1: no column speed_kn"));
+    write_file("t_s,id,east_m,north_m,course_deg,speed_kn\n0,a,0,0,90,5\n1,a,zero,0,90,5\n");
+    CHECK(open_source(INFINITY, &err) == NULL && strstr(err.msg, ":3: east_m: not a number"));
+    write_file("t_s,id,east_m,north_m,course_deg,speed_kn\n0,a,0,0,90,5\n0,a,1,0,90,5\n");
+    CHECK(open_source(INFINITY, &err) == NULL && strstr(err.msg, "two points at t = 0"));
+    unlink(path);
+    CHECK(open_source(INFINITY, &err) == NULL && strstr(err.msg, "cannot open"));
+}
+
+int main(void)
+{
+    snprintf(path, sizeof path, "/tmp/fw_test_track.%d.csv", (int)getpid());
+    TEST_RUN(test_replay);
+    TEST_RUN(test_bad_files);
+    unlink(path);
+    return TEST_EXIT();
+}
