@@ -349,17 +349,32 @@ static void test_refusals(void)
     expect_refused(p, "run 3 has status ok but sim_s");
 }
 
-/* A fresh hand database NAME.db in the test directory, open for changes,
- * and the report directory NAME for it. */
-static sqlite3 *hand_copy(const char *name, char db_path[300], char out[300])
+/* The hand database copied to NAME.db, changed by sql, and reported into the
+ * directory NAME (out); db_path gets the copy's path.  True when written. */
+static bool hand_report(const char *name, const char *sql, char db_path[300], char out[300])
 {
     snprintf(db_path, 300, "%s/%s.db", dir, name);
     snprintf(out, 300, "%s/%s", dir, name);
     CHECK(sdb_hand(db_path) == 0);
     sqlite3 *db = NULL;
     sqlite3_open(db_path, &db);
-    return db;
+    bool ok = sdb_exec(db, "%s", sql) == 0;
+    sqlite3_close(db);
+    fw_error err = {0};
+    fw_study_report_result res;
+    ok = ok && report(db_path, out, NAN, false, &res, &err) == FW_OK;
+    CHECK_MSG(ok, "%s: %s", name, err.msg);
+    return ok;
 }
+
+/* SQL that adds a copy of every run (id + 100) and its encounters with SET. */
+#define COPY_RUNS(set_runs, set_enc)                                                       \
+    "CREATE TEMP TABLE r AS SELECT * FROM runs;"                                            \
+    "UPDATE r SET run_id = run_id + 100, " set_runs ";"                                     \
+    "INSERT INTO runs SELECT * FROM r;"                                                     \
+    "CREATE TEMP TABLE e AS SELECT * FROM encounters;"                                      \
+    "UPDATE e SET run_id = run_id + 100" set_enc ";"                                        \
+    "INSERT INTO encounters SELECT * FROM e;"
 
 /* The behaviour axis: the hand study sailed twice, as colregs and as blind
  * traffic, the blind copy with every encounter inside the domain.  colregs -
@@ -367,18 +382,10 @@ static sqlite3 *hand_copy(const char *name, char db_path[300], char out[300])
 static void test_behaviours(void)
 {
     char db_path[300], out[300], p[400];
-    sqlite3 *db = hand_copy("beh", db_path, out);
-    CHECK(sdb_exec(db, "UPDATE runs SET behaviour = 'colregs';"
-                       "CREATE TEMP TABLE r AS SELECT * FROM runs;"
-                       "UPDATE r SET run_id = run_id + 100, behaviour = 'blind';"
-                       "INSERT INTO runs SELECT * FROM r;"
-                       "CREATE TEMP TABLE e AS SELECT * FROM encounters;"
-                       "UPDATE e SET run_id = run_id + 100, domain_entered = 1;"
-                       "INSERT INTO encounters SELECT * FROM e;") == 0);
-    sqlite3_close(db);
-    fw_error err = {0};
-    fw_study_report_result res;
-    CHECK_MSG(report(db_path, out, NAN, false, &res, &err) == FW_OK, "%s", err.msg);
+    if (!hand_report("beh", "UPDATE runs SET behaviour = 'colregs';"
+                            COPY_RUNS("behaviour = 'blind'", ", domain_entered = 1"),
+                     db_path, out))
+        return;
     snprintf(p, sizeof p, "%s/behaviour.csv", out);
     /* 100 m: 6 violations (colregs) against all 15 encounters (blind) in 1.5 h each */
     const char *w = "behaviour=colregs,domain_m=100,reference_behaviour=blind,"
@@ -428,14 +435,18 @@ static long long count_sql(sqlite3 *db, const char *sql)
 static void test_causation(void)
 {
     char db_path[300], out[300], p[400];
-    sqlite3 *db = hand_copy("cand", db_path, out);
-    CHECK(sdb_exec(db, "UPDATE encounters SET candidate = domain_entered, cand_miss_m = 0, "
-                       "outcome = CASE WHEN collision THEN 'collision' WHEN near_miss THEN "
-                       "'near miss' WHEN domain_entered THEN 'domain' ELSE 'passed' END;"
-                       "INSERT INTO traffic_encounters(run_id, ship_a, ship_b, type, own, "
-                       "t_first_s, candidate, outcome) VALUES(0, 'a', 'b', 'crossing', 0, 10, 1, "
-                       "'collision'), (0, 'a', 'c', 'crossing', 0, 20, 1, 'passed'), "
-                       "(0, 'a', 'own', 'crossing', 1, 30, 1, 'collision')") == 0);
+    if (!hand_report("cand",
+                     "UPDATE encounters SET candidate = domain_entered, cand_miss_m = 0, "
+                     "outcome = CASE WHEN collision THEN 'collision' WHEN near_miss THEN "
+                     "'near miss' WHEN domain_entered THEN 'domain' ELSE 'passed' END;"
+                     "INSERT INTO traffic_encounters(run_id, ship_a, ship_b, type, own, "
+                     "t_first_s, candidate, outcome) VALUES(0, 'a', 'b', 'crossing', 0, 10, 1, "
+                     "'collision'), (0, 'a', 'c', 'crossing', 0, 20, 1, 'passed'), "
+                     "(0, 'a', 'own', 'crossing', 1, 30, 1, 'collision')",
+                     db_path, out))
+        return;
+    sqlite3 *db = NULL;
+    sqlite3_open(db_path, &db);
     long long n_cand = count_sql(db, "SELECT COUNT(*) FROM encounters e JOIN runs r USING(run_id) "
                                      "WHERE r.status = 'ok' AND r.domain_m = 100 AND candidate AND "
                                      "situation IN ('crossing give-way', 'crossing stand-on')");
@@ -444,9 +455,6 @@ static void test_causation(void)
                                      "outcome = 'collision' AND situation LIKE 'crossing%'");
     sqlite3_close(db);
     CHECK(n_cand == 3 && n_coll == 1);
-    fw_error err = {0};
-    fw_study_report_result res;
-    CHECK_MSG(report(db_path, out, NAN, false, &res, &err) == FW_OK, "%s", err.msg);
     snprintf(p, sizeof p, "%s/causation.csv", out);
     const char *w = "domain_m=100,set=own,type=crossing";
     CHECK(csv_get(p, w, "candidates") == n_cand);
@@ -479,18 +487,10 @@ static void test_causation(void)
 static void test_shapes(void)
 {
     char db_path[300], out[300], p[400];
-    sqlite3 *db = hand_copy("shape", db_path, out);
-    CHECK(sdb_exec(db, "UPDATE runs SET fore_aft_ratio = 1;"
-                       "CREATE TEMP TABLE r AS SELECT * FROM runs;"
-                       "UPDATE r SET run_id = run_id + 100, fore_aft_ratio = 2.5;"
-                       "INSERT INTO runs SELECT * FROM r;"
-                       "CREATE TEMP TABLE e AS SELECT * FROM encounters;"
-                       "UPDATE e SET run_id = run_id + 100;"
-                       "INSERT INTO encounters SELECT * FROM e;") == 0);
-    sqlite3_close(db);
-    fw_error err = {0};
-    fw_study_report_result res;
-    CHECK_MSG(report(db_path, out, NAN, false, &res, &err) == FW_OK, "%s", err.msg);
+    if (!hand_report("shape", "UPDATE runs SET fore_aft_ratio = 1;"
+                              COPY_RUNS("fore_aft_ratio = 2.5", ""),
+                     db_path, out))
+        return;
     snprintf(p, sizeof p, "%s/paired.csv", out);
     CHECK_NEAR(csv_get(p, "domain_m=500,fore_aft_ratio=2.5,measure=manoeuvres_per_h", "mean"),
                20.0 / 3.0, 1e-9);

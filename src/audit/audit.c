@@ -37,7 +37,8 @@ fw_status fw_audit_check(const fw_audit_def *d, char *field, size_t fieldsz, fw_
     else if (!(d->prompt >= 0.0 && d->prompt <= 600.0))
         f = "prompt_s", why = "give [0, 600] s";
     else if (!(d->must_tcpa >= 0.0 && d->must_tcpa < d->may_tcpa && d->may_tcpa <= d->risk_tcpa))
-        f = "rule17_may_tcpa_s", why = "give 0 <= rule17_must_tcpa_s < rule17_may_tcpa_s <= risk_tcpa_s";
+        f = "rule17_may_tcpa_s",
+        why = "give 0 <= rule17_must_tcpa_s < rule17_may_tcpa_s <= risk_tcpa_s";
     if (!f)
         return FW_OK;
     snprintf(field, fieldsz, "%s", f);

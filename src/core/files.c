@@ -89,3 +89,19 @@ fw_status fw_check_parent_dir(const char *opt, const char *path, const char *can
     free(copy);
     return st;
 }
+
+int fw_csv_split(char *line, char **f, int max)
+{
+    int n = 0;
+    line[strcspn(line, "\r\n")] = '\0';
+    char *p = line;
+    while (n < max) {
+        f[n++] = p;
+        char *c = strchr(p, ',');
+        if (!c)
+            break;
+        *c = '\0';
+        p = c + 1;
+    }
+    return n;
+}

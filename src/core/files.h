@@ -32,4 +32,8 @@ fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *e
 fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 
+/* Splits a CSV line (no quoting) in place at its commas, its line end cut:
+ * up to max fields into f; returns how many. */
+int fw_csv_split(char *line, char **f, int max);
+
 #endif

@@ -378,7 +378,8 @@ static fw_status read_traffic(loader *L)
 {
     fw_study_report *rep = L->rep;
     sqlite3_stmt *st;
-    if (prepare(L, "SELECT run_id, type, min_dist_m, own, candidate, outcome FROM traffic_encounters",
+    if (prepare(L, "SELECT run_id, type, min_dist_m, own, candidate, outcome "
+                   "FROM traffic_encounters",
                 &st))
         return L->err->status;
     int rc;

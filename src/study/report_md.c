@@ -288,7 +288,8 @@ static void md_causation_note(FILE *f, const fw_study_report *rep)
         for (int g = 0; g < rep->n_groups; g++)
             if (first_of_behaviour(rep, g)) {
                 cf_pool(rep, set, rep->groups[g].behaviour, pool);
-                fprintf(f, " %s with %s traffic", set == FW_REP_OWN ? "the own ship" : "background pairs",
+                fprintf(f, " %s with %s traffic",
+                        set == FW_REP_OWN ? "the own ship" : "background pairs",
                         beh(&rep->groups[g]));
                 for (int t = 1; t < FW_REP_NTYPE; t++) {
                     long long n = pool[t][FW_CAND_N], k = pool[t][FW_CAND_COLLISION];
@@ -421,7 +422,8 @@ static void md_paired(FILE *f, const fw_study_report *rep)
         n_sig += significant(&rep->pairs[i].est);
     fprintf(f, "Replication i of every domain size sailed the same traffic, so each difference "
                "(domain minus %g m) is taken within a replication (rare-event counts and runs "
-               "with a collision: the exact conditional binomial interval; the others paired t). Shown: the differences whose "
+               "with a collision: the exact conditional binomial interval; the others paired "
+               "t). Shown: the differences whose "
                "%.0f%% interval excludes zero; - marks one that does not. %d of %d differences "
                "over all measures are significant; paired.csv has them all.\n\n",
             rep->reference_m, 100 * rep->level, n_sig, rep->n_pairs);

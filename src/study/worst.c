@@ -42,9 +42,12 @@ static fw_status select_cases(const fw_worst_def *def, char *study, size_t sz, c
         goto out;
     }
     while (sqlite3_step(q) == SQLITE_ROW) {
-        const char *k = (const char *)sqlite3_column_text(q, 0), *v = (const char *)sqlite3_column_text(q, 1);
-        snprintf(strcmp(k, "study_file") == 0 ? study : digest, strcmp(k, "study_file") == 0 ? sz : 32,
-                 "%s", v ? v : "");
+        const char *k = (const char *)sqlite3_column_text(q, 0);
+        const char *v = (const char *)sqlite3_column_text(q, 1);
+        if (strcmp(k, "study_file") == 0)
+            snprintf(study, sz, "%s", v ? v : "");
+        else
+            snprintf(digest, 32, "%s", v ? v : "");
     }
     sqlite3_finalize(q);
     /* hull to hull first (it is what touches); runs that failed do not count */
@@ -207,22 +210,6 @@ typedef struct ship_info {
     double length, breadth;
 } ship_info;
 
-static int split_csv(char *line, char **f, int max)
-{
-    int n = 0;
-    line[strcspn(line, "\r\n")] = '\0';
-    char *p = line;
-    while (n < max) {
-        f[n++] = p;
-        char *c = strchr(p, ',');
-        if (!c)
-            break;
-        *c = '\0';
-        p = c + 1;
-    }
-    return n;
-}
-
 static fw_status read_sizes(const char *path, ship_info **out, int *n, fw_error *err)
 {
     FILE *f = fopen(path, "r");
@@ -235,7 +222,7 @@ static fw_status read_sizes(const char *path, ship_info **out, int *n, fw_error 
     if (!fgets(line, sizeof line, f))
         st = fw_fail(err, FW_ERUN, "%s: empty", path);
     while (!st && fgets(line, sizeof line, f)) {
-        if (split_csv(line, c, 32) < 4)
+        if (fw_csv_split(line, c, 32) < 4)
             continue;
         ship_info *p = realloc(*out, (size_t)(*n + 1) * sizeof *p);
         if (!p) {
@@ -272,7 +259,7 @@ static fw_status write_tracks(const char *run_dir, const char *path, fw_error *e
     if (!st)
         fprintf(out, "t_s,id,type,east_m,north_m,course_deg,speed_kn,length_m,breadth_m\n");
     while (!st && fgets(line, sizeof line, in)) {
-        if (split_csv(line, c, 32) < 6)
+        if (fw_csv_split(line, c, 32) < 6)
             continue;
         const ship_info *s = NULL;
         for (int i = 0; i < n_info && !s; i++)
@@ -334,7 +321,8 @@ static fw_status export_case(const fw_worst_def *def, const fw_study *s, fw_wors
         (st = write_tracks(run_dir, tracks, err)) ||
         (st = write_scenario(s, scn, c, yaml, err)))
         return st;
-    fw_remove_tree(run_dir); /* SUMO's files and the full histories: large, and made again at will */
+    /* SUMO's files and the full histories: large, and made again at will */
+    fw_remove_tree(run_dir);
     if ((st = fw_scenario_load(yaml, scn, err)))
         return st;
     return sail(scn, replay, c->target, def->mode, &c->replay_min, err);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/files.h"
 #include "core/mem.h"
 #include "core/units.h"
 
@@ -131,28 +132,14 @@ static const fw_source_ops trk_ops = {.name = "track", .place = trk_place,
 
 /* The columns a track file has (-1: absent). */
 enum { C_T, C_ID, C_E, C_N, C_COURSE, C_SPEED, C_TYPE, C_L, C_B, NCOL };
-static const char *const col_names[NCOL] = {"t_s",      "id",       "east_m",  "north_m", "course_deg",
-                                            "speed_kn", "type",     "length_m", "breadth_m"};
-
-static int split(char *line, char **f, int max)
-{
-    int n = 0;
-    line[strcspn(line, "\r\n")] = '\0';
-    for (char *p = line; n < max;) {
-        f[n++] = p;
-        char *c = strchr(p, ',');
-        if (!c)
-            break;
-        *c = '\0';
-        p = c + 1;
-    }
-    return n;
-}
+static const char *const col_names[NCOL] = {"t_s",        "id",       "east_m",
+                                            "north_m",    "course_deg", "speed_kn",
+                                            "type",       "length_m", "breadth_m"};
 
 static fw_status header(const char *file, char *line, int col[NCOL], fw_error *err)
 {
     char *f[64];
-    int n = split(line, f, 64);
+    int n = fw_csv_split(line, f, 64);
     for (int c = 0; c < NCOL; c++) {
         col[c] = -1;
         for (int i = 0; i < n; i++)
@@ -189,7 +176,7 @@ static fw_status row(trk_source *k, const char *file, int line_no, char *line, c
                      fw_error *err)
 {
     char *f[64];
-    int n = split(line, f, 64);
+    int n = fw_csv_split(line, f, 64);
     double v[NCOL] = {0};
     for (int c = 0; c < NCOL; c++) {
         if (col[c] < 0 || c == C_ID || c == C_TYPE)
