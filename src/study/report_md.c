@@ -340,8 +340,9 @@ static void md_causation(FILE *f, const fw_study_report *rep)
                "(Pedersen 1995). Own ship: its encounters, by the situation at first detection; "
                "traffic: pairs of background ships (the own ship's pairs are the own set). The "
                "other candidates ended as near miss (hull to hull below near_miss_m) / domain "
-               "entered / passed; collisions of non-candidates are counted apart (they came from "
-               "manoeuvres).\n\n",
+               "entered / passed; collisions of non-candidates are counted apart: their tracks "
+               "from first detection missed, and a later alteration, speed change or lane "
+               "change (or the own ship's manoeuvre) brought them together.\n\n",
             100 * rep->level, fw_rep_fmt(x, fw_iwrap_causation[1]),
             fw_rep_fmt(y, fw_iwrap_causation[2]), fw_rep_fmt(z, fw_iwrap_causation[3]));
     fprintf(f, "| set | density | traffic | domain (m) | head-on | overtaking | crossing | "
