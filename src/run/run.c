@@ -31,6 +31,17 @@ static fw_target own_start(const fw_scenario *s)
     return o;
 }
 
+/* m, how far out the reactive traffic is watched: beyond sight by what
+ * two ships crossing at 15 kn close in the reactions' horizon of 15
+ * minutes, 4 nm, so that a ship coming into sight has been giving way
+ * already (none with blind traffic). */
+static double near_radius(const fw_scenario *s)
+{
+    if (s->reactions.behaviour == FW_BEHAVIOUR_BLIND)
+        return 0.0;
+    return s->radius + 4.0 * FW_NMILE;
+}
+
 static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *err)
 {
     const fw_scenario *s = def->scenario;
@@ -47,6 +58,7 @@ static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *e
                              .n_targets = s->n_targets, .own = own_start(s), .own_leg = s->leg,
                              .radius = s->radius,
                              .area_radius = s->survey ? s->survey_radius : 0.0,
+                             .near_radius = near_radius(s),
                              .clear_range = dflt.clear_range, .clear_cpa = dflt.clear_cpa,
                              .clear_tcpa = dflt.clear_tcpa};
     return fw_sumo_source_create(&sd, src, err);
@@ -215,7 +227,7 @@ static void record_reactions(run_state *R, fw_run_summary *sum)
         if (r->enough)
             fprintf(fw_records_log(R->rec), " -> %.0f m\n", r->dcpa_after);
         else
-            fprintf(fw_records_log(R->rec), ": no speed keeps the passing distance, the slowest\n");
+            fprintf(fw_records_log(R->rec), ": no speed keeps the passing distance, the one that passes farthest\n");
     }
 }
 

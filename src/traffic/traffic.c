@@ -35,6 +35,8 @@ struct fw_traffic {
     int ships_cap;
     fw_target *area;
     int area_cap;
+    fw_target *near;
+    int near_cap;
     fw_target *conv;       /* the context results converted (and motion followed) */
     int conv_cap;
     /* the hull centre of every ship at its last context step, by id: the
@@ -193,6 +195,9 @@ static fw_status check_def(const fw_traffic_def *d, fw_error *err)
     if (!(d->area_radius >= 0.0 && isfinite(d->area_radius)))
         return fw_fail(err, FW_EINPUT, "traffic area radius %g m: must be 0 (none) or positive",
                        d->area_radius);
+    if (!(d->near_radius >= 0.0 && isfinite(d->near_radius)))
+        return fw_fail(err, FW_EINPUT, "traffic near radius %g m: must be 0 (none) or positive",
+                       d->near_radius);
     if (!(d->own_length > 0.0 && d->own_width > 0.0))
         return fw_fail(err, FW_EINPUT, "own ship %g x %g m: length and width must be positive",
                        d->own_length, d->own_width);
@@ -306,7 +311,7 @@ void fw_traffic_close(fw_traffic *t)
     }
     if (t->child > 0)
         fw_spawn_stop(t->child);
-    fw_free_each(4, t->raw.v, t->ctx.v, t->ships, t->area);
+    fw_free_each(5, t->raw.v, t->ctx.v, t->ships, t->area, t->near);
     fw_idmap_free(&t->ids);
     fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
 }
@@ -346,6 +351,8 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
     t->query_radius = def->radius;
     if (def->area_radius > 0.0)
         t->query_radius = fmax(def->radius, def->area_radius + kHalfLengthMax);
+    if (def->near_radius > 0.0)
+        t->query_radius = fmax(t->query_radius, def->near_radius + kHalfLengthMax);
     t->ctx_step = -1;
     if ((st = t->be->add_own(t->own_id, def->own_length, def->own_width, def->own_edge,
                              t->query_radius, err))) {
@@ -592,6 +599,30 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
     o->own = true;
     qsort(t->area, (size_t)m, sizeof *t->area, cmp_id);
     *ships = t->area;
+    *n = m;
+    return FW_OK;
+}
+
+fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    if (alive(t, err))
+        return FW_ERUN;
+    if (!(t->def.near_radius > 0.0))
+        return fw_fail(err, FW_ERUN, "no nearby query: the traffic def has no near_radius");
+    fw_status st = context(t, err);
+    if (!st)
+        st = room(&t->near, &t->near_cap, t->ctx.n + 1, err);
+    if (st)
+        return st;
+    int m = 0;
+    for (int i = 0; i < t->ctx.n; i++) {
+        const fw_target *s = &t->conv[i];
+        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= t->def.near_radius)
+            t->near[m++] = *s;
+    }
+    qsort(t->near, (size_t)m, sizeof *t->near, cmp_id);
+    *ships = t->near;
     *n = m;
     return FW_OK;
 }

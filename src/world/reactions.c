@@ -87,6 +87,11 @@ void fw_reactions_destroy(fw_reactions *r)
     fw_free_each(6, r->s, r->list, r->sn, r->cs, r->log, r);
 }
 
+bool fw_reactions_active(const fw_reactions *r)
+{
+    return r && r->def.behaviour != FW_BEHAVIOUR_BLIND;
+}
+
 const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n)
 {
     *n = r->nlog;
@@ -226,26 +231,49 @@ static void nearest_of(const fw_reactions *r, int self, const fw_target *all, co
     }
 }
 
-/* Does a at speed v pass every ship of list at cpa (or are they past)? */
-static bool clears_at(const fw_reactions *r, const fw_target *a, const fw_target *all,
-                      const int *list, int m, double v, double *dcpa)
+/* The closest a, at speed v, would pass (within the horizon, ahead) any ship
+ * of all[0..n-1] other than itself and skip (-1: none) that it has to keep
+ * clear of: in range, and not a background ship on a parallel course (those
+ * SUMO keeps apart). */
+static double min_pass(const fw_reactions *r, int self, const fw_target *all, int n, double v,
+                       int skip)
 {
-    *dcpa = INFINITY;
-    for (int q = 0; q < m; q++) {
+    const fw_target *a = &all[self];
+    double best = INFINITY;
+    for (int j = 0; j < n; j++) {
+        const fw_target *b = &all[j];
+        double de = b->east - a->east, dn = b->north - a->north;
+        if (j == self || j == skip || de * de + dn * dn > r->def.range * r->def.range)
+            continue;
+        if (!b->own && r->sn[self] * r->sn[j] + r->cs[self] * r->cs[j] > r->cos_parallel)
+            continue;
         double tc, dc;
-        cpa_at(r, a, v, &all[list[q]], &tc, &dc);
-        if (!(tc <= 0.0 || dc >= r->def.cpa))
-            return false;
-        *dcpa = fmin(*dcpa, dc);
+        cpa_at(r, a, v, b, &tc, &dc);
+        if (tc > 0.0 && tc < r->def.horizon)
+            best = fmin(best, dc);
     }
-    return true;
+    return best;
+}
+
+/* Does a at speed v pass every ship near it at cpa or more (or are they
+ * past)?  Every ship, not only those it gives way to: slowing down for one
+ * must not put it in another's way (a ferry slowing in one lane for a ship
+ * of the next stays across the bows of the first lane's ships, which are
+ * slowing to pass astern of it).  One test for all keeps the answer from
+ * changing with which list a ship happens to be in from one step to the
+ * next. */
+static bool clears_at(const fw_reactions *r, int self, const fw_target *all, int n, double v,
+                      double *dcpa)
+{
+    *dcpa = min_pass(r, self, all, n, v, -1);
+    return *dcpa >= r->def.cpa;
 }
 
 /* The fastest speed from v0 (or the speed it holds, vh) down to min_speed v0
- * (5 % steps) at which a passes every ship it gives way to at cpa or more;
- * *enough false if none. */
-/* (see the two passes below) */
-static double yielding_speed(const fw_reactions *r, const fw_target *a, const fw_target *all,
+ * (5 % steps) at which a passes every ship near it at cpa or more (those it
+ * gives way to and all the others); *enough false if none: then the speed, from v0
+ * down, that passes farthest from every ship near it. */
+static double yielding_speed(const fw_reactions *r, int self, const fw_target *all, int n,
                              const int *list, int m, double v0, double vh, bool *enough,
                              double *dcpa_after)
 {
@@ -265,14 +293,28 @@ static double yielding_speed(const fw_reactions *r, const fw_target *a, const fw
             bool slower = vh < 0.0 || v <= vh + 1e-9;
             if (slower != (pass == 0))
                 continue;
-            if (clears_at(r, a, all, list, m, v, dcpa_after)) {
+            if (clears_at(r, self, all, n, v, dcpa_after)) {
                 *enough = true;
                 return v;
             }
         }
     *enough = false;
     *dcpa_after = NAN;
-    return r->def.min_speed * v0;
+    /* held already, it changes only for a clearly better speed (50 m):
+     * between two alike it would otherwise swing from one to the other */
+    double best = vh >= 0.0 ? vh : v0;
+    double dbest = min_pass(r, self, all, n, best, -1) + (vh >= 0.0 ? 50.0 : 0.0);
+    for (int k = 0; k <= 20; k++) {
+        double v = v0 * (1.0 - 0.05 * k);
+        if (v < r->def.min_speed * v0 - 1e-12)
+            break;
+        if (own && vh >= 0.0 && v > vh + 1e-9)
+            continue;
+        double d = min_pass(r, self, all, n, v, -1);
+        if (d > dbest + 1e-6)
+            best = v, dbest = d;
+    }
+    return best;
 }
 
 static fw_status record(fw_reactions *r, const fw_reaction *x, fw_error *err)
@@ -294,7 +336,7 @@ static fw_status record(fw_reactions *r, const fw_reaction *x, fw_error *err)
  * (from its own down to min_speed, 5 % steps) that passes farthest.  *j_out:
  * the closest such ship (-1: none). */
 static double last_action(const fw_reactions *r, int self, const fw_target *all, int n,
-                          double v0, int *j_out, double *dcpa_now, double *dcpa_best)
+                          double v0, double vh, int *j_out, double *dcpa_now, double *dcpa_best)
 {
     const fw_target *a = &all[self];
     *j_out = -1;
@@ -317,18 +359,22 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
     }
     if (*j_out < 0)
         return v0;
-    double best = v0, dbest = *dcpa_now;
-    for (int k = 1; k <= 20; k++) {
+    /* the speed that passes farthest from it and from every other ship near
+     * (slowing for one must not close on another); a speed held already
+     * changes only for one clearly better (50 m), or it would swing */
+    double best = vh >= 0.0 ? vh : v0;
+    double score = min_pass(r, self, all, n, best, -1) + (vh >= 0.0 ? 50.0 : 0.0);
+    *dcpa_best = *dcpa_now;
+    for (int k = 0; k <= 20; k++) {
         double v = v0 * (1.0 - 0.05 * k), tc, dc;
         if (v < r->def.min_speed * v0 - 1e-12)
             break;
-        cpa_at(r, a, v, &all[*j_out], &tc, &dc);
-        if (tc <= 0.0)
-            dc = INFINITY;
-        if (dc > dbest)
-            best = v, dbest = dc;
+        double s = min_pass(r, self, all, n, v, -1);
+        if (s > score + 1e-6) {
+            cpa_at(r, a, v, &all[*j_out], &tc, &dc);
+            best = v, score = s, *dcpa_best = tc <= 0.0 ? INFINITY : dc;
+        }
     }
-    *dcpa_best = dbest;
     return best;
 }
 
@@ -339,7 +385,8 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
     const fw_target *a = &all[self];
     int j;
     double now = INFINITY, best = INFINITY;
-    double v = last_action(r, self, all, n, st->v0, &j, &now, &best);
+    double v = last_action(r, self, all, n, st->v0, st->holding ? st->hold : -1.0, &j, &now,
+                           &best);
     fw_reaction x = {.t = t, .situation = FW_SIT_STAND_ON, .dcpa_before = now, .dcpa_after = best,
                      .enough = best >= r->def.last_cpa};
     snprintf(x.ship, sizeof x.ship, "%s", a->id);
@@ -413,9 +460,9 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     double after;
     /* the speed it holds still keeps every ship it gives way to at cpa (a
      * new one may need another: slower is not always clear of a crossing) */
-    if (st->holding && clears_at(r, a, all, r->list, m, st->hold, &after))
+    if (st->holding && clears_at(r, self, all, n, st->hold, &after))
         return FW_OK;
-    double v = yielding_speed(r, a, all, r->list, m, v0, vh, &x.enough, &after);
+    double v = yielding_speed(r, self, all, n, r->list, m, v0, vh, &x.enough, &after);
     if (st->holding && fabs(v - st->hold) < 0.05 * v0)
         return FW_OK; /* the best there is, already ordered */
     snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
@@ -428,6 +475,26 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     st->hold = v;
     fw_status s2 = fw_source_set_speed(src, a->id, v, err);
     return s2 ? s2 : record(r, &x, err);
+}
+
+/* The state of ship id (interned, the array grown to hold it). */
+static react_state *state_of(fw_reactions *r, const char *id, fw_error *err)
+{
+    int k;
+    if (fw_idmap_intern(&r->ids, id, &k)) {
+        fw_fail(err, FW_ERUN, "out of memory for ship ids");
+        return NULL;
+    }
+    if (k >= r->cap) {
+        int cap = fw_grown_cap(r->cap, k + 1);
+        if (!fw_resize((void **)&r->s, sizeof *r->s, (size_t)cap)) {
+            fw_fail(err, FW_ERUN, "out of memory for ship ids");
+            return NULL;
+        }
+        memset(r->s + r->cap, 0, sizeof *r->s * (size_t)(cap - r->cap));
+        r->cap = cap;
+    }
+    return &r->s[k];
 }
 
 fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
@@ -464,21 +531,8 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
     r->all = all;
     fw_status st = FW_OK;
     for (int i = 0; i < n && !st; i++) {
-        int id;
-        if (fw_idmap_intern(&r->ids, ships[i].id, &id)) {
-            st = fw_fail(err, FW_ERUN, "out of memory for ship ids");
-            break;
-        }
-        if (id >= r->cap) {
-            int cap = fw_grown_cap(r->cap, id + 1);
-            if (!fw_resize((void **)&r->s, sizeof *r->s, (size_t)cap)) {
-                st = fw_fail(err, FW_ERUN, "out of memory for ship ids");
-                break;
-            }
-            memset(r->s + r->cap, 0, sizeof *r->s * (size_t)(cap - r->cap));
-            r->cap = cap;
-        }
-        st = react(r, t, i, all, m, &r->s[id], src, err);
+        react_state *s = state_of(r, ships[i].id, err);
+        st = s ? react(r, t, i, all, m, s, src, err) : err->status;
     }
     free(all);
     r->all = NULL;

@@ -87,6 +87,9 @@ void fw_reactions_destroy(fw_reactions *r);
 fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
                             const fw_target *ships, int n, fw_source *src, fw_error *err);
 
+/* Does it do anything (behaviour colregs)? */
+bool fw_reactions_active(const fw_reactions *r);
+
 /* Every order so far, in time order; valid until the next step. */
 const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n);
 
