@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "core/units.h"
 
@@ -23,7 +24,45 @@ fw_policy_def fw_default_policy_def(void)
                            .ap_kd = 20.0,
                            .ap_max_helm = fw_deg_to_rad(20.0),
                            .ap_done_heading = fw_deg_to_rad(1.0),
-                           .ap_done_rate = fw_deg_to_rad(0.005)};
+                           .ap_done_rate = fw_deg_to_rad(0.005),
+                           .ret = FW_RETURN_TRACK,
+                           .los_lookahead = FW_NMILE,
+                           .los_max_angle = fw_deg_to_rad(30.0),
+                           .track_done = 50.0};
+}
+
+const char *fw_return_name(fw_return_kind k)
+{
+    return k == FW_RETURN_HEADING ? "heading" : "track";
+}
+
+fw_status fw_return_parse(const char *text, fw_return_kind *out)
+{
+    if (strcmp(text, "track") == 0)
+        *out = FW_RETURN_TRACK;
+    else if (strcmp(text, "heading") == 0)
+        *out = FW_RETURN_HEADING;
+    else
+        return FW_EINPUT;
+    return FW_OK;
+}
+
+double fw_policy_cross_track(const fw_policy *p, const fw_own_state *own)
+{
+    if (!p->track_set || p->def.ret != FW_RETURN_TRACK)
+        return 0.0;
+    double de = own->east - p->track_e, dn = own->north - p->track_n;
+    return de * cos(p->psi_ref) - dn * sin(p->psi_ref);
+}
+
+/* The heading to steer home: the original course, less the line-of-sight
+ * correction back onto the track (track return). */
+static double home(const fw_policy *p, const fw_own_state *own)
+{
+    double xte = fw_policy_cross_track(p, own);
+    double cut = atan(xte / p->def.los_lookahead);
+    cut = fmax(-p->def.los_max_angle, fmin(p->def.los_max_angle, cut));
+    return fw_wrap_2pi(p->psi_ref - cut);
 }
 
 const char *fw_policy_mode_name(fw_policy_mode m)
@@ -51,6 +90,8 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->t_mode = 0.0;
     p->t_blocked = -1.0;
     p->course_set = false;
+    p->track_set = false;
+    p->track_e = p->track_n = 0.0;
 }
 
 static void set_mode(fw_policy *p, fw_policy_mode m, double t)
@@ -152,7 +193,7 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
     d->acted = true;
     p->t_blocked = -1.0;
     p->psi_act = own->psi;
-    if (p->mode == FW_MODE_STANDBY && !p->course_set)
+    if (p->mode == FW_MODE_STANDBY && !p->course_set && p->def.ret == FW_RETURN_HEADING)
         p->psi_ref = own->psi;
     p->side = d->search.side;
     p->helm = copysign(fmax(fabs(d->search.helm), least), d->search.helm);
@@ -183,7 +224,7 @@ static fw_status check_return(fw_policy *p, const fw_policy_input *in, fw_decisi
                               double *ret_out, fw_error *err)
 {
     double ret, hold;
-    fw_status st = steer(p, in->ctx, in->targets, in->n, p->psi_ref, 1, &ret, err);
+    fw_status st = steer(p, in->ctx, in->targets, in->n, home(p, in->own), 1, &ret, err);
     *ret_out = ret;
     if (st || ret >= 1.0)
         return st;
@@ -202,7 +243,7 @@ static fw_status check_return(fw_policy *p, const fw_policy_input *in, fw_decisi
 static fw_status step_standby(fw_policy *p, const fw_policy_input *in, fw_decision *d,
                               fw_error *err)
 {
-    p->helm = p->course_set ? autopilot(p, in->own, p->psi_ref) : 0.0;
+    p->helm = p->course_set ? autopilot(p, in->own, home(p, in->own)) : 0.0;
     if (!d->search.threat) {
         d->reason = p->course_set ? "no target enters the domain: keeping the course"
                                   : "no target enters the domain on the present course";
@@ -299,11 +340,12 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
      * over the horizon.  The margin: a return that only just clears
      * would be abandoned at the next step's slightly different
      * prediction */
-    if ((st = steer(p, in->ctx, in->targets, in->n, p->psi_ref, 1, &ret, err)))
+    if ((st = steer(p, in->ctx, in->targets, in->n, home(p, own), 1, &ret, err)))
         return st;
     if (ret >= p->def.steady_margin) {
-        d->reason = "the return is clear: back to the course";
-        p->helm = autopilot(p, own, p->psi_ref);
+        d->reason = p->def.ret == FW_RETURN_TRACK ? "the return is clear: back to the track"
+                                                  : "the return is clear: back to the course";
+        p->helm = autopilot(p, own, home(p, own));
         start_return(p, in->t);
         return FW_OK;
     }
@@ -327,11 +369,14 @@ static fw_status threat_on_return(fw_policy *p, const fw_policy_input *in, fw_de
 
 static void step_autopilot(fw_policy *p, const fw_policy_input *in, fw_decision *d)
 {
-    d->reason = "returning: heading autopilot";
-    p->helm = autopilot(p, in->own, p->psi_ref);
-    if (fabs(fw_wrap_pi(in->own->psi - p->psi_ref)) < p->def.ap_done_heading &&
-        fabs(in->own->r) < p->def.ap_done_rate) {
-        d->reason = "back on the original course";
+    bool track = p->def.ret == FW_RETURN_TRACK;
+    double psi = home(p, in->own);
+    d->reason = track ? "returning: to the track" : "returning: heading autopilot";
+    p->helm = autopilot(p, in->own, psi);
+    if (fabs(fw_wrap_pi(in->own->psi - psi)) < p->def.ap_done_heading &&
+        fabs(in->own->r) < p->def.ap_done_rate &&
+        (!track || fabs(fw_policy_cross_track(p, in->own)) < p->def.track_done)) {
+        d->reason = track ? "back on the track" : "back on the original course";
         p->t_blocked = -1.0;
         p->side = FW_SIDE_NONE;
         p->course_set = true;
@@ -343,6 +388,13 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
                          fw_error *err)
 {
     const fw_helm_def *hdef = in->helm;
+    if (!p->track_set) {
+        /* the planned track: where the ship is and heads at the first step */
+        p->track_set = true;
+        p->track_e = in->own->east;
+        p->track_n = in->own->north;
+        p->psi_ref = in->own->psi;
+    }
     fw_assess(&hdef->colregs, &hdef->domain, hdef->track.horizon, in->own, in->targets, in->n,
               in->as, in->order);
     fw_helm_begin(in->ctx, in->own);

@@ -172,13 +172,27 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     return FW_OK;
 }
 
+/* avoidance.return: track (the default) or heading (the paper's return). */
+static fw_status load_return(const yt_doc *doc, const yt_node *a, fw_scenario *s, fw_error *err)
+{
+    char ret[16] = "";
+    fw_status st = yt_opt_string(doc, a, "avoidance", "return", ret, sizeof ret, err);
+    if (st || !ret[0])
+        return st;
+    if (fw_return_parse(ret, &s->policy.ret))
+        return fw_fail_at(err, doc->file, yt_key_line(a, "return"), "avoidance.return",
+                          "'%s': expected track or heading", ret);
+    return FW_OK;
+}
+
 static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scenario *s,
                                 fw_error *err)
 {
     static const char *const keys[] = {"domain_m", "fore_aft_ratio", "min_helm_deg",
                                        "max_helm_deg", "horizon_s", "act_range_nm",
                                        "act_lookahead_s", "standon_act_range_nm",
-                                       "standon_act_time_s", "overtake_side", "radius_nm", NULL};
+                                       "standon_act_time_s", "overtake_side", "radius_nm",
+                                       "return", NULL};
     const yt_node *a = NULL;
     fw_status st;
     if ((st = yt_opt_map(doc, root, "", "avoidance", &a, err)))
@@ -204,7 +218,8 @@ static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scena
         (st = yt_opt_number(doc, a, P, "radius_nm", 0.5, 50, &radius, err)))
         return st;
     char side[16] = "";
-    if ((st = yt_opt_string(doc, a, P, "overtake_side", side, sizeof side, err)))
+    if ((st = load_return(doc, a, s, err)) ||
+        (st = yt_opt_string(doc, a, P, "overtake_side", side, sizeof side, err)))
         return st;
     if (side[0]) {
         if (strcmp(side, "either") == 0)

@@ -70,12 +70,15 @@ fw_status fw_demand_load(const char *path, fw_demand *out, fw_error *err)
     st = yt_load_file(path, &doc, err);
     if (st)
         return st;
-    static const char *const keys[] = {"streams", NULL};
+    static const char *const keys[] = {"streams", "lane_change_s", NULL};
     const yt_node *seq = NULL;
     if (doc->root->kind != YT_MAP)
         st = fw_fail_at(err, doc->file, doc->root->line, "", "expected a map with 'streams'");
     if (!st)
         st = yt_check_keys(doc, doc->root, "", keys, err);
+    if (!st)
+        st = yt_opt_number(doc, doc->root, "", "lane_change_s", 0.0, 7200.0,
+                           &out->lane_change_s, err);
     if (!st)
         st = yt_req_seq(doc, doc->root, "", "streams", &seq, err);
     if (!st && (seq->n < 1 || seq->n > FW_DEMAND_MAX_STREAMS))

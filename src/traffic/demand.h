@@ -25,6 +25,9 @@ typedef struct fw_stream {
 
 typedef struct fw_demand {
     char file[512];
+    /* s, how long a lane change takes on this network (demand.yaml's
+     * lane_change_s: the widest lane crossed at about 1 m/s); 0 = not said */
+    double lane_change_s;
     int n;
     fw_stream streams[FW_DEMAND_MAX_STREAMS];
 } fw_demand;

@@ -122,11 +122,12 @@ static fw_status write_tracks(const fw_sumo_source_def *d, fw_error *err)
 typedef struct sumo_files {
     char net[1200], routes[2600], types[1100];
     bool has_types;
+    double lane_change_s; /* the network's (0: the default) */
 } sumo_files;
 
 /* A network's demand as a route file in dir (drou). */
 static fw_status write_demand(const fw_sumo_source_def *d, const fw_network_files *nf,
-                              const char *drou, fw_error *err)
+                              const char *drou, double *lane_change_s, fw_error *err)
 {
     fw_demand dm;
     fw_demand_def dd = fw_default_demand_def();
@@ -135,6 +136,7 @@ static fw_status write_demand(const fw_sumo_source_def *d, const fw_network_file
     dd.end = d->duration + d->step;
     dd.seed = d->seed;
     fw_status st = fw_demand_load(nf->demand, &dm, err);
+    *lane_change_s = dm.lane_change_s;
     return st ? st : fw_demand_write(&dm, &dd, drou, err);
 }
 
@@ -163,7 +165,7 @@ static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *e
             (st = fw_path(edges, sizeof edges, err, "%s.edg.xml,tracks.edg.xml", pre)) ||
             (st = fw_path(typ, sizeof typ, err, "%s.typ.xml", pre)) ||
             (st = fw_path(drou, sizeof drou, err, "%s/demand.rou.xml", d->dir)) ||
-            (st = write_demand(d, &nf, drou, err)))
+            (st = write_demand(d, &nf, drou, &f->lane_change_s, err)))
             return st;
         types = typ;
         st = d->n_targets > 0
@@ -392,6 +394,8 @@ fw_status fw_sumo_source_create(const fw_sumo_source_def *d, fw_source **out, fw
     td.radius = d->radius;
     td.area_radius = d->area_radius;
     td.near_radius = d->near_radius;
+    if (f.lane_change_s > 0.0)
+        td.lane_change_s = f.lane_change_s;
     k->near_radius = d->near_radius;
     /* SUMO inserts the targets during its first step: after it, their
      * positions are those of fairway's t = 0 */
