@@ -76,7 +76,7 @@ def case_yaml(n, targets):
                    % (i, y * NM, x * NM, course, kn))
     out.append("avoidance:\n  domain_m: 300\n  fore_aft_ratio: 1\n  min_helm_deg: 10\n"
                "  max_helm_deg: 35\n  horizon_s: 600\n  act_range_nm: 1\n"
-               "  return: heading\n")
+               "  return: heading\n  domain_from: centre\n")
     out.append("run:\n  duration_s: 3000\n  step_s: 1\n  seed: 1\n")
     out.append("outputs:\n  targets_csv: true\n  record_every_s: 5\n")
     return "".join(out)

@@ -172,16 +172,25 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     return FW_OK;
 }
 
-/* avoidance.return: track (the default) or heading (the paper's return). */
+/* avoidance.return: track (the default) or heading (the paper's return);
+ * avoidance.domain_from: hull (the default: the domain's size is a
+ * clearance beyond the own hull, geom/geom.h) or centre (the paper's). */
 static fw_status load_return(const yt_doc *doc, const yt_node *a, fw_scenario *s, fw_error *err)
 {
-    char ret[16] = "";
+    char ret[16] = "", from[16] = "";
     fw_status st = yt_opt_string(doc, a, "avoidance", "return", ret, sizeof ret, err);
-    if (st || !ret[0])
+    if (!st)
+        st = yt_opt_string(doc, a, "avoidance", "domain_from", from, sizeof from, err);
+    if (st)
         return st;
-    if (fw_return_parse(ret, &s->policy.ret))
+    if (ret[0] && fw_return_parse(ret, &s->policy.ret))
         return fw_fail_at(err, doc->file, yt_key_line(a, "return"), "avoidance.return",
                           "'%s': expected track or heading", ret);
+    if (strcmp(from, "centre") == 0)
+        s->helm.domain.own_half_length = s->helm.domain.own_half_breadth = 0.0;
+    else if (from[0] && strcmp(from, "hull") != 0)
+        return fw_fail_at(err, doc->file, yt_key_line(a, "domain_from"), "avoidance.domain_from",
+                          "'%s': expected hull or centre", from);
     return FW_OK;
 }
 
@@ -192,13 +201,16 @@ static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scena
                                        "max_helm_deg", "horizon_s", "act_range_nm",
                                        "act_lookahead_s", "standon_act_range_nm",
                                        "standon_act_time_s", "overtake_side", "radius_nm",
-                                       "return", NULL};
+                                       "return", "domain_from", NULL};
     const yt_node *a = NULL;
     fw_status st;
     if ((st = yt_opt_map(doc, root, "", "avoidance", &a, err)))
         return st;
+    /* the domain about the own hull unless the scenario says centre */
+    s->helm.domain.own_half_length = 0.5 * s->ship.Loa;
+    s->helm.domain.own_half_breadth = 0.5 * s->ship.B;
     if (!a)
-        return FW_OK; /* every setting has the paper's default */
+        return FW_OK; /* every other setting has the paper's default */
     double act = fw_m_to_nm(s->policy.act_range), so = fw_m_to_nm(s->policy.standon_act_range);
     double radius = fw_m_to_nm(s->radius);
     const char *P = "avoidance";
