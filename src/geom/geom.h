@@ -47,6 +47,18 @@ static inline void fw_cpa(double dx, double dy, double vx, double vy, double *tc
     *dcpa = hypot(dx + vx * t, dy + vy * t);
 }
 
+/* The same with the distance squared: for loops over many pairs that only
+ * compare it with a threshold (hypot's care for overflow costs there). */
+static inline void fw_cpa_sq(double dx, double dy, double vx, double vy, double *tcpa,
+                             double *dcpa2)
+{
+    double v2 = vx * vx + vy * vy;
+    double t = v2 > 1e-12 ? -(dx * vx + dy * vy) / v2 : 0.0;
+    double px = dx + vx * t, py = dy + vy * t;
+    *tcpa = t;
+    *dcpa2 = px * px + py * py;
+}
+
 /* The own domain: an ellipse centred on the own ship and aligned with its
  * heading.  Transverse semi-axis = size (the paper's 300 m "along the side");
  * fore-aft semi-axis = size * fore_aft_ratio.  Default ratio 1: the paper's
