@@ -139,6 +139,8 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
         if (!dm)
             return fw_fail(err, FW_ERUN, "out of memory");
         fw_status dst = fw_demand_load(nf.demand, dm, &nerr);
+        if (!dst)
+            dst = fw_network_check_demand(s->network, dm, &nerr);
         free(dm);
         if (dst)
             return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",

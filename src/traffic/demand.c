@@ -56,6 +56,7 @@ static fw_status load_stream(const yt_doc *doc, const yt_node *m, const char *pa
         if (e->kind != YT_SCALAR || !plain_id(e->str) || strlen(e->str) >= 64)
             return fw_fail_at(err, doc->file, e->line, field, "edge %zu is not an edge id", i + 1);
         snprintf(s->edges[i], sizeof s->edges[i], "%s", e->str);
+        s->edge_line[i] = e->line;
     }
     return FW_OK;
 }
