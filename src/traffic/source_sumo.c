@@ -132,7 +132,9 @@ static fw_status write_demand(const fw_sumo_source_def *d, const fw_network_file
     fw_demand dm;
     fw_demand_def dd = fw_default_demand_def();
     dd.density = d->density;
-    dd.fill = d->fill;
+    /* the fill is given at density 1 and scales with it, as the arrivals do:
+     * a study sweeping density starts each run near its own steady state */
+    dd.fill = (int)lround(d->fill * d->density);
     dd.end = d->duration + d->step;
     dd.seed = d->seed;
     fw_status st = fw_demand_load(nf->demand, &dm, err);

@@ -39,7 +39,7 @@ typedef struct fw_sumo_source_def {
     const char *dir;            /* SUMO's files and logs go here (it must exist) */
     const char *network;        /* networks/NAME; NULL or "" = none */
     double density;             /* demand scale */
-    int fill;                   /* network ships along the routes at t = 0 */
+    int fill;                   /* network ships along the routes at t = 0, at density 1 */
     unsigned long seed;         /* SUMO's and the demand's */
     double duration;            /* s, the run; flows run to duration + step */
     double step;                /* s */
