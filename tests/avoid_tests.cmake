@@ -1,6 +1,8 @@
 # Nomoto model, identification, encounter assessment, helm search, policy, `fairway helm`.
 fw_test(test_nomoto test_nomoto.c)
 fw_test(test_avoid test_avoid.c)
+fw_test(test_avoid_rules test_avoid_rules.c)
+target_link_libraries(test_avoid_rules PRIVATE fairway_run)
 fw_test(test_identify test_identify.c)
 
 # The paper's cases at its action times (own ship C-3 at 10 kn heading north

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "core/units.h"
+#include "nomoto/nomoto.h"
 #include "scenario/scenario.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
@@ -69,6 +70,14 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
     if ((st = fw_ship_load(ship, &s->ship, &serr)))
         return fw_fail_at(err, doc->file, yt_key_line(own, "ship"), "own_ship.ship", "%s",
                           serr.msg);
+    const fw_nomoto_kb *kb = &s->ship.nomoto;
+    if (fw_nomoto_kb_speed(kb, speed_kn) == FW_KB_SPEED_REFUSED)
+        return fw_fail_at(err, doc->file, yt_key_line(own, "speed_kn"), "own_ship.speed_kn",
+                          "%g kn is beyond %s's Nomoto knowledge base, fitted over %g-%g kn, by "
+                          "more than its x%g margin (%.1f-%.1f kn)",
+                          speed_kn, s->ship.name, kb->speed_min_kn, kb->speed_max_kn,
+                          FW_KB_SPEED_MARGIN, kb->speed_min_kn / FW_KB_SPEED_MARGIN,
+                          kb->speed_max_kn * FW_KB_SPEED_MARGIN);
     return FW_OK;
 }
 
