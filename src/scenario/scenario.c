@@ -235,6 +235,19 @@ static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scena
         return fw_fail_at(err, doc->file, yt_key_line(a, "max_helm_deg"), "avoidance.max_helm_deg",
                           "%g deg exceeds the ship's rudder limit %g deg", s->helm.max_helm_deg,
                           fw_rad_to_deg(s->ship.rudder_max));
+    /* the helms the search tries must be ones the knowledge base was fitted
+     * at: below its smallest angle it would use that angle's indices */
+    const fw_nomoto_kb *kb = &s->ship.nomoto;
+    const char *key = s->helm.min_helm_deg < kb->rudder_min_deg - 1e-9   ? "min_helm_deg"
+                      : s->helm.max_helm_deg > kb->rudder_max_deg + 1e-9 ? "max_helm_deg"
+                                                                          : NULL;
+    if (kb->present && key)
+        return fw_fail_at(err, doc->file, yt_key_line(a, key), key[1] == 'i'
+                              ? "avoidance.min_helm_deg" : "avoidance.max_helm_deg",
+                          "%g deg is outside %g-%g deg, the rudder angles %s's Nomoto knowledge "
+                          "base was fitted over",
+                          key[1] == 'i' ? s->helm.min_helm_deg : s->helm.max_helm_deg,
+                          kb->rudder_min_deg, kb->rudder_max_deg, s->ship.name);
     s->policy.act_range = fw_nm_to_m(act);
     s->policy.standon_act_range = fw_nm_to_m(so);
     s->radius = fw_nm_to_m(radius);
