@@ -14,6 +14,9 @@ fw_cli_test(cli_zigzag_20_json 0 "\"angle_deg\": 20.00.*\"imo_ok1\": true" manoe
 fw_script_test(cli_turning_csv 0 "^t_s,east_m,north_m,heading_deg,u_mps,v_mps,r_degps,rudder_deg,helm_deg,propeller_rps"
                turning_csv.sh)
 fw_cli_test(cli_report 0 "all criteria met" manoeuvre report --ship c3)
+# c3-paper's trial file has equation-10 rows: a table of them, not IMO turning circles
+fw_cli_test(cli_report_eq10 0 "^ +14.55 +5 +[0-9]+/[0-9]+ .* 0.1[0-9][0-9]/0.170" manoeuvre report --ship c3-paper)
+fw_cli_test(cli_report_eq10_imo 0 "all criteria met" manoeuvre report --ship c3-paper)
 fw_cli_test(cli_manoeuvre_help 0 "usage: fairway manoeuvre" manoeuvre --help)
 fw_cli_test(cli_calibrate_help 0 "usage: fairway calibrate" calibrate --help)
 

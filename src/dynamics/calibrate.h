@@ -52,6 +52,7 @@ typedef struct fw_trial {
     char ship[64];
     char source[256];
     char kb_source[256];  /* where the knowledge-base targets come from, "" = none */
+    char kb_ship[64];     /* the ship file whose knowledge base they are, "" = none */
     int nturns;
     fw_trial_turn turns[FW_TRIAL_MAX_TURNS];
     int ntune;

@@ -200,6 +200,7 @@ static fw_status load_kb_targets(const yt_doc *doc, const yt_node *m, fw_trial *
     /* the ship's name, not its path: the note written into a ship file must
      * stay true wherever the repository is checked out */
     snprintf(trial->kb_source, sizeof trial->kb_source, "%s's nomoto: block", name);
+    snprintf(trial->kb_ship, sizeof trial->kb_ship, "%s", name);
     return FW_OK;
 }
 
