@@ -115,10 +115,25 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
     *least = 0.0;
     /* in the middle of its own manoeuvre the own ship is no stand-on ship:
      * its turn may have put the target it gives way to on its port side */
-    bool give_way = p->mode == FW_MODE_STEADY;
+    bool by_rule = false;
     for (int i = 0; i < n; i++)
         if (as[i].enters_domain && gives_way(as[i].situation))
-            give_way = true;
+            by_rule = true;
+    bool give_way = by_rule || p->mode == FW_MODE_STEADY;
+    /* The reason names the ground, so that it agrees with the situation the
+     * log shows beside it: a give-way ship (rules 14-16), or one still in its
+     * own manoeuvre whose target now lies to port ("crossing stand-on"). */
+    static const char *const rule_why[3] = {
+        "give-way: range within the action distance",
+        "give-way: waiting longer would need more than the minimum helm",
+        "give-way: minimum helm still enough later, waiting"};
+    static const char *const own_why[3] = {
+        "own manoeuvre under way (not a stand-on ship): range within the action distance",
+        "own manoeuvre under way (not a stand-on ship): waiting longer would need more than "
+        "the minimum helm",
+        "own manoeuvre under way (not a stand-on ship): minimum helm still enough later, "
+        "waiting"};
+    const char *const *gw_why = by_rule ? rule_why : own_why;
     const fw_assessment *a = &as[primary];
     if (!give_way) {
         bool last = false;
@@ -154,7 +169,7 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
         return FW_OK;
     }
     if (a->range <= p->def.act_range) {
-        *act = true, *why = "give-way: range within the action distance";
+        *act = true, *why = gw_why[0];
         return FW_OK;
     }
     if (p->def.act_lookahead > 0.0) {
@@ -164,11 +179,11 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
         if (st)
             return st;
         if (!later) {
-            *act = true, *why = "give-way: waiting longer would need more than the minimum helm";
+            *act = true, *why = gw_why[1];
             return FW_OK;
         }
     }
-    *why = "give-way: minimum helm still enough later, waiting";
+    *why = gw_why[2];
     return FW_OK;
 }
 
@@ -395,8 +410,11 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
         p->track_n = in->own->north;
         p->psi_ref = in->own->psi;
     }
-    fw_assess(&hdef->colregs, &hdef->domain, hdef->track.horizon, in->own, in->targets, in->n,
-              in->as, in->order);
+    fw_colregs_def colregs = hdef->colregs;
+    if (colregs.rank_range_m <= 0.0)
+        colregs.rank_range_m = p->def.act_range; /* the paper's ranking rule (encounter.h) */
+    fw_assess(&colregs, &hdef->domain, hdef->track.horizon, in->own, in->targets, in->n, in->as,
+              in->order);
     fw_helm_begin(in->ctx, in->own);
     int allowed = fw_permitted_sides(hdef, in->as, in->n);
     fw_status st = fw_helm_search(in->ctx, in->targets, in->n, allowed, &d->search, err);

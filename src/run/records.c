@@ -216,6 +216,24 @@ static void str(FILE *f, const char *key, const char *v)
     fw_json_string(f, v);
 }
 
+/* The own speed against the knowledge base's fitted speeds (null: none). */
+static void kb_json(FILE *f, const fw_run_summary *s, const char *ind)
+{
+    fprintf(f, "%s  \"knowledge_base_speeds\": ", ind);
+    if (!s->kb_present) {
+        fprintf(f, "null,\n");
+        return;
+    }
+    fprintf(f, "{\"fitted_min_kn\": %.2f, \"fitted_max_kn\": %.2f, \"own_min_kn\": ",
+            s->kb_speed_min_kn, s->kb_speed_max_kn);
+    num(f, "%.2f", s->own_speed_min_kn);
+    fprintf(f, ", \"own_max_kn\": ");
+    num(f, "%.2f", s->own_speed_max_kn);
+    fprintf(f, ", \"outside_s\": %.1f, \"warning\": %s},\n", s->kb_outside_s,
+            s->kb_outside_s > 0 ? "\"own speed outside the fitted speeds: predictions "
+                                  "extrapolated\"" : "null");
+}
+
 void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, int n,
                      const char *ind)
 {
@@ -268,6 +286,7 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     fprintf(f, "%s  \"traffic_behaviour\": \"%s\", \"reactions\": {\"give_way\": %d, "
                "\"not_enough\": %d, \"resume\": %d},\n",
             ind, fw_behaviour_name(s->behaviour), s->n_give_way, s->n_give_way_short, s->n_resume);
+    kb_json(f, s, ind);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {
         const fw_encounter *x = &e[i];

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "core/units.h"
+#include "nomoto/nomoto.h"
 #include "scenario/scenario.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
@@ -69,6 +70,14 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
     if ((st = fw_ship_load(ship, &s->ship, &serr)))
         return fw_fail_at(err, doc->file, yt_key_line(own, "ship"), "own_ship.ship", "%s",
                           serr.msg);
+    const fw_nomoto_kb *kb = &s->ship.nomoto;
+    if (fw_nomoto_kb_speed(kb, speed_kn) == FW_KB_SPEED_REFUSED)
+        return fw_fail_at(err, doc->file, yt_key_line(own, "speed_kn"), "own_ship.speed_kn",
+                          "%g kn is beyond %s's Nomoto knowledge base, fitted over %g-%g kn, by "
+                          "more than its x%g margin (%.1f-%.1f kn)",
+                          speed_kn, s->ship.name, kb->speed_min_kn, kb->speed_max_kn,
+                          FW_KB_SPEED_MARGIN, kb->speed_min_kn / FW_KB_SPEED_MARGIN,
+                          kb->speed_max_kn * FW_KB_SPEED_MARGIN);
     return FW_OK;
 }
 
@@ -255,6 +264,19 @@ static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scena
         return fw_fail_at(err, doc->file, yt_key_line(a, "max_helm_deg"), "avoidance.max_helm_deg",
                           "%g deg exceeds the ship's rudder limit %g deg", s->helm.max_helm_deg,
                           fw_rad_to_deg(s->ship.rudder_max));
+    /* the helms the search tries must be ones the knowledge base was fitted
+     * at: below its smallest angle it would use that angle's indices */
+    const fw_nomoto_kb *kb = &s->ship.nomoto;
+    const char *key = s->helm.min_helm_deg < kb->rudder_min_deg - 1e-9   ? "min_helm_deg"
+                      : s->helm.max_helm_deg > kb->rudder_max_deg + 1e-9 ? "max_helm_deg"
+                                                                          : NULL;
+    if (kb->present && key)
+        return fw_fail_at(err, doc->file, yt_key_line(a, key), key[1] == 'i'
+                              ? "avoidance.min_helm_deg" : "avoidance.max_helm_deg",
+                          "%g deg is outside %g-%g deg, the rudder angles %s's Nomoto knowledge "
+                          "base was fitted over",
+                          key[1] == 'i' ? s->helm.min_helm_deg : s->helm.max_helm_deg,
+                          kb->rudder_min_deg, kb->rudder_max_deg, s->ship.name);
     s->policy.act_range = fw_nm_to_m(act);
     s->policy.standon_act_range = fw_nm_to_m(so);
     s->radius = fw_nm_to_m(radius);
