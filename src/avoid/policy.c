@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/names.h"
 #include "core/units.h"
 
 fw_policy_def fw_default_policy_def(void)
@@ -31,20 +32,15 @@ fw_policy_def fw_default_policy_def(void)
                            .track_done = 50.0};
 }
 
-const char *fw_return_name(fw_return_kind k)
-{
-    return k == FW_RETURN_HEADING ? "heading" : "track";
-}
+static const char *const kReturnNames[] = {"track", "heading"}; /* fw_return_kind order */
+
+const char *fw_return_name(fw_return_kind k) { return fw_name_of(kReturnNames, 2, (int)k); }
 
 fw_status fw_return_parse(const char *text, fw_return_kind *out)
 {
-    if (strcmp(text, "track") == 0)
-        *out = FW_RETURN_TRACK;
-    else if (strcmp(text, "heading") == 0)
-        *out = FW_RETURN_HEADING;
-    else
-        return FW_EINPUT;
-    return FW_OK;
+    int k = fw_name_find(kReturnNames, 2, text);
+    *out = k < 0 ? *out : (fw_return_kind)k;
+    return k < 0 ? FW_EINPUT : FW_OK;
 }
 
 double fw_policy_cross_track(const fw_policy *p, const fw_own_state *own)

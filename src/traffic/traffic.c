@@ -564,27 +564,43 @@ static int cmp_id(const void *a, const void *b)
     return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
+/* The background ships of this step's context results whose hull centres
+ * are within radius of the own ship's, into *buf (room for one more: the
+ * area adds the own ship); their count, or -1 with *err set (what: the
+ * query's name, for a def without its radius). */
+static int within(fw_traffic *t, const char *what, double radius, fw_target **buf, int *cap,
+                  fw_error *err)
+{
+    if (alive(t, err))
+        return -1;
+    if (!(radius > 0.0)) {
+        fw_fail(err, FW_ERUN, "no %s query: the traffic def has no %s radius", what, what);
+        return -1;
+    }
+    if (!t->placed) {
+        fw_fail(err, FW_ERUN, "no %s query before the own ship is placed", what);
+        return -1;
+    }
+    fw_status st = context(t, err);
+    if (!st)
+        st = room(buf, cap, t->ctx.n + 1, err);
+    if (st)
+        return -1;
+    int m = 0;
+    for (int i = 0; i < t->ctx.n; i++) {
+        const fw_target *s = &t->conv[i];
+        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= radius)
+            (*buf)[m++] = *s;
+    }
+    return m;
+}
+
 fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     *n = 0;
-    if (alive(t, err))
-        return FW_ERUN;
-    if (!(t->def.area_radius > 0.0))
-        return fw_fail(err, FW_ERUN, "no area query: the traffic def has no area_radius");
-    if (!t->placed)
-        return fw_fail(err, FW_ERUN, "no area before the own ship is placed");
-    fw_status st = context(t, err);
-    if (!st)
-        st = room(&t->area, &t->area_cap, t->ctx.n + 1, err);
-    if (st)
-        return st;
-    int m = 0;
-    for (int i = 0; i < t->ctx.n; i++) {
-        fw_target *s = &t->area[m];
-        *s = t->conv[i];
-        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= t->def.area_radius)
-            m++;
-    }
+    int m = within(t, "area", t->def.area_radius, &t->area, &t->area_cap, err);
+    if (m < 0)
+        return err->status;
     /* the own ship as placed: SUMO may not list a vehicle moved off its lanes */
     fw_target *o = &t->area[m++];
     memset(o, 0, sizeof *o);
@@ -606,21 +622,9 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
 fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     *n = 0;
-    if (alive(t, err))
-        return FW_ERUN;
-    if (!(t->def.near_radius > 0.0))
-        return fw_fail(err, FW_ERUN, "no nearby query: the traffic def has no near_radius");
-    fw_status st = context(t, err);
-    if (!st)
-        st = room(&t->near, &t->near_cap, t->ctx.n + 1, err);
-    if (st)
-        return st;
-    int m = 0;
-    for (int i = 0; i < t->ctx.n; i++) {
-        const fw_target *s = &t->conv[i];
-        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= t->def.near_radius)
-            t->near[m++] = *s;
-    }
+    int m = within(t, "nearby", t->def.near_radius, &t->near, &t->near_cap, err);
+    if (m < 0)
+        return err->status;
     qsort(t->near, (size_t)m, sizeof *t->near, cmp_id);
     *ships = t->near;
     *n = m;

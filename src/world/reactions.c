@@ -9,6 +9,7 @@
 
 #include "core/idmap.h"
 #include "core/mem.h"
+#include "core/names.h"
 #include "core/units.h"
 #include "geom/geom.h"
 
@@ -50,20 +51,15 @@ fw_reactions_def fw_default_reactions_def(void)
                               .colregs = fw_default_colregs_def()};
 }
 
-const char *fw_behaviour_name(fw_behaviour b)
-{
-    return b == FW_BEHAVIOUR_BLIND ? "blind" : "colregs";
-}
+static const char *const kBehaviourNames[] = {"colregs", "blind"}; /* fw_behaviour order */
+
+const char *fw_behaviour_name(fw_behaviour b) { return fw_name_of(kBehaviourNames, 2, (int)b); }
 
 fw_status fw_behaviour_parse(const char *text, fw_behaviour *out)
 {
-    if (strcmp(text, "colregs") == 0)
-        *out = FW_BEHAVIOUR_COLREGS;
-    else if (strcmp(text, "blind") == 0)
-        *out = FW_BEHAVIOUR_BLIND;
-    else
-        return FW_EINPUT;
-    return FW_OK;
+    int k = fw_name_find(kBehaviourNames, 2, text);
+    *out = k < 0 ? *out : (fw_behaviour)k;
+    return k < 0 ? FW_EINPUT : FW_OK;
 }
 
 fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, fw_error *err)
