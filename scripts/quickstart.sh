@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 mode=${1:-main}
 packages=(build-essential cmake pkg-config libyaml-dev libsundials-dev libsqlite3-dev sqlite3
           sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy python3-yaml
-          libopenmpi-dev openmpi-bin clang libclang-rt-14-dev)
+          libopenmpi-dev openmpi-bin clang libclang-rt-14-dev libproj-dev)
 
 missing=()
 for p in "${packages[@]}"; do

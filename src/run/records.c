@@ -13,12 +13,14 @@
 #include "core/idmap.h"
 #include "core/mem.h"
 #include "core/units.h"
+#include "geom/geo.h"
 #include "run/run.h"
 
 struct fw_records {
     const fw_scenario *s;
     char dir[1024];
     FILE *own, *tgt, *log;
+    fw_geo *geo;   /* the scenario's origin: lat/lon columns (NULL: none) */
     fw_encounter *e;
     int n, cap;
     /* id -> index into e (core/idmap.h): a heavy-traffic hour meets
@@ -50,11 +52,16 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
     if (!(r->own = open_in(dir, "own.csv", err)) || !(r->log = open_in(dir, "run.log", err)) ||
         (s->targets_csv && !(r->tgt = open_in(dir, "targets.csv", err))))
         return FW_ERUN;
+    if (s->has_origin && (st = fw_geo_create(s->origin_lat, s->origin_lon, &r->geo, err)))
+        return st;
+    /* with an origin, the positions in degrees too (last, so that the
+     * columns of a run in metres are the same either way) */
+    const char *geo_cols = r->geo ? ",lat_deg,lon_deg" : "";
     fprintf(r->own, "t_s,east_m,north_m,heading_deg,u_ms,v_ms,r_degs,rudder_deg,helm_deg,"
-                    "propeller_rps,mode\n");
+                    "propeller_rps,mode%s\n", geo_cols);
     if (r->tgt)
         fprintf(r->tgt, "t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,bearing_deg,"
-                        "dcpa_m,tcpa_s,situation\n");
+                        "dcpa_m,tcpa_s,situation%s\n", geo_cols);
     return FW_OK;
 }
 
@@ -70,7 +77,19 @@ void fw_records_close(fw_records *r)
         fclose(r->log);
     free(r->e);
     fw_idmap_free(&r->ids);
+    fw_geo_destroy(r->geo);
     free(r);
+}
+
+/* ",LAT,LON\n" for a run with an origin, else "\n": the end of a CSV row
+ * (7 decimals of a degree: about 1 cm). */
+static void end_row(const fw_records *r, FILE *f, double east, double north)
+{
+    double lat, lon;
+    if (r->geo && !fw_geo_to_latlon(r->geo, east, north, &lat, &lon, NULL))
+        fprintf(f, ",%.7f,%.7f\n", lat, lon);
+    else
+        fputs(r->geo ? ",,\n" : "\n", f);
 }
 
 FILE *fw_records_log(fw_records *r) { return r->log; }
@@ -78,9 +97,10 @@ FILE *fw_records_log(fw_records *r) { return r->log; }
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
                     const char *mode)
 {
-    fprintf(r->own, "%.1f,%.2f,%.2f,%.3f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%s\n", t, x->east, x->north,
+    fprintf(r->own, "%.1f,%.2f,%.2f,%.3f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%s", t, x->east, x->north,
             fw_heading_deg(x->psi), x->u, x->vm, fw_rad_to_deg(x->r), fw_rad_to_deg(x->delta),
             fw_rad_to_deg(helm), n, mode);
+    end_row(r, r->own, x->east, x->north);
 }
 
 /* m: hull-to-hull distances are measured for targets whose hulls could be
@@ -171,11 +191,13 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
         if (h == 0.0)
             e->collision = true;
     }
-    if (record_row && r->tgt)
-        fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s\n", t, ts->id, ts->east,
+    if (record_row && r->tgt) {
+        fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s", t, ts->id, ts->east,
                 ts->north, fw_heading_deg(ts->course), fw_ms_to_kn(ts->speed), d,
                 fw_heading_deg(as->bearing), as->dcpa, as->tcpa,
                 fw_situation_name(as->situation));
+        end_row(r, r->tgt, ts->east, ts->north);
+    }
     return FW_OK;
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/units.h"
 #include "nomoto/nomoto.h"
+#include "scenario/position.h"
 #include "scenario/scenario.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
@@ -20,8 +21,8 @@ static bool name_ok(const char *s)
 
 static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
-    static const char *const keys[] = {"ship", "east_m", "north_m", "course_deg", "speed_kn",
-                                       "leg_nm", "destination", NULL};
+    static const char *const keys[] = {"ship", "east_m", "north_m", "lat_deg", "lon_deg",
+                                       "course_deg", "speed_kn", "leg_nm", "destination", NULL};
     const yt_node *own;
     fw_status st;
     char ship[512];
@@ -29,13 +30,12 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
         (st = yt_check_keys(doc, own, "own_ship", keys, err)) ||
         (st = yt_req_string(doc, own, "own_ship", "ship", ship, sizeof ship, err)))
         return st;
-    double course_deg, speed_kn;
-    if ((st = yt_req_number(doc, own, "own_ship", "east_m", -1e6, 1e6, &s->east, err)) ||
-        (st = yt_req_number(doc, own, "own_ship", "north_m", -1e6, 1e6, &s->north, err)) ||
+    double course_deg, speed_kn, gamma;
+    if ((st = fw_scn_load_position(doc, own, "own_ship", s, &s->east, &s->north, &gamma, err)) ||
         (st = yt_req_number(doc, own, "own_ship", "course_deg", 0, 360, &course_deg, err)) ||
         (st = yt_req_number(doc, own, "own_ship", "speed_kn", 1, 40, &speed_kn, err)))
         return st;
-    s->course = fw_deg_to_rad(course_deg);
+    s->course = fw_wrap_2pi(fw_deg_to_rad(course_deg) - gamma);
     s->speed = fw_kn_to_ms(speed_kn);
     /* where it is going: a leg length along the course or a destination on it */
     const yt_node *dest = yt_get(own, "destination");
@@ -49,13 +49,12 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
             return st;
         s->leg = fw_nm_to_m(leg_nm);
     } else {
-        static const char *const dkeys[] = {"east_m", "north_m", NULL};
-        double e, n;
+        static const char *const dkeys[] = {"east_m", "north_m", "lat_deg", "lon_deg", NULL};
+        double e, n, g;
         const yt_node *d;
         if ((st = yt_req_map(doc, own, "own_ship", "destination", &d, err)) ||
             (st = yt_check_keys(doc, d, "own_ship.destination", dkeys, err)) ||
-            (st = yt_req_number(doc, d, "own_ship.destination", "east_m", -1e6, 1e6, &e, err)) ||
-            (st = yt_req_number(doc, d, "own_ship.destination", "north_m", -1e6, 1e6, &n, err)))
+            (st = fw_scn_load_position(doc, d, "own_ship.destination", s, &e, &n, &g, err)))
             return st;
         double de = e - s->east, dn = n - s->north, leg = hypot(de, dn);
         /* the planned track is the course line: the destination must lie on it */
@@ -82,20 +81,19 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
 }
 
 static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *path,
-                             fw_target *o, fw_error *err)
+                             const fw_scenario *s, fw_target *o, fw_error *err)
 {
-    static const char *const keys[] = {"id", "type", "east_m", "north_m", "course_deg",
-                                       "speed_kn", "length_m", "breadth_m", NULL};
+    static const char *const keys[] = {"id", "type", "east_m", "north_m", "lat_deg", "lon_deg",
+                                       "course_deg", "speed_kn", "length_m", "breadth_m", NULL};
     fw_status st;
     if (t->kind != YT_MAP)
         return fw_fail_at(err, doc->file, t->line, path, "expected a map (id, east_m, ...)");
-    double c, v;
+    double c, v, gamma;
     snprintf(o->type, sizeof o->type, "cargo");
     if ((st = yt_check_keys(doc, t, path, keys, err)) ||
         (st = yt_req_string(doc, t, path, "id", o->id, sizeof o->id, err)) ||
         (st = yt_opt_string(doc, t, path, "type", o->type, sizeof o->type, err)) ||
-        (st = yt_req_number(doc, t, path, "east_m", -1e6, 1e6, &o->east, err)) ||
-        (st = yt_req_number(doc, t, path, "north_m", -1e6, 1e6, &o->north, err)) ||
+        (st = fw_scn_load_position(doc, t, path, s, &o->east, &o->north, &gamma, err)) ||
         (st = yt_req_number(doc, t, path, "course_deg", 0, 360, &c, err)) ||
         (st = yt_req_number(doc, t, path, "speed_kn", 0.5, 40, &v, err)) ||
         (st = yt_req_number(doc, t, path, "length_m", 5, 500, &o->length, err)) ||
@@ -110,7 +108,7 @@ static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *pa
     if (o->breadth > o->length)
         return yt_fail_key(doc, t, path, "breadth_m", err, "%g m exceeds the length %g m",
                            o->breadth, o->length);
-    o->course = fw_deg_to_rad(c);
+    o->course = fw_wrap_2pi(fw_deg_to_rad(c) - gamma);
     o->speed = fw_kn_to_ms(v);
     return FW_OK;
 }
@@ -163,7 +161,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
             char path[64];
             snprintf(path, sizeof path, "traffic.targets[%zu]", i);
             fw_target *o = &s->targets[i];
-            if ((st = load_target(doc, seq->items[i], path, o, err)))
+            if ((st = load_target(doc, seq->items[i], path, s, o, err)))
                 return st;
             for (size_t j = 0; j < i; j++)
                 if (strcmp(s->targets[j].id, o->id) == 0)
@@ -346,7 +344,7 @@ static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s
 
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
 {
-    static const char *const keys[] = {"name", "description", "own_ship", "traffic",
+    static const char *const keys[] = {"name", "description", "origin", "own_ship", "traffic",
                                        "avoidance", "survey", "run", "outputs", NULL};
     memset(s, 0, sizeof *s);
     if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
@@ -376,7 +374,8 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
                         s->name);
         goto out;
     }
-    if ((st = load_own(doc, root, s, err)) || (st = load_traffic(doc, root, s, err)) ||
+    if ((st = fw_scn_load_origin(doc, root, s, err)) || (st = load_own(doc, root, s, err)) ||
+        (st = load_traffic(doc, root, s, err)) ||
         (st = load_avoidance(doc, root, s, err)) || (st = load_survey(doc, root, s, err)) ||
         (st = load_run(doc, root, s, err)))
         goto out;
