@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # quickstart.sh main|test - install what is missing, build, then run the main job or the tests.
 #
-#   main  runs the default Monte Carlo study (scenarios/studies/strait-domain.yaml:
-#         the C-3 crossing the strait in heavy traffic, 4 domain sizes x colregs and
-#         blind background ships x 20 replications of one simulated hour) into out/strait-domain.db and writes its
-#         report (CSV, PNG, Markdown) into out/strait-domain-report/; before that it
+#   main  runs the default Monte Carlo study (scenarios/studies/dover-domain.yaml:
+#         the C-3 crossing the Dover Strait scheme, 4 domain sizes x 20
+#         replications of one simulated hour) into out/dover-domain.db and writes its
+#         report (CSV, PNG, Markdown) into out/dover-domain-report/; before that it
 #         prints the C-3 manoeuvring report (out/manoeuvres/) and runs the paper's five
 #         encounter cases and the 22 Imazu cases (out/runs/, out/imazu.png)
 #   test  builds twice (plain, and with AddressSanitizer + UndefinedBehaviorSanitizer)
@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 mode=${1:-main}
 packages=(build-essential cmake pkg-config libyaml-dev libsundials-dev libsqlite3-dev sqlite3
           sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy python3-yaml
-          libopenmpi-dev openmpi-bin clang libclang-rt-14-dev)
+          libopenmpi-dev openmpi-bin clang libclang-rt-14-dev libproj-dev)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -48,20 +48,20 @@ case "$mode" in
     ./build/fairway run scenarios/paper/*.yaml scenarios/imazu/*.yaml --out out/runs
     for run in out/runs/paper-*; do /usr/bin/python3 analysis/plot_run.py "$run" > /dev/null; done
     /usr/bin/python3 analysis/plot_imazu.py out/runs --out out/imazu.png
-    # the default study: resumes if out/strait-domain.db already holds some runs
-    study=(./build/fairway sweep scenarios/studies/strait-domain.yaml --db out/strait-domain.db)
+    # the default study: resumes if out/dover-domain.db already holds some runs
+    study=(./build/fairway sweep scenarios/studies/dover-domain.yaml --db out/dover-domain.db)
     rc=0; "${study[@]}" || rc=$?
-    if [ $rc -eq 2 ] && [ -f out/strait-domain.db ]; then
+    if [ $rc -eq 2 ] && [ -f out/dover-domain.db ]; then
       # a database of an older version of the study cannot be resumed: keep it aside, start anew
-      mv -f out/strait-domain.db out/strait-domain.db.old
-      rm -f out/strait-domain.db-wal out/strait-domain.db-shm
+      mv -f out/dover-domain.db out/dover-domain.db.old
+      rm -f out/dover-domain.db-wal out/dover-domain.db-shm
       rc=0; "${study[@]}" || rc=$?
     fi
     [ $rc -ne 2 ] || exit 2
-    [ $rc -eq 0 ] || echo "some runs failed (reasons in out/strait-domain.db, table runs); the report covers the others"
-    ./build/fairway report out/strait-domain.db --out out/strait-domain-report
+    [ $rc -eq 0 ] || echo "some runs failed (reasons in out/dover-domain.db, table runs); the report covers the others"
+    ./build/fairway report out/dover-domain.db --out out/dover-domain-report
     echo "plots: out/manoeuvres/*.png, out/runs/paper-*/*.png, out/imazu.png"
-    echo "study: out/strait-domain.db, report out/strait-domain-report/report.md"
+    echo "study: out/dover-domain.db, report out/dover-domain-report/report.md"
     ;;
   test)
     build build

@@ -1,6 +1,8 @@
 # Nomoto model, identification, encounter assessment, helm search, policy, `fairway helm`.
 fw_test(test_nomoto test_nomoto.c)
 fw_test(test_avoid test_avoid.c)
+fw_test(test_avoid_rules test_avoid_rules.c)
+target_link_libraries(test_avoid_rules PRIVATE fairway_run)
 fw_test(test_identify test_identify.c)
 
 # The paper's cases at its action times (own ship C-3 at 10 kn heading north
@@ -28,6 +30,10 @@ fw_cli_test(helm_bad_domain 2 "--domain: must be positive" helm --ship c3 --own 
 fw_cli_test(identify_small_grid 0 "^wrote .*c3-identified-test.yaml"
             identify --ship c3 --speeds 14.55,20.12,26.7 --rudders 10,20,35 --sides starboard --duration 600
             --out ${CMAKE_CURRENT_BINARY_DIR}/c3-identified-test.yaml --force)
+# --sides both: a regression and slip fit per side, written as nomoto: and nomoto_port:
+fw_cli_test(identify_both_sides 0 "^port: drift [0-9.]+ rad per unit"
+            identify --ship c3 --speeds 14.55,20.12,26.7 --rudders 10,20,35 --sides both --duration 600
+            --out ${CMAKE_CURRENT_BINARY_DIR}/c3-identified-both.yaml --force)
 fw_cli_test(identify_bad_speed 2 "--speeds: 'x' is not a number" identify --ship c3 --speeds 10,x)
 fw_cli_test(identify_unknown_ship 2 "unknown ship 'nosuch'" identify --ship nosuch)
 fw_cli_test(identify_bad_rudder 2 "--rudders: 50 deg outside" identify --ship c3 --rudders 10,50)

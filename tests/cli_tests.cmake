@@ -14,6 +14,9 @@ fw_cli_test(cli_zigzag_20_json 0 "\"angle_deg\": 20.00.*\"imo_ok1\": true" manoe
 fw_script_test(cli_turning_csv 0 "^t_s,east_m,north_m,heading_deg,u_mps,v_mps,r_degps,rudder_deg,helm_deg,propeller_rps"
                turning_csv.sh)
 fw_cli_test(cli_report 0 "all criteria met" manoeuvre report --ship c3)
+# c3-paper's trial file has equation-10 rows: a table of them, not IMO turning circles
+fw_cli_test(cli_report_eq10 0 "^ +14.55 +5 +[0-9]+/[0-9]+ .* 0.1[0-9][0-9]/0.170" manoeuvre report --ship c3-paper)
+fw_cli_test(cli_report_eq10_imo 0 "all criteria met" manoeuvre report --ship c3-paper)
 fw_cli_test(cli_manoeuvre_help 0 "usage: fairway manoeuvre" manoeuvre --help)
 fw_cli_test(cli_calibrate_help 0 "usage: fairway calibrate" calibrate --help)
 
@@ -36,6 +39,12 @@ fw_cli_test(cli_bad_missing_rudder 2 "needs --speed and --rudder" manoeuvre turn
 fw_cli_test(cli_bad_option 2 "unknown option '--rpm'" manoeuvre turning --ship c3 --rpm 80)
 fw_cli_test(cli_bad_trial 2 "c3-trial-bad.yaml:[0-9]+: turns\\[0\\].side: 'left' is not starboard or port"
             calibrate --ship c3 --trial ${CMAKE_CURRENT_SOURCE_DIR}/data/c3-trial-bad.yaml)
+fw_cli_test(cli_bad_trial_rudder 2 "c3-trial-rudder.yaml:10: nomoto_targets.rudders_deg: 40 deg is beyond c3's maximum rudder of 35 deg"
+            calibrate --ship c3 --trial ${CMAKE_CURRENT_SOURCE_DIR}/data/c3-trial-rudder.yaml)
+fw_cli_test(cli_trial_out_of_reach 0 "c3-trial-reach.yaml:6: trial rate deg/s 3.000 at 26.70 kn, 35 deg stbd is out of reach of the fit"
+            calibrate --ship c3 --trial ${CMAKE_CURRENT_SOURCE_DIR}/data/c3-trial-reach.yaml)
+# c3-paper as its file has it against the sea trial and equations 9-10: every target reported
+fw_cli_test(cli_calibrate_check 0 "eq +stbd +26.70 +35.0 eq-9 hist +eq 9 " calibrate --ship c3-paper --check)
 
 # The plotting script turns manoeuvre CSVs into PNG sheets (Debian's python3).
 fw_script_test(analysis_plot_manoeuvre 0 "turning_starboard_26.70kn.png [0-9]{5,} bytes" plot_manoeuvre.sh)

@@ -37,3 +37,9 @@ fw_cli_test(cli_sweep_bad_host 2 "cannot resolve host 'no-such-host.invalid'"
 foreach(t cli_run_interrupt cli_run_bad_host cli_sweep_bad_host)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}" TIMEOUT 120)
 endforeach()
+
+# Latitude and longitude: the plane against the ellipsoid, a scenario in
+# degrees against its twin in metres (loaded, then run: tracks within 0.1 m).
+fw_test(test_geo test_geo.c)
+target_link_libraries(test_geo PRIVATE fairway_run)
+fw_script_test(geo_twin_run 0 "twin runs agree" geo_twin_run.sh)

@@ -5,6 +5,7 @@
 #include "core/units.h"
 #include "dynamics/stepper.h"
 #include "nomoto/identify.h"
+#include "avoid/helm_search.h"
 #include "nomoto/track.h"
 #include "test.h"
 
@@ -205,6 +206,56 @@ static void test_regression_reproduces_paper(void)
     }
 }
 
+/* A ship file's nomoto_port: block serves the port helms and only them: a
+ * port base 30 % quicker (K x1.3) makes the port track turn further, the
+ * starboard one is the same to the bit, and the helm search computes the
+ * port tracks instead of mirroring the starboard ones. */
+static void test_port_knowledge_base(void)
+{
+    fw_ship one, two;
+    fw_error err = {0};
+    CHECK_MSG(fw_ship_load("c3-paper-mmg", &one, &err) == FW_OK, "%s", err.msg);
+    CHECK(!one.nomoto_port.present && fw_ship_kb(&one, -0.1) == &one.nomoto);
+    two = one;
+    two.nomoto_port = one.nomoto;
+    for (int k = 0; k < two.nomoto_port.K.n; k++)
+        two.nomoto_port.K.coef[k] *= 1.3;
+    CHECK(fw_ship_kb(&two, -0.1) == &two.nomoto_port && fw_ship_kb(&two, 0.1) == &two.nomoto);
+    fw_track_def td = fw_default_track_def();
+    td.max_turn = 0.0;
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    fw_track a = {0}, b = {0};
+    CHECK(fw_track_alloc(&a, fw_track_samples(&td), &err) == FW_OK);
+    CHECK(fw_track_alloc(&b, fw_track_samples(&td), &err) == FW_OK);
+    for (int side = -1; side <= 1; side += 2) {
+        double helm = side * fw_deg_to_rad(20);
+        CHECK(fw_track_predict(&one, &td, &own, helm, &a, &err) == FW_OK);
+        CHECK(fw_track_predict(&two, &td, &own, helm, &b, &err) == FW_OK);
+        int k = (int)(120.0 / td.dt);
+        double ta = fabs(atan2(a.east[k + 1] - a.east[k], a.north[k + 1] - a.north[k]));
+        double tb = fabs(atan2(b.east[k + 1] - b.east[k], b.north[k + 1] - b.north[k]));
+        if (side < 0)
+            CHECK_MSG(tb > 1.15 * ta, "port course at 120 s: %.1f deg against %.1f",
+                      fw_rad_to_deg(tb), fw_rad_to_deg(ta));
+        else
+            CHECK(a.east[k] == b.east[k] && a.north[k] == b.north[k]);
+    }
+    fw_helm_def hd = fw_default_helm_def();
+    fw_helm_ctx *ctx;
+    CHECK(fw_helm_ctx_create(&two, &hd, &ctx, &err) == FW_OK);
+    fw_helm_begin(ctx, &own);
+    const fw_track *tr;
+    CHECK(fw_helm_track(ctx, FW_SIDE_STARBOARD, 10, &tr, &err) == FW_OK);
+    CHECK(fw_helm_track(ctx, FW_SIDE_PORT, 10, &tr, &err) == FW_OK);
+    CHECK(fw_helm_tracks_computed(ctx) == 2);
+    CHECK(fw_track_predict(&two, &td, &own, fw_helm_value(ctx, FW_SIDE_PORT, 10), &b, &err) ==
+          FW_OK);
+    CHECK(tr->east[60] == b.east[60] && tr->north[60] == b.north[60]);
+    fw_helm_ctx_destroy(ctx);
+    fw_track_free(&a);
+    fw_track_free(&b);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -218,5 +269,6 @@ int main(void)
     TEST_RUN(test_slip_terms_bring_the_track_to_the_mmg_ship);
     TEST_RUN(test_slip_fit_recovers_the_ship_file);
     TEST_RUN(test_autopilot_prediction_against_the_mmg_ship);
+    TEST_RUN(test_port_knowledge_base);
     return TEST_EXIT();
 }

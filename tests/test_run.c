@@ -324,6 +324,13 @@ static void test_bad_files(void)
     bad_case(13, "  duration_s: [1]\n", "bad.yaml:13: run.duration_s");
     bad_case(9, "traffic:\n  behaviour: polite\n",
              "bad.yaml:10: traffic.behaviour: 'polite': expected colregs or blind");
+    /* the knowledge base's range: c3's is fitted at 14.55-26.7 kn, 5-35 deg */
+    bad_case(7, "  speed_kn: 5\n",
+             "bad.yaml:7: own_ship.speed_kn: 5 kn is beyond c3's Nomoto knowledge base, fitted "
+             "over 14.55-26.7 kn, by more than its x1.5 margin (9.7-40.0 kn)");
+    bad_case(13, "  duration_s: 100\navoidance:\n  min_helm_deg: 3\n",
+             "bad.yaml:15: avoidance.min_helm_deg: 3 deg is outside 5-35 deg, the rudder angles "
+             "c3's Nomoto knowledge base was fitted over");
 }
 
 int main(void)

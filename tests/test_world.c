@@ -273,6 +273,71 @@ static void test_reactive_traffic(void)
            pair.dmin);
 }
 
+/* A world of the kinematic source's ships and the own ship (the C-3's
+ * Nomoto plant under the policy), heading north from the origin at 10 kn. */
+static void own_world(const fw_kinematic_def *kd, const fw_policy_controller_def *pd,
+                      fw_world **w, fw_vessel **own, fw_error *err)
+{
+    static fw_own_state start;
+    start = (fw_own_state){.U = fw_kn_to_ms(10)};
+    fw_world_def wd = fw_default_world_def();
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.ship = &c3;
+    vd.dynamics = FW_DYN_NOMOTO;
+    vd.start_state = &start;
+    vd.radius = INFINITY;
+    CHECK_MSG(fw_kinematic_source_create(kd, &wd.source, err) == FW_OK &&
+                  fw_world_create(&wd, w, err) == FW_OK &&
+                  fw_policy_controller_create(pd, &vd.controller, err) == FW_OK &&
+                  fw_world_add_vessel(*w, &vd, own, err) == FW_OK &&
+                  fw_world_start(*w, err) == FW_OK,
+              "%s", err->msg);
+}
+
+/* After avoiding a head-on ship the own ship comes back onto its planned
+ * track (the default return), not only onto its heading: the heading return
+ * of the paper leaves it on a parallel track hundreds of metres off. */
+static void test_return_to_track(void)
+{
+    double v = fw_kn_to_ms(10), xte[2] = {0, 0}, lam[2] = {INFINITY, INFINITY};
+    for (int mode = 0; mode < 2; mode++) {
+        fw_kin_ship sh[1] = {{.start = {.id = "T1", .east = 0, .north = 3000, .course = FW_PI,
+                                        .speed = v, .length = 200, .breadth = 32}}};
+        fw_error err = {0};
+        fw_kinematic_def kd = fw_default_kinematic_def();
+        kd.ships = sh;
+        kd.n = 1;
+        fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
+                                       .policy = fw_default_policy_def()};
+        pd.policy.ret = mode == 0 ? FW_RETURN_TRACK : FW_RETURN_HEADING;
+        fw_world *w = NULL;
+        fw_vessel *own = NULL;
+        own_world(&kd, &pd, &w, &own, &err);
+        for (int k = 0; own && k < 2400; k++) {
+            const fw_own_state *x = fw_vessel_own_state(own);
+            const fw_target *tg;
+            const fw_assessment *as;
+            int m;
+            fw_vessel_view(own, &tg, &as, &m);
+            for (int i = 0; i < m; i++)
+                lam[mode] = fmin(lam[mode], fw_domain_lambda(&pd.helm.domain, x->east, x->north,
+                                                             x->psi, &tg[i]));
+            CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+        }
+        const fw_own_state *x = own ? fw_vessel_own_state(own) : NULL;
+        xte[mode] = x ? x->east : NAN; /* the track is the north-going line x = 0 */
+        if (x)
+            CHECK_MSG(fabs(fw_wrap_pi(x->psi)) < fw_deg_to_rad(2.0), "heading %.1f deg at the end",
+                      fw_rad_to_deg(x->psi));
+        fw_world_destroy(w);
+    }
+    CHECK_MSG(lam[0] >= 1.0 && lam[1] >= 1.0, "domain entered: %.2f, %.2f", lam[0], lam[1]);
+    CHECK_MSG(fabs(xte[0]) < 50.0, "track return ends %.0f m off the track", xte[0]);
+    CHECK_MSG(fabs(xte[1]) > 200.0, "heading return ends %.0f m off the track", xte[1]);
+    printf("  return after a head-on avoidance: track return %.1f m off the track at 40 min, "
+           "heading return %.0f m\n", xte[0], xte[1]);
+}
+
 /* The own ship returning to its course after avoiding a head-on target meets
  * a second ship that turns onto its return path at 300 s: it stops the return
  * the same step (a new threat is looked at in every mode), keeps the domain
@@ -291,23 +356,12 @@ static void test_threat_during_return(void)
     fw_kinematic_def kd = fw_default_kinematic_def();
     kd.ships = sh;
     kd.n = 2;
-    fw_world_def wd = fw_default_world_def();
     fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
                                    .policy = fw_default_policy_def()};
-    fw_own_state start = {.U = v};
-    fw_vessel_def vd = fw_default_vessel_def();
-    vd.ship = &c3;
-    vd.dynamics = FW_DYN_NOMOTO;
-    vd.start_state = &start;
-    vd.radius = INFINITY;
+    pd.policy.ret = FW_RETURN_HEADING; /* the geometry is the heading return's */
     fw_world *w = NULL;
     fw_vessel *own = NULL;
-    CHECK_MSG(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
-                  fw_world_create(&wd, &w, &err) == FW_OK &&
-                  fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK &&
-                  fw_world_add_vessel(w, &vd, &own, &err) == FW_OK &&
-                  fw_world_start(w, &err) == FW_OK,
-              "%s", err.msg);
+    own_world(&kd, &pd, &w, &own, &err);
     double lam = INFINITY, t_return = -1, t_stop = -1, t_back = -1;
     fw_policy_mode prev = FW_MODE_STANDBY;
     for (int k = 0; own && k < 1500; k++) {
@@ -497,6 +551,7 @@ int main(void)
     TEST_RUN(test_two_vessels_head_on);
     TEST_RUN(test_reactive_traffic);
     TEST_RUN(test_threat_during_return);
+    TEST_RUN(test_return_to_track);
     TEST_RUN(test_strait_traffic_monitors);
     TEST_RUN(test_network_and_targets);
     TEST_RUN(test_paper_case_without_sumo);

@@ -25,6 +25,10 @@ foreach(t cli_traffic_run cli_traffic_help cli_traffic_bad_network cli_traffic_b
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 60)
 endforeach()
 
+# Bad traffic input in a scenario: FILE:LINE: FIELD, exit 2, nothing run.
+fw_script_test(traffic_bad_inputs 0 "bad traffic input refused" traffic_bad_inputs.sh)
+set_tests_properties(traffic_bad_inputs PROPERTIES ENVIRONMENT "${fw_lsan}")
+
 # Recorded tracks as a traffic source (traffic/source_track.h), and a study's
 # worst encounters exported as scenarios that replay them (fairway worst).
 fw_test(test_track test_track.c)

@@ -8,7 +8,7 @@ fairway's frame: metres east, north.  Own ship: the C-3 at 12 kn, so it reaches
 the origin after 6 nm / 12 kn = 30 min; each target reaches the origin then too,
 so its speed is (its distance to the origin) / 30 min: 12 kn for targets 6 nm
 off, 0.7 x 12 = 8.4 kn for the overtaken ones 4.2 nm off (marked * in the
-table), 4.2 nm for (-2.97, -2.97) as well.  Targets: 200 x 32 m cargo ships.
+table).  Targets: 200 x 32 m cargo ships.
 
 Run: /usr/bin/python3 scenarios/imazu/generate.py  (writes next to itself).
 """
@@ -27,20 +27,30 @@ CASES = {
     5: [(6, 0, 180), (0, 6, 270)],
     6: [(-5.909, 1.042, 350), (-4.243, 4.243, 315)],
     7: [(-4.2, 0, 0), (-4.243, 4.243, 315)],
+    # 8: the reference table's (= case 5), as TUD_RL encodes Sawada et al.'s
+    # Table 4; NTNU colav-simulator has its crossing ship from port instead.
+    # The primary table could not be consulted here: the majority reading kept.
     8: [(6, 0, 180), (0, 6, 270)],
     9: [(-5.196, 3, 330), (0, 6, 270)],
     10: [(0, 6, 270), (-5.796, -1.553, 15)],
     11: [(0, -6, 90), (-5.196, 3, 330)],
-    12: [(-4.243, 4.243, 315), (-5.909, 1.042, 350)],
+    # 12: three ships with a head-on one, as the reference table now has it
+    # (TUD_RL's correction 6ba5824, May 2022; NTNU also has three with a
+    # head-on ship); it was a two-ship copy of case 6 with the ships swapped.
+    12: [(6, 0, 180), (-4.243, 4.243, 315), (-5.909, 1.042, 350)],
     13: [(6, 0, 180), (-5.909, -1.042, 10), (-4.243, -4.243, 45)],
     14: [(-5.909, 1.042, 350), (-4.243, 4.243, 315), (0, 6, 270)],
     15: [(-4.2, 0, 0), (-4.243, 4.243, 315), (0, 6, 270)],
-    16: [(-2.97, -2.97, 45), (0, -6, 90), (0, 6, 270)],
+    # 16: the 045 ship 6 nm out at full speed, as in both public encodings and
+    # the corrected reference table (it was slow, 0.7, from 4.2 nm: one
+    # third-party transcription's reading).
+    16: [(-4.243, -4.243, 45), (0, -6, 90), (0, 6, 270)],
     17: [(-4.2, 0, 0), (-5.909, -1.042, 10), (-4.243, 4.243, 315)],
     18: [(4.243, 4.243, 225), (-5.796, 1.553, 345), (-5.196, 3, 330)],
     19: [(-5.796, -1.553, 15), (-5.796, 1.553, 345), (4.243, 4.243, 225)],
     20: [(-4.2, 0, 0), (-5.796, 1.553, 345), (0, 6, 270)],
     21: [(-5.796, 1.553, 345), (-5.796, -1.553, 15), (0, 6, 270)],
+    # 22: repeats case 15 in every encoding and in the reference table: kept so.
     22: [(-4.2, 0, 0), (-4.243, 4.243, 315), (0, 6, 270)],
 }
 
@@ -75,7 +85,8 @@ def case_yaml(n, targets):
                    "speed_kn: %.3f, length_m: 200, breadth_m: 32}\n"
                    % (i, y * NM, x * NM, course, kn))
     out.append("avoidance:\n  domain_m: 300\n  fore_aft_ratio: 1\n  min_helm_deg: 10\n"
-               "  max_helm_deg: 35\n  horizon_s: 600\n  act_range_nm: 1\n")
+               "  max_helm_deg: 35\n  horizon_s: 600\n  act_range_nm: 1\n"
+               "  return: heading\n  domain_from: centre\n")
     out.append("run:\n  duration_s: 3000\n  step_s: 1\n  seed: 1\n")
     out.append("outputs:\n  targets_csv: true\n  record_every_s: 5\n")
     return "".join(out)

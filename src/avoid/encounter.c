@@ -56,6 +56,8 @@ static bool more_dangerous(const fw_assessment *p, int i, const fw_assessment *q
 {
     if (p->enters_domain != q->enters_domain)
         return p->enters_domain;
+    if (p->enters_domain && p->t_range != q->t_range)
+        return p->t_range < q->t_range;
     if (p->enters_domain && p->t_enter != q->t_enter)
         return p->t_enter < q->t_enter;
     if (p->dcpa != q->dcpa)
@@ -133,6 +135,19 @@ static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_s
     as->min_lambda = sqrt(fmax(0.0, best));
 }
 
+/* When |d + v t| first falls to R (0 if it is within R now or R is 0,
+ * INFINITY if it never does). */
+static double time_to_range(double dx, double dy, double vx, double vy, double R)
+{
+    double C = dx * dx + dy * dy - R * R;
+    if (R <= 0.0 || C <= 0.0)
+        return 0.0;
+    double A = vx * vx + vy * vy, B = 2.0 * (dx * vx + dy * vy), disc = B * B - 4.0 * A * C;
+    if (!(A > 0.0) || B >= 0.0 || disc < 0.0)
+        return INFINITY;
+    return (-B - sqrt(disc)) / (2.0 * A);
+}
+
 void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
                const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
                int *order)
@@ -147,6 +162,7 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
         as->bearing = fw_wrap_2pi(atan2(dx, dy));
         as->rel_bearing = fw_wrap_2pi(as->bearing - own->psi);
         fw_cpa(dx, dy, vx, vy, &as->tcpa, &as->dcpa);
+        as->t_range = time_to_range(dx, dy, vx, vy, cdef->rank_range_m);
         as->situation = fw_classify(cdef, own, &t[i]);
         as->rank = 0;
         if (t[i].pred) {

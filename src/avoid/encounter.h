@@ -39,6 +39,11 @@ typedef struct fw_colregs_def {
     /* overtaking: "more than 22.5 deg abaft the beam" = relative bearing
      * strictly between this and 360 minus this */
     double overtake_sector_deg;      /* 112.5 */
+    /* danger ranking (the paper, section 3.5): of two targets entering the
+     * domain, the one that comes within this range first is the more
+     * dangerous; m, 0 = off (then earliest domain entry first).  The policy
+     * sets it to its action distance. */
+    double rank_range_m;
 } fw_colregs_def;
 
 fw_colregs_def fw_default_colregs_def(void);
@@ -52,6 +57,8 @@ typedef struct fw_assessment {
     bool enters_domain;  /* within the horizon, both keeping course and speed */
     double t_enter;      /* s, 0 if inside now, INFINITY if never */
     double min_lambda;   /* smallest normalised domain radius (< 1 = inside) */
+    double t_range;      /* s, when the range first falls to rank_range_m at constant
+                            velocities (0 if within it now or the rule is off) */
     int rank;            /* 0 = most dangerous */
 } fw_assessment;
 
@@ -60,8 +67,11 @@ fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
 
 /* Fills out[0..n-1].  If order is not NULL (room for 2 n ints: the second
  * half is scratch) it gets the target indices most dangerous first and each
- * out[i].rank is set: targets entering the domain first, earliest entry first,
- * then smallest DCPA, then smallest range. */
+ * out[i].rank is set: targets entering the domain first; among those, the one
+ * reaching rank_range_m first (the paper's rule: in its case 5 the crossing
+ * ship comes within 1 nm at 107 s, before the head-on ship at 124 s, and is
+ * "more dangerous"), then the earliest entry; then smallest DCPA, then
+ * smallest range. */
 void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
                const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
                int *order);

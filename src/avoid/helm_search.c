@@ -104,7 +104,9 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
 void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
 {
     c->own = *own;
-    c->symmetric = own->r == 0.0 && own->rdot == 0.0 && own->delta == 0.0 && own->beta == 0.0;
+    /* a port knowledge base of its own breaks the mirror image */
+    c->symmetric = own->r == 0.0 && own->rdot == 0.0 && own->delta == 0.0 && own->beta == 0.0 &&
+                   !c->ship->nomoto_port.present;
     for (int i = 0; i < 2 * c->nh; i++)
         c->have[i] = false;
     c->have_keep = false;

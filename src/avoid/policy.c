@@ -3,7 +3,9 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "core/names.h"
 #include "core/units.h"
 
 fw_policy_def fw_default_policy_def(void)
@@ -23,7 +25,40 @@ fw_policy_def fw_default_policy_def(void)
                            .ap_kd = 20.0,
                            .ap_max_helm = fw_deg_to_rad(20.0),
                            .ap_done_heading = fw_deg_to_rad(1.0),
-                           .ap_done_rate = fw_deg_to_rad(0.005)};
+                           .ap_done_rate = fw_deg_to_rad(0.005),
+                           .ret = FW_RETURN_TRACK,
+                           .los_lookahead = FW_NMILE,
+                           .los_max_angle = fw_deg_to_rad(30.0),
+                           .track_done = 50.0};
+}
+
+static const char *const kReturnNames[] = {"track", "heading"}; /* fw_return_kind order */
+
+const char *fw_return_name(fw_return_kind k) { return fw_name_of(kReturnNames, 2, (int)k); }
+
+fw_status fw_return_parse(const char *text, fw_return_kind *out)
+{
+    int k = fw_name_find(kReturnNames, 2, text);
+    *out = k < 0 ? *out : (fw_return_kind)k;
+    return k < 0 ? FW_EINPUT : FW_OK;
+}
+
+double fw_policy_cross_track(const fw_policy *p, const fw_own_state *own)
+{
+    if (!p->track_set || p->def.ret != FW_RETURN_TRACK)
+        return 0.0;
+    double de = own->east - p->track_e, dn = own->north - p->track_n;
+    return de * cos(p->psi_ref) - dn * sin(p->psi_ref);
+}
+
+/* The heading to steer home: the original course, less the line-of-sight
+ * correction back onto the track (track return). */
+static double home(const fw_policy *p, const fw_own_state *own)
+{
+    double xte = fw_policy_cross_track(p, own);
+    double cut = atan(xte / p->def.los_lookahead);
+    cut = fmax(-p->def.los_max_angle, fmin(p->def.los_max_angle, cut));
+    return fw_wrap_2pi(p->psi_ref - cut);
 }
 
 const char *fw_policy_mode_name(fw_policy_mode m)
@@ -51,6 +86,8 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->t_mode = 0.0;
     p->t_blocked = -1.0;
     p->course_set = false;
+    p->track_set = false;
+    p->track_e = p->track_n = 0.0;
 }
 
 static void set_mode(fw_policy *p, fw_policy_mode m, double t)
@@ -74,10 +111,25 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
     *least = 0.0;
     /* in the middle of its own manoeuvre the own ship is no stand-on ship:
      * its turn may have put the target it gives way to on its port side */
-    bool give_way = p->mode == FW_MODE_STEADY;
+    bool by_rule = false;
     for (int i = 0; i < n; i++)
         if (as[i].enters_domain && gives_way(as[i].situation))
-            give_way = true;
+            by_rule = true;
+    bool give_way = by_rule || p->mode == FW_MODE_STEADY;
+    /* The reason names the ground, so that it agrees with the situation the
+     * log shows beside it: a give-way ship (rules 14-16), or one still in its
+     * own manoeuvre whose target now lies to port ("crossing stand-on"). */
+    static const char *const rule_why[3] = {
+        "give-way: range within the action distance",
+        "give-way: waiting longer would need more than the minimum helm",
+        "give-way: minimum helm still enough later, waiting"};
+    static const char *const own_why[3] = {
+        "own manoeuvre under way (not a stand-on ship): range within the action distance",
+        "own manoeuvre under way (not a stand-on ship): waiting longer would need more than "
+        "the minimum helm",
+        "own manoeuvre under way (not a stand-on ship): minimum helm still enough later, "
+        "waiting"};
+    const char *const *gw_why = by_rule ? rule_why : own_why;
     const fw_assessment *a = &as[primary];
     if (!give_way) {
         bool last = false;
@@ -113,7 +165,7 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
         return FW_OK;
     }
     if (a->range <= p->def.act_range) {
-        *act = true, *why = "give-way: range within the action distance";
+        *act = true, *why = gw_why[0];
         return FW_OK;
     }
     if (p->def.act_lookahead > 0.0) {
@@ -123,11 +175,11 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
         if (st)
             return st;
         if (!later) {
-            *act = true, *why = "give-way: waiting longer would need more than the minimum helm";
+            *act = true, *why = gw_why[1];
             return FW_OK;
         }
     }
-    *why = "give-way: minimum helm still enough later, waiting";
+    *why = gw_why[2];
     return FW_OK;
 }
 
@@ -152,7 +204,7 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
     d->acted = true;
     p->t_blocked = -1.0;
     p->psi_act = own->psi;
-    if (p->mode == FW_MODE_STANDBY && !p->course_set)
+    if (p->mode == FW_MODE_STANDBY && !p->course_set && p->def.ret == FW_RETURN_HEADING)
         p->psi_ref = own->psi;
     p->side = d->search.side;
     p->helm = copysign(fmax(fabs(d->search.helm), least), d->search.helm);
@@ -183,7 +235,7 @@ static fw_status check_return(fw_policy *p, const fw_policy_input *in, fw_decisi
                               double *ret_out, fw_error *err)
 {
     double ret, hold;
-    fw_status st = steer(p, in->ctx, in->targets, in->n, p->psi_ref, 1, &ret, err);
+    fw_status st = steer(p, in->ctx, in->targets, in->n, home(p, in->own), 1, &ret, err);
     *ret_out = ret;
     if (st || ret >= 1.0)
         return st;
@@ -202,7 +254,7 @@ static fw_status check_return(fw_policy *p, const fw_policy_input *in, fw_decisi
 static fw_status step_standby(fw_policy *p, const fw_policy_input *in, fw_decision *d,
                               fw_error *err)
 {
-    p->helm = p->course_set ? autopilot(p, in->own, p->psi_ref) : 0.0;
+    p->helm = p->course_set ? autopilot(p, in->own, home(p, in->own)) : 0.0;
     if (!d->search.threat) {
         d->reason = p->course_set ? "no target enters the domain: keeping the course"
                                   : "no target enters the domain on the present course";
@@ -299,11 +351,12 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
      * over the horizon.  The margin: a return that only just clears
      * would be abandoned at the next step's slightly different
      * prediction */
-    if ((st = steer(p, in->ctx, in->targets, in->n, p->psi_ref, 1, &ret, err)))
+    if ((st = steer(p, in->ctx, in->targets, in->n, home(p, own), 1, &ret, err)))
         return st;
     if (ret >= p->def.steady_margin) {
-        d->reason = "the return is clear: back to the course";
-        p->helm = autopilot(p, own, p->psi_ref);
+        d->reason = p->def.ret == FW_RETURN_TRACK ? "the return is clear: back to the track"
+                                                  : "the return is clear: back to the course";
+        p->helm = autopilot(p, own, home(p, own));
         start_return(p, in->t);
         return FW_OK;
     }
@@ -327,11 +380,14 @@ static fw_status threat_on_return(fw_policy *p, const fw_policy_input *in, fw_de
 
 static void step_autopilot(fw_policy *p, const fw_policy_input *in, fw_decision *d)
 {
-    d->reason = "returning: heading autopilot";
-    p->helm = autopilot(p, in->own, p->psi_ref);
-    if (fabs(fw_wrap_pi(in->own->psi - p->psi_ref)) < p->def.ap_done_heading &&
-        fabs(in->own->r) < p->def.ap_done_rate) {
-        d->reason = "back on the original course";
+    bool track = p->def.ret == FW_RETURN_TRACK;
+    double psi = home(p, in->own);
+    d->reason = track ? "returning: to the track" : "returning: heading autopilot";
+    p->helm = autopilot(p, in->own, psi);
+    if (fabs(fw_wrap_pi(in->own->psi - psi)) < p->def.ap_done_heading &&
+        fabs(in->own->r) < p->def.ap_done_rate &&
+        (!track || fabs(fw_policy_cross_track(p, in->own)) < p->def.track_done)) {
+        d->reason = track ? "back on the track" : "back on the original course";
         p->t_blocked = -1.0;
         p->side = FW_SIDE_NONE;
         p->course_set = true;
@@ -343,8 +399,18 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
                          fw_error *err)
 {
     const fw_helm_def *hdef = in->helm;
-    fw_assess(&hdef->colregs, &hdef->domain, hdef->track.horizon, in->own, in->targets, in->n,
-              in->as, in->order);
+    if (!p->track_set) {
+        /* the planned track: where the ship is and heads at the first step */
+        p->track_set = true;
+        p->track_e = in->own->east;
+        p->track_n = in->own->north;
+        p->psi_ref = in->own->psi;
+    }
+    fw_colregs_def colregs = hdef->colregs;
+    if (colregs.rank_range_m <= 0.0)
+        colregs.rank_range_m = p->def.act_range; /* the paper's ranking rule (encounter.h) */
+    fw_assess(&colregs, &hdef->domain, hdef->track.horizon, in->own, in->targets, in->n, in->as,
+              in->order);
     fw_helm_begin(in->ctx, in->own);
     int allowed = fw_permitted_sides(hdef, in->as, in->n);
     fw_status st = fw_helm_search(in->ctx, in->targets, in->n, allowed, &d->search, err);

@@ -24,6 +24,13 @@
  *             orders are the opposite helm, the paper's return), then STANDBY
  *             (which from then on keeps that course with the same PD: without
  *             disturbances its helm is near zero, the paper's "amidships").
+ *             With ret = FW_RETURN_TRACK (the default) the heading steered
+ *             is that of the planned track (the line through the position
+ *             and heading of the first step) less a line-of-sight correction,
+ *             atan(cross-track error / los_lookahead) up to los_max_angle, so
+ *             the ship comes back onto its track, not only onto a parallel
+ *             of it; the return ends once within track_done of the track and
+ *             on the heading.  FW_RETURN_HEADING is the paper's return.
  *             If the rest of the return stops being safe and stopping it would
  *             do better, back to STEADY; if stopping would do no better, a
  *             target the return lets in is acted on by the STANDBY rules
@@ -58,6 +65,12 @@ typedef enum fw_policy_mode {
 
 const char *fw_policy_mode_name(fw_policy_mode m);
 
+typedef enum fw_return_kind { FW_RETURN_TRACK, FW_RETURN_HEADING } fw_return_kind;
+
+/* "track", "heading"; parse: FW_EINPUT for anything else. */
+const char *fw_return_name(fw_return_kind k);
+fw_status fw_return_parse(const char *text, fw_return_kind *out);
+
 typedef struct fw_policy_def {
     double act_range;          /* m, 1852 (1 nm) */
     double act_lookahead;      /* s, 10; <= 0 disables the minimum-helm trigger */
@@ -85,6 +98,10 @@ typedef struct fw_policy_def {
     double ap_done_rate;       /* rad/s, ... and turning slower than 0.005 deg/s (the
                                   rudder then goes amidships: a faster residual
                                   turn would drift r (T1 + T2) off course) */
+    fw_return_kind ret;        /* back to the planned track (default) or its heading */
+    double los_lookahead;      /* m, 1852: the track return's line-of-sight distance */
+    double los_max_angle;      /* rad, 30 deg: the largest intercept angle */
+    double track_done;         /* m, 50: the return ends this close to the track */
 } fw_policy_def;
 
 fw_policy_def fw_default_policy_def(void);
@@ -106,7 +123,13 @@ typedef struct fw_policy {
     double t_mode;    /* s, when the present mode began */
     double t_blocked; /* s, since when the return has been blocked (< 0: it is not) */
     bool course_set;  /* returned once: STANDBY keeps psi_ref by the autopilot */
+    bool track_set;   /* the planned track: through (track_e, track_n) on psi_ref */
+    double track_e, track_n; /* m */
 } fw_policy;
+
+/* m, the own ship's distance from the planned track, + to starboard of it
+ * (0 before the first step or with the heading return). */
+double fw_policy_cross_track(const fw_policy *p, const fw_own_state *own);
 
 void fw_policy_init(fw_policy *p, const fw_policy_def *def);
 

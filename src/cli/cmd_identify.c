@@ -23,12 +23,14 @@ static void help(void)
            "Nomoto's K, T1, T2, T3 to each history by Levenberg-Marquardt against the\n"
            "rudder's real ramp at the rudder rate, prints each fit's RMS error relative\n"
            "to the final rate, fits the regression forms of the ship file's knowledge\n"
-           "base (default: the paper's equations 10-13) by linear least squares over\n"
-           "all points (both sides pooled), compares it with the knowledge base in the\n"
+           "base (default: the paper's equations 10-13) by linear least squares, each\n"
+           "side apart with --sides both (a single screw turns faster to one side at\n"
+           "small helm: nomoto: for starboard, nomoto_port: for port), compares it with\n"
+           "the knowledge base in the\n"
            "ship file, fits the drift angle and speed loss in turns that the track\n"
            "prediction adds to Nomoto's model (drift and speed_loss per unit r' = r L / U,\n"
            "each with a first-order lag, from the same tests), and writes a copy of the\n"
-           "ship file with the new nomoto: block\n"
+           "ship file with the new nomoto: block(s)\n"
            "(default FILE: NAME-identified.yaml in the current directory; an existing\n"
            "FILE is replaced only with --force).  The file is written complete or not at\n"
            "all.  Speeds are 1 to 40 kn.\n");
@@ -142,8 +144,10 @@ static fw_status run_grid(const fw_ship *ship, const ident_opts *o, ident_grid *
 }
 
 /* Regression in the knowledge base's forms (the paper's when the file has
- * none), then drift and speed loss in turns (track.h) from the same tests. */
-static fw_status fit_kb(const fw_ship *ship, const ident_grid *g, fw_nomoto_kb *kb, fw_error *err)
+ * none), then drift and speed loss in turns (track.h) from the same tests:
+ * over the points of one side (sign +1 starboard, -1 port) or all (0). */
+static fw_status fit_kb(const fw_ship *ship, const ident_grid *g, int sign, fw_nomoto_kb *kb,
+                        fw_error *err)
 {
     *kb = ship->nomoto;
     if (!kb->present) {
@@ -153,28 +157,41 @@ static fw_status fit_kb(const fw_ship *ship, const ident_grid *g, fw_nomoto_kb *
             return st;
         *kb = c3.nomoto;
     }
-    fw_nomoto_index *ixs[4] = {&kb->K, &kb->T1, &kb->T2, &kb->T3};
-    for (int x = 0; x < 4; x++) {
-        fw_status st = fw_ident_regress(ixs[x], g->U, g->D, g->V[x], g->m, err);
-        if (st)
-            return st;
+    ident_grid h = {.n = g->n};
+    if (grid_alloc(&h, g->m))
+        return fw_fail(err, FW_ERUN, "out of memory");
+    for (int i = 0; i < g->m; i++) {
+        if (sign * g->HM[i] < 0.0)
+            continue;
+        int m = h.m++;
+        h.U[m] = g->U[i], h.D[m] = g->D[i], h.UM[m] = g->UM[i], h.HM[m] = g->HM[i];
+        for (int x = 0; x < 4; x++)
+            h.V[x][m] = g->V[x][i];
     }
+    fw_nomoto_index *ixs[4] = {&kb->K, &kb->T1, &kb->T2, &kb->T3};
+    fw_status st = FW_OK;
+    for (int x = 0; x < 4 && !st; x++)
+        st = fw_ident_regress(ixs[x], h.U, h.D, h.V[x], h.m, err);
     double rms_b, rms_u;
-    fw_status st = fw_ident_slip(ship, g->UM, g->HM, g->m, 1.0, g->n, kb, &rms_b, &rms_u, err);
     if (!st)
-        printf("drift %.4f rad per unit r', lag %.1f s (RMS %.2f deg); speed loss %.4f per unit "
-               "|r'|, lag %.1f s (RMS %.3f kn)\n",
-               kb->drift, kb->drift_lag_s, fw_rad_to_deg(rms_b), kb->speed_loss,
-               kb->speed_lag_s, fw_ms_to_kn(rms_u));
+        st = fw_ident_slip(ship, h.UM, h.HM, h.m, 1.0, h.n, kb, &rms_b, &rms_u, err);
+    if (!st)
+        printf("%s: drift %.4f rad per unit r', lag %.1f s (RMS %.2f deg); speed loss %.4f per "
+               "unit |r'|, lag %.1f s (RMS %.3f kn)\n",
+               sign > 0 ? "starboard" : sign < 0 ? "port" : "both sides", kb->drift,
+               kb->drift_lag_s, fw_rad_to_deg(rms_b), kb->speed_loss, kb->speed_lag_s,
+               fw_ms_to_kn(rms_u));
+    free(h.mem);
     return st;
 }
 
-static void print_comparison(const fw_ship *ship, const ident_opts *o, const fw_nomoto_kb *kb)
+static void print_comparison(const fw_ship *ship, const ident_opts *o, const fw_nomoto_kb *kb,
+                             const fw_nomoto_kb *old, const char *key)
 {
-    const fw_nomoto_kb *old = &ship->nomoto;
     if (!old->present)
         return;
-    printf("# regression vs the ship file's knowledge base (%s) on the grid\n", ship->file);
+    printf("# %s: regression vs the ship file's knowledge base (%s) on the grid\n", key,
+           ship->file);
     printf("%8s %6s %18s %18s %18s %18s\n", "U_kn", "d", "K d new/old", "T1 new/old",
            "T2 new/old", "T3 new/old");
     for (int i = 0; i < o->ns; i++)
@@ -189,7 +206,8 @@ static void print_comparison(const fw_ship *ship, const ident_opts *o, const fw_
 }
 
 /* The nomoto: block written into the copy of the ship file. */
-static char *kb_block(const ident_opts *o, const ident_grid *g, const fw_nomoto_kb *kb)
+static char *kb_block(const ident_opts *o, const ident_grid *g, const fw_nomoto_kb *kb,
+                      const char *key, const char *sides)
 {
     double smin = o->speeds[0], smax = o->speeds[0], dmin = o->rudders[0], dmax = o->rudders[0];
     for (int i = 0; i < o->ns; i++)
@@ -204,8 +222,8 @@ static char *kb_block(const ident_opts *o, const ident_grid *g, const fw_nomoto_
     fprintf(f, "# Nomoto knowledge base identified by `fairway identify` from MMG turning\n"
                "# tests of this ship (%d points, %s), worst fit RMS %.2f%% of the final rate.\n"
                "# U in knots, d = |rudder| in deg, K in 1/s (K d in deg/s), T1, T2, T3 in s.\n",
-            g->m, o->sides, 100 * g->worst);
-    fprintf(f, "nomoto:\n  source: fairway identify (MMG turning tests)\n");
+            g->m, sides, 100 * g->worst);
+    fprintf(f, "%s:\n  source: fairway identify (MMG turning tests)\n", key);
     fprintf(f, "  speed_min_kn: %g\n  speed_max_kn: %g\n  rudder_min_deg: %g\n  rudder_max_deg: %g\n",
             smin, smax, dmin, dmax);
     write_index(f, "K", &kb->K);
@@ -232,15 +250,46 @@ static fw_status check_ship(const char *tmp_path, void *ctx, fw_error *err)
     return fw_ship_load(tmp_path, &check, err);
 }
 
-/* The ship file with its nomoto: block replaced, written whole to out_path. */
+/* The ship file with its nomoto: block (and nomoto_port: when given)
+ * replaced, written whole to out_path. */
 static fw_status write_copy(const fw_ship *ship, const char *out_path, const char *block,
-                            fw_error *err)
+                            const char *port_block, fw_error *err)
 {
     fw_yaml_edit *ed = NULL;
     fw_status st = fw_yaml_edit_open(ship->file, &ed, err);
-    if (!st && !(st = fw_yaml_edit_block(ed, "nomoto", block, err)))
+    if (!st && !(st = fw_yaml_edit_block(ed, "nomoto", block, err)) &&
+        !(port_block && (st = fw_yaml_edit_block(ed, "nomoto_port", port_block, err))))
         st = fw_yaml_edit_save(ed, out_path, check_ship, NULL, err);
     fw_yaml_edit_free(ed);
+    return st;
+}
+
+/* Both sides: one block each (ship.h); one side: nomoto: from it, and a
+ * nomoto_port: block the file already has gets the same, not left stale. */
+static fw_status identify_write(const fw_ship *ship, const ident_opts *o, const ident_grid *g,
+                                fw_error *err)
+{
+    bool both = strcmp(o->sides, "both") == 0;
+    fw_nomoto_kb kb, kbp;
+    fw_status st = fit_kb(ship, g, both ? 1 : 0, &kb, err);
+    if (!st && both)
+        st = fit_kb(ship, g, -1, &kbp, err);
+    if (st)
+        return st;
+    if (!both)
+        kbp = kb;
+    print_comparison(ship, o, &kb, &ship->nomoto, "nomoto");
+    if (both)
+        print_comparison(ship, o, &kbp, fw_ship_kb(ship, -1.0), "nomoto_port");
+    char *block = kb_block(o, g, &kb, "nomoto", both ? "starboard tests" : o->sides);
+    char *port = both || ship->nomoto_port.present
+                     ? kb_block(o, g, &kbp, "nomoto_port", both ? "port tests" : o->sides)
+                     : NULL;
+    st = !block || (!port && (both || ship->nomoto_port.present))
+             ? fw_fail(err, FW_ERUN, "out of memory")
+             : write_copy(ship, o->out_path, block, port, err);
+    free(block);
+    free(port);
     return st;
 }
 
@@ -269,18 +318,11 @@ int fw_cmd_identify(int argc, char **argv)
     }
     /* before the computation: a path that cannot be written fails now */
     ident_grid g = {0};
-    fw_nomoto_kb kb;
-    char *block = NULL;
     fw_status st = fw_check_out_file("--out", o.out_path, o.force, &err);
-    if (!st && !(st = run_grid(&ship, &o, &g, &err)) && !(st = fit_kb(&ship, &g, &kb, &err))) {
-        print_comparison(&ship, &o, &kb);
-        block = kb_block(&o, &g, &kb);
-        st = block ? write_copy(&ship, o.out_path, block, &err)
-                   : fw_fail(&err, FW_ERUN, "out of memory");
-    }
+    if (!st && !(st = run_grid(&ship, &o, &g, &err)))
+        st = identify_write(&ship, &o, &g, &err);
     if (!st)
         printf("wrote %s\n", o.out_path);
-    free(block);
     free(g.mem);
     free(def_out);
     return st ? fw_report(&err) : 0;

@@ -10,6 +10,7 @@
 #include "core/units.h"
 #include "dynamics/calibrate.h"
 #include "dynamics/manoeuvre.h"
+#include "nomoto/track.h"
 
 static void help(void)
 {
@@ -328,6 +329,72 @@ static fw_status report_zigzag(const fw_ship *ship, const opts *o, double speed,
     return FW_OK;
 }
 
+/* Advance, transfer and tactical diameter of a predicted (Nomoto) track,
+ * measured as fw_turning_run measures the MMG ship's; false when it does not
+ * turn 180 deg within its horizon. */
+static bool track_measures(const fw_track *tr, double side, double *adv, double *tra,
+                           double *tac)
+{
+    bool got90 = false;
+    for (int k = 1; k < tr->n; k++) {
+        double a0 = side * tr->psi[k - 1], a1 = side * tr->psi[k];
+        double f90 = (FW_PI / 2 - a0) / (a1 - a0), f180 = (FW_PI - a0) / (a1 - a0);
+        if (!got90 && a1 >= FW_PI / 2) {
+            *adv = tr->north[k - 1] + f90 * (tr->north[k] - tr->north[k - 1]);
+            *tra = side * (tr->east[k - 1] + f90 * (tr->east[k] - tr->east[k - 1]));
+            got90 = true;
+        }
+        if (a1 >= FW_PI) {
+            *tac = side * (tr->east[k - 1] + f180 * (tr->east[k] - tr->east[k - 1]));
+            return got90;
+        }
+    }
+    return false;
+}
+
+/* The paper's Figures 10-15 trends: the knowledge-base rows of the trial file
+ * (equation 10's steady rates) with the MMG ship's advance, transfer and
+ * tactical diameter beside those of equations 9-13 themselves (the knowledge
+ * base's own Nomoto track, which keeps its speed and has no drift, as the
+ * paper's model). */
+static fw_status report_kb_rows(const fw_ship *ship, const fw_trial *trial, fw_error *err)
+{
+    fw_ship kb;
+    fw_status st = trial->kb_ship[0] ? fw_ship_load(trial->kb_ship, &kb, err) : FW_OK;
+    if (st || !trial->kb_ship[0])
+        return st;
+    fw_track_def td = fw_default_track_def();
+    td.horizon = 3600.0;
+    td.max_turn = 0.0;
+    fw_track tr = {0};
+    if ((st = fw_track_alloc(&tr, fw_track_samples(&td), err)))
+        return st;
+    printf("against %s (%s, eqs 9-13 as a track: constant speed, no drift)\n", trial->kb_source,
+           kb.file);
+    printf("  %6s %5s %19s %19s %19s %21s\n", "kn", "deg", "advance m", "transfer m",
+           "tactical m", "steady rate deg/s");
+    for (int i = 0; i < trial->nturns && !st; i++) {
+        const fw_trial_turn *t = &trial->turns[i];
+        if (!t->from_kb)
+            continue;
+        fw_turning_def d = fw_trial_turning_def(t);
+        fw_turning_result r;
+        fw_own_state own = {.U = t->speed};
+        double a = NAN, b = NAN, c = NAN;
+        if ((st = fw_turning_run(ship, &d, &r, NULL, err)) ||
+            (st = fw_track_predict(&kb, &td, &own, t->rudder, &tr, err)))
+            break;
+        track_measures(&tr, t->rudder > 0 ? 1.0 : -1.0, &a, &b, &c);
+        printf("  %6.2f %5.0f %9.0f/%-9.0f %9.0f/%-9.0f %9.0f/%-9.0f %7.3f/%.3f (%+5.1f%%)\n",
+               fw_ms_to_kn(t->speed), fw_rad_to_deg(fabs(t->rudder)), r.advance, a, r.transfer,
+               b, r.tactical_diameter, c, fw_rad_to_deg(r.steady_rate),
+               fw_rad_to_deg(t->steady_rate), 100 * (r.steady_rate / t->steady_rate - 1));
+    }
+    printf("  (fairway's MMG ship / equations 9-13)\n\n");
+    fw_track_free(&tr);
+    return st;
+}
+
 static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
 {
     char trial_path[1100];
@@ -350,9 +417,14 @@ static int run_report(const fw_ship *ship, const opts *o, fw_error *err)
         printf("Manoeuvring report: %s (L = %.1f m), trial data %s\n\n", ship->name, ship->L,
                trial_path);
     }
-    for (int i = 0; i < trial.nturns; i++)
-        if (report_turn(ship, o, &trial.turns[i], i == 0, &all_ok, err))
+    /* the measured rows as sea-trial turns (the knowledge-base rows are not
+     * IMO tests: a 5 deg turn is no 35 deg turning circle) */
+    for (int i = 0, k = 0; i < trial.nturns; i++)
+        if (!trial.turns[i].from_kb &&
+            report_turn(ship, o, &trial.turns[i], k++ == 0, &all_ok, err))
             return fw_report(err);
+    if (!o->json && report_kb_rows(ship, &trial, err))
+        return fw_report(err);
     if (o->json)
         printf("], \"zigzags\": [");
     const double angles[2] = {10.0, 20.0};

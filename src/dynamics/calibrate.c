@@ -1,162 +1,31 @@
+/* `fairway calibrate`: the fit and the ship file it writes. */
 #include "core/files.h"
 #include "dynamics/calibrate.h"
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/units.h"
+#include "nomoto/nomoto.h"
 #include "yaml/yaml_edit.h"
 #include "yaml/yaml_tree.h"
-
-
-/* The measured (or simulated) values of a turning row: advance, transfer,
- * tactical diameter (m) and the steady rate (read in deg/s, kept in rad/s);
- * 0 where not given. */
-static fw_status turn_values(const yt_doc *doc, const yt_node *m, const char *path,
-                             double *advance, double *transfer, double *tactical,
-                             double *steady_rate, fw_error *err)
-{
-    double rate = 0.0;
-    fw_status st;
-    if ((st = yt_opt_number(doc, m, path, "advance_m", 1.0, 1e5, advance, err)) ||
-        (st = yt_opt_number(doc, m, path, "transfer_m", 1.0, 1e5, transfer, err)) ||
-        (st = yt_opt_number(doc, m, path, "tactical_diameter_m", 1.0, 1e5, tactical, err)) ||
-        (st = yt_opt_number(doc, m, path, "steady_rate_degps", 0.01, 20.0, &rate, err)))
-        return st;
-    *steady_rate = fw_deg_to_rad(rate);
-    return FW_OK;
-}
-
-static fw_status load_turn(const yt_doc *doc, const yt_node *m, const char *path,
-                           fw_trial_turn *t, fw_error *err)
-{
-    static const char *const allowed[] = {"side", "speed_kn", "rudder_deg", "advance_m",
-                                          "transfer_m", "tactical_diameter_m",
-                                          "steady_rate_degps", "simulator", NULL};
-    fw_status st = yt_check_keys(doc, m, path, allowed, err);
-    if (st)
-        return st;
-    const yt_node *sim;
-    char simpath[96];
-    yt_path(simpath, sizeof simpath, path, "simulator");
-    if ((st = yt_opt_map(doc, m, path, "simulator", &sim, err)))
-        return st;
-    if (sim) {
-        static const char *const sim_allowed[] = {"advance_m", "transfer_m",
-                                                  "tactical_diameter_m", "steady_rate_degps",
-                                                  NULL};
-        if ((st = yt_check_keys(doc, sim, simpath, sim_allowed, err)) ||
-            (st = turn_values(doc, sim, simpath, &t->sim_advance, &t->sim_transfer,
-                              &t->sim_tactical_diameter, &t->sim_steady_rate, err)))
-            return st;
-    }
-    char side[32];
-    double kn, deg;
-    if ((st = yt_req_string(doc, m, path, "side", side, sizeof side, err)) ||
-        (st = yt_req_number(doc, m, path, "speed_kn", 0.5, 40.0, &kn, err)) ||
-        (st = yt_req_number(doc, m, path, "rudder_deg", 1.0, 45.0, &deg, err)) ||
-        (st = turn_values(doc, m, path, &t->advance, &t->transfer, &t->tactical_diameter,
-                          &t->steady_rate, err)))
-        return st;
-    double sign;
-    if (strcmp(side, "starboard") == 0)
-        sign = 1.0;
-    else if (strcmp(side, "port") == 0)
-        sign = -1.0;
-    else {
-        char field[128];
-        return fw_fail_at(err, doc->file, yt_key_line(m, "side"),
-                          yt_path(field, sizeof field, path, "side"),
-                          "'%s' is not starboard or port", side);
-    }
-    t->speed = fw_kn_to_ms(kn);
-    t->rudder = sign * fw_deg_to_rad(deg);
-    if (t->advance == 0 && t->transfer == 0 && t->tactical_diameter == 0 && t->steady_rate == 0)
-        return fw_fail_at(err, doc->file, m->line, path, "no measured value in this row");
-    return FW_OK;
-}
-
-fw_status fw_trial_load(const char *path, fw_trial *trial, fw_error *err)
-{
-    memset(trial, 0, sizeof *trial);
-    if (strlen(path) >= sizeof trial->file)
-        return fw_fail(err, FW_EINPUT, "trial file name too long (over %zu characters): %.60s...",
-                       sizeof trial->file - 1, path);
-    memcpy(trial->file, path, strlen(path) + 1);
-    yt_doc *doc;
-    fw_status st = yt_load_file(path, &doc, err);
-    if (st)
-        return st;
-    const yt_node *root = doc->root, *turns, *tune;
-    static const char *const allowed[] = {"ship", "source", "tune", "max_factor", "turns", NULL};
-    trial->max_factor = 4.0;
-    if ((st = yt_check_keys(doc, root, "", allowed, err)) ||
-        (st = yt_req_string(doc, root, "", "ship", trial->ship, sizeof trial->ship, err)) ||
-        (st = yt_opt_string(doc, root, "", "source", trial->source, sizeof trial->source, err)) ||
-        (st = yt_opt_number(doc, root, "", "max_factor", 1.01, 100.0, &trial->max_factor, err)) ||
-        (st = yt_req_seq(doc, root, "", "tune", &tune, err)) ||
-        (st = yt_req_seq(doc, root, "", "turns", &turns, err)))
-        goto out;
-    if (turns->n < 1 || turns->n > FW_TRIAL_MAX_TURNS) {
-        st = fw_fail_at(err, doc->file, turns->line, "turns", "needs 1 to %d rows",
-                        FW_TRIAL_MAX_TURNS);
-        goto out;
-    }
-    fw_ship probe;
-    memset(&probe, 0, sizeof probe);
-    if (tune->n < 1 || tune->n > FW_LSQ_MAX_P) {
-        st = fw_fail_at(err, doc->file, tune->line, "tune", "needs 1 to %d names", FW_LSQ_MAX_P);
-        goto out;
-    }
-    int measured = 0;
-    for (size_t i = 0; i < turns->n; i++) {
-        char field[64];
-        snprintf(field, sizeof field, "turns[%zu]", i);
-        if (turns->items[i]->kind != YT_MAP) {
-            st = fw_fail_at(err, doc->file, turns->items[i]->line, field, "expected a mapping");
-            goto out;
-        }
-        fw_trial_turn *t = &trial->turns[trial->nturns++];
-        if ((st = load_turn(doc, turns->items[i], field, t, err)))
-            goto out;
-        measured += (t->advance > 0) + (t->transfer > 0) + (t->tactical_diameter > 0) +
-                    (t->steady_rate > 0);
-    }
-    for (size_t i = 0; i < tune->n; i++) {
-        const yt_node *n = tune->items[i];
-        char field[64];
-        snprintf(field, sizeof field, "tune[%zu]", i);
-        if (n->kind != YT_SCALAR || !fw_ship_field(&probe, n->str, NULL, NULL)) {
-            st = fw_fail_at(err, doc->file, n->line, field, "'%s' is not a ship-file field",
-                            n->kind == YT_SCALAR ? n->str : "?");
-            goto out;
-        }
-        snprintf(trial->tune[trial->ntune++], sizeof trial->tune[0], "%s", n->str);
-    }
-    if (trial->ntune > measured) {
-        st = fw_fail_at(err, doc->file, tune->line, "tune",
-                        "%d coefficients cannot be fitted to %d measured values", trial->ntune,
-                        measured);
-        goto out;
-    }
-out:
-    yt_free(doc);
-    return st;
-}
 
 typedef struct fit_ctx {
     fw_ship *ship;
     const fw_trial *trial;
-    double base[FW_LSQ_MAX_P];
+    double ref[FW_LSQ_MAX_P]; /* regression values: value = ref exp(p) */
     double *field[FW_LSQ_MAX_P];
     fw_turning_result *res; /* where the last evaluation's results go (may be NULL) */
+    double *hist_rms;       /* and each row's history error (may be NULL) */
+    double *rel;            /* and the unweighted relative errors of the values */
 } fit_ctx;
 
 static void apply(fit_ctx *c, const double *p)
 {
     for (int j = 0; j < c->trial->ntune; j++)
-        *c->field[j] = c->base[j] * exp(p[j]);
+        *c->field[j] = c->ref[j] * exp(p[j]);
 }
 
 fw_turning_def fw_trial_turning_def(const fw_trial_turn *t)
@@ -165,49 +34,89 @@ fw_turning_def fw_trial_turning_def(const fw_trial_turn *t)
     d.speed = t->speed;
     d.rudder = t->rudder;
     d.max_turn = fw_deg_to_rad(540.0);
+    /* small-helm targets turn slowly: leave time for 540 deg at a third of
+     * the target's rate before calling the turn failed */
+    if (t->steady_rate > 0)
+        d.max_time = fmax(d.max_time, fmin(3.0 * d.max_turn / t->steady_rate, 30000.0));
     return d;
+}
+
+/* Residuals of one row into r (values, then history samples); false when
+ * the ship could not make the turn. */
+static bool row_residuals(fit_ctx *c, int i, double *r, double *rel, double *hist_rms)
+{
+    const fw_trial_turn *t = &c->trial->turns[i];
+    fw_turning_def d = fw_trial_turning_def(t);
+    fw_turning_result res;
+    fw_history h = {0};
+    fw_error run_err = {0};
+    int nh = fw_trial_row_history(t);
+    if (fw_turning_run(c->ship, &d, &res, nh ? &h : NULL, &run_err)) {
+        fw_history_free(&h);
+        return false;
+    }
+    if (c->res)
+        c->res[i] = res;
+    const double meas[4] = {t->advance, t->transfer, t->tactical_diameter, t->steady_rate};
+    const double got[4] = {res.advance, res.transfer, res.tactical_diameter, res.steady_rate};
+    int k = 0;
+    for (int q = 0; q < 4; q++)
+        if (meas[q] > 0) {
+            rel[k] = got[q] / meas[q] - 1.0;
+            r[k] = t->weight * rel[k];
+            k++;
+        }
+    /* eq 9: a step of |rudder| at t = 0, against the MMG ship's rate (its
+     * rudder moves at the steering gear's rate, as the paper's UMS did) */
+    fw_nomoto_indices ix = {.K = t->K, .T1 = t->T1, .T2 = t->T2, .T3 = t->T3};
+    double delta = fabs(t->rudder), scale = t->K * delta, ss = 0.0;
+    double w = t->history_weight / sqrt((double)(nh > 0 ? nh : 1));
+    for (int s = 0; s < nh; s++) {
+        double ts = (s + 1) * t->history_s / nh;
+        size_t at = (size_t)lround(ts / d.sample_dt);
+        double rate = at < h.n ? fabs(h.s[at].r) : 0.0;
+        double e = rate - fw_nomoto_step_rate(&ix, delta, ts);
+        ss += e * e;
+        r[k++] = w * e / scale;
+    }
+    if (hist_rms)
+        hist_rms[i] = nh ? sqrt(ss / nh) : 0.0;
+    fw_history_free(&h);
+    return true;
+}
+
+static int row_count(const fw_trial_turn *t)
+{
+    return fw_trial_row_values(t) + fw_trial_row_history(t);
 }
 
 static fw_status residuals(const double *p, double *r, void *user, fw_error *err)
 {
+    (void)err;
     fit_ctx *c = user;
     apply(c, p);
-    int k = 0;
+    int k = 0, kv = 0;
     for (int i = 0; i < c->trial->nturns; i++) {
         const fw_trial_turn *t = &c->trial->turns[i];
-        fw_turning_def d = fw_trial_turning_def(t);
-        fw_turning_result res;
-        fw_error run_err = {0};
-        if (fw_turning_run(c->ship, &d, &res, NULL, &run_err)) {
+        int n = row_count(t), nv = fw_trial_row_values(t);
+        double rel[4];
+        if (!row_residuals(c, i, r + k, rel, c->hist_rms)) {
             /* A coefficient set for which the ship cannot complete the turn
              * (or the integration fails) is a bad point, not the end of the
              * fit: a large residual makes the search step back. */
-            for (int j = 0; j < 4; j++)
-                r[k++] = 10.0;
-            (void)err;
-            continue;
+            for (int j = 0; j < n; j++)
+                r[k + j] = 10.0;
+            for (int j = 0; j < nv; j++)
+                rel[j] = 10.0;
         }
-        if (c->res)
-            c->res[i] = res;
-        if (t->advance > 0)
-            r[k++] = res.advance / t->advance - 1.0;
-        if (t->transfer > 0)
-            r[k++] = res.transfer / t->transfer - 1.0;
-        if (t->tactical_diameter > 0)
-            r[k++] = res.tactical_diameter / t->tactical_diameter - 1.0;
-        if (t->steady_rate > 0)
-            r[k++] = res.steady_rate / t->steady_rate - 1.0;
+        if (c->rel)
+            memcpy(c->rel + kv, rel, (size_t)nv * sizeof *rel);
+        k += n;
+        kv += nv;
     }
+    for (int j = 0; j < c->trial->ntune; j++)
+        r[k++] = c->trial->prior_weight * p[j];
     return FW_OK;
-}
-
-static int count_measured(const fw_trial *t)
-{
-    int n = 0;
-    for (int i = 0; i < t->nturns; i++)
-        n += (t->turns[i].advance > 0) + (t->turns[i].transfer > 0) +
-             (t->turns[i].tactical_diameter > 0) + (t->turns[i].steady_rate > 0);
-    return n;
 }
 
 static void stats(const double *r, int n, double *rms, double *max)
@@ -221,29 +130,89 @@ static void stats(const double *r, int n, double *rms, double *max)
     *max = m;
 }
 
+/* Every row must be a turn the ship's steering gear can make: a target at
+ * 40 deg for a 35 deg rudder is bad input, not a point the fit misses. */
+static fw_status check_rows(const fw_ship *ship, const fw_trial *trial, fw_error *err)
+{
+    for (int i = 0; i < trial->nturns; i++) {
+        const fw_trial_turn *t = &trial->turns[i];
+        double deg = fw_rad_to_deg(fabs(t->rudder));
+        if (deg > fw_rad_to_deg(ship->rudder_max) + 1e-9)
+            return fw_fail_at(err, trial->file, t->line,
+                              t->from_kb ? "nomoto_targets.rudders_deg" : "rudder_deg",
+                              "%g deg is beyond %s's maximum rudder of %g deg", deg, ship->name,
+                              fw_rad_to_deg(ship->rudder_max));
+    }
+    return FW_OK;
+}
+
+/* Where the fit starts and what bounds it: p = ln(value / regression). */
+static fw_status setup(fit_ctx *c, fw_calibration *cal, double *p, double *lo, double *hi,
+                       fw_error *err)
+{
+    const fw_trial *trial = c->trial;
+    for (int j = 0; j < trial->ntune; j++) {
+        c->field[j] = fw_ship_field(c->ship, trial->tune[j], NULL, NULL);
+        double now = *c->field[j], ref = trial->regression[j];
+        if (ref == 0.0)
+            ref = now;
+        else {
+            const char *section;
+            double scale;
+            fw_ship probe = *c->ship;
+            fw_ship_field(&probe, trial->tune[j], &section, &scale);
+            ref *= scale; /* file units to SI */
+        }
+        if (now == 0.0 || ref == 0.0 || (now > 0) != (ref > 0))
+            return fw_fail(err, FW_EINPUT,
+                           "%s: %s is zero or of the other sign than its regression value and "
+                           "cannot be scaled",
+                           trial->file, trial->tune[j]);
+        c->ref[j] = ref;
+        cal->regression[j] = ref;
+        cal->before[j] = now;
+        lo[j] = -log(trial->factor[j]);
+        hi[j] = log(trial->factor[j]);
+        p[j] = fmin(fmax(log(now / ref), lo[j]), hi[j]);
+    }
+    cal->n = trial->ntune;
+    return FW_OK;
+}
+
 fw_status fw_calibrate(fw_ship *ship, const fw_trial *trial, fw_calibration *cal, fw_error *err)
 {
     memset(cal, 0, sizeof *cal);
     fit_ctx c = {.ship = ship, .trial = trial};
-    int np = trial->ntune, nr = count_measured(trial);
-    double p[FW_LSQ_MAX_P] = {0}, lo[FW_LSQ_MAX_P], hi[FW_LSQ_MAX_P], r[64];
-    for (int j = 0; j < np; j++) {
-        c.field[j] = fw_ship_field(ship, trial->tune[j], NULL, NULL);
-        c.base[j] = *c.field[j];
-        if (c.base[j] == 0.0)
-            return fw_fail(err, FW_EINPUT, "%s: %s is zero in the ship file and cannot be scaled",
-                           trial->file, trial->tune[j]);
-        cal->before[j] = c.base[j];
-        lo[j] = -log(trial->max_factor);
-        hi[j] = log(trial->max_factor);
+    int np = trial->ntune, nr = np, nv = 0;
+    for (int i = 0; i < trial->nturns; i++) {
+        nr += row_count(&trial->turns[i]);
+        nv += fw_trial_row_values(&trial->turns[i]);
     }
-    cal->n = np;
+    double p[FW_LSQ_MAX_P] = {0}, lo[FW_LSQ_MAX_P], hi[FW_LSQ_MAX_P];
+    double rel[4 * FW_TRIAL_MAX_TURNS];
+    double *r = malloc((size_t)nr * sizeof *r);
+    if (!r)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    fw_status st;
+    if ((st = check_rows(ship, trial, err)) || (st = setup(&c, cal, p, lo, hi, err)))
+        goto out;
+    double p0[FW_LSQ_MAX_P];
+    memcpy(p0, p, sizeof p0);
     c.res = cal->before_res;
-    fw_status st = residuals(p, r, &c, err);
-    if (st)
-        return st;
-    stats(r, nr, &cal->rms_before, &cal->max_before);
+    c.hist_rms = cal->hist_before;
+    c.rel = rel;
+    for (int j = 0; j < np; j++) /* the ship as its file has it */
+        p0[j] = log(cal->before[j] / c.ref[j]);
+    if ((st = residuals(p0, r, &c, err)))
+        goto out;
+    stats(rel, nv, &cal->rms_before, &cal->max_before);
+    if (trial->check_only) {
+        memcpy(p, p0, sizeof p0);
+        goto evaluate;
+    }
     c.res = NULL;
+    c.hist_rms = NULL;
+    c.rel = NULL;
     fw_lsq_def def = fw_default_lsq_def();
     def.fd_step = 1e-3; /* relative change of 0.1 percent per coefficient */
     def.ftol = 1e-8;
@@ -251,14 +220,19 @@ fw_status fw_calibrate(fw_ship *ship, const fw_trial *trial, fw_calibration *cal
     def.lo = lo;
     def.hi = hi;
     if ((st = fw_lsq_solve(residuals, &c, np, nr, p, &def, &cal->lsq, err)))
-        return st;
+        goto out;
+evaluate:
     c.res = cal->after_res;
+    c.hist_rms = cal->hist_after;
+    c.rel = rel;
     if ((st = residuals(p, r, &c, err)))
-        return st;
-    stats(r, nr, &cal->rms_after, &cal->max_after);
+        goto out;
+    stats(rel, nv, &cal->rms_after, &cal->max_after);
     for (int j = 0; j < np; j++)
         cal->after[j] = *c.field[j];
-    return FW_OK;
+out:
+    free(r);
+    return st;
 }
 
 /* The new ship file must load as a ship before it replaces the old one. */
@@ -279,8 +253,11 @@ static fw_status set_coefficients(fw_yaml_edit *ed, const fw_ship *ship, const f
         fw_ship_field(&probe, trial->tune[j], &section, &scale);
         char value[64], comment[256];
         snprintf(value, sizeof value, "%.6g", cal->after[j] / scale);
-        snprintf(comment, sizeof comment, "[CAL] fairway calibrate: was %.6g (x%.3f)",
-                 cal->before[j] / scale, cal->after[j] / cal->before[j]);
+        double f = cal->after[j] / cal->regression[j];
+        bool curve_fit = fabs(log(f)) > log(trial->physical_factor) + 1e-9;
+        snprintf(comment, sizeof comment, "%s fairway calibrate: regression %.6g (x%.3f)%s",
+                 curve_fit ? "[FIT]" : "[CAL]", cal->regression[j] / scale, f,
+                 curve_fit ? ", curve-fitted: beyond the physical factor" : "");
         fw_status st = fw_yaml_edit_scalar(ed, section, trial->tune[j], value, comment, err);
         if (st)
             return st;
@@ -303,17 +280,33 @@ fw_status fw_calibration_write(const fw_ship *ship, const fw_trial *trial,
     size_t root_len = strlen(fw_data_root());
     if (strncmp(trial_name, fw_data_root(), root_len) == 0 && trial_name[root_len] == '/')
         trial_name += root_len + 1;
-    char text[2048];
+    int measured = 0, from_kb = 0, histories = 0;
+    for (int i = 0; i < trial->nturns; i++) {
+        const fw_trial_turn *t = &trial->turns[i];
+        *(t->from_kb ? &from_kb : &measured) += fw_trial_row_values(t);
+        histories += fw_trial_row_history(t) > 0;
+    }
+    char text[4096];
     size_t used = (size_t)snprintf(
         text, sizeof text,
         "# Calibration: `fairway calibrate --ship %s` against %s (%s).\n"
-        "# Tuned by least squares on the relative errors of advance, transfer,\n"
-        "# tactical diameter and steady turning rate (%d values):\n",
-        ship->name, trial_name, trial->source[0] ? trial->source : "sea trial",
-        count_measured(trial));
+        "# Tuned by least squares on the relative errors of %d measured values\n"
+        "# (advance, transfer, tactical diameter, steady rate)",
+        ship->name, trial_name, trial->source[0] ? trial->source : "sea trial", measured);
+    if (from_kb && used < sizeof text)
+        used += (size_t)snprintf(text + used, sizeof text - used,
+                                 ",\n# %d steady rates and %d rate histories of %s", from_kb,
+                                 histories, trial->kb_source);
+    if (used < sizeof text)
+        used += (size_t)snprintf(text + used, sizeof text - used,
+                                 ",\n# pulled towards the regression values with weight %g;\n"
+                                 "# coefficient, regression value -> fitted (factor):\n",
+                                 trial->prior_weight);
     for (int j = 0; j < cal->n && used < sizeof text; j++)
-        used += (size_t)snprintf(text + used, sizeof text - used, "#   %-14s %.6g -> %.6g\n",
-                                 trial->tune[j], cal->before[j], cal->after[j]);
+        used += (size_t)snprintf(text + used, sizeof text - used,
+                                 "#   %-14s %.6g -> %.6g (x%.3f)\n", trial->tune[j],
+                                 cal->regression[j], cal->after[j],
+                                 cal->after[j] / cal->regression[j]);
     if (used < sizeof text)
         used += (size_t)snprintf(text + used, sizeof text - used,
                                  "# RMS relative error %.1f%% -> %.1f%%, largest %.1f%% -> %.1f%%.\n",

@@ -27,7 +27,8 @@ double fw_domain_lambda(const fw_domain_def *dom, double east, double north, dou
 double fw_domain_reach(const fw_domain_def *dom, const fw_target *t)
 {
     double ratio = dom->fore_aft_ratio > 1.0 ? dom->fore_aft_ratio : 1.0;
-    return dom->size * ratio + 0.5 * hypot(t->length, t->breadth);
+    return dom->size * ratio + hypot(dom->own_half_length, dom->own_half_breadth) +
+           0.5 * hypot(t->length, t->breadth);
 }
 
 bool fw_hulls_overlap(double e1, double n1, double psi1, double l1, double b1, double e2,

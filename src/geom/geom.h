@@ -49,6 +49,18 @@ static inline void fw_cpa(double dx, double dy, double vx, double vy, double *tc
     *dcpa = hypot(dx + vx * t, dy + vy * t);
 }
 
+/* The same with the distance squared: for loops over many pairs that only
+ * compare it with a threshold (hypot's care for overflow costs there). */
+static inline void fw_cpa_sq(double dx, double dy, double vx, double vy, double *tcpa,
+                             double *dcpa2)
+{
+    double v2 = vx * vx + vy * vy;
+    double t = v2 > 1e-12 ? -(dx * vx + dy * vy) / v2 : 0.0;
+    double px = dx + vx * t, py = dy + vy * t;
+    *tcpa = t;
+    *dcpa2 = px * px + py * py;
+}
+
 /* The own domain: an ellipse centred on the own ship and aligned with its
  * heading.  Transverse semi-axis = size (the paper's 300 m "along the side");
  * fore-aft semi-axis = size * fore_aft_ratio.  Default ratio 1: the paper's
@@ -58,10 +70,18 @@ static inline void fw_cpa(double dx, double dy, double vx, double vy, double *tc
  * by growing each semi-axis by the target's half-extent along that own-ship
  * axis (L/2 |cos a| + B/2 |sin a| fore-aft, L/2 |sin a| + B/2 |cos a| abeam,
  * a = relative heading): the Minkowski sum of ellipse and rectangle, exact on
- * the axes and slightly generous between them. */
+ * the axes and slightly generous between them.
+ * The own hull counts likewise when own_half_length / own_half_breadth are
+ * set (a scenario's avoidance.domain_from: hull, the default): the semi-axes
+ * grow by them too, and the size is then a clearance between the hulls, so
+ * that a size below the own half length (167 m for the C-3) still keeps the
+ * bows apart.  Both 0: a domain about the own ship's centre (the paper's, and
+ * its five cases and the Imazu set say domain_from: centre). */
 typedef struct fw_domain_def {
-    double size;           /* m, transverse semi-axis */
-    double fore_aft_ratio; /* fore-aft / transverse */
+    double size;             /* m, transverse semi-axis (beyond the hulls, see above) */
+    double fore_aft_ratio;   /* fore-aft / transverse */
+    double own_half_length;  /* m, 0: centred on the own ship */
+    double own_half_breadth; /* m */
 } fw_domain_def;
 
 fw_domain_def fw_default_domain_def(void);
@@ -73,8 +93,8 @@ static inline void fw_domain_grown(const fw_domain_def *dom, double hl, double h
                                    double cos_rel, double sin_rel, double *a, double *b)
 {
     double c = fabs(cos_rel), s = fabs(sin_rel);
-    *a = dom->size * dom->fore_aft_ratio + hl * c + hb * s;
-    *b = dom->size + hl * s + hb * c;
+    *a = dom->size * dom->fore_aft_ratio + dom->own_half_length + hl * c + hb * s;
+    *b = dom->size + dom->own_half_breadth + hl * s + hb * c;
 }
 
 /* The same for target t. */

@@ -167,10 +167,12 @@ fw_status fw_ident_fit_from(const double *r, int n, double dt, double helm, doub
     double r_end = r[n - 1];
     /* start: steady gain from the last sample, T1 fast, T2 and T3 slow */
     double p[4] = {r_end / helm, log(10.0), log(80.0), 60.0};
+    const double log_tmax = log(fmax(n * dt / 3.0, 20.0));
     if (start && start->T1 > 0.0 && start->T2 > 0.0 && start->T1 != start->T2) {
         /* the given start's branch: K from the data (the start's gain may be
          * another ship's), the time constants as given */
-        p[1] = log(start->T1), p[2] = log(start->T2), p[3] = start->T3;
+        p[1] = fmin(log(start->T1), log_tmax), p[2] = fmin(log(start->T2), log_tmax);
+        p[3] = start->T3;
     }
     double f = sse(p, r, n, dt, helm, rate, model), lambda = 1e-3;
     for (int it = 0; it < 300; it++) {
@@ -203,6 +205,12 @@ fw_status fw_ident_fit_from(const double *r, int n, double dt, double helm, doub
                 M[a * 4 + a] += lambda * (A[a * 4 + a] > 0 ? A[a * 4 + a] : 1e-30);
             if (fw_spd_solve(4, M, step)) {
                 double q[4] = {p[0] + step[0], p[1] + step[1], p[2] + step[2], p[3] + step[3]};
+                /* a time constant over a third of the record is not seen by
+                 * it: the fit would trade it for a pole-zero near-cancellation
+                 * (T2 ~ T3 in the thousands of seconds) that jumps from one
+                 * rudder angle to the next and ruins the regression */
+                q[1] = fmin(q[1], log_tmax);
+                q[2] = fmin(q[2], log_tmax);
                 double fq = sse(q, r, n, dt, helm, rate, trial);
                 if (fq < f) {
                     bool tiny = f - fq < 1e-12 * f;

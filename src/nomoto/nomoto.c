@@ -31,6 +31,16 @@ fw_status fw_nomoto_indices_at(const fw_nomoto_kb *kb, double U_kn, double helm_
     return FW_OK;
 }
 
+fw_kb_speed fw_nomoto_kb_speed(const fw_nomoto_kb *kb, double U_kn)
+{
+    if (!kb->present || (U_kn >= kb->speed_min_kn - 1e-9 && U_kn <= kb->speed_max_kn + 1e-9))
+        return FW_KB_SPEED_IN;
+    if (U_kn < kb->speed_min_kn / FW_KB_SPEED_MARGIN - 1e-9 ||
+        U_kn > kb->speed_max_kn * FW_KB_SPEED_MARGIN + 1e-9)
+        return FW_KB_SPEED_REFUSED;
+    return FW_KB_SPEED_OUTSIDE;
+}
+
 double fw_nomoto_phi(double T1, double T2, double t)
 {
     double dT = T1 - T2;

@@ -37,6 +37,15 @@ typedef struct fw_nomoto_indices {
 fw_status fw_nomoto_indices_at(const fw_nomoto_kb *kb, double U_kn, double helm_deg,
                                fw_nomoto_indices *out, fw_error *err);
 
+/* A speed against the knowledge base's fitted speeds.  Outside them the
+ * regressions are extrapolated (the paper does so at 10 kn from 14.55): a
+ * warning.  Beyond FW_KB_SPEED_MARGIN times the range (below speed_min /
+ * margin or above speed_max x margin) the extrapolation is refused: eqs
+ * 10-13 have 1/U and U^2 terms that run away there. */
+#define FW_KB_SPEED_MARGIN 1.5
+typedef enum fw_kb_speed { FW_KB_SPEED_IN, FW_KB_SPEED_OUTSIDE, FW_KB_SPEED_REFUSED } fw_kb_speed;
+fw_kb_speed fw_nomoto_kb_speed(const fw_nomoto_kb *kb, double U_kn);
+
 /* Paper eq 9: turning rate t seconds after a rudder step delta from rest. */
 double fw_nomoto_step_rate(const fw_nomoto_indices *ix, double delta, double t);
 

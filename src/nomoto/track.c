@@ -72,9 +72,9 @@ typedef struct kin {
     double Eb, Eu;            /* lag factors over one step */
 } kin;
 
-static void kin_init(kin *k, const fw_ship *ship, const fw_own_state *s, double dt)
+static void kin_init(kin *k, const fw_ship *ship, const fw_nomoto_kb *kb, const fw_own_state *s,
+                     double dt)
 {
-    const fw_nomoto_kb *kb = &ship->nomoto;
     k->kb = kb;
     k->L = ship->L;
     k->slip = kb->drift > 0.0 || kb->speed_loss > 0.0;
@@ -125,7 +125,9 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
     if (helm < -ship->rudder_max)
         helm = -ship->rudder_max;
     fw_nomoto_indices ix;
-    fw_status st = fw_nomoto_indices_at(&ship->nomoto, fw_ms_to_kn(s->U),
+    /* the side's own knowledge base (ship.h), slip terms included */
+    const fw_nomoto_kb *kb = fw_ship_kb(ship, helm);
+    fw_status st = fw_nomoto_indices_at(kb, fw_ms_to_kn(s->U),
                                         fw_rad_to_deg(helm), &ix, err);
     if (st)
         return st;
@@ -147,7 +149,7 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
     double prev_turn = 0.0;
     bool steadied = false;
     kin kn;
-    kin_init(&kn, ship, s, dt);
+    kin_init(&kn, ship, kb, s, dt);
     int k = 0;
     for (int p = 0; p < 3 && k < n; p++) {
         double t_end = p < 2 ? piece_start[p + 1] : INFINITY;
@@ -223,8 +225,8 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
     /* the indices follow the order (they depend on the rudder angle, as the
      * step loop's ship does): by whole degrees, evaluated when first needed */
     enum { NDEG = 91 };
-    fw_nomoto_indices tab[NDEG];
-    bool have[NDEG] = {false};
+    fw_nomoto_indices tab[2][NDEG]; /* [0] starboard orders, [1] port (ship.h) */
+    bool have[2][NDEG] = {{false}};
     double U_kn = fw_ms_to_kn(s->U);
     /* the order is re-evaluated at most every 5 s (the step loop does it
      * every second): 2.7 m off the one-second loop over 10 minutes, at a
@@ -232,7 +234,8 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
     int sub = (int)fmax(1.0, round(def->dt / 5.0));
     double h = def->dt / sub;
     kin kn;
-    kin_init(&kn, ship, s, h);
+    /* the slip terms of the starboard block: the order changes side */
+    kin_init(&kn, ship, &ship->nomoto, s, h);
     double psi = s->psi, r = s->r, v = s->rdot, delta = s->delta;
     double sn = sin(psi), cs = cos(psi);
     out->n = n;
@@ -244,13 +247,15 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
                 double order = -ap->kp * fw_wrap_pi(psi - ap->psi_ref) - ap->kd * r;
                 order = fmax(-hmax, fmin(hmax, order));
                 int deg = (int)fmin(NDEG - 1, round(fw_rad_to_deg(fabs(order))));
-                if (!have[deg]) {
-                    fw_status st = fw_nomoto_indices_at(&ship->nomoto, U_kn, deg, &tab[deg], err);
+                int side = order < 0.0 && ship->nomoto_port.present;
+                if (!have[side][deg]) {
+                    fw_status st = fw_nomoto_indices_at(fw_ship_kb(ship, order), U_kn, deg,
+                                                        &tab[side][deg], err);
                     if (st)
                         return st;
-                    have[deg] = true;
+                    have[side][deg] = true;
                 }
-                const fw_nomoto_indices *ix = &tab[deg];
+                const fw_nomoto_indices *ix = &tab[side][deg];
                 /* the rudder: ramp to the order at the rudder rate, then hold */
                 double ramp = fmin(h, fabs(order - delta) / ship->rudder_rate);
                 double rho = order > delta ? ship->rudder_rate : -ship->rudder_rate;

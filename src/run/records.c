@@ -13,12 +13,14 @@
 #include "core/idmap.h"
 #include "core/mem.h"
 #include "core/units.h"
+#include "geom/geo.h"
 #include "run/run.h"
 
 struct fw_records {
     const fw_scenario *s;
     char dir[1024];
     FILE *own, *tgt, *log;
+    fw_geo *geo;   /* the scenario's origin: lat/lon columns (NULL: none) */
     fw_encounter *e;
     int n, cap;
     /* id -> index into e (core/idmap.h): a heavy-traffic hour meets
@@ -71,11 +73,16 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
     if (!(r->own = open_in(dir, "own.csv", err)) || !(r->log = open_in(dir, "run.log", err)) ||
         (s->targets_csv && !(r->tgt = open_in(dir, "targets.csv", err))))
         return FW_ERUN;
+    if (s->has_origin && (st = fw_geo_create(s->origin_lat, s->origin_lon, &r->geo, err)))
+        return st;
+    /* with an origin, the positions in degrees too (last, so that the
+     * columns of a run in metres are the same either way) */
+    const char *geo_cols = r->geo ? ",lat_deg,lon_deg" : "";
     fprintf(r->own, "t_s,east_m,north_m,heading_deg,u_ms,v_ms,r_degs,rudder_deg,helm_deg,"
-                    "propeller_rps,mode\n");
+                    "propeller_rps,mode%s\n", geo_cols);
     if (r->tgt)
         fprintf(r->tgt, "t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,bearing_deg,"
-                        "dcpa_m,tcpa_s,situation\n");
+                        "dcpa_m,tcpa_s,situation%s\n", geo_cols);
     return FW_OK;
 }
 
@@ -92,7 +99,19 @@ void fw_records_close(fw_records *r)
     free(r->e);
     fw_idmap_free(&r->ids);
     fw_free_each(3, r->h_t, r->h_psi, r->h_v);
+    fw_geo_destroy(r->geo);
     free(r);
+}
+
+/* ",LAT,LON\n" for a run with an origin, else "\n": the end of a CSV row
+ * (7 decimals of a degree: about 1 cm). */
+static void end_row(const fw_records *r, FILE *f, double east, double north)
+{
+    double lat, lon;
+    if (r->geo && !fw_geo_to_latlon(r->geo, east, north, &lat, &lon, NULL))
+        fprintf(f, ",%.7f,%.7f\n", lat, lon);
+    else
+        fputs(r->geo ? ",,\n" : "\n", f);
 }
 
 FILE *fw_records_log(fw_records *r) { return r->log; }
@@ -100,9 +119,10 @@ FILE *fw_records_log(fw_records *r) { return r->log; }
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
                     const char *mode)
 {
-    fprintf(r->own, "%.1f,%.2f,%.2f,%.3f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%s\n", t, x->east, x->north,
+    fprintf(r->own, "%.1f,%.2f,%.2f,%.3f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%s", t, x->east, x->north,
             fw_heading_deg(x->psi), x->u, x->vm, fw_rad_to_deg(x->r), fw_rad_to_deg(x->delta),
             fw_rad_to_deg(helm), n, mode);
+    end_row(r, r->own, x->east, x->north);
 }
 
 /* m: hull-to-hull distances are measured for targets whose hulls could be
@@ -208,11 +228,13 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
         if (h == 0.0)
             e->collision = true;
     }
-    if (record_row && r->tgt)
-        fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s\n", t, ts->id, ts->east,
+    if (record_row && r->tgt) {
+        fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s", t, ts->id, ts->east,
                 ts->north, fw_heading_deg(ts->course), fw_ms_to_kn(ts->speed), d,
                 fw_heading_deg(as->bearing), as->dcpa, as->tcpa,
                 fw_situation_name(as->situation));
+        end_row(r, r->tgt, ts->east, ts->north);
+    }
     return FW_OK;
 }
 
@@ -252,6 +274,24 @@ static void str(FILE *f, const char *key, const char *v)
 {
     fprintf(f, "\"%s\": ", key);
     fw_json_string(f, v);
+}
+
+/* The own speed against the knowledge base's fitted speeds (null: none). */
+static void kb_json(FILE *f, const fw_run_summary *s, const char *ind)
+{
+    fprintf(f, "%s  \"knowledge_base_speeds\": ", ind);
+    if (!s->kb_present) {
+        fprintf(f, "null,\n");
+        return;
+    }
+    fprintf(f, "{\"fitted_min_kn\": %.2f, \"fitted_max_kn\": %.2f, \"own_min_kn\": ",
+            s->kb_speed_min_kn, s->kb_speed_max_kn);
+    num(f, "%.2f", s->own_speed_min_kn);
+    fprintf(f, ", \"own_max_kn\": ");
+    num(f, "%.2f", s->own_speed_max_kn);
+    fprintf(f, ", \"outside_s\": %.1f, \"warning\": %s},\n", s->kb_outside_s,
+            s->kb_outside_s > 0 ? "\"own speed outside the fitted speeds: predictions "
+                                  "extrapolated\"" : "null");
 }
 
 void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, int n,
@@ -306,6 +346,7 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     fprintf(f, "%s  \"traffic_behaviour\": \"%s\", \"reactions\": {\"give_way\": %d, "
                "\"not_enough\": %d, \"resume\": %d},\n",
             ind, fw_behaviour_name(s->behaviour), s->n_give_way, s->n_give_way_short, s->n_resume);
+    kb_json(f, s, ind);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {
         const fw_encounter *x = &e[i];

@@ -7,6 +7,7 @@
 #include "core/clock.h"
 #include "core/files.h"
 #include "core/units.h"
+#include "nomoto/nomoto.h"
 #include "run/run.h"
 #include "traffic/source_track.h"
 #include "traffic/source_sumo.h"
@@ -32,6 +33,17 @@ static fw_target own_start(const fw_scenario *s)
     return o;
 }
 
+/* m, how far out the reactive traffic is watched: beyond sight by what
+ * two ships crossing at 15 kn close in the reactions' horizon of 15
+ * minutes, 4 nm, so that a ship coming into sight has been giving way
+ * already (none with blind traffic). */
+static double near_radius(const fw_scenario *s)
+{
+    if (s->reactions.behaviour == FW_BEHAVIOUR_BLIND)
+        return 0.0;
+    return s->radius + 4.0 * FW_NMILE;
+}
+
 static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *err)
 {
     const fw_scenario *s = def->scenario;
@@ -48,6 +60,7 @@ static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *e
                              .n_targets = s->n_targets, .own = own_start(s), .own_leg = s->leg,
                              .radius = s->radius,
                              .area_radius = s->survey ? s->survey_radius : 0.0,
+                             .near_radius = near_radius(s),
                              .clear_range = dflt.clear_range, .clear_cpa = dflt.clear_cpa,
                              .clear_tcpa = dflt.clear_tcpa};
     return fw_sumo_source_create(&sd, src, err);
@@ -121,6 +134,7 @@ typedef struct run_state {
     fw_policy_mode mode_prev;
     double helm_prev, e_prev, n_prev;
     int reactions_seen;      /* the world's reactions already in run.log */
+    bool kb_outside;         /* the own speed was outside the knowledge base's at the last step */
 } run_state;
 
 /* The survey's step: every ship in the area, the own ship included. */
@@ -222,12 +236,31 @@ static void record_reactions(run_state *R, fw_run_summary *sum)
         if (r->enough)
             fprintf(fw_records_log(R->rec), " -> %.0f m\n", r->dcpa_after);
         else
-            fprintf(fw_records_log(R->rec), ": no speed keeps the passing distance, the slowest\n");
+            fprintf(fw_records_log(R->rec), ": no speed keeps the passing distance, the one that passes farthest\n");
     }
 }
 
 /* Everything the records keep of one instant (the world's state and the
  * decision taken on it). */
+/* The own ship's speed against its knowledge base's fitted speeds: a line in
+ * run.log when it leaves them, the time outside in the summary. */
+static void record_kb_speed(run_state *R, const fw_mmg_state *x, fw_run_summary *sum)
+{
+    const fw_nomoto_kb *kb = &R->s->ship.nomoto;
+    double kn = fw_ms_to_kn(hypot(x->u, x->vm));
+    sum->own_speed_min_kn = fmin(sum->own_speed_min_kn, kn);
+    sum->own_speed_max_kn = fmax(sum->own_speed_max_kn, kn);
+    bool outside = fw_nomoto_kb_speed(kb, kn) != FW_KB_SPEED_IN;
+    if (outside)
+        sum->kb_outside_s += R->s->step;
+    if (outside && !R->kb_outside)
+        fprintf(fw_records_log(R->rec),
+                "%9.1f  warning: own speed %.2f kn is outside %.2f-%.2f kn, the speeds %s's "
+                "Nomoto knowledge base was fitted over: its predictions are extrapolated\n",
+                fw_world_time(R->w), kn, kb->speed_min_kn, kb->speed_max_kn, R->s->ship.name);
+    R->kb_outside = outside;
+}
+
 static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *err)
 {
     const fw_scenario *s = R->s;
@@ -259,6 +292,7 @@ static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *er
         R->helm_prev = d->helm;
     }
     record_reactions(R, sum);
+    record_kb_speed(R, x, sum);
     sum->t_end = t;
     return FW_OK;
 }
@@ -308,6 +342,11 @@ static void init_summary(const fw_run_def *def, fw_run_summary *sum, fw_encounte
     sum->domain = s->helm.domain.size;
     sum->domain_ratio = s->helm.domain.fore_aft_ratio;
     sum->behaviour = s->reactions.behaviour;
+    sum->kb_present = s->ship.nomoto.present;
+    sum->kb_speed_min_kn = s->ship.nomoto.speed_min_kn;
+    sum->kb_speed_max_kn = s->ship.nomoto.speed_max_kn;
+    sum->own_speed_min_kn = INFINITY;
+    sum->own_speed_max_kn = -INFINITY;
     *enc = NULL;
     *n_enc = 0;
     if (def->survey_out) {

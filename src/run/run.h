@@ -112,6 +112,13 @@ typedef struct fw_run_summary {
     int n_give_way;                 /* slow-down orders */
     int n_give_way_short;           /* of which no speed kept the passing distance */
     int n_resume;
+    /* The own ship's speed against the speeds its Nomoto knowledge base was
+     * fitted over (nomoto.h): seconds of the run it sailed outside them (its
+     * predictions extrapolated), and the extremes of its speed (kn). */
+    bool kb_present;
+    double kb_speed_min_kn, kb_speed_max_kn;
+    double kb_outside_s;
+    double own_speed_min_kn, own_speed_max_kn;
 } fw_run_summary;
 
 /* Where the targets come from: SUMO (any scenario), or the kinematic source

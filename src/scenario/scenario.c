@@ -5,6 +5,8 @@
 #include <string.h>
 
 #include "core/units.h"
+#include "nomoto/nomoto.h"
+#include "scenario/position.h"
 #include "scenario/scenario.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
@@ -19,8 +21,8 @@ static bool name_ok(const char *s)
 
 static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
-    static const char *const keys[] = {"ship", "east_m", "north_m", "course_deg", "speed_kn",
-                                       "leg_nm", "destination", NULL};
+    static const char *const keys[] = {"ship", "east_m", "north_m", "lat_deg", "lon_deg",
+                                       "course_deg", "speed_kn", "leg_nm", "destination", NULL};
     const yt_node *own;
     fw_status st;
     char ship[512];
@@ -28,13 +30,12 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
         (st = yt_check_keys(doc, own, "own_ship", keys, err)) ||
         (st = yt_req_string(doc, own, "own_ship", "ship", ship, sizeof ship, err)))
         return st;
-    double course_deg, speed_kn;
-    if ((st = yt_req_number(doc, own, "own_ship", "east_m", -1e6, 1e6, &s->east, err)) ||
-        (st = yt_req_number(doc, own, "own_ship", "north_m", -1e6, 1e6, &s->north, err)) ||
+    double course_deg, speed_kn, gamma;
+    if ((st = fw_scn_load_position(doc, own, "own_ship", s, &s->east, &s->north, &gamma, err)) ||
         (st = yt_req_number(doc, own, "own_ship", "course_deg", 0, 360, &course_deg, err)) ||
         (st = yt_req_number(doc, own, "own_ship", "speed_kn", 1, 40, &speed_kn, err)))
         return st;
-    s->course = fw_deg_to_rad(course_deg);
+    s->course = fw_wrap_2pi(fw_deg_to_rad(course_deg) - gamma);
     s->speed = fw_kn_to_ms(speed_kn);
     /* where it is going: a leg length along the course or a destination on it */
     const yt_node *dest = yt_get(own, "destination");
@@ -48,13 +49,12 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
             return st;
         s->leg = fw_nm_to_m(leg_nm);
     } else {
-        static const char *const dkeys[] = {"east_m", "north_m", NULL};
-        double e, n;
+        static const char *const dkeys[] = {"east_m", "north_m", "lat_deg", "lon_deg", NULL};
+        double e, n, g;
         const yt_node *d;
         if ((st = yt_req_map(doc, own, "own_ship", "destination", &d, err)) ||
             (st = yt_check_keys(doc, d, "own_ship.destination", dkeys, err)) ||
-            (st = yt_req_number(doc, d, "own_ship.destination", "east_m", -1e6, 1e6, &e, err)) ||
-            (st = yt_req_number(doc, d, "own_ship.destination", "north_m", -1e6, 1e6, &n, err)))
+            (st = fw_scn_load_position(doc, d, "own_ship.destination", s, &e, &n, &g, err)))
             return st;
         double de = e - s->east, dn = n - s->north, leg = hypot(de, dn);
         /* the planned track is the course line: the destination must lie on it */
@@ -69,24 +69,31 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
     if ((st = fw_ship_load(ship, &s->ship, &serr)))
         return fw_fail_at(err, doc->file, yt_key_line(own, "ship"), "own_ship.ship", "%s",
                           serr.msg);
+    const fw_nomoto_kb *kb = &s->ship.nomoto;
+    if (fw_nomoto_kb_speed(kb, speed_kn) == FW_KB_SPEED_REFUSED)
+        return fw_fail_at(err, doc->file, yt_key_line(own, "speed_kn"), "own_ship.speed_kn",
+                          "%g kn is beyond %s's Nomoto knowledge base, fitted over %g-%g kn, by "
+                          "more than its x%g margin (%.1f-%.1f kn)",
+                          speed_kn, s->ship.name, kb->speed_min_kn, kb->speed_max_kn,
+                          FW_KB_SPEED_MARGIN, kb->speed_min_kn / FW_KB_SPEED_MARGIN,
+                          kb->speed_max_kn * FW_KB_SPEED_MARGIN);
     return FW_OK;
 }
 
 static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *path,
-                             fw_target *o, fw_error *err)
+                             const fw_scenario *s, fw_target *o, fw_error *err)
 {
-    static const char *const keys[] = {"id", "type", "east_m", "north_m", "course_deg",
-                                       "speed_kn", "length_m", "breadth_m", NULL};
+    static const char *const keys[] = {"id", "type", "east_m", "north_m", "lat_deg", "lon_deg",
+                                       "course_deg", "speed_kn", "length_m", "breadth_m", NULL};
     fw_status st;
     if (t->kind != YT_MAP)
         return fw_fail_at(err, doc->file, t->line, path, "expected a map (id, east_m, ...)");
-    double c, v;
+    double c, v, gamma;
     snprintf(o->type, sizeof o->type, "cargo");
     if ((st = yt_check_keys(doc, t, path, keys, err)) ||
         (st = yt_req_string(doc, t, path, "id", o->id, sizeof o->id, err)) ||
         (st = yt_opt_string(doc, t, path, "type", o->type, sizeof o->type, err)) ||
-        (st = yt_req_number(doc, t, path, "east_m", -1e6, 1e6, &o->east, err)) ||
-        (st = yt_req_number(doc, t, path, "north_m", -1e6, 1e6, &o->north, err)) ||
+        (st = fw_scn_load_position(doc, t, path, s, &o->east, &o->north, &gamma, err)) ||
         (st = yt_req_number(doc, t, path, "course_deg", 0, 360, &c, err)) ||
         (st = yt_req_number(doc, t, path, "speed_kn", 0.5, 40, &v, err)) ||
         (st = yt_req_number(doc, t, path, "length_m", 5, 500, &o->length, err)) ||
@@ -101,7 +108,7 @@ static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *pa
     if (o->breadth > o->length)
         return yt_fail_key(doc, t, path, "breadth_m", err, "%g m exceeds the length %g m",
                            o->breadth, o->length);
-    o->course = fw_deg_to_rad(c);
+    o->course = fw_wrap_2pi(fw_deg_to_rad(c) - gamma);
     o->speed = fw_kn_to_ms(v);
     return FW_OK;
 }
@@ -171,6 +178,8 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
         if (!dm)
             return fw_fail(err, FW_ERUN, "out of memory");
         fw_status dst = fw_demand_load(nf.demand, dm, &nerr);
+        if (!dst)
+            dst = fw_network_check_demand(s->network, dm, &nerr);
         free(dm);
         if (dst)
             return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",
@@ -184,7 +193,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
             char path[64];
             snprintf(path, sizeof path, "traffic.targets[%zu]", i);
             fw_target *o = &s->targets[i];
-            if ((st = load_target(doc, seq->items[i], path, o, err)))
+            if ((st = load_target(doc, seq->items[i], path, s, o, err)))
                 return st;
             for (size_t j = 0; j < i; j++)
                 if (strcmp(s->targets[j].id, o->id) == 0)
@@ -206,19 +215,45 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     return FW_OK;
 }
 
+/* avoidance.return: track (the default) or heading (the paper's return);
+ * avoidance.domain_from: hull (the default: the domain's size is a
+ * clearance beyond the own hull, geom/geom.h) or centre (the paper's). */
+static fw_status load_return(const yt_doc *doc, const yt_node *a, fw_scenario *s, fw_error *err)
+{
+    char ret[16] = "", from[16] = "";
+    fw_status st = yt_opt_string(doc, a, "avoidance", "return", ret, sizeof ret, err);
+    if (!st)
+        st = yt_opt_string(doc, a, "avoidance", "domain_from", from, sizeof from, err);
+    if (st)
+        return st;
+    if (ret[0] && fw_return_parse(ret, &s->policy.ret))
+        return fw_fail_at(err, doc->file, yt_key_line(a, "return"), "avoidance.return",
+                          "'%s': expected track or heading", ret);
+    if (strcmp(from, "centre") == 0)
+        s->helm.domain.own_half_length = s->helm.domain.own_half_breadth = 0.0;
+    else if (from[0] && strcmp(from, "hull") != 0)
+        return fw_fail_at(err, doc->file, yt_key_line(a, "domain_from"), "avoidance.domain_from",
+                          "'%s': expected hull or centre", from);
+    return FW_OK;
+}
+
 static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scenario *s,
                                 fw_error *err)
 {
     static const char *const keys[] = {"domain_m", "fore_aft_ratio", "min_helm_deg",
                                        "max_helm_deg", "horizon_s", "act_range_nm",
                                        "act_lookahead_s", "standon_act_range_nm",
-                                       "standon_act_time_s", "overtake_side", "radius_nm", NULL};
+                                       "standon_act_time_s", "overtake_side", "radius_nm",
+                                       "return", "domain_from", NULL};
     const yt_node *a = NULL;
     fw_status st;
     if ((st = yt_opt_map(doc, root, "", "avoidance", &a, err)))
         return st;
+    /* the domain about the own hull unless the scenario says centre */
+    s->helm.domain.own_half_length = 0.5 * s->ship.Loa;
+    s->helm.domain.own_half_breadth = 0.5 * s->ship.B;
     if (!a)
-        return FW_OK; /* every setting has the paper's default */
+        return FW_OK; /* every other setting has the paper's default */
     double act = fw_m_to_nm(s->policy.act_range), so = fw_m_to_nm(s->policy.standon_act_range);
     double radius = fw_m_to_nm(s->radius);
     const char *P = "avoidance";
@@ -238,7 +273,8 @@ static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scena
         (st = yt_opt_number(doc, a, P, "radius_nm", 0.5, 50, &radius, err)))
         return st;
     char side[16] = "";
-    if ((st = yt_opt_string(doc, a, P, "overtake_side", side, sizeof side, err)))
+    if ((st = load_return(doc, a, s, err)) ||
+        (st = yt_opt_string(doc, a, P, "overtake_side", side, sizeof side, err)))
         return st;
     if (side[0]) {
         if (strcmp(side, "either") == 0)
@@ -260,6 +296,19 @@ static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scena
         return fw_fail_at(err, doc->file, yt_key_line(a, "max_helm_deg"), "avoidance.max_helm_deg",
                           "%g deg exceeds the ship's rudder limit %g deg", s->helm.max_helm_deg,
                           fw_rad_to_deg(s->ship.rudder_max));
+    /* the helms the search tries must be ones the knowledge base was fitted
+     * at: below its smallest angle it would use that angle's indices */
+    const fw_nomoto_kb *kb = &s->ship.nomoto;
+    const char *key = s->helm.min_helm_deg < kb->rudder_min_deg - 1e-9   ? "min_helm_deg"
+                      : s->helm.max_helm_deg > kb->rudder_max_deg + 1e-9 ? "max_helm_deg"
+                                                                          : NULL;
+    if (kb->present && key)
+        return fw_fail_at(err, doc->file, yt_key_line(a, key), key[1] == 'i'
+                              ? "avoidance.min_helm_deg" : "avoidance.max_helm_deg",
+                          "%g deg is outside %g-%g deg, the rudder angles %s's Nomoto knowledge "
+                          "base was fitted over",
+                          key[1] == 'i' ? s->helm.min_helm_deg : s->helm.max_helm_deg,
+                          kb->rudder_min_deg, kb->rudder_max_deg, s->ship.name);
     s->policy.act_range = fw_nm_to_m(act);
     s->policy.standon_act_range = fw_nm_to_m(so);
     s->radius = fw_nm_to_m(radius);
@@ -329,7 +378,7 @@ static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s
 
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
 {
-    static const char *const keys[] = {"name", "description", "own_ship", "traffic",
+    static const char *const keys[] = {"name", "description", "origin", "own_ship", "traffic",
                                        "avoidance", "survey", "run", "outputs", NULL};
     memset(s, 0, sizeof *s);
     if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
@@ -360,7 +409,8 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
                         s->name);
         goto out;
     }
-    if ((st = load_own(doc, root, s, err)) || (st = load_traffic(doc, root, s, err)) ||
+    if ((st = fw_scn_load_origin(doc, root, s, err)) || (st = load_own(doc, root, s, err)) ||
+        (st = load_traffic(doc, root, s, err)) ||
         (st = load_avoidance(doc, root, s, err)) || (st = load_survey(doc, root, s, err)) ||
         (st = load_run(doc, root, s, err)))
         goto out;

@@ -10,6 +10,9 @@
  *
  * File units are the ones people use (m, kn, deg, nm, s); the struct is SI.
  * Frame: metres east/north of the scenario origin, navigational headings.
+ * With `origin: {lat_deg, lon_deg}` ships may be placed by latitude and
+ * longitude instead (scenario/position.h, geom/geo.h): the plane is then a
+ * transverse Mercator centred on the origin and courses are grid courses.
  */
 #ifndef FW_SCENARIO_H
 #define FW_SCENARIO_H
@@ -31,6 +34,8 @@ typedef struct fw_scenario {
     char file[512];
     char name[64];       /* letters, digits, '-', '_': names the output directory */
     char description[256];
+    bool has_origin;     /* origin: the plane's centre in WGS84 */
+    double origin_lat, origin_lon; /* deg */
     /* own ship */
     fw_ship ship;
     double east, north;  /* m */

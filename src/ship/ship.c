@@ -59,3 +59,8 @@ double fw_nomoto_index_eval(const fw_nomoto_index *ix, double U_kn, double d_deg
         v += ix->coef[i] * basis_value(ix->basis[i], U_kn, d_deg);
     return v;
 }
+
+const fw_nomoto_kb *fw_ship_kb(const fw_ship *ship, double helm)
+{
+    return helm < 0.0 && ship->nomoto_port.present ? &ship->nomoto_port : &ship->nomoto;
+}

@@ -99,7 +99,14 @@ typedef struct fw_ship {
     double gamma_R_plus, gamma_R_minus;
 
     fw_nomoto_kb nomoto;
+    /* port turns (helm < 0) when present: a single-screw ship turns faster to
+     * one side at small helm (c3-paper at 10 kn, 5 deg: 29 %), and `identify
+     * --sides both` fits the sides apart; absent, nomoto serves both */
+    fw_nomoto_kb nomoto_port;
 } fw_ship;
+
+/* The knowledge base for a helm of this sign (> 0 starboard). */
+const fw_nomoto_kb *fw_ship_kb(const fw_ship *ship, double helm);
 
 /* Loads a ship by name (searched as scenarios/ships/NAME.yaml under the data
  * root) or by path (anything containing '/' or ending in .yaml).  Every field

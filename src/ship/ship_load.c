@@ -91,13 +91,13 @@ static fw_status read_section(const yt_doc *doc, const yt_node *root, const char
     return FW_OK;
 }
 
-static fw_status read_index(const yt_doc *doc, const yt_node *kb, const char *key,
+static fw_status read_index(const yt_doc *doc, const yt_node *kb, const char *P, const char *key,
                             fw_nomoto_index *ix, fw_error *err)
 {
     char path[64];
-    yt_path(path, sizeof path, "nomoto", key);
+    yt_path(path, sizeof path, P, key);
     const yt_node *map;
-    fw_status st = yt_req_map(doc, kb, "nomoto", key, &map, err);
+    fw_status st = yt_req_map(doc, kb, P, key, &map, err);
     if (st)
         return st;
     const char *allowed[FW_NB_COUNT + 1];
@@ -121,43 +121,46 @@ static fw_status read_index(const yt_doc *doc, const yt_node *kb, const char *ke
     return FW_OK;
 }
 
-static fw_status read_nomoto(const yt_doc *doc, const yt_node *root, fw_nomoto_kb *kb,
-                             fw_error *err)
+/* The knowledge-base block P ("nomoto" or "nomoto_port"), if present. */
+static fw_status read_nomoto(const yt_doc *doc, const yt_node *root, const char *P,
+                             fw_nomoto_kb *kb, fw_error *err)
 {
     const yt_node *map;
-    fw_status st = yt_opt_map(doc, root, "", "nomoto", &map, err);
+    fw_status st = yt_opt_map(doc, root, "", P, &map, err);
     if (st || !map)
         return st;
     static const char *const allowed[] = {"source", "speed_min_kn", "speed_max_kn",
                                           "rudder_min_deg", "rudder_max_deg", "K", "T1", "T2",
                                           "T3", "drift", "drift_lag_s", "speed_loss",
                                           "speed_lag_s", NULL};
-    if ((st = yt_check_keys(doc, map, "nomoto", allowed, err)))
+    if ((st = yt_check_keys(doc, map, P, allowed, err)))
         return st;
-    char source[256];
-    if ((st = yt_opt_string(doc, map, "nomoto", "source", source, sizeof source, err)))
+    char source[256], field[64];
+    if ((st = yt_opt_string(doc, map, P, "source", source, sizeof source, err)))
         return st;
-    if ((st = yt_req_number(doc, map, "nomoto", "speed_min_kn", 0.1, 60.0, &kb->speed_min_kn, err)) ||
-        (st = yt_req_number(doc, map, "nomoto", "speed_max_kn", 0.1, 60.0, &kb->speed_max_kn, err)) ||
-        (st = yt_req_number(doc, map, "nomoto", "rudder_min_deg", 0.5, 60.0, &kb->rudder_min_deg, err)) ||
-        (st = yt_req_number(doc, map, "nomoto", "rudder_max_deg", 0.5, 60.0, &kb->rudder_max_deg, err)))
+    if ((st = yt_req_number(doc, map, P, "speed_min_kn", 0.1, 60.0, &kb->speed_min_kn, err)) ||
+        (st = yt_req_number(doc, map, P, "speed_max_kn", 0.1, 60.0, &kb->speed_max_kn, err)) ||
+        (st = yt_req_number(doc, map, P, "rudder_min_deg", 0.5, 60.0, &kb->rudder_min_deg, err)) ||
+        (st = yt_req_number(doc, map, P, "rudder_max_deg", 0.5, 60.0, &kb->rudder_max_deg, err)))
         return st;
     if (kb->speed_max_kn < kb->speed_min_kn)
-        return fw_fail_at(err, doc->file, yt_key_line(map, "speed_max_kn"), "nomoto.speed_max_kn",
+        return fw_fail_at(err, doc->file, yt_key_line(map, "speed_max_kn"),
+                          yt_path(field, sizeof field, P, "speed_max_kn"),
                           "must not be below speed_min_kn");
     if (kb->rudder_max_deg < kb->rudder_min_deg)
         return fw_fail_at(err, doc->file, yt_key_line(map, "rudder_max_deg"),
-                          "nomoto.rudder_max_deg", "must not be below rudder_min_deg");
-    if ((st = read_index(doc, map, "K", &kb->K, err)) ||
-        (st = read_index(doc, map, "T1", &kb->T1, err)) ||
-        (st = read_index(doc, map, "T2", &kb->T2, err)) ||
-        (st = read_index(doc, map, "T3", &kb->T3, err)))
+                          yt_path(field, sizeof field, P, "rudder_max_deg"),
+                          "must not be below rudder_min_deg");
+    if ((st = read_index(doc, map, P, "K", &kb->K, err)) ||
+        (st = read_index(doc, map, P, "T1", &kb->T1, err)) ||
+        (st = read_index(doc, map, P, "T2", &kb->T2, err)) ||
+        (st = read_index(doc, map, P, "T3", &kb->T3, err)))
         return st;
     kb->drift = kb->drift_lag_s = kb->speed_loss = kb->speed_lag_s = 0.0;
-    if ((st = yt_opt_number(doc, map, "nomoto", "drift", 0.0, 5.0, &kb->drift, err)) ||
-        (st = yt_opt_number(doc, map, "nomoto", "drift_lag_s", 0.0, 3600.0, &kb->drift_lag_s, err)) ||
-        (st = yt_opt_number(doc, map, "nomoto", "speed_loss", 0.0, 2.0, &kb->speed_loss, err)) ||
-        (st = yt_opt_number(doc, map, "nomoto", "speed_lag_s", 0.0, 3600.0, &kb->speed_lag_s, err)))
+    if ((st = yt_opt_number(doc, map, P, "drift", 0.0, 5.0, &kb->drift, err)) ||
+        (st = yt_opt_number(doc, map, P, "drift_lag_s", 0.0, 3600.0, &kb->drift_lag_s, err)) ||
+        (st = yt_opt_number(doc, map, P, "speed_loss", 0.0, 2.0, &kb->speed_loss, err)) ||
+        (st = yt_opt_number(doc, map, P, "speed_lag_s", 0.0, 3600.0, &kb->speed_lag_s, err)))
         return st;
     kb->present = true;
     return FW_OK;
@@ -167,7 +170,7 @@ static fw_status load_doc(const yt_doc *doc, fw_ship *ship, fw_error *err)
 {
     const yt_node *root = doc->root;
     static const char *const allowed[] = {"name", "description", "particulars", "hull",
-                                          "propeller", "rudder", "nomoto", NULL};
+                                          "propeller", "rudder", "nomoto", "nomoto_port", NULL};
     fw_status st = yt_check_keys(doc, root, "", allowed, err);
     if (st)
         return st;
@@ -205,7 +208,13 @@ static fw_status load_doc(const yt_doc *doc, fw_ship *ship, fw_error *err)
     if (ship->A_R > 0.1 * ship->L * ship->d)
         return fw_fail_at(err, doc->file, yt_key_line(rm, "A_R"), "rudder.A_R",
                           "rudder area above 10%% of L*d: check units");
-    return read_nomoto(doc, root, &ship->nomoto, err);
+    if ((st = read_nomoto(doc, root, "nomoto", &ship->nomoto, err)) ||
+        (st = read_nomoto(doc, root, "nomoto_port", &ship->nomoto_port, err)))
+        return st;
+    if (ship->nomoto_port.present && !ship->nomoto.present)
+        return fw_fail_at(err, doc->file, yt_key_line(root, "nomoto_port"), "nomoto_port",
+                          "a port knowledge base needs the nomoto: block as well");
+    return FW_OK;
 }
 
 fw_status fw_ship_load(const char *name_or_path, fw_ship *ship, fw_error *err)

@@ -57,6 +57,7 @@ static fw_status load_stream(const yt_doc *doc, const yt_node *m, const char *pa
         if (e->kind != YT_SCALAR || !plain_id(e->str) || strlen(e->str) >= 64)
             return fw_fail_at(err, doc->file, e->line, field, "edge %zu is not an edge id", i + 1);
         snprintf(s->edges[i], sizeof s->edges[i], "%s", e->str);
+        s->edge_line[i] = e->line;
     }
     return FW_OK;
 }
@@ -71,12 +72,15 @@ fw_status fw_demand_load(const char *path, fw_demand *out, fw_error *err)
     st = yt_load_file(path, &doc, err);
     if (st)
         return st;
-    static const char *const keys[] = {"streams", NULL};
+    static const char *const keys[] = {"streams", "lane_change_s", NULL};
     const yt_node *seq = NULL;
     if (doc->root->kind != YT_MAP)
         st = fw_fail_at(err, doc->file, doc->root->line, "", "expected a map with 'streams'");
     if (!st)
         st = yt_check_keys(doc, doc->root, "", keys, err);
+    if (!st)
+        st = yt_opt_number(doc, doc->root, "", "lane_change_s", 0.0, 7200.0,
+                           &out->lane_change_s, err);
     if (!st)
         st = yt_req_seq(doc, doc->root, "", "streams", &seq, err);
     if (!st && (seq->n < 1 || seq->n > FW_DEMAND_MAX_STREAMS))

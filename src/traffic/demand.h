@@ -21,10 +21,14 @@ typedef struct fw_stream {
     int n_edges;
     char edges[FW_DEMAND_MAX_EDGES][64];
     double per_hour; /* ships per hour at density 1 */
+    int edge_line[FW_DEMAND_MAX_EDGES]; /* demand.yaml's line of each edge */
 } fw_stream;
 
 typedef struct fw_demand {
     char file[512];
+    /* s, how long a lane change takes on this network (demand.yaml's
+     * lane_change_s: the widest lane crossed at about 1 m/s); 0 = not said */
+    double lane_change_s;
     int n;
     fw_stream streams[FW_DEMAND_MAX_STREAMS];
 } fw_demand;
@@ -55,6 +59,10 @@ typedef struct fw_network_files {
     char types[1024];
 } fw_network_files;
 fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err);
+/* Every edge the demand's streams name is an edge of the network's sources
+ * (networks/NAME/NAME.edg.xml): else FW_EINPUT at the demand's line and
+ * field, before SUMO is started for nothing. */
+fw_status fw_network_check_demand(const char *name, const fw_demand *dm, fw_error *err);
 
 /* Total ships per hour at density 1. */
 double fw_demand_rate(const fw_demand *d);

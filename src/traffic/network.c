@@ -1,6 +1,7 @@
 /* network.c - where a network's files are: the net.xml in the build tree
  * (netconvert output), the sources and demand under the data root. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -10,7 +11,7 @@
 
 fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err)
 {
-    static const char *const known = "channel, crossing, strait, sea";
+    static const char *const known = "channel, crossing, strait, sea, dover";
     size_t n = strlen(name);
     bool ok = n > 0 && n < 64 && strspn(name, "abcdefghijklmnopqrstuvwxyz"
                                               "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;
@@ -33,4 +34,60 @@ fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err
     if (access(out->types, R_OK) != 0)
         return fw_fail(err, FW_EINPUT, "no ship types file %s", out->types);
     return FW_OK;
+}
+
+/* Is id the id of an <edge> in the plain-XML edges text? */
+static bool has_edge(const char *xml, const char *id)
+{
+    size_t n = strlen(id);
+    for (const char *p = strstr(xml, "<edge"); p; p = strstr(p + 5, "<edge")) {
+        const char *end = strchr(p, '>');
+        const char *a = strstr(p, " id=\"");
+        if (a && (!end || a < end) && strncmp(a + 5, id, n) == 0 && a[5 + n] == '"')
+            return true;
+    }
+    return false;
+}
+
+fw_status fw_network_check_demand(const char *name, const fw_demand *dm, fw_error *err)
+{
+    char path[1200];
+    fw_status st = fw_path(path, sizeof path, err, "%s/networks/%s/%s.edg.xml", fw_data_root(),
+                           name, name);
+    if (st)
+        return st;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return fw_fail(err, FW_EINPUT, "network '%s': cannot read %s", name, path);
+    char *xml = NULL;
+    size_t len = 0, cap = 0, got;
+    char buf[4096];
+    while ((got = fread(buf, 1, sizeof buf, f)) > 0) {
+        if (len + got + 1 > cap) {
+            cap = 2 * (len + got + 1);
+            char *p = realloc(xml, cap);
+            if (!p) {
+                free(xml);
+                fclose(f);
+                return fw_fail(err, FW_ERUN, "out of memory reading %s", path);
+            }
+            xml = p;
+        }
+        memcpy(xml + len, buf, got);
+        len += got;
+    }
+    fclose(f);
+    if (!xml)
+        return fw_fail(err, FW_EINPUT, "network '%s': %s is empty", name, path);
+    xml[len] = '\0';
+    for (int i = 0; !st && i < dm->n; i++)
+        for (int k = 0; !st && k < dm->streams[i].n_edges; k++)
+            if (!has_edge(xml, dm->streams[i].edges[k])) {
+                char field[64];
+                snprintf(field, sizeof field, "streams[%d].edges", i);
+                st = fw_fail_at(err, dm->file, dm->streams[i].edge_line[k], field,
+                                "edge '%s' is not in %s", dm->streams[i].edges[k], path);
+            }
+    free(xml);
+    return st;
 }

@@ -11,6 +11,10 @@
  *   around()     the ships within sight of the own ship, sorted by id
  *   area()       every ship within the area radius of the own ship, the own
  *                ship included (flagged own), sorted by id: the survey's input
+ *   nearby()     the ships that give way to each other (world/reactions.h):
+ *                watched beyond sight, so that none comes into sight in the
+ *                middle of a crossing nobody handled (optional: a source
+ *                without it gives around())
  *   set_speed()  a ship told to hold a speed (or to go on as before)
  *
  * Sources:
@@ -37,6 +41,7 @@ typedef struct fw_source_ops {
     fw_status (*advance)(fw_source *s, fw_error *err);
     fw_status (*around)(fw_source *s, const fw_target **ships, int *n, fw_error *err);
     fw_status (*area)(fw_source *s, const fw_target **ships, int *n, fw_error *err);
+    fw_status (*nearby)(fw_source *s, const fw_target **ships, int *n, fw_error *err);
     /* Holds ship id at speed (m/s) from the next step on; speed < 0 gives it
      * back its own (the scripted or SUMO's).  The world's reactive traffic
      * (world/reactions.h) gives way through it. */
@@ -67,6 +72,11 @@ static inline fw_status fw_source_around(fw_source *s, const fw_target **v, int 
 static inline fw_status fw_source_area(fw_source *s, const fw_target **v, int *n, fw_error *err)
 {
     return s->ops->area(s, v, n, err);
+}
+static inline fw_status fw_source_nearby(fw_source *s, const fw_target **v, int *n,
+                                         fw_error *err)
+{
+    return s->ops->nearby ? s->ops->nearby(s, v, n, err) : s->ops->around(s, v, n, err);
 }
 static inline fw_status fw_source_set_speed(fw_source *s, const char *id, double speed,
                                             fw_error *err)

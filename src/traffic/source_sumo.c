@@ -9,6 +9,7 @@
 #include "core/clock.h"
 #include "core/files.h"
 #include "core/mem.h"
+#include "core/units.h"
 #include "geom/geom.h"
 #include "traffic/demand.h"
 #include "ship/ship.h"
@@ -32,6 +33,7 @@ typedef struct sumo_source {
     fw_target *labels;    /* explicit targets: id -> the scenario's type label */
     int n_labels;
     int cleared;          /* fill ships taken out at the start */
+    double near_radius;   /* m, nearby() (0: around())   */
 } sumo_source;
 
 fw_sumo_source_def fw_default_sumo_source_def(void)
@@ -120,19 +122,23 @@ static fw_status write_tracks(const fw_sumo_source_def *d, fw_error *err)
 typedef struct sumo_files {
     char net[1200], routes[2600], types[1100];
     bool has_types;
+    double lane_change_s; /* the network's (0: the default) */
 } sumo_files;
 
 /* A network's demand as a route file in dir (drou). */
 static fw_status write_demand(const fw_sumo_source_def *d, const fw_network_files *nf,
-                              const char *drou, fw_error *err)
+                              const char *drou, double *lane_change_s, fw_error *err)
 {
     fw_demand dm;
     fw_demand_def dd = fw_default_demand_def();
     dd.density = d->density;
-    dd.fill = d->fill;
+    /* the fill is given at density 1 and scales with it, as the arrivals do:
+     * a study sweeping density starts each run near its own steady state */
+    dd.fill = (int)lround(d->fill * d->density);
     dd.end = d->duration + d->step;
     dd.seed = d->seed;
     fw_status st = fw_demand_load(nf->demand, &dm, err);
+    *lane_change_s = dm.lane_change_s;
     return st ? st : fw_demand_write(&dm, &dd, drou, err);
 }
 
@@ -161,7 +167,7 @@ static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *e
             (st = fw_path(edges, sizeof edges, err, "%s.edg.xml,tracks.edg.xml", pre)) ||
             (st = fw_path(typ, sizeof typ, err, "%s.typ.xml", pre)) ||
             (st = fw_path(drou, sizeof drou, err, "%s/demand.rou.xml", d->dir)) ||
-            (st = write_demand(d, &nf, drou, err)))
+            (st = write_demand(d, &nf, drou, &f->lane_change_s, err)))
             return st;
         types = typ;
         st = d->n_targets > 0
@@ -251,6 +257,14 @@ static fw_status ss_area(fw_source *s, const fw_target **v, int *n, fw_error *er
     return fw_traffic_area(((sumo_source *)s)->tr, v, n, err);
 }
 
+static fw_status ss_nearby(fw_source *s, const fw_target **v, int *n, fw_error *err)
+{
+    sumo_source *k = (sumo_source *)s;
+    if (!(k->near_radius > 0.0))
+        return ss_around(s, v, n, err);
+    return fw_traffic_nearby(k->tr, v, n, err);
+}
+
 static fw_status ss_set_speed(fw_source *s, const char *id, double speed, fw_error *err)
 {
     return fw_traffic_set_speed(((sumo_source *)s)->tr, id, speed, err);
@@ -265,6 +279,7 @@ static void ss_destroy(fw_source *s)
 
 static const fw_source_ops sumo_ops = {.name = "sumo", .place = ss_place, .advance = ss_advance,
                                        .around = ss_around, .area = ss_area,
+                                       .nearby = ss_nearby,
                                        .set_speed = ss_set_speed, .time = ss_time,
                                        .step_length = ss_step_length, .destroy = ss_destroy};
 
@@ -280,6 +295,29 @@ double fw_sumo_source_step_wall(const fw_source *s)
 
 /* The fill's ships too close to the own ship at t = 0, taken out (see
  * source_sumo.h); *n_out counts them. */
+/* Is the fill's ship i on a collision course with another of the fill (its
+ * hulls within clear_cpa in the next clear_tcpa s, crossing, not following in
+ * a lane)?  Put there at the start it has no time to give way: the later
+ * of the two in SUMO's order is taken out. */
+static bool fill_conflict(const fw_sumo_source_def *d, const fw_target *v, const bool *out, int i)
+{
+    double ie, in;
+    fw_velocity(v[i].speed, v[i].course, &ie, &in);
+    for (int j = 0; j < i; j++) {
+        if (out[j] || cos(v[i].course - v[j].course) > cos(fw_deg_to_rad(30.0)))
+            continue;
+        double je, jn, tc, dc;
+        fw_velocity(v[j].speed, v[j].course, &je, &jn);
+        fw_cpa(v[j].east - v[i].east, v[j].north - v[i].north, je - ie, jn - in, &tc, &dc);
+        if (tc > 0.0 && tc < d->clear_tcpa && dc < d->clear_cpa)
+            return true;
+    }
+    return false;
+}
+
+/* After SUMO's first step, the fill's ships that would be a scenario's
+ * artefact rather than traffic are taken out: near the own ship or on a
+ * collision course with it, or on one with another of the fill. */
 static fw_status clear_start(sumo_source *k, const fw_sumo_source_def *d, int *n_out,
                              fw_error *err)
 {
@@ -291,8 +329,12 @@ static fw_status clear_start(sumo_source *k, const fw_sumo_source_def *d, int *n
         return st;
     /* ids first: removing changes the list */
     char (*ids)[FW_TARGET_ID_MAX] = malloc(sizeof *ids * (size_t)(n + 1));
-    if (!ids)
+    bool *out = calloc((size_t)n + 1, sizeof *out);
+    if (!ids || !out) {
+        free(ids);
+        free(out);
         return fw_fail(err, FW_ERUN, "out of memory");
+    }
     int m = 0;
     double oe, on;
     fw_velocity(d->own.speed, d->own.course, &oe, &on);
@@ -304,12 +346,15 @@ static fw_status clear_start(sumo_source *k, const fw_sumo_source_def *d, int *n
         fw_cpa(de, dn, ve - oe, vn - on, &tc, &dc);
         bool close = hypot(de, dn) < d->clear_range;
         bool coming = tc > 0.0 && tc < d->clear_tcpa && dc < d->clear_cpa;
-        if (close || coming)
+        if (close || coming || fill_conflict(d, v, out, i)) {
+            out[i] = true;
             memcpy(ids[m++], v[i].id, FW_TARGET_ID_MAX);
+        }
     }
     for (int i = 0; i < m && !st; i++)
         st = fw_traffic_remove(k->tr, ids[i], err);
     free(ids);
+    free(out);
     *n_out = m;
     return st;
 }
@@ -350,6 +395,10 @@ fw_status fw_sumo_source_create(const fw_sumo_source_def *d, fw_source **out, fw
     td.own_edge = d->n_targets > 0 || !(d->network && d->network[0]) ? "fw_own" : NULL;
     td.radius = d->radius;
     td.area_radius = d->area_radius;
+    td.near_radius = d->near_radius;
+    if (f.lane_change_s > 0.0)
+        td.lane_change_s = f.lane_change_s;
+    k->near_radius = d->near_radius;
     /* SUMO inserts the targets during its first step: after it, their
      * positions are those of fairway's t = 0 */
     int cleared = 0;

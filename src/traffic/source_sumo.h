@@ -23,7 +23,10 @@
  * ship (not an explicit target) that SUMO's fill put within clear_range of
  * the own ship, or on a course that would bring it within clear_cpa of it in
  * the next clear_tcpa seconds (both at constant velocity), is taken out: a
- * study must not begin with a ship already on top of the own ship.
+ * study must not begin with a ship already on top of the own ship.  So is
+ * the later (in SUMO's order) of two network ships on crossing courses (more
+ * than 30 deg apart) that would come that close that soon: put there at the
+ * start they would have no time to give way.
  */
 #ifndef FW_SOURCE_SUMO_H
 #define FW_SOURCE_SUMO_H
@@ -36,7 +39,7 @@ typedef struct fw_sumo_source_def {
     const char *dir;            /* SUMO's files and logs go here (it must exist) */
     const char *network;        /* networks/NAME; NULL or "" = none */
     double density;             /* demand scale */
-    int fill;                   /* network ships along the routes at t = 0 */
+    int fill;                   /* network ships along the routes at t = 0, at density 1 */
     unsigned long seed;         /* SUMO's and the demand's */
     double duration;            /* s, the run; flows run to duration + step */
     double step;                /* s */
@@ -46,6 +49,7 @@ typedef struct fw_sumo_source_def {
     double own_leg;             /* m, planned straight leg along the course */
     double radius;              /* m, sight (own hull centre to SUMO's front bumper) */
     double area_radius;         /* m, 0 = no area query */
+    double near_radius;         /* m, the reactive traffic's (0: the sight's) */
     double clear_range;         /* m, 2 nm */
     double clear_cpa;           /* m, 0.25 nm (a collision course) ... */
     double clear_tcpa;          /* s, ... within 600 s */

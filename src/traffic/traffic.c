@@ -35,6 +35,8 @@ struct fw_traffic {
     int ships_cap;
     fw_target *area;
     int area_cap;
+    fw_target *near;
+    int near_cap;
     fw_target *conv;       /* the context results converted (and motion followed) */
     int conv_cap;
     /* the hull centre of every ship at its last context step, by id: the
@@ -193,6 +195,9 @@ static fw_status check_def(const fw_traffic_def *d, fw_error *err)
     if (!(d->area_radius >= 0.0 && isfinite(d->area_radius)))
         return fw_fail(err, FW_EINPUT, "traffic area radius %g m: must be 0 (none) or positive",
                        d->area_radius);
+    if (!(d->near_radius >= 0.0 && isfinite(d->near_radius)))
+        return fw_fail(err, FW_EINPUT, "traffic near radius %g m: must be 0 (none) or positive",
+                       d->near_radius);
     if (!(d->own_length > 0.0 && d->own_width > 0.0))
         return fw_fail(err, FW_EINPUT, "own ship %g x %g m: length and width must be positive",
                        d->own_length, d->own_width);
@@ -306,7 +311,7 @@ void fw_traffic_close(fw_traffic *t)
     }
     if (t->child > 0)
         fw_spawn_stop(t->child);
-    fw_free_each(4, t->raw.v, t->ctx.v, t->ships, t->area);
+    fw_free_each(5, t->raw.v, t->ctx.v, t->ships, t->area, t->near);
     fw_idmap_free(&t->ids);
     fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
 }
@@ -346,6 +351,8 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
     t->query_radius = def->radius;
     if (def->area_radius > 0.0)
         t->query_radius = fmax(def->radius, def->area_radius + kHalfLengthMax);
+    if (def->near_radius > 0.0)
+        t->query_radius = fmax(t->query_radius, def->near_radius + kHalfLengthMax);
     t->ctx_step = -1;
     if ((st = t->be->add_own(t->own_id, def->own_length, def->own_width, def->own_edge,
                              t->query_radius, err))) {
@@ -557,27 +564,43 @@ static int cmp_id(const void *a, const void *b)
     return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
+/* The background ships of this step's context results whose hull centres
+ * are within radius of the own ship's, into *buf (room for one more: the
+ * area adds the own ship); their count, or -1 with *err set (what: the
+ * query's name, for a def without its radius). */
+static int within(fw_traffic *t, const char *what, double radius, fw_target **buf, int *cap,
+                  fw_error *err)
+{
+    if (alive(t, err))
+        return -1;
+    if (!(radius > 0.0)) {
+        fw_fail(err, FW_ERUN, "no %s query: the traffic def has no %s radius", what, what);
+        return -1;
+    }
+    if (!t->placed) {
+        fw_fail(err, FW_ERUN, "no %s query before the own ship is placed", what);
+        return -1;
+    }
+    fw_status st = context(t, err);
+    if (!st)
+        st = room(buf, cap, t->ctx.n + 1, err);
+    if (st)
+        return -1;
+    int m = 0;
+    for (int i = 0; i < t->ctx.n; i++) {
+        const fw_target *s = &t->conv[i];
+        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= radius)
+            (*buf)[m++] = *s;
+    }
+    return m;
+}
+
 fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     *n = 0;
-    if (alive(t, err))
-        return FW_ERUN;
-    if (!(t->def.area_radius > 0.0))
-        return fw_fail(err, FW_ERUN, "no area query: the traffic def has no area_radius");
-    if (!t->placed)
-        return fw_fail(err, FW_ERUN, "no area before the own ship is placed");
-    fw_status st = context(t, err);
-    if (!st)
-        st = room(&t->area, &t->area_cap, t->ctx.n + 1, err);
-    if (st)
-        return st;
-    int m = 0;
-    for (int i = 0; i < t->ctx.n; i++) {
-        fw_target *s = &t->area[m];
-        *s = t->conv[i];
-        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= t->def.area_radius)
-            m++;
-    }
+    int m = within(t, "area", t->def.area_radius, &t->area, &t->area_cap, err);
+    if (m < 0)
+        return err->status;
     /* the own ship as placed: SUMO may not list a vehicle moved off its lanes */
     fw_target *o = &t->area[m++];
     memset(o, 0, sizeof *o);
@@ -592,6 +615,18 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
     o->own = true;
     qsort(t->area, (size_t)m, sizeof *t->area, cmp_id);
     *ships = t->area;
+    *n = m;
+    return FW_OK;
+}
+
+fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    int m = within(t, "nearby", t->def.near_radius, &t->near, &t->near_cap, err);
+    if (m < 0)
+        return err->status;
+    qsort(t->near, (size_t)m, sizeof *t->near, cmp_id);
+    *ships = t->near;
     *n = m;
     return FW_OK;
 }

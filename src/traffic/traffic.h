@@ -73,6 +73,7 @@ typedef struct fw_traffic_def {
     /* The queries. */
     double radius;           /* m, fw_traffic_around: own hull centre to front bumpers (SUMO) */
     double area_radius;      /* m, fw_traffic_area: hull centre to hull centre; 0 = no area */
+    double near_radius;      /* m, fw_traffic_nearby: hull centre to hull centre; 0 = none */
 } fw_traffic_def;
 
 /* embedded, step 1 s, seed 1, lane changes 900 s, radius 6 nm, no area, own ship
@@ -92,7 +93,8 @@ typedef struct fw_traffic fw_traffic;
 
 /* Starts or connects to SUMO, adds the own ship's type, route and vehicle and
  * the range query: one context subscription of radius max(radius, area_radius
- * + the half length of the longest ship), which both queries filter.  Call
+ * or near_radius + the half length of the longest ship), which the queries
+ * filter.  Call
  * fw_traffic_place before the first step. */
 fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error *err);
 /* Ends the simulation (or the connection), stops a sumo-gui started here and
@@ -121,6 +123,12 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n,
  * fw_traffic_around (one query per step); *ships points into t and stays
  * valid until the next step.  FW_ERUN if the def has no area_radius. */
 fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_error *err);
+/* Every background ship whose hull centre is within near_radius of the own
+ * ship's, sorted by id (own ship excluded): the ships that give way to each
+ * other, watched farther out than the own ship sees so that none comes into
+ * sight in the middle of a crossing nobody handled.  The same context
+ * results again.  FW_ERUN if the def has no near_radius. */
+fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_error *err);
 double fw_traffic_time(const fw_traffic *t); /* s, SUMO time after the last step */
 
 /* For checks, not for the step loop (one SUMO call per ship and variable):

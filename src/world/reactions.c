@@ -9,6 +9,7 @@
 
 #include "core/idmap.h"
 #include "core/mem.h"
+#include "core/names.h"
 #include "core/units.h"
 #include "geom/geom.h"
 
@@ -20,6 +21,7 @@ typedef struct react_state {
     double hold;     /* m/s */
     char other[FW_TARGET_ID_MAX]; /* the ship it last gave way to */
     bool rule17;     /* holding as a stand-on ship's last action (rule 17(b)) */
+    double t_next;   /* s, when it looks round again (every interval s) */
 } react_state;
 
 struct fw_reactions {
@@ -31,6 +33,8 @@ struct fw_reactions {
     int nlog, logcap;
     int *list;       /* scratch: the ships one ship gives way to */
     int list_cap;
+    int *nb;         /* scratch: the ships within range of the one deciding */
+    int nnb;
     /* this step's ships (the own ship last) and the sines and cosines of
      * their courses, computed once: the pair loops' trigonometry */
     const fw_target *all;
@@ -43,33 +47,29 @@ fw_reactions_def fw_default_reactions_def(void)
     return (fw_reactions_def){.behaviour = FW_BEHAVIOUR_COLREGS, .cpa = 0.5 * FW_NMILE,
                               .horizon = 900.0, .range = 8000.0, .min_speed = 0.3,
                               .parallel = fw_deg_to_rad(30.0), .last_cpa = 0.25 * FW_NMILE,
-                              .last_time = 240.0,
+                              .last_time = 240.0, .interval = 10.0,
                               .colregs = fw_default_colregs_def()};
 }
 
-const char *fw_behaviour_name(fw_behaviour b)
-{
-    return b == FW_BEHAVIOUR_BLIND ? "blind" : "colregs";
-}
+static const char *const kBehaviourNames[] = {"colregs", "blind"}; /* fw_behaviour order */
+
+const char *fw_behaviour_name(fw_behaviour b) { return fw_name_of(kBehaviourNames, 2, (int)b); }
 
 fw_status fw_behaviour_parse(const char *text, fw_behaviour *out)
 {
-    if (strcmp(text, "colregs") == 0)
-        *out = FW_BEHAVIOUR_COLREGS;
-    else if (strcmp(text, "blind") == 0)
-        *out = FW_BEHAVIOUR_BLIND;
-    else
-        return FW_EINPUT;
-    return FW_OK;
+    int k = fw_name_find(kBehaviourNames, 2, text);
+    *out = k < 0 ? *out : (fw_behaviour)k;
+    return k < 0 ? FW_EINPUT : FW_OK;
 }
 
 fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, fw_error *err)
 {
     *out = NULL;
     if (!(def->cpa > 0.0) || !(def->horizon > 0.0) || !(def->range > 0.0) ||
-        !(def->min_speed >= 0.0 && def->min_speed < 1.0))
-        return fw_fail(err, FW_EINPUT,
-                       "reactions: cpa, horizon and range must be positive, min_speed in [0, 1)");
+        !(def->min_speed >= 0.0 && def->min_speed < 1.0) ||
+        !(def->interval >= 0.0 && def->interval <= 60.0))
+        return fw_fail(err, FW_EINPUT, "reactions: cpa, horizon and range must be positive, "
+                                       "min_speed in [0, 1), interval 0 to 60 s");
     fw_reactions *r = calloc(1, sizeof *r);
     if (!r)
         return fw_fail(err, FW_ERUN, "out of memory");
@@ -84,7 +84,12 @@ void fw_reactions_destroy(fw_reactions *r)
     if (!r)
         return;
     fw_idmap_free(&r->ids);
-    fw_free_each(6, r->s, r->list, r->sn, r->cs, r->log, r);
+    fw_free_each(7, r->s, r->list, r->nb, r->sn, r->cs, r->log, r);
+}
+
+bool fw_reactions_active(const fw_reactions *r)
+{
+    return r && r->def.behaviour != FW_BEHAVIOUR_BLIND;
 }
 
 const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n)
@@ -104,13 +109,21 @@ static void vel(const fw_reactions *r, const fw_target *t, double v, double *ve,
     *vn = v * r->cs[i];
 }
 
-static void cpa_at(const fw_reactions *r, const fw_target *a, double va, const fw_target *b,
-                   double *tcpa, double *dcpa)
+static void cpa_sq_at(const fw_reactions *r, const fw_target *a, double va, const fw_target *b,
+                      double *tcpa, double *dcpa2)
 {
     double ae, an, be, bn;
     vel(r, a, va, &ae, &an);
     vel(r, b, b->speed, &be, &bn);
-    fw_cpa(b->east - a->east, b->north - a->north, be - ae, bn - an, tcpa, dcpa);
+    fw_cpa_sq(b->east - a->east, b->north - a->north, be - ae, bn - an, tcpa, dcpa2);
+}
+
+static void cpa_at(const fw_reactions *r, const fw_target *a, double va, const fw_target *b,
+                   double *tcpa, double *dcpa)
+{
+    double d2;
+    cpa_sq_at(r, a, va, b, tcpa, &d2);
+    *dcpa = sqrt(d2);
 }
 
 /* Does a, at speed va, have to give way to b (risk, and its role)? */
@@ -169,13 +182,14 @@ static bool is_threat(const fw_reactions *r, const fw_target *a, double va, doub
 }
 
 /* The ships a gives way to at speed va: the count, and the nearest in time. */
-static int threats(const fw_reactions *r, int self, const fw_target *all, int n, double va,
+static int threats(const fw_reactions *r, int self, const fw_target *all, double va,
                    double vh, double cpa, const char *keep, int *nearest, fw_situation *sit,
                    double *dcpa)
 {
     int k = 0;
     double tbest = INFINITY;
-    for (int j = 0; j < n; j++) {
+    for (int q = 0; q < r->nnb; q++) {
+        int j = r->nb[q]; /* the ships in range (react) */
         fw_situation s;
         double tc, dc;
         if (j == self || !is_threat(r, &all[self], va, vh, &all[j], cpa, keep, &s, &tc, &dc))
@@ -193,11 +207,12 @@ static int threats(const fw_reactions *r, int self, const fw_target *all, int n,
 
 /* Does a at speed v pass every ship it gives way to (at v0) at cpa? */
 /* The ships a gives way to (at cpa) into list; their count. */
-static int threat_list(const fw_reactions *r, int self, const fw_target *all, int n, double v0,
+static int threat_list(const fw_reactions *r, int self, const fw_target *all, double v0,
                        double vh, const char *keep, int *list)
 {
     int m = 0;
-    for (int j = 0; j < n; j++) {
+    for (int q = 0; q < r->nnb; q++) {
+        int j = r->nb[q]; /* the ships in range (react) */
         fw_situation s0;
         double t0, d0;
         if (j != self &&
@@ -226,26 +241,46 @@ static void nearest_of(const fw_reactions *r, int self, const fw_target *all, co
     }
 }
 
-/* Does a at speed v pass every ship of list at cpa (or are they past)? */
-static bool clears_at(const fw_reactions *r, const fw_target *a, const fw_target *all,
-                      const int *list, int m, double v, double *dcpa)
+/* The closest a, at speed v, would pass (within the horizon, ahead) any ship
+ * it has to keep clear of (r->nb: in range, and not a background ship on a
+ * parallel course, which SUMO keeps apart) other than skip (-1: none).  It
+ * stops at the first below floor (0: never), which then is all one needs. */
+static double min_pass(const fw_reactions *r, int self, const fw_target *all, double v,
+                       int skip, double floor)
 {
-    *dcpa = INFINITY;
-    for (int q = 0; q < m; q++) {
-        double tc, dc;
-        cpa_at(r, a, v, &all[list[q]], &tc, &dc);
-        if (!(tc <= 0.0 || dc >= r->def.cpa))
-            return false;
-        *dcpa = fmin(*dcpa, dc);
+    const fw_target *a = &all[self];
+    double best = INFINITY, floor2 = floor * floor; /* squared: one root at the end */
+    for (int q = 0; q < r->nnb && best >= floor2; q++) {
+        int j = r->nb[q];
+        if (j == skip)
+            continue;
+        double tc, d2;
+        cpa_sq_at(r, a, v, &all[j], &tc, &d2);
+        if (tc > 0.0 && tc < r->def.horizon && d2 < best)
+            best = d2;
     }
-    return true;
+    return sqrt(best);
+}
+
+/* Does a at speed v pass every ship near it at cpa or more (or are they
+ * past)?  Every ship, not only those it gives way to: slowing down for one
+ * must not put it in another's way (a ferry slowing in one lane for a ship
+ * of the next stays across the bows of the first lane's ships, which are
+ * slowing to pass astern of it).  One test for all keeps the answer from
+ * changing with which list a ship happens to be in from one step to the
+ * next. */
+static bool clears_at(const fw_reactions *r, int self, const fw_target *all, double v,
+                      double *dcpa)
+{
+    *dcpa = min_pass(r, self, all, v, -1, r->def.cpa);
+    return *dcpa >= r->def.cpa;
 }
 
 /* The fastest speed from v0 (or the speed it holds, vh) down to min_speed v0
- * (5 % steps) at which a passes every ship it gives way to at cpa or more;
- * *enough false if none. */
-/* (see the two passes below) */
-static double yielding_speed(const fw_reactions *r, const fw_target *a, const fw_target *all,
+ * (5 % steps) at which a passes every ship near it at cpa or more (those it
+ * gives way to and all the others); *enough false if none: then the speed, from v0
+ * down, that passes farthest from every ship near it. */
+static double yielding_speed(const fw_reactions *r, int self, const fw_target *all,
                              const int *list, int m, double v0, double vh, bool *enough,
                              double *dcpa_after)
 {
@@ -265,14 +300,28 @@ static double yielding_speed(const fw_reactions *r, const fw_target *a, const fw
             bool slower = vh < 0.0 || v <= vh + 1e-9;
             if (slower != (pass == 0))
                 continue;
-            if (clears_at(r, a, all, list, m, v, dcpa_after)) {
+            if (clears_at(r, self, all, v, dcpa_after)) {
                 *enough = true;
                 return v;
             }
         }
     *enough = false;
     *dcpa_after = NAN;
-    return r->def.min_speed * v0;
+    /* held already, it changes only for a clearly better speed (50 m):
+     * between two alike it would otherwise swing from one to the other */
+    double best = vh >= 0.0 ? vh : v0;
+    double dbest = min_pass(r, self, all, best, -1, 0.0) + (vh >= 0.0 ? 50.0 : 0.0);
+    for (int k = 0; k <= 20; k++) {
+        double v = v0 * (1.0 - 0.05 * k);
+        if (v < r->def.min_speed * v0 - 1e-12)
+            break;
+        if (own && vh >= 0.0 && v > vh + 1e-9)
+            continue;
+        double d = min_pass(r, self, all, v, -1, 0.0);
+        if (d > dbest + 1e-6)
+            best = v, dbest = d;
+    }
+    return best;
 }
 
 static fw_status record(fw_reactions *r, const fw_reaction *x, fw_error *err)
@@ -293,13 +342,14 @@ static fw_status record(fw_reactions *r, const fw_reaction *x, fw_error *err)
  * last_cpa within last_time s) takes the action that best aids: the speed
  * (from its own down to min_speed, 5 % steps) that passes farthest.  *j_out:
  * the closest such ship (-1: none). */
-static double last_action(const fw_reactions *r, int self, const fw_target *all, int n,
-                          double v0, int *j_out, double *dcpa_now, double *dcpa_best)
+static double last_action(const fw_reactions *r, int self, const fw_target *all, double v0,
+                          double vh, int *j_out, double *dcpa_now, double *dcpa_best)
 {
     const fw_target *a = &all[self];
     *j_out = -1;
     double tbest = INFINITY;
-    for (int j = 0; j < n; j++) {
+    for (int q = 0; q < r->nnb; q++) {
+        int j = r->nb[q]; /* the ships in range (react) */
         double tc, dc;
         double de = all[j].east - a->east, dn = all[j].north - a->north;
         if (j == self || de * de + dn * dn > r->def.range * r->def.range)
@@ -317,29 +367,34 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
     }
     if (*j_out < 0)
         return v0;
-    double best = v0, dbest = *dcpa_now;
-    for (int k = 1; k <= 20; k++) {
+    /* the speed that passes farthest from it and from every other ship near
+     * (slowing for one must not close on another); a speed held already
+     * changes only for one clearly better (50 m), or it would swing */
+    double best = vh >= 0.0 ? vh : v0;
+    double score = min_pass(r, self, all, best, -1, 0.0) + (vh >= 0.0 ? 50.0 : 0.0);
+    *dcpa_best = *dcpa_now;
+    for (int k = 0; k <= 20; k++) {
         double v = v0 * (1.0 - 0.05 * k), tc, dc;
         if (v < r->def.min_speed * v0 - 1e-12)
             break;
-        cpa_at(r, a, v, &all[*j_out], &tc, &dc);
-        if (tc <= 0.0)
-            dc = INFINITY;
-        if (dc > dbest)
-            best = v, dbest = dc;
+        double s = min_pass(r, self, all, v, -1, 0.0);
+        if (s > score + 1e-6) {
+            cpa_at(r, a, v, &all[*j_out], &tc, &dc);
+            best = v, score = s, *dcpa_best = tc <= 0.0 ? INFINITY : dc;
+        }
     }
-    *dcpa_best = dbest;
     return best;
 }
 
 /* The stand-on ship's part (rule 17(b)): a speed order, or its speed back. */
-static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *all, int n,
+static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *all,
                           react_state *st, fw_source *src, fw_error *err)
 {
     const fw_target *a = &all[self];
     int j;
     double now = INFINITY, best = INFINITY;
-    double v = last_action(r, self, all, n, st->v0, &j, &now, &best);
+    double v = last_action(r, self, all, st->v0, st->holding ? st->hold : -1.0, &j, &now,
+                           &best);
     fw_reaction x = {.t = t, .situation = FW_SIT_STAND_ON, .dcpa_before = now, .dcpa_after = best,
                      .enough = best >= r->def.last_cpa};
     snprintf(x.ship, sizeof x.ship, "%s", a->id);
@@ -371,7 +426,27 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
      * that a ship given its speed back is not told again while it picks up */
     if (!st->seen || (!st->holding && a->speed > st->v0))
         st->v0 = a->speed;
+    /* a watch officer looks round every interval s, not every step: the
+     * ships' first looks are spread over the interval by their place in
+     * the list, so the work is too */
+    if (!st->seen)
+        st->t_next = t + fmod((double)self, fmax(r->def.interval, 1e-9));
     st->seen = true;
+    if (t < st->t_next - 1e-9)
+        return FW_OK;
+    st->t_next = t + r->def.interval;
+    /* every pair loop below goes over the ships in range only, and not
+     * over background ships on parallel courses: those share the lanes
+     * and pass by overtaking, which SUMO's car following keeps apart (the
+     * cosine of the course difference from the unit vectors) */
+    r->nnb = 0;
+    for (int j = 0; j < n; j++) {
+        double de = all[j].east - a->east, dn = all[j].north - a->north;
+        bool parallel = !all[j].own && r->sn[self] * r->sn[j] + r->cs[self] * r->cs[j] >
+                                           r->cos_parallel;
+        if (j != self && !parallel && de * de + dn * dn <= r->def.range * r->def.range)
+            r->nb[r->nnb++] = j;
+    }
     double v0 = st->v0;
     int nearest = -1;
     fw_situation sit = FW_SIT_GIVE_WAY;
@@ -383,8 +458,8 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     double vh = st->holding ? st->hold : -1.0;
     /* the ships it gives way to (at cpa; held, those that would keep it from
      * its speed: at kResume cpa) */
-    int m = threat_list(r, self, all, n, v0, vh, keep, r->list);
-    int k = st->holding ? threats(r, self, all, n, v0, vh, kResume * r->def.cpa, keep, &nearest,
+    int m = threat_list(r, self, all, v0, vh, keep, r->list);
+    int k = st->holding ? threats(r, self, all, v0, vh, kResume * r->def.cpa, keep, &nearest,
                                   &sit, &dcpa)
                         : m;
     if (!st->holding && m > 0)
@@ -392,7 +467,7 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     fw_reaction x = {.t = t, .situation = sit, .dcpa_before = dcpa};
     snprintf(x.ship, sizeof x.ship, "%s", a->id);
     if (k == 0 && (!st->holding || st->rule17))
-        return stand_on(r, t, self, all, n, st, src, err);
+        return stand_on(r, t, self, all, st, src, err);
     st->rule17 = false;
     if (k == 0) {
         /* not while the ship it gave way to is still this close: around the
@@ -413,9 +488,9 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     double after;
     /* the speed it holds still keeps every ship it gives way to at cpa (a
      * new one may need another: slower is not always clear of a crossing) */
-    if (st->holding && clears_at(r, a, all, r->list, m, st->hold, &after))
+    if (st->holding && clears_at(r, self, all, st->hold, &after))
         return FW_OK;
-    double v = yielding_speed(r, a, all, r->list, m, v0, vh, &x.enough, &after);
+    double v = yielding_speed(r, self, all, r->list, m, v0, vh, &x.enough, &after);
     if (st->holding && fabs(v - st->hold) < 0.05 * v0)
         return FW_OK; /* the best there is, already ordered */
     snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
@@ -430,6 +505,26 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     return s2 ? s2 : record(r, &x, err);
 }
 
+/* The state of ship id (interned, the array grown to hold it). */
+static react_state *state_of(fw_reactions *r, const char *id, fw_error *err)
+{
+    int k;
+    if (fw_idmap_intern(&r->ids, id, &k)) {
+        fw_fail(err, FW_ERUN, "out of memory for ship ids");
+        return NULL;
+    }
+    if (k >= r->cap) {
+        int cap = fw_grown_cap(r->cap, k + 1);
+        if (!fw_resize((void **)&r->s, sizeof *r->s, (size_t)cap)) {
+            fw_fail(err, FW_ERUN, "out of memory for ship ids");
+            return NULL;
+        }
+        memset(r->s + r->cap, 0, sizeof *r->s * (size_t)(cap - r->cap));
+        r->cap = cap;
+    }
+    return &r->s[k];
+}
+
 fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
                             const fw_target *ships, int n, fw_source *src, fw_error *err)
 {
@@ -441,7 +536,8 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
         return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
     memcpy(all, ships, sizeof *all * (size_t)n);
     if (n + 1 > r->list_cap) {
-        if (!fw_resize((void **)&r->list, sizeof *r->list, (size_t)(n + 1))) {
+        if (!fw_resize_each((size_t)(n + 1), 2, (void **)&r->list, sizeof *r->list,
+                            (void **)&r->nb, sizeof *r->nb)) {
             free(all);
             return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
         }
@@ -464,21 +560,8 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
     r->all = all;
     fw_status st = FW_OK;
     for (int i = 0; i < n && !st; i++) {
-        int id;
-        if (fw_idmap_intern(&r->ids, ships[i].id, &id)) {
-            st = fw_fail(err, FW_ERUN, "out of memory for ship ids");
-            break;
-        }
-        if (id >= r->cap) {
-            int cap = fw_grown_cap(r->cap, id + 1);
-            if (!fw_resize((void **)&r->s, sizeof *r->s, (size_t)cap)) {
-                st = fw_fail(err, FW_ERUN, "out of memory for ship ids");
-                break;
-            }
-            memset(r->s + r->cap, 0, sizeof *r->s * (size_t)(cap - r->cap));
-            r->cap = cap;
-        }
-        st = react(r, t, i, all, m, &r->s[id], src, err);
+        react_state *s = state_of(r, ships[i].id, err);
+        st = s ? react(r, t, i, all, m, s, src, err) : err->status;
     }
     free(all);
     r->all = NULL;

@@ -26,6 +26,8 @@
  *               (the margin: given back at cpa exactly it would have to give
  *               way again a few steps later)
  *
+ * Each ship looks round every `interval` seconds (10: an officer of the watch,
+ * not a controller; the ships' looks are spread over the interval).
  * A stand-on ship keeps course and speed (rule 17(a)): nothing is ordered,
  * until the other has come so close (DCPA below last_cpa within last_time s)
  * that its action alone cannot avoid a collision: then it takes the speed,
@@ -59,6 +61,7 @@ typedef struct fw_reactions_def {
                              share the lanes and are SUMO's to keep apart */
     double last_cpa;      /* m, 463 (0.25 nm) ... */
     double last_time;     /* s, 240: a stand-on ship this close this soon acts (rule 17(b)) */
+    double interval;      /* s, 10: each ship looks round this often (0: every step) */
     fw_colregs_def colregs;
 } fw_reactions_def;
 
@@ -86,6 +89,9 @@ void fw_reactions_destroy(fw_reactions *r);
  * orders go to src.  Does nothing with behaviour blind. */
 fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
                             const fw_target *ships, int n, fw_source *src, fw_error *err);
+
+/* Does it do anything (behaviour colregs)? */
+bool fw_reactions_active(const fw_reactions *r);
 
 /* Every order so far, in time order; valid until the next step. */
 const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n);

@@ -157,9 +157,15 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
         st = sense(w, i, src, n_src, err);
     for (int i = 0; !st && i < w->nv; i++)
         st = decide(w, i, err);
-    if (!st && w->source)
-        st = fw_reactions_step(w->react, fw_world_time(w), w->nv > 0 ? &w->v[0]->record : NULL,
-                               src, n_src, w->source, err);
+    /* the reactive traffic watches its own, wider circle (traffic/source.h) */
+    if (!st && w->source && fw_reactions_active(w->react)) {
+        if (w->nv > 0)
+            st = fw_source_nearby(w->source, &src, &n_src, err);
+        if (!st)
+            st = fw_reactions_step(w->react, fw_world_time(w),
+                                   w->nv > 0 ? &w->v[0]->record : NULL, src, n_src, w->source,
+                                   err);
+    }
     return st;
 }
 

@@ -8,6 +8,10 @@ trap 'rm -rf "$dir"' EXIT
 "$FAIRWAY" sweep "$study" --db "$dir/j1.db" --jobs 1 --progress none
 "$FAIRWAY" sweep "$study" --db "$dir/j2.db" --jobs 2 --progress none
 "$PYTHON" "$FAIRWAY_DATA/tests/scripts/study_db_compare.py" "$dir/j1.db" "$dir/j2.db"
+# every run finished: a digest of failed runs would keep a crash as the expected result
+failed=$("$PYTHON" -c 'import sqlite3, sys
+print(sqlite3.connect(sys.argv[1]).execute("SELECT COUNT(*) FROM runs WHERE status <> '"'ok'"'").fetchone()[0])' "$dir/j1.db")
+[ "$failed" = 0 ] || { echo "$failed runs failed"; exit 1; }
 again=$("$FAIRWAY" sweep "$study" --db "$dir/j2.db" --jobs 2 --progress lines 2>&1)
 grep -q "10 already in the database, 0 to run" <<<"$again" || { echo "$again"; exit 1; }
 

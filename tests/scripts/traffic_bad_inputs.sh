@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Bad traffic input is refused before anything runs, with FILE:LINE: FIELD and
+# exit 2, and no run directory is left: an unknown behaviour, a density below
+# zero, an unknown return or domain reading, and a network whose demand names
+# an edge the network does not have (a copy of the data root with one edge
+# renamed).
+set -u
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+base=$FAIRWAY_DATA/scenarios/traffic/dover-crossing.yaml
+expect() { # expect PATTERN ARGS... (exit 2)
+  local pattern=$1; shift
+  out=$("$@" 2>&1)
+  rc=$?
+  [ $rc -eq 2 ] && grep -Eq -- "$pattern" <<<"$out" || { echo "exit $rc: $* -> $out"; exit 1; }
+  [ ! -e "$dir/runs" ] || { echo "a run directory was left: $(ls -R "$dir/runs")"; exit 1; }
+}
+sed 's/^  density: 1$/  density: 1\n  behaviour: polite/' "$base" > "$dir/a.yaml"
+expect "a.yaml:[0-9]+: traffic.behaviour: 'polite': expected colregs or blind" \
+  "$FAIRWAY" run "$dir/a.yaml" --out "$dir/runs"
+sed 's/^  density: 1$/  density: -0.5/' "$base" > "$dir/b.yaml"
+expect "b.yaml:[0-9]+: traffic.density: -0.5 is out of range" "$FAIRWAY" run "$dir/b.yaml" --out "$dir/runs"
+sed 's/^  radius_nm: 6 .*/  radius_nm: 6\n  return: home/' "$base" > "$dir/c.yaml"
+expect "c.yaml:[0-9]+: avoidance.return: 'home': expected track or heading" \
+  "$FAIRWAY" run "$dir/c.yaml" --out "$dir/runs"
+sed 's/^  radius_nm: 6 .*/  radius_nm: 6\n  domain_from: bow/' "$base" > "$dir/e.yaml"
+expect "e.yaml:[0-9]+: avoidance.domain_from: 'bow': expected hull or centre" \
+  "$FAIRWAY" run "$dir/e.yaml" --out "$dir/runs"
+mkdir -p "$dir/root/scenarios"
+cp -r "$FAIRWAY_DATA/networks" "$dir/root/" && cp -r "$FAIRWAY_DATA/scenarios/ships" "$dir/root/scenarios/"
+sed -i 's/edges: \[SW\]/edges: [SW, NOPE]/' "$dir/root/networks/dover/demand.yaml"
+expect "demand.yaml:[0-9]+: streams\[1\].edges: edge 'NOPE' is not in .*dover.edg.xml" \
+  env FAIRWAY_DATA="$dir/root" "$FAIRWAY" run "$base" --out "$dir/runs"
+echo "bad traffic input refused: behaviour, density, return, domain_from, demand edge"
