@@ -8,6 +8,8 @@
 #ifndef FW_TRAFFIC_BACKEND_H
 #define FW_TRAFFIC_BACKEND_H
 
+#include <stdbool.h>
+
 #include "core/error.h"
 
 typedef struct fw_sumo_raw {
@@ -44,6 +46,12 @@ typedef struct fw_sumo_backend {
     fw_status (*context)(fw_sumo_list *out, fw_error *err);
     fw_status (*all)(fw_sumo_list *out, fw_error *err);
     fw_status (*get)(const char *id, fw_sumo_raw *out, fw_error *err);
+    /* sumo-gui only: with zoom, the view view_m wide about (x, y); then, at
+     * every call, following ship id. */
+    fw_status (*gui_follow)(const char *id, double x, double y, double view_m, bool zoom,
+                            fw_error *err);
+    /* sumo-gui only: a PNG of the view, written at the next step. */
+    fw_status (*gui_screenshot)(const char *file, int width, int height, fw_error *err);
     void (*close)(void);
 } fw_sumo_backend;
 
