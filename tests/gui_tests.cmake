@@ -1,4 +1,4 @@
-# Watching a run in sumo-gui (issue 16): under Xvfb, the screenshot shows the own
+# Watching a run in sumo-gui, and remote mode (issue 16): under Xvfb, the screenshot shows the own
 # ship centred and to scale (gui_screenshot.sh); skipped (77) only when Xvfb cannot
 # run, a failure then on CI (FAIRWAY_REQUIRE_XVFB=1, .ci/run).
 fw_script_test(gui_screenshot 0 "ok: the own ship in the sumo-gui screenshot" gui_screenshot.sh)
@@ -20,3 +20,8 @@ fw_cli_test(cli_run_gui_option_alone 2 "--gui-delay: only with --sumo gui"
 fw_cli_test(cli_run_gui_bad_size 2 "--gui-size '12': expected WxH"
             run ${CMAKE_SOURCE_DIR}/scenarios/paper/1-head-on.yaml --sumo gui --gui-size 12)
 set_tests_properties(cli_run_gui_bad_size PROPERTIES ENVIRONMENT "DISPLAY=:99")
+
+# Remote mode: the command file, a run through it equal to the embedded run, a
+# sumo on another network refused (remote_mode.sh).
+fw_script_test(remote_mode 0 "ok: remote mode" remote_mode.sh)
+set_tests_properties(remote_mode PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)

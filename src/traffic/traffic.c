@@ -259,7 +259,7 @@ static fw_status prefix(fw_error *err, const char *fmt, const char *a, int b)
 {
     if (!err)
         return FW_ERUN;
-    char head[300], msg[sizeof err->msg];
+    char head[400], msg[sizeof err->msg];
     snprintf(head, sizeof head, fmt, a, b);
     snprintf(msg, sizeof msg, "%s", err->msg);
     return fw_fail(err, FW_ERUN, "%s: %s", head, msg);
@@ -355,9 +355,16 @@ static fw_status start(fw_traffic *t, fw_error *err)
     case FW_TRAFFIC_REMOTE:
         own_sigpipe();
         t->be = &fw_backend_libtraci;
+        /* what the sumo there must run, written first: the way out of the
+         * errors below */
+        if ((st = fw_traffic_write_remote_command(d, err)))
+            return st;
         if ((st = connect_quietly(t, d->mode.host, d->mode.port, err)))
-            return prefix(err, "no SUMO at %s:%d", d->mode.host, d->mode.port);
-        return FW_OK;
+            return prefix(err, "no SUMO at %s:%d (start it with the run's "
+                               "sumo/remote-command.txt)", d->mode.host, d->mode.port);
+        char where[300];
+        snprintf(where, sizeof where, "%s:%d", d->mode.host, d->mode.port);
+        return fw_traffic_net_check(t->be, d->net_file, where, err);
     case FW_TRAFFIC_GUI:
         own_sigpipe();
         t->be = &fw_backend_libtraci;

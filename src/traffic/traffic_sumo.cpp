@@ -18,6 +18,7 @@ namespace S = libsumo;
 #define FW_BACKEND_NAME "libsumo"
 #endif
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -317,6 +318,26 @@ fw_status be_gui_screenshot(const char *file, int width, int height, fw_error *e
                    [&] { S::GUI::screenshot(kView, file, width, height); });
 }
 
+fw_status be_net(double box[4], char **ids, fw_error *err)
+{
+    *ids = nullptr;
+    return guarded("cannot read the network", err, [&] {
+        const libsumo::TraCIPositionVector b = S::Simulation::getNetBoundary();
+        if (b.value.size() != 2)
+            throw libsumo::TraCIException("network boundary without two corners");
+        box[0] = b.value[0].x, box[1] = b.value[0].y, box[2] = b.value[1].x, box[3] = b.value[1].y;
+        std::vector<std::string> edges = S::Edge::getIDList();
+        std::sort(edges.begin(), edges.end());
+        std::string all;
+        for (const std::string &e : edges)
+            if (!e.empty() && e[0] != ':')
+                all += e + "\n";
+        *ids = strdup(all.c_str());
+        if (!*ids)
+            throw std::bad_alloc();
+    });
+}
+
 void be_close(void)
 {
     g_subscribed = false;
@@ -335,5 +356,5 @@ void be_close(void)
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
     be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_gui_follow,
-    be_gui_screenshot, be_close,
+    be_gui_screenshot, be_net, be_close,
 };
