@@ -10,13 +10,15 @@
 #   test  builds twice (plain, and with AddressSanitizer + UndefinedBehaviorSanitizer)
 #         and runs the whole ctest suite on both builds
 # clang and libclang-rt-14-dev (libFuzzer's runtime) are for fuzz/run.sh.
+# xvfb, xauth and python3-pil are for the sumo-gui screenshot test (tests/gui_tests.cmake).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 mode=${1:-main}
 packages=(build-essential cmake pkg-config libyaml-dev libsundials-dev libsqlite3-dev sqlite3
           sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy python3-yaml
-          libopenmpi-dev openmpi-bin clang libclang-rt-14-dev libproj-dev)
+          libopenmpi-dev openmpi-bin clang libclang-rt-14-dev xvfb xauth python3-pil
+          libproj-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -42,8 +42,21 @@ static void help(void)
            "  --out DIR     where run directories go (default: runs); an existing\n"
            "                DIR/NAME is replaced\n"
            "  --sumo MODE   embedded (default, libsumo in-process), gui, or\n"
-           "                remote:HOST:PORT (a sumo started with the run's sumo/ files)\n"
+           "                remote:HOST:PORT (a sumo started with the command each run\n"
+           "                writes, DIR/NAME/sumo/remote-command.txt: a run with no sumo\n"
+           "                there fails and keeps it; a sumo on another network is refused)\n"
            "  --json        print the summaries as a JSON array instead of the table\n"
+           "\n"
+           "Watching a run in sumo-gui (--sumo gui; needs a display, e.g. xvfb-run):\n"
+           "  --gui-delay MS     wall-clock ms per step at least (default 30)\n"
+           "  --realtime X       instead: X simulated seconds per second (1 = real time)\n"
+           "  --gui-size WxH     the window, pixels (default 1280x800)\n"
+           "  --gui-view NM      width of the view about the own ship, which it follows\n"
+           "                     (default 3)\n"
+           "  --gui-settings FILE  sumo-gui view settings (default\n"
+           "                     networks/fairway.view.xml: ships to scale, own ship orange)\n"
+           "  --gui-keep         keep the window open at the end until it is closed\n"
+           "  --gui-screenshot   a PNG of the view at the end: DIR/NAME/screenshot.png\n"
            "\n"
            "The same scenario and seed give byte-identical result files.\n"
            "Ctrl-C or SIGTERM stop the runs: finished runs are kept, the unfinished one\n"
@@ -67,9 +80,18 @@ static void row(const fw_run_summary *s)
            s->status != FW_RUN_OK ? fw_run_status_name(s->status) : (s->colregs_ok ? "ok" : "colregs?"));
 }
 
+/* The sumo-gui options as given (checked in check_gui). */
+typedef struct gui_opts {
+    double delay_ms, realtime, view_nm;
+    const char *size, *settings;
+    bool keep, screenshot;
+    bool given; /* any of them */
+} gui_opts;
+
 typedef struct run_opts {
     const char *out, *mode;
     bool json;
+    gui_opts gui;
     const char **files;
     int nf;
     fw_scenario **scn;
@@ -84,20 +106,62 @@ static fw_status add_file(void *ctx, const char *arg, fw_error *err)
     return FW_OK;
 }
 
+/* The gui options into the traffic mode; each refused by name when out of
+ * range, and all of them without --sumo gui. */
+static fw_status check_gui(const gui_opts *g, const bool *seen, fw_traffic_mode *m,
+                           fw_error *err)
+{
+    static const char *const names[] = {"--gui-delay", "--realtime", "--gui-size", "--gui-view",
+                                        "--gui-settings", "--gui-keep", "--gui-screenshot"};
+    for (int k = 0; k < 7; k++)
+        if (seen[k] && m->kind != FW_TRAFFIC_GUI)
+            return fw_fail(err, FW_EINPUT, "%s: only with --sumo gui", names[k]);
+    if (seen[0] && seen[1])
+        return fw_fail(err, FW_EINPUT, "--realtime: give it or --gui-delay, not both");
+    if (!(g->delay_ms >= 0.0 && g->delay_ms <= 60000.0))
+        return fw_fail(err, FW_EINPUT, "--gui-delay %g: must be 0..60000 ms", g->delay_ms);
+    if (seen[1] && !(g->realtime > 0.0 && g->realtime <= 1e6))
+        return fw_fail(err, FW_EINPUT, "--realtime %g: must be above 0 (1 = real time)",
+                       g->realtime);
+    if (!(g->view_nm > 0.0 && g->view_nm <= 500.0))
+        return fw_fail(err, FW_EINPUT, "--gui-view %g: must be in (0, 500] nm", g->view_nm);
+    int w = 0, h = 0, used = 0;
+    if (sscanf(g->size, "%dx%d%n", &w, &h, &used) != 2 || g->size[used] != '\0' || w < 200 ||
+        h < 150 || w > 10000 || h > 10000)
+        return fw_fail(err, FW_EINPUT, "--gui-size '%s': expected WxH, e.g. 1280x800", g->size);
+    if (g->settings && access(g->settings, R_OK) != 0)
+        return fw_fail(err, FW_EINPUT, "--gui-settings %s: cannot be read", g->settings);
+    m->gui = (fw_traffic_gui){.delay_ms = g->delay_ms, .width = w, .height = h,
+                              .view_m = fw_nm_to_m(g->view_nm), .keep = g->keep,
+                              .settings = g->settings};
+    /* no display: said at once, not after the connect timeout */
+    return m->kind == FW_TRAFFIC_GUI ? fw_traffic_gui_check("--sumo", err) : FW_OK;
+}
+
 /* Returns -1 to go on, else the exit code. */
 static int parse_options(int argc, char **argv, run_opts *o, fw_error *err)
 {
+    gui_opts *g = &o->gui;
+    bool seen[7] = {0};
     const fw_opt opts[] = {
         FW_OPT("--out", FW_OPT_TEXT, &o->out), FW_OPT("--sumo", FW_OPT_TEXT, &o->mode),
-        FW_OPT("--json", FW_OPT_FLAG, &o->json), FW_OPT_END,
+        FW_OPT("--json", FW_OPT_FLAG, &o->json),
+        FW_OPT_SEEN("--gui-delay", FW_OPT_DOUBLE, &g->delay_ms, &seen[0]),
+        FW_OPT_SEEN("--realtime", FW_OPT_DOUBLE, &g->realtime, &seen[1]),
+        FW_OPT_SEEN("--gui-size", FW_OPT_TEXT, &g->size, &seen[2]),
+        FW_OPT_SEEN("--gui-view", FW_OPT_DOUBLE, &g->view_nm, &seen[3]),
+        FW_OPT_SEEN("--gui-settings", FW_OPT_TEXT, &g->settings, &seen[4]),
+        FW_OPT_SEEN("--gui-keep", FW_OPT_FLAG, &g->keep, &seen[5]),
+        FW_OPT_SEEN("--gui-screenshot", FW_OPT_FLAG, &g->screenshot, &seen[6]), FW_OPT_END,
     };
     int rc = fw_args_parse(argc, argv, "run", opts, help, add_file, o, err);
     if (rc >= 0)
         return rc;
     if (o->nf == 0)
         fw_fail(err, FW_EINPUT, "no scenario given (see fairway run --help)");
-    else if (!fw_traffic_mode_parse(o->mode, &o->def.mode, err))
-        fw_check_sumo_mode("--sumo", &o->def.mode, err);
+    else if (!fw_traffic_mode_parse(o->mode, &o->def.mode, err) &&
+             !fw_check_sumo_mode("--sumo", &o->def.mode, err))
+        check_gui(g, seen, &o->def.mode, err);
     return err->status ? fw_report(err) : -1;
 }
 
@@ -148,6 +212,13 @@ static int run_one(run_opts *o, int i, bool first, bool *fatal, fw_error *err)
         return fw_report((fw_fail(err, FW_ERUN, "cannot create %s", tmp), err));
     o->def.scenario = o->scn[i];
     o->def.dir = tmp;
+    char shot[1100];
+    if (o->gui.screenshot) {
+        snprintf(shot, sizeof shot, "%s/screenshot.png", tmp);
+        o->def.mode.gui.screenshot = shot;
+    }
+    if (o->gui.realtime > 0.0) /* SUMO's delay is per step */
+        o->def.mode.gui.delay_ms = 1000.0 * o->scn[i]->step / o->gui.realtime;
     fw_run_summary sum;
     fw_encounter *enc = NULL;
     int ne = 0;
@@ -287,7 +358,8 @@ static int supervise(run_opts *o, fw_error *err)
 int fw_cmd_run(int argc, char **argv)
 {
     fw_error err = {0};
-    run_opts o = {.out = "runs", .mode = "embedded", .def = fw_default_run_def()};
+    run_opts o = {.out = "runs", .mode = "embedded", .def = fw_default_run_def(),
+                  .gui = {.delay_ms = 30.0, .view_nm = 3.0, .size = "1280x800"}};
     if (!(o.files = calloc((size_t)argc + 1, sizeof *o.files)))
         return 1;
     int rc = parse_options(argc, argv, &o, &err);

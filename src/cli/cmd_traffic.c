@@ -174,6 +174,7 @@ int fw_cmd_traffic(int argc, char **argv)
         return fw_report((fw_fail(&err, FW_EINPUT, "--seed %ld: must be 0 or more", seed), &err));
     fw_traffic_mode m;
     if (fw_traffic_mode_parse(mode, &m, &err) || fw_check_sumo_mode("--sumo", &m, &err) ||
+        (m.kind == FW_TRAFFIC_GUI && fw_traffic_gui_check("--sumo", &err)) ||
         fw_check_out_file("--routes", routes, true, &err) ||
         fw_check_out_file("--log", log, true, &err))
         return fw_report(&err);

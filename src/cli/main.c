@@ -40,8 +40,9 @@ static void usage(FILE *out)
             "'fairway COMMAND --help' describes each command.\n"
             "Exit codes: 0 ok, 1 a run failed, 2 bad input.\n"
             "Units at the interface: knots, degrees, nautical miles; metres east/north.\n"
-            "Data files (ships, scenarios) are looked up under $FAIRWAY_DATA (default: the\n"
-            "source tree this fairway was built from).\n");
+            "Data files (ships, scenarios, networks) are looked up under $FAIRWAY_DATA;\n"
+            "without it, an installed fairway (PREFIX/bin/fairway) uses PREFIX/share/fairway,\n"
+            "a fairway in its build tree the source tree it was built from.\n");
 }
 
 int main(int argc, char **argv)

@@ -4,6 +4,9 @@
 #include <errno.h>
 #include <ftw.h>
 #include <libgen.h>
+#include <limits.h>
+#include <pthread.h>
+#include <stdbool.h>
 #include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
@@ -104,4 +107,55 @@ int fw_csv_split(char *line, char **f, int max)
         p = c + 1;
     }
     return n;
+}
+
+/* Where the data are, worked out once (fw_data_root in files.h). */
+static char g_root[PATH_MAX], g_net[PATH_MAX];
+static pthread_once_t g_located = PTHREAD_ONCE_INIT;
+
+/* Is path inside dir (both resolved)? */
+static bool inside(const char *path, const char *dir)
+{
+    char d[PATH_MAX];
+    if (!realpath(dir, d))
+        return false;
+    size_t n = strlen(d);
+    return strncmp(path, d, n) == 0 && (path[n] == '/' || path[n] == '\0');
+}
+
+static void locate(void)
+{
+    char exe[PATH_MAX], bin[PATH_MAX], share[PATH_MAX + 32] = "/usr/share/fairway";
+    bool have_exe = realpath("/proc/self/exe", exe) != NULL;
+    if (have_exe) {
+        /* exe is resolved: PREFIX is the directory above its own */
+        memcpy(bin, exe, sizeof bin);
+        char *prefix = dirname(dirname(bin));
+        snprintf(share, sizeof share, "%s/share/fairway", strcmp(prefix, "/") ? prefix : "");
+    }
+    char marker[PATH_MAX + 64];
+    snprintf(marker, sizeof marker, "%s/networks/ships.add.xml", share);
+    bool installed = access(marker, R_OK) == 0;
+    if (!installed && have_exe && inside(exe, FAIRWAY_BUILD_DIR)) {
+        snprintf(g_root, sizeof g_root, "%s", FAIRWAY_DATA_DIR);
+        snprintf(g_net, sizeof g_net, "%s", FAIRWAY_NET_DIR);
+        return;
+    }
+    snprintf(g_root, sizeof g_root, "%.*s", PATH_MAX - 1, share);
+    snprintf(g_net, sizeof g_net, "%.*s/networks", PATH_MAX - 16, share);
+}
+
+const char *fw_data_root(void)
+{
+    const char *env = getenv("FAIRWAY_DATA");
+    if (env && env[0])
+        return env;
+    pthread_once(&g_located, locate);
+    return g_root;
+}
+
+const char *fw_net_dir(void)
+{
+    pthread_once(&g_located, locate);
+    return g_net;
 }

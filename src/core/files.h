@@ -1,4 +1,5 @@
-/* files.h - the few file-system operations several commands share. */
+/* files.h - the few file-system operations several commands share, and where
+ * fairway's data are. */
 #ifndef FW_FILES_H
 #define FW_FILES_H
 
@@ -32,6 +33,20 @@ fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *e
 fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 
+/* The data root (scenarios/, networks/ sources, analysis/):
+ *   $FAIRWAY_DATA if set and not empty;
+ *   else, for an installed fairway (PREFIX/bin/fairway), PREFIX/share/fairway,
+ *     found from the executable's own path at run time, so an install can be
+ *     moved and never needs the tree it was built from;
+ *   else, for a program of the build tree (under FAIRWAY_BUILD_DIR), the
+ *     source tree it was built from (FAIRWAY_DATA_DIR);
+ *   else PREFIX/share/fairway all the same: a copied executable says which
+ *     files it misses instead of quietly reading a source tree. */
+const char *fw_data_root(void);
+/* Where the built networks are (NAME/NAME.net.xml): DATA/networks of an
+ * install, the build tree's networks/ for a build-tree program.  Not moved
+ * by $FAIRWAY_DATA: the nets belong to the binary that built them. */
+const char *fw_net_dir(void);
 /* Splits a CSV line (no quoting) in place at its commas, its line end cut:
  * up to max fields into f; returns how many. */
 int fw_csv_split(char *line, char **f, int max);

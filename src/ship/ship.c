@@ -9,12 +9,6 @@ const char *const fw_nomoto_basis_names[FW_NB_COUNT] = {
     "1", "U", "d", "ln_d", "U*ln_d", "U*d", "d^2", "U^2", "1/U", "ln_d/U", "d/U",
 };
 
-const char *fw_data_root(void)
-{
-    const char *env = getenv("FAIRWAY_DATA");
-    return (env && env[0]) ? env : FAIRWAY_DATA_DIR;
-}
-
 bool fw_ship_path(const char *name_or_path, char *out, unsigned outsz)
 {
     size_t len = strlen(name_or_path);

@@ -13,6 +13,7 @@
 #include <stdbool.h>
 
 #include "core/error.h"
+#include "core/files.h" /* fw_data_root */
 
 /* Basis terms of the Nomoto index regressions (paper equations 10 to 13).
  * U is the speed in knots and d the rudder angle magnitude in degrees. */
@@ -116,9 +117,6 @@ fw_status fw_ship_load(const char *name_or_path, fw_ship *ship, fw_error *err);
 /* Resolves a ship name to its file path (without checking it exists);
  * false when the path does not fit in out. */
 bool fw_ship_path(const char *name_or_path, char *out, unsigned outsz);
-
-/* The data root: $FAIRWAY_DATA if set, else the build's FAIRWAY_DATA_DIR. */
-const char *fw_data_root(void);
 
 /* Derived quantities. */
 double fw_ship_mass(const fw_ship *s);             /* kg */

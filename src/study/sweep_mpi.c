@@ -7,6 +7,7 @@
  * is local.  Built only when CMake finds MPI (FAIRWAY_MPI).
  */
 #include <stdlib.h>
+#include <time.h>
 #include <string.h>
 
 #include "core/files.h"
@@ -41,6 +42,25 @@ bool fw_sweep_under_mpi(void)
     return getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMI_SIZE") || getenv("PMIX_RANK");
 }
 
+/* Waits for a message with tag from src (MPI_ANY_SOURCE) without spinning:
+ * Open MPI's blocking MPI_Probe and MPI_Recv poll at full speed, so rank 0,
+ * which only waits, burnt 87 % of a core (issue 15).  Polls with a sleep
+ * that grows from 0.5 to 20 ms: a run's result is a second or more apart,
+ * and 20 ms of latency is nothing against it. */
+static void wait_message(int src, int tag, MPI_Status *stt)
+{
+    long ns = 500000L;
+    for (;;) {
+        int flag = 0;
+        MPI_Iprobe(src, tag, MPI_COMM_WORLD, &flag, stt);
+        if (flag)
+            return;
+        struct timespec d = {0, ns};
+        nanosleep(&d, NULL);
+        ns = ns * 2 > 20000000L ? 20000000L : ns * 2;
+    }
+}
+
 static void send_run(int rank, int run_id)
 {
     MPI_Send(&run_id, 1, MPI_INT, rank, TAG_WORK, MPI_COMM_WORLD);
@@ -52,6 +72,8 @@ static void worker(const fw_sweep_def *def, const char *work, const char *why)
 {
     for (;;) {
         int run_id;
+        MPI_Status stt;
+        wait_message(0, TAG_WORK, &stt);
         MPI_Recv(&run_id, 1, MPI_INT, 0, TAG_WORK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         if (run_id < 0)
             return;
@@ -100,7 +122,7 @@ static fw_status root(const fw_sweep_def *def, fw_store *st, const int *pending,
     while (busy > 0) {
         MPI_Status stt;
         int n = 0;
-        MPI_Probe(MPI_ANY_SOURCE, TAG_RESULT, MPI_COMM_WORLD, &stt);
+        wait_message(MPI_ANY_SOURCE, TAG_RESULT, &stt);
         MPI_Get_count(&stt, MPI_BYTE, &n);
         unsigned char *buf = malloc(n > 0 ? (size_t)n : 1);
         if (!buf)

@@ -8,7 +8,10 @@
 #ifndef FW_TRAFFIC_BACKEND_H
 #define FW_TRAFFIC_BACKEND_H
 
+#include <stdbool.h>
+
 #include "core/error.h"
+#include "traffic/traffic.h"
 
 typedef struct fw_sumo_raw {
     char id[64];
@@ -44,8 +47,27 @@ typedef struct fw_sumo_backend {
     fw_status (*context)(fw_sumo_list *out, fw_error *err);
     fw_status (*all)(fw_sumo_list *out, fw_error *err);
     fw_status (*get)(const char *id, fw_sumo_raw *out, fw_error *err);
+    /* sumo-gui only: with zoom, the view view_m wide about (x, y); then, at
+     * every call, following ship id. */
+    fw_status (*gui_follow)(const char *id, double x, double y, double view_m, bool zoom,
+                            fw_error *err);
+    /* sumo-gui only: a PNG of the view, written at the next step. */
+    fw_status (*gui_screenshot)(const char *file, int width, int height, fw_error *err);
+    /* The network SUMO runs: its boundary (xmin, ymin, xmax, ymax) and
+     * its normal (not internal) edge ids, sorted, one "\n" after each, in
+     * *ids (malloc'd, the caller frees). */
+    fw_status (*net)(double box[4], char **ids, fw_error *err);
     void (*close)(void);
 } fw_sumo_backend;
+
+/* A remote sumo (where: "HOST:PORT") must run net_file's network: the same
+ * boundary and edge ids, else FW_ERUN saying what differs (netcheck.c). */
+fw_status fw_traffic_net_check(const fw_sumo_backend *be, const char *net_file,
+                               const char *where, fw_error *err);
+
+/* SUMO_DIR/remote-command.txt (SUMO_DIR: the log file's directory): the sumo
+ * command line a remote run of d needs, as an sh script run in that directory. */
+fw_status fw_traffic_write_remote_command(const fw_traffic_def *d, fw_error *err);
 
 extern const fw_sumo_backend fw_backend_libsumo;
 extern const fw_sumo_backend fw_backend_libtraci;

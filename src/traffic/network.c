@@ -1,5 +1,6 @@
 /* network.c - where a network's files are: the net.xml in the build tree
- * (netconvert output), the sources and demand under the data root. */
+ * or the install (netconvert output, core/files.h fw_net_dir), the sources
+ * and demand under the data root. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,7 +20,7 @@ fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err
         return fw_fail(err, FW_EINPUT, "network '%s': not a network name (%s)", name, known);
     const char *root = fw_data_root();
     fw_status st;
-    if ((st = fw_path(out->net, sizeof out->net, err, "%s/%s/%s.net.xml", FAIRWAY_NET_DIR, name,
+    if ((st = fw_path(out->net, sizeof out->net, err, "%s/%s/%s.net.xml", fw_net_dir(), name,
                       name)) ||
         (st = fw_path(out->demand, sizeof out->demand, err, "%s/networks/%s/demand.yaml", root,
                       name)) ||

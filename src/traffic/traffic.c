@@ -7,10 +7,14 @@
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "core/clock.h"
 #include "core/idmap.h"
 #include "core/mem.h"
 #include "core/spawn.h"
@@ -23,6 +27,8 @@ struct fw_traffic {
     char own_id[64];
     char log_file[1024];
     pid_t child; /* sumo-gui started here, or 0 */
+    char screenshot[1024]; /* gui: the PNG taken at the end ("" none) */
+    bool zoomed;           /* gui: the view is zoomed on the own ship */
     bool placed, dead;
     double time;
     long steps;
@@ -102,6 +108,17 @@ fw_status fw_traffic_mode_parse(const char *text, fw_traffic_mode *out, fw_error
     }
     return fw_fail(err, FW_EINPUT,
                    "--sumo '%s': expected embedded, gui or remote:HOST:PORT", text);
+}
+
+fw_status fw_traffic_gui_check(const char *opt, fw_error *err)
+{
+    const char *display = getenv("DISPLAY");
+    if (!display || !display[0])
+        return fw_fail(err, FW_EINPUT,
+                       "%s gui: no display ($DISPLAY is not set): run under xvfb-run, or use "
+                       "--sumo embedded",
+                       opt);
+    return FW_OK;
 }
 
 void fw_traffic_to_sumo(double x, double y, double heading, double length, double *fx,
@@ -242,10 +259,77 @@ static fw_status prefix(fw_error *err, const char *fmt, const char *a, int b)
 {
     if (!err)
         return FW_ERUN;
-    char head[300], msg[sizeof err->msg];
+    char head[400], msg[sizeof err->msg];
     snprintf(head, sizeof head, fmt, a, b);
     snprintf(msg, sizeof msg, "%s", err->msg);
     return fw_fail(err, FW_ERUN, "%s: %s", head, msg);
+}
+
+/* libtraci's own retries print "Retrying in 1 second" on stdout, into the
+ * run's table: fairway retries itself, quietly, every 0.1 s until the
+ * connect timeout, and gives up at once when the sumo-gui started here has
+ * exited (a bad settings file, no display). */
+static fw_status connect_quietly(fw_traffic *t, const char *host, int port, fw_error *err)
+{
+    double deadline = fw_clock_s() + t->def.connect_timeout;
+    for (;;) {
+        fw_status st = t->be->connect(host, port, 0, err);
+        if (!st)
+            return FW_OK;
+        int status;
+        if (t->child > 0 && waitpid(t->child, &status, WNOHANG) == t->child) {
+            t->child = 0;
+            return fw_fail(err, FW_ERUN, "it exited (%s %d) before accepting a connection",
+                           WIFEXITED(status) ? "exit code" : "signal",
+                           WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
+        }
+        if (fw_clock_s() >= deadline)
+            return st;
+        nanosleep(&(struct timespec){.tv_nsec = 100000000L}, NULL);
+    }
+}
+
+/* A sumo-gui with the run's files and the watching settings (traffic.h
+ * fw_traffic_gui), its own messages to LOG.gui beside SUMO's log. */
+static fw_status start_gui(fw_traffic *t, fw_error *err)
+{
+    const fw_traffic_def *d = &t->def;
+    const fw_traffic_gui *g = &d->mode.gui;
+    const char *argv[64];
+    char buf[128], num[3][64], settings[1100], out[1100];
+    int port;
+    fw_status st;
+    if ((st = fw_traffic_gui_check("--sumo", err)) || (st = fw_traffic_free_port(&port, err)) ||
+        (st = fw_traffic_sumo_args(d, d->sumo_gui, port, argv, 48, buf, sizeof buf, err)))
+        return st;
+    if (g->settings)
+        st = fw_path(settings, sizeof settings, err, "%s", g->settings);
+    else
+        st = fw_path(settings, sizeof settings, err, "%s/networks/fairway.view.xml",
+                     fw_data_root());
+    if (st || (st = fw_path(out, sizeof out, err, "%s.gui",
+                            d->log_file ? d->log_file : "/dev/null")))
+        return st;
+    if (access(settings, R_OK) != 0)
+        return fw_fail(err, FW_EINPUT, "--gui-settings %s: cannot be read", settings);
+    snprintf(num[0], sizeof num[0], "%.17g", g->delay_ms > 0.0 ? g->delay_ms : 0.0);
+    snprintf(num[1], sizeof num[1], "%d,%d", g->width > 0 ? g->width : 1280,
+             g->height > 0 ? g->height : 800);
+    int n = 0;
+    while (argv[n])
+        n++;
+    const char *extra[] = {"--start", "true", /* run without waiting for the play button */
+                           "--delay", num[0], "--window-size", num[1], "--gui-settings-file",
+                           settings, "--quit-on-end", g->keep ? "false" : "true", NULL};
+    for (int k = 0; extra[k]; k++)
+        argv[n++] = extra[k];
+    argv[n] = NULL;
+    fw_spawn_def sp = {.argv = argv, .log = d->log_file ? out : NULL};
+    if ((st = fw_spawn(&sp, &t->child, err)))
+        return st;
+    if ((st = connect_quietly(t, "localhost", port, err)))
+        return prefix(err, "%s did not accept a connection on port %d", d->sumo_gui, port);
+    return FW_OK;
 }
 
 static fw_status start(fw_traffic *t, fw_error *err)
@@ -253,7 +337,6 @@ static fw_status start(fw_traffic *t, fw_error *err)
     const fw_traffic_def *d = &t->def;
     const char *argv[48];
     char buf[128];
-    int retries = (int)ceil(d->connect_timeout);
     fw_status st;
     switch (d->mode.kind) {
     case FW_TRAFFIC_EMBEDDED:
@@ -272,45 +355,67 @@ static fw_status start(fw_traffic *t, fw_error *err)
     case FW_TRAFFIC_REMOTE:
         own_sigpipe();
         t->be = &fw_backend_libtraci;
-        if ((st = t->be->connect(d->mode.host, d->mode.port, retries, err)))
-            return prefix(err, "no SUMO at %s:%d", d->mode.host, d->mode.port);
-        return FW_OK;
-    case FW_TRAFFIC_GUI: {
+        /* what the sumo there must run, written first: the way out of the
+         * errors below */
+        if ((st = fw_traffic_write_remote_command(d, err)))
+            return st;
+        if ((st = connect_quietly(t, d->mode.host, d->mode.port, err)))
+            return prefix(err, "no SUMO at %s:%d (start it with the run's "
+                               "sumo/remote-command.txt)", d->mode.host, d->mode.port);
+        char where[300];
+        snprintf(where, sizeof where, "%s:%d", d->mode.host, d->mode.port);
+        return fw_traffic_net_check(t->be, d->net_file, where, err);
+    case FW_TRAFFIC_GUI:
         own_sigpipe();
         t->be = &fw_backend_libtraci;
-        int port;
-        if ((st = fw_traffic_free_port(&port, err)))
-            return st;
-        if ((st = fw_traffic_sumo_args(d, d->sumo_gui, port, argv, 44, buf, sizeof buf, err)))
-            return st;
-        int n = 0;
-        while (argv[n])
-            n++;
-        argv[n++] = "--start"; /* run without waiting for the play button */
-        argv[n++] = "true";
-        argv[n] = NULL;
-        fw_spawn_def sp = {.argv = argv};
-        if ((st = fw_spawn(&sp, &t->child, err)))
-            return st;
-        if ((st = t->be->connect("localhost", port, retries, err)))
-            return prefix(err, "%s did not accept a connection on port %d", d->sumo_gui, port);
-        return FW_OK;
-    }
+        return start_gui(t, err);
     }
     return fw_fail(err, FW_EINPUT, "unknown SUMO mode");
+}
+
+/* The screenshot of a sumo-gui run, taken at one more step (sumo-gui draws
+ * it then, in its own thread): waited for up to 5 s, so that the window is
+ * not closed before the file is there.  No error channel at the end of a
+ * run: a failure is a warning. */
+static void gui_screenshot(fw_traffic *t)
+{
+    fw_error err = {0};
+    double tm;
+    remove(t->screenshot);
+    /* the view as shown (-1: its own size, the window less its bars): another
+     * size would be the same view stretched */
+    if (t->be->gui_screenshot(t->screenshot, -1, -1, &err) ||
+        t->be->step(&tm, &err)) {
+        fprintf(stderr, "fairway: warning: --gui-screenshot %s: %s\n", t->screenshot, err.msg);
+        return;
+    }
+    struct stat sb;
+    double until = fw_clock_s() + 5.0;
+    while (!(stat(t->screenshot, &sb) == 0 && sb.st_size > 0) && fw_clock_s() < until)
+        nanosleep(&(struct timespec){.tv_nsec = 50000000L}, NULL);
+    nanosleep(&(struct timespec){.tv_nsec = 200000000L}, NULL); /* the file is being written */
+    if (stat(t->screenshot, &sb) != 0 || sb.st_size == 0)
+        fprintf(stderr, "fairway: warning: --gui-screenshot %s: sumo-gui wrote no file\n",
+                t->screenshot);
 }
 
 void fw_traffic_close(fw_traffic *t)
 {
     if (!t)
         return;
+    if (t->be && t->child > 0 && t->screenshot[0] && !t->dead)
+        gui_screenshot(t);
     if (t->be) {
         t->be->close();
         if (t->be == &fw_backend_libsumo)
             embedded_open = false;
     }
-    if (t->child > 0)
+    if (t->child > 0 && t->def.mode.gui.keep && !t->dead) {
+        fprintf(stderr, "fairway: the sumo-gui window stays open: close it to go on\n");
+        fw_spawn_wait(t->child);
+    } else if (t->child > 0) {
         fw_spawn_stop(t->child);
+    }
     fw_free_each(5, t->raw.v, t->ctx.v, t->ships, t->area, t->near);
     fw_idmap_free(&t->ids);
     fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
@@ -335,6 +440,11 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
             return st;
         }
         t->def.log_file = t->log_file;
+    }
+    if (def->mode.kind == FW_TRAFFIC_GUI && def->mode.gui.screenshot &&
+        (st = fw_path(t->screenshot, sizeof t->screenshot, err, "%s", def->mode.gui.screenshot))) {
+        fw_traffic_close(t);
+        return st;
     }
     /* only the start uses the file names; they are not kept */
     if ((st = start(t, err))) {
@@ -437,6 +547,12 @@ fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
         t->dead = true;
     else
         t->steps++;
+    /* sumo-gui: the own ship is in the simulation from the first step on */
+    if (!st && t->child > 0) {
+        double w = t->def.mode.gui.view_m > 0.0 ? t->def.mode.gui.view_m : fw_nm_to_m(3.0);
+        st = t->be->gui_follow(t->own_id, t->own_x, t->own_y, w, !t->zoomed, err);
+        t->zoomed = true;
+    }
     return st;
 }
 

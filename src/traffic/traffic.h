@@ -40,14 +40,32 @@ typedef enum fw_traffic_kind {
     FW_TRAFFIC_GUI       /* libtraci to a sumo-gui started by fw_traffic_open */
 } fw_traffic_kind;
 
+/* How a sumo-gui started here shows a run, so that it can be watched: at a
+ * pace a person can follow, zoomed on the own ship, which the view follows,
+ * with the ships drawn to scale in the type colours (the own ship signal
+ * orange).  Zero fields take the defaults below. */
+typedef struct fw_traffic_gui {
+    double delay_ms;        /* wall-clock ms per step at least (sumo-gui's --delay); 0: none */
+    int width, height;      /* px, the window (default 1280 x 800) */
+    double view_m;          /* m, width of the view about the own ship (default 3 nm) */
+    bool keep;              /* leave the window open at the end; fw_traffic_close waits
+                             * until it is closed */
+    const char *settings;   /* view settings file; NULL: DATA/networks/fairway.view.xml */
+    const char *screenshot; /* a PNG of the view written at the end (NULL: none) */
+} fw_traffic_gui;
+
 typedef struct fw_traffic_mode {
     fw_traffic_kind kind;
     char host[256]; /* remote only */
     int port;       /* remote only */
+    fw_traffic_gui gui; /* gui only */
 } fw_traffic_mode;
 
-/* "embedded", "gui" or "remote:HOST:PORT" (port 1..65535). */
+/* "embedded", "gui" or "remote:HOST:PORT" (port 1..65535); gui settings zero. */
 fw_status fw_traffic_mode_parse(const char *text, fw_traffic_mode *out, fw_error *err);
+/* Can a sumo-gui open a window here?  FW_EINPUT at once, naming opt, when
+ * there is no display ($DISPLAY unset): sumo-gui would only fail to start. */
+fw_status fw_traffic_gui_check(const char *opt, fw_error *err);
 
 typedef struct fw_traffic_def {
     fw_traffic_mode mode;

@@ -18,6 +18,7 @@ namespace S = libsumo;
 #define FW_BACKEND_NAME "libsumo"
 #endif
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -307,6 +308,53 @@ fw_status be_get(const char *id, fw_sumo_raw *out, fw_error *err)
     return guarded("reading a ship failed", err, [&] { read_vehicle(id, out); });
 }
 
+// The view of a sumo-gui: libsumo has no GUI, so these are libtraci's only.
+const char *const kView = "View #0";
+
+fw_status be_gui_follow(const char *id, double x, double y, double view_m, bool zoom,
+                        fw_error *err)
+{
+    return guarded("cannot set the view", err, [&] {
+        if (zoom) {
+            // the settings file's scheme is loaded but not always the one shown
+            S::GUI::setSchema(kView, "fairway");
+            // the zoom (a box about the ship); tracking keeps it centred
+            S::GUI::setBoundary(kView, x - 0.5 * view_m, y - 0.5 * view_m, x + 0.5 * view_m,
+                                y + 0.5 * view_m);
+        }
+        // a ship sumo-gui has not drawn yet cannot be tracked: asked again
+        // until it is (one call a step, in gui mode only)
+        if (S::GUI::getTrackedVehicle(kView) != id)
+            S::GUI::trackVehicle(kView, id);
+    });
+}
+
+fw_status be_gui_screenshot(const char *file, int width, int height, fw_error *err)
+{
+    return guarded("cannot take a screenshot", err,
+                   [&] { S::GUI::screenshot(kView, file, width, height); });
+}
+
+fw_status be_net(double box[4], char **ids, fw_error *err)
+{
+    *ids = nullptr;
+    return guarded("cannot read the network", err, [&] {
+        const libsumo::TraCIPositionVector b = S::Simulation::getNetBoundary();
+        if (b.value.size() != 2)
+            throw libsumo::TraCIException("network boundary without two corners");
+        box[0] = b.value[0].x, box[1] = b.value[0].y, box[2] = b.value[1].x, box[3] = b.value[1].y;
+        std::vector<std::string> edges = S::Edge::getIDList();
+        std::sort(edges.begin(), edges.end());
+        std::string all;
+        for (const std::string &e : edges)
+            if (!e.empty() && e[0] != ':')
+                all += e + "\n";
+        *ids = strdup(all.c_str());
+        if (!*ids)
+            throw std::bad_alloc();
+    });
+}
+
 void be_close(void)
 {
     g_subscribed = false;
@@ -324,5 +372,6 @@ void be_close(void)
 
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
-    be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_close,
+    be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_gui_follow,
+    be_gui_screenshot, be_net, be_close,
 };
