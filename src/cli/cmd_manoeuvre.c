@@ -192,15 +192,12 @@ static int run_turning(const fw_ship *ship, const opts *o, fw_error *err)
     d.max_turn = fw_deg_to_rad(540.0);
     fw_turning_result r;
     fw_history h = {0};
-    fw_status st = fw_turning_run(ship, &d, &r, o->csv ? &h : NULL, err);
-    if ((st = csv_out(&h, o, st, err)))
+    if (csv_out(&h, o, fw_turning_run(ship, &d, &r, o->csv ? &h : NULL, err), err))
         return fw_report(err);
-    if (o->json) {
-        print_turning_json(ship, d.speed, d.rudder, &r, NULL);
-        printf("\n");
-    } else {
+    if (o->json)
+        print_turning_json(ship, d.speed, d.rudder, &r, NULL), printf("\n");
+    else
         print_turning_text(ship, d.speed, d.rudder, &r);
-    }
     return 0;
 }
 
@@ -214,15 +211,12 @@ static int run_zigzag(const fw_ship *ship, const opts *o, fw_error *err)
     d.first_side = (int)side_sign(o->side);
     fw_zigzag_result r;
     fw_history h = {0};
-    fw_status st = fw_zigzag_run(ship, &d, &r, o->csv ? &h : NULL, err);
-    if ((st = csv_out(&h, o, st, err)))
+    if (csv_out(&h, o, fw_zigzag_run(ship, &d, &r, o->csv ? &h : NULL, err), err))
         return fw_report(err);
-    if (o->json) {
-        print_zigzag_json(ship, &d, &r);
-        printf("\n");
-    } else {
+    if (o->json)
+        print_zigzag_json(ship, &d, &r), printf("\n");
+    else
         print_zigzag_text(ship, &d, &r);
-    }
     return 0;
 }
 

@@ -63,6 +63,13 @@ fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
     return FW_OK;
 }
 
+fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err)
+{
+    if ((size_t)snprintf(dst, n, "%s", path) >= n)
+        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path, n - 1);
+    return FW_OK;
+}
+
 fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err)
 {
     int bad = fflush(f) != 0 || ferror(f);

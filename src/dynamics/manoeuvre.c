@@ -58,31 +58,21 @@ fw_status fw_history_write_csv(const fw_history *h, const char *path, fw_error *
     return fw_file_commit(f, tmp, path, err);
 }
 
+/* What every standard manoeuvre starts from: the approach speed unset (the
+ * caller's), samples every 0.5 s, an hour at most, the default stepper. */
+#define MANOEUVRE_DEFAULTS \
+    .speed = 0.0, .sample_dt = 0.5, .max_time = 3600.0, .stepper = fw_default_stepper_def()
+
 fw_turning_def fw_default_turning_def(void)
 {
-    fw_turning_def d = {
-        .speed = 0.0,
-        .rudder = fw_deg_to_rad(35.0),
-        .sample_dt = 0.5,
-        .max_time = 3600.0,
-        .max_turn = fw_deg_to_rad(720.0),
-        .stepper = fw_default_stepper_def(),
-    };
-    return d;
+    return (fw_turning_def){MANOEUVRE_DEFAULTS, .rudder = fw_deg_to_rad(35.0),
+                            .max_turn = fw_deg_to_rad(720.0)};
 }
 
 fw_zigzag_def fw_default_zigzag_def(void)
 {
-    fw_zigzag_def d = {
-        .speed = 0.0,
-        .angle = fw_deg_to_rad(10.0),
-        .first_side = 1,
-        .executes = 4,
-        .sample_dt = 0.5,
-        .max_time = 3600.0,
-        .stepper = fw_default_stepper_def(),
-    };
-    return d;
+    return (fw_zigzag_def){MANOEUVRE_DEFAULTS, .angle = fw_deg_to_rad(10.0), .first_side = 1,
+                           .executes = 4};
 }
 
 static fw_status check_common(const fw_ship *ship, double speed, double rudder, double dt,

@@ -47,9 +47,8 @@ void fw_geo_destroy(fw_geo *g)
 {
     if (!g)
         return;
-    if (g->pj)
-        proj_destroy(g->pj);
-    if (g->ctx)
+    proj_destroy(g->pj); /* NULL-safe */
+    if (g->ctx)          /* NULL would be PROJ's default context */
         proj_context_destroy(g->ctx);
     free(g);
 }

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/files.h"
 #include "core/units.h"
 #include "nomoto/nomoto.h"
 #include "scenario/position.h"
@@ -381,9 +382,8 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
     static const char *const keys[] = {"name", "description", "origin", "own_ship", "traffic",
                                        "avoidance", "survey", "run", "outputs", NULL};
     memset(s, 0, sizeof *s);
-    if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
-        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
-                       sizeof s->file - 1);
+    if (fw_path_copy(s->file, sizeof s->file, path, err))
+        return err->status;
     s->density = 1.0;
     s->reactions = fw_default_reactions_def();
     s->helm = fw_default_helm_def();

@@ -67,6 +67,15 @@ static void estimate(FILE *f, const fw_estimate *e)
     num(f, e->hi);
 }
 
+/* A share with its interval, and the end of the row: ",mean,lo,hi\n". */
+static void share_end(FILE *f, const fw_estimate *e)
+{
+    num(f, e->mean);
+    num(f, e->lo);
+    num(f, e->hi);
+    fputc('\n', f);
+}
+
 /* The columns of a setting, first in every table but runs.csv ... */
 #define SETTING "density,behaviour,domain_m,fore_aft_ratio,"
 
@@ -255,10 +264,7 @@ static fw_status write_audit(const fw_study_report *rep, const char *dir, fw_err
             fw_estimate e = fw_wilson(G->compliant[k], G->audited[k], rep->level);
             setting(c.f, G);
             fprintf(c.f, ",%s,%d,%d", fw_rep_situation_names[k], G->audited[k], G->compliant[k]);
-            num(c.f, e.mean);
-            num(c.f, e.lo);
-            num(c.f, e.hi);
-            fputc('\n', c.f);
+            share_end(c.f, &e);
         }
     return csv_close(&c, err);
 }

@@ -313,45 +313,57 @@ static fw_status count_candidate(loader *L, sqlite3_stmt *st, int i, const fw_re
     return FW_OK;
 }
 
-static fw_status read_encounters(loader *L)
+/* Runs sql and hands every row whose first column is a finished run's id to
+ * row(L, st, run); a failed run's rows are passed over.  Stops at the first
+ * failure; the statement is finalised either way. */
+static fw_status each_run_row(loader *L, const char *sql,
+                              fw_status (*row)(loader *, sqlite3_stmt *, fw_rep_run *))
 {
-    fw_study_report *rep = L->rep;
     sqlite3_stmt *st;
-    if (prepare(L,
-                "SELECT run_id, situation, min_dist_m, domain_entered, near_miss, collision, "
-                "candidate, outcome FROM encounters",
-                &st))
+    if (prepare(L, sql, &st))
         return L->err->status;
     int rc;
     while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
-        fw_rep_run *r = find_run(rep, sqlite3_column_int64(st, 0));
-        if (!r)
-            continue; /* a failed run's rows */
-        const char *sit = col_text(st, 1);
-        int s = name_index(fw_rep_situation_names, FW_REP_NSIT, sit);
-        if (s < 0) {
-            fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown encounter situation '%s'", L->file,
-                    r->run_id, sit);
+        fw_rep_run *r = find_run(L->rep, sqlite3_column_int64(st, 0));
+        fw_status s = r ? row(L, st, r) : FW_OK;
+        if (s) {
             sqlite3_finalize(st);
-            return FW_EINPUT;
-        }
-        r->n_sit[s]++;
-        r->n_domain += sqlite3_column_int(st, 3) != 0;
-        r->n_near += sqlite3_column_int(st, 4) != 0;
-        r->n_collision += sqlite3_column_int(st, 5) != 0;
-        if (count_candidate(L, st, 6, r, FW_REP_OWN, sit_type[s])) {
-            sqlite3_finalize(st);
-            return L->err->status;
-        }
-        double d = col_num(st, 2);
-        fw_rep_group *g = &rep->groups[r->group];
-        if (!isnan(d) && (fw_rep_values_push(&g->cpa[FW_REP_OWN][FW_REP_ALL], d) ||
-                          fw_rep_values_push(&g->cpa[FW_REP_OWN][sit_type[s]], d))) {
-            sqlite3_finalize(st);
-            return oom(L);
+            return s;
         }
     }
-    if (step_done(L, st, rc))
+    return step_done(L, st, rc);
+}
+
+/* One own-ship encounter: situation, CPA, domain, near miss, collision,
+ * candidate. */
+static fw_status encounter_row(loader *L, sqlite3_stmt *st, fw_rep_run *r)
+{
+    const char *sit = col_text(st, 1);
+    int s = name_index(fw_rep_situation_names, FW_REP_NSIT, sit);
+    if (s < 0)
+        return fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown encounter situation '%s'",
+                       L->file, r->run_id, sit);
+    r->n_sit[s]++;
+    r->n_domain += sqlite3_column_int(st, 3) != 0;
+    r->n_near += sqlite3_column_int(st, 4) != 0;
+    r->n_collision += sqlite3_column_int(st, 5) != 0;
+    if (count_candidate(L, st, 6, r, FW_REP_OWN, sit_type[s]))
+        return L->err->status;
+    double d = col_num(st, 2);
+    fw_rep_group *g = &L->rep->groups[r->group];
+    if (!isnan(d) && (fw_rep_values_push(&g->cpa[FW_REP_OWN][FW_REP_ALL], d) ||
+                      fw_rep_values_push(&g->cpa[FW_REP_OWN][sit_type[s]], d)))
+        return oom(L);
+    return FW_OK;
+}
+
+static fw_status read_encounters(loader *L)
+{
+    fw_study_report *rep = L->rep;
+    if (each_run_row(L,
+                     "SELECT run_id, situation, min_dist_m, domain_entered, near_miss, collision, "
+                     "candidate, outcome FROM encounters",
+                     encounter_row))
         return L->err->status;
     /* the rows are what the report counts; a different total in runs means
      * the writer and this reader disagree about what an encounter is */
@@ -374,70 +386,55 @@ static fw_status read_encounters(loader *L)
     return FW_OK;
 }
 
+/* One traffic-level encounter: type, CPA, the own flag, candidate. */
+static fw_status traffic_row(loader *L, sqlite3_stmt *st, fw_rep_run *r)
+{
+    const char *type = col_text(st, 1);
+    int t = name_index(fw_rep_type_names + 1, FW_REP_NTYPE - 1, type) + 1;
+    if (t <= 0)
+        return fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown traffic encounter type '%s'",
+                       L->file, r->run_id, type);
+    r->n_traffic[FW_REP_ALL]++;
+    r->n_traffic[t]++;
+    /* the own ship's pairs are its encounters: the traffic set is the others */
+    if (sqlite3_column_int(st, 3) == 0 && count_candidate(L, st, 4, r, FW_REP_TRAFFIC, t))
+        return L->err->status;
+    double d = col_num(st, 2);
+    fw_rep_group *g = &L->rep->groups[r->group];
+    if (!isnan(d) && (fw_rep_values_push(&g->cpa[FW_REP_TRAFFIC][FW_REP_ALL], d) ||
+                      fw_rep_values_push(&g->cpa[FW_REP_TRAFFIC][t], d)))
+        return oom(L);
+    return FW_OK;
+}
+
 static fw_status read_traffic(loader *L)
 {
+    return each_run_row(L, "SELECT run_id, type, min_dist_m, own, candidate, outcome "
+                           "FROM traffic_encounters", traffic_row);
+}
+
+/* One audited encounter: compliant or not, and why not. */
+static fw_status audit_row(loader *L, sqlite3_stmt *st, fw_rep_run *r)
+{
     fw_study_report *rep = L->rep;
-    sqlite3_stmt *st;
-    if (prepare(L, "SELECT run_id, type, min_dist_m, own, candidate, outcome "
-                   "FROM traffic_encounters",
-                &st))
-        return L->err->status;
-    int rc;
-    while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
-        fw_rep_run *r = find_run(rep, sqlite3_column_int64(st, 0));
-        if (!r)
-            continue;
-        const char *type = col_text(st, 1);
-        int t = name_index(fw_rep_type_names + 1, FW_REP_NTYPE - 1, type) + 1;
-        if (t <= 0) {
-            fw_fail(L->err, FW_EINPUT, "%s: run %lld: unknown traffic encounter type '%s'", L->file,
-                    r->run_id, type);
-            sqlite3_finalize(st);
-            return FW_EINPUT;
-        }
-        r->n_traffic[FW_REP_ALL]++;
-        r->n_traffic[t]++;
-        /* the own ship's pairs are its encounters: the traffic set is the others */
-        if (sqlite3_column_int(st, 3) == 0 && count_candidate(L, st, 4, r, FW_REP_TRAFFIC, t)) {
-            sqlite3_finalize(st);
-            return L->err->status;
-        }
-        double d = col_num(st, 2);
-        fw_rep_group *g = &rep->groups[r->group];
-        if (!isnan(d) && (fw_rep_values_push(&g->cpa[FW_REP_TRAFFIC][FW_REP_ALL], d) ||
-                          fw_rep_values_push(&g->cpa[FW_REP_TRAFFIC][t], d))) {
-            sqlite3_finalize(st);
-            return oom(L);
-        }
-    }
-    return step_done(L, st, rc);
+    int k = name_index(fw_rep_situation_names, FW_REP_NSIT, col_text(st, 1));
+    if (k < 0)
+        return FW_OK; /* unknown situations were refused before */
+    fw_rep_group *g = &rep->groups[r->group];
+    rep->audited = true;
+    g->audited[k]++;
+    bool ok = sqlite3_column_int(st, 2) != 0;
+    g->compliant[k] += ok;
+    if (!ok && fw_rep_note(&rep->audit_notes, &rep->n_audit_notes, col_text(st, 3)))
+        return oom(L);
+    return FW_OK;
 }
 
 /* The COLREGs audit: audited and compliant encounters by situation, and why not. */
 static fw_status read_audit(loader *L)
 {
-    fw_study_report *rep = L->rep;
-    sqlite3_stmt *st;
-    if (prepare(L, "SELECT run_id, situation, compliant, audit_note FROM encounters "
-                   "WHERE compliant IS NOT NULL", &st))
-        return L->err->status;
-    int rc;
-    while ((rc = sqlite3_step(st)) == SQLITE_ROW) {
-        fw_rep_run *r = find_run(rep, sqlite3_column_int64(st, 0));
-        int k = r ? name_index(fw_rep_situation_names, FW_REP_NSIT, col_text(st, 1)) : -1;
-        if (k < 0)
-            continue; /* a failed run's rows; unknown situations were refused before */
-        fw_rep_group *g = &rep->groups[r->group];
-        rep->audited = true;
-        g->audited[k]++;
-        bool ok = sqlite3_column_int(st, 2) != 0;
-        g->compliant[k] += ok;
-        if (!ok && fw_rep_note(&rep->audit_notes, &rep->n_audit_notes, col_text(st, 3))) {
-            sqlite3_finalize(st);
-            return oom(L);
-        }
-    }
-    return step_done(L, st, rc);
+    return each_run_row(L, "SELECT run_id, situation, compliant, audit_note FROM encounters "
+                           "WHERE compliant IS NOT NULL", audit_row);
 }
 
 /* The traffic monitors and the background behaviour, summed over the

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/files.h"
 #include "core/units.h"
 #include "ship/ship.h"
 #include "study/study.h"
@@ -184,9 +185,8 @@ static fw_status add_input(fw_study *s, const char *role, const char *path, fw_e
         return fw_fail(err, FW_ERUN, "%s: more than %d input files", s->file,
                        FW_STUDY_MAX_INPUTS);
     fw_study_input *in = &s->inputs[s->n_inputs];
-    if ((size_t)snprintf(in->path, sizeof in->path, "%s", path) >= sizeof in->path)
-        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
-                       sizeof in->path - 1);
+    if (fw_path_copy(in->path, sizeof in->path, path, err))
+        return err->status;
     FILE *f = fopen(path, "rb");
     if (!f)
         return fw_fail(err, FW_EINPUT, "%s: cannot read this input of study %s", path, s->file);
@@ -282,9 +282,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
                                        "behaviours", "duration_s",
                                        "start", "encounter_m", "near_miss_m", "audit", NULL};
     memset(s, 0, sizeof *s);
-    if ((size_t)snprintf(s->file, sizeof s->file, "%s", path) >= sizeof s->file)
-        return fw_fail(err, FW_EINPUT, "%s: path longer than %zu characters", path,
-                       sizeof s->file - 1);
+    if (fw_path_copy(s->file, sizeof s->file, path, err))
+        return err->status;
     s->encounter_range = 1852.0;
     s->near_miss = 185.2;
     yt_doc *doc = NULL;
