@@ -45,3 +45,5 @@ target_link_libraries(test_geo PRIVATE fairway_run)
 fw_script_test(geo_twin_run 0 "twin runs agree" geo_twin_run.sh)
 # the runs reach SUMO, whose own allocations the LeakSanitizer suppressions cover
 set_tests_properties(geo_twin_run PROPERTIES ENVIRONMENT "${fw_lsan}")
+fw_script_test(geojson_export 0 "geojson export ok" geojson_export.sh)
+set_tests_properties(geojson_export PROPERTIES ENVIRONMENT "${fw_lsan}")
