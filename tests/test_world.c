@@ -472,14 +472,14 @@ static int decisions(const char *dir, char *out, size_t size)
     if (!f)
         return -1;
     while (fgets(line, sizeof line, f)) {
-        /* t,east,north,heading,u,v,r,rudder,helm,propeller,mode: keep t, helm, mode */
-        char *col[12];
+        /* t,east,north,heading,speed,u,v,r,rudder,helm,propeller,mode: keep t, helm, mode */
+        char *col[13];
         int nc = 0;
-        for (char *p = strtok(line, ",\n"); p && nc < 12; p = strtok(NULL, ",\n"))
+        for (char *p = strtok(line, ",\n"); p && nc < 13; p = strtok(NULL, ",\n"))
             col[nc++] = p;
-        if (nc == 11)
-            used += (size_t)snprintf(out + used, size - used, "%s %s %s\n", col[0], col[8],
-                                     col[10]);
+        if (nc == 12)
+            used += (size_t)snprintf(out + used, size - used, "%s %s %s\n", col[0], col[9],
+                                     col[11]);
         rows++;
     }
     fclose(f);

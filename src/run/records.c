@@ -78,8 +78,11 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
     /* with an origin, the positions in degrees too (last, so that the
      * columns of a run in metres are the same either way) */
     const char *geo_cols = r->geo ? ",lat_deg,lon_deg" : "";
-    fprintf(r->own, "t_s,east_m,north_m,heading_deg,u_ms,v_ms,r_degs,rudder_deg,helm_deg,"
-                    "propeller_rps,mode%s\n", geo_cols);
+    /* the column names of every CSV follow one convention (scenarios/README.md,
+     * "Output columns"): speeds over ground in knots as speed_kn beside the
+     * targets', the body-frame components in m/s as the manoeuvre CSVs have them */
+    fprintf(r->own, "t_s,east_m,north_m,heading_deg,speed_kn,u_mps,v_mps,r_degps,rudder_deg,"
+                    "helm_deg,propeller_rps,mode%s\n", geo_cols);
     if (r->tgt)
         fprintf(r->tgt, "t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,bearing_deg,"
                         "dcpa_m,tcpa_s,situation%s\n", geo_cols);
@@ -119,9 +122,9 @@ FILE *fw_records_log(fw_records *r) { return r->log; }
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
                     const char *mode)
 {
-    fprintf(r->own, "%.1f,%.2f,%.2f,%.3f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%s", t, x->east, x->north,
-            fw_heading_deg(x->psi), x->u, x->vm, fw_rad_to_deg(x->r), fw_rad_to_deg(x->delta),
-            fw_rad_to_deg(helm), n, mode);
+    fprintf(r->own, "%.1f,%.2f,%.2f,%.3f,%.3f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%s", t, x->east,
+            x->north, fw_heading_deg(x->psi), fw_ms_to_kn(hypot(x->u, x->vm)), x->u, x->vm,
+            fw_rad_to_deg(x->r), fw_rad_to_deg(x->delta), fw_rad_to_deg(helm), n, mode);
     end_row(r, r->own, x->east, x->north);
 }
 
