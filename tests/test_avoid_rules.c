@@ -13,17 +13,8 @@
 #include "core/units.h"
 #include "run/run.h"
 #include "test.h"
+#include "test_ship.h"
 
-static fw_ship load(const char *name)
-{
-    fw_ship s;
-    fw_error err = {0};
-    if (fw_ship_load(name, &s, &err)) {
-        fprintf(stderr, "%s\n", err.msg);
-        exit(1);
-    }
-    return s;
-}
 
 /* Case 4 at t = 124 s (own ship on its course, 10 kn; both targets 8 kn on
  * 180 deg, 300 m apart): nothing clears, so the helm offered must be the
@@ -39,7 +30,7 @@ static void test_best_available_is_the_largest_clearance(void)
          .breadth = 32},
     };
     for (int k = 0; k < 3; k++) {
-        fw_ship ship = load(ships[k]);
+        fw_ship ship = test_load_ship(ships[k]);
         fw_helm_def def = fw_default_helm_def();
         fw_helm_ctx *ctx;
         fw_error err = {0};

@@ -7,17 +7,8 @@
 #include "dynamics/calibrate.h"
 #include "nomoto/nomoto.h"
 #include "test.h"
+#include "test_ship.h"
 
-static fw_ship load(const char *name)
-{
-    fw_ship s;
-    fw_error err = {0};
-    if (fw_ship_load(name, &s, &err)) {
-        fprintf(stderr, "%s\n", err.msg);
-        exit(1);
-    }
-    return s;
-}
 
 static fw_turning_result turn(const fw_ship *s, double kn, double deg, fw_history *h)
 {
@@ -35,7 +26,7 @@ static fw_turning_result turn(const fw_ship *s, double kn, double deg, fw_histor
 /* Table 2, both sides: every row within 10 percent. */
 static void test_c3_paper_trial(void)
 {
-    fw_ship c = load("c3-paper");
+    fw_ship c = test_load_ship("c3-paper");
     fw_turning_result s = turn(&c, 26.7, 35.0, NULL), p = turn(&c, 27.16, -35.0, NULL);
     CHECK_REL(s.advance, 1125.0, 0.10);
     CHECK_REL(s.transfer, 543.0, 0.10);
@@ -57,7 +48,7 @@ static double eq10_rate(double U, double d)
  * and equation 9's first 150 s within 10 percent of K delta (RMS). */
 static void test_c3_paper_eq10(void)
 {
-    fw_ship c = load("c3-paper"), c3 = load("c3");
+    fw_ship c = test_load_ship("c3-paper"), c3 = test_load_ship("c3");
     const double speeds[3] = {14.55, 20.12, 26.7};
     for (int i = 0; i < 3; i++)
         for (double d = 5.0; d <= 35.0; d += 5.0) {
@@ -101,18 +92,18 @@ static void test_calibrate_targets(void)
     CHECK(t.nturns == 1 && t.turns[0].from_kb && t.ntune == 1);
     CHECK_REL(fw_rad_to_deg(t.turns[0].steady_rate), eq10_rate(20.12, 10.0), 1e-9);
     CHECK(fw_trial_row_history(&t.turns[0]) == 0);
-    fw_ship c = load("c3-paper");
+    fw_ship c = test_load_ship("c3-paper");
     fw_calibration cal;
     fw_error err = {0};
     CHECK_MSG(fw_calibrate(&c, &t, &cal, &err) == FW_OK, "%s", err.msg);
     CHECK(cal.max_after < 0.002);
     CHECK(cal.max_after < cal.max_before);
-    fw_ship pulled = load("c3-paper");
+    fw_ship pulled = test_load_ship("c3-paper");
     fw_trial strong = small_trial(100.0);
     CHECK(fw_calibrate(&pulled, &strong, &cal, &err) == FW_OK);
     CHECK_REL(cal.after[0], cal.regression[0], 0.02);
     CHECK(cal.max_after > 0.01); /* the pull wins, the target is missed */
-    fw_ship bounded = load("c3-paper");
+    fw_ship bounded = test_load_ship("c3-paper");
     fw_trial narrow = small_trial(0.0);
     narrow.factor[0] = 1.05;
     CHECK(fw_calibrate(&bounded, &narrow, &cal, &err) == FW_OK);

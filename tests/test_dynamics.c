@@ -5,17 +5,8 @@
 #include "core/units.h"
 #include "dynamics/manoeuvre.h"
 #include "test.h"
+#include "test_ship.h"
 
-static fw_ship load(const char *name)
-{
-    fw_ship s;
-    fw_error err = {0};
-    if (fw_ship_load(name, &s, &err)) {
-        fprintf(stderr, "%s\n", err.msg);
-        exit(1);
-    }
-    return s;
-}
 
 static fw_turning_result turn(const fw_ship *s, double kn, double deg)
 {
@@ -33,7 +24,7 @@ static fw_turning_result turn(const fw_ship *s, double kn, double deg)
 /* The paper's Table 2 and steady rates: the C-3 within 10 percent on every row. */
 static void test_c3_sea_trial(void)
 {
-    fw_ship c3 = load("c3");
+    fw_ship c3 = test_load_ship("c3");
     fw_turning_result s = turn(&c3, 26.7, 35.0);
     CHECK_REL(s.advance, 1125.0, 0.10);
     CHECK_REL(s.transfer, 543.0, 0.10);
@@ -54,7 +45,7 @@ static void test_c3_sea_trial(void)
 
 static void test_c3_imo(void)
 {
-    fw_ship c3 = load("c3");
+    fw_ship c3 = test_load_ship("c3");
     fw_turning_result s = turn(&c3, 26.7, 35.0), p = turn(&c3, 27.16, -35.0);
     CHECK(s.advance_ok && s.tactical_ok && p.advance_ok && p.tactical_ok);
     const double angles[2] = {10.0, 20.0};
@@ -96,7 +87,7 @@ static void compare_scaled(const fw_ship *m, const fw_ship *f, double fn, double
 
 static void test_kvlcc2_froude(void)
 {
-    fw_ship m = load("kvlcc2-l7"), f = load("kvlcc2");
+    fw_ship m = test_load_ship("kvlcc2-l7"), f = test_load_ship("kvlcc2");
     compare_scaled(&m, &f, 0.142, 0.005); /* the two ship files: the 0.5% */
     /* exactly similar (scaled in code): what is left is the integrator's
      * absolute tolerances and the 0.5 s sampling, which do not scale */
@@ -122,7 +113,7 @@ static void test_kvlcc2_froude(void)
 
 static void test_mirror(void)
 {
-    fw_ship s = load("kvlcc2");
+    fw_ship s = test_load_ship("kvlcc2");
     s.gamma_R_minus = s.gamma_R_plus;
     s.C_2_minus = s.C_2_plus;
     fw_turning_def d = fw_default_turning_def();
@@ -146,7 +137,7 @@ static void test_mirror(void)
     fw_history_free(&hs);
     fw_history_free(&hp);
     /* and the C-3's asymmetric coefficients do make the two sides differ */
-    fw_ship c3 = load("c3");
+    fw_ship c3 = test_load_ship("c3");
     fw_turning_result a = turn(&c3, 26.7, 35.0), b = turn(&c3, 26.7, -35.0);
     CHECK(fabs(a.tactical_diameter - b.tactical_diameter) > 10.0);
 }
@@ -156,7 +147,7 @@ static void test_surge_balance(void)
 {
     const char *names[3] = {"c3", "kvlcc2", "kvlcc2-l7"};
     for (int k = 0; k < 3; k++) {
-        fw_ship s = load(names[k]);
+        fw_ship s = test_load_ship(names[k]);
         double U = 0.15 * sqrt(FW_G * s.L), n;
         fw_error err = {0};
         CHECK(fw_mmg_propeller_for_speed(&s, U, &n, &err) == FW_OK);
@@ -172,7 +163,7 @@ static void test_surge_balance(void)
         fw_mmg_derivs(&s, &x, 1.1 * n, dx);
         CHECK(dx[0] > 0.0);
     }
-    fw_ship c3 = load("c3");
+    fw_ship c3 = test_load_ship("c3");
     double n;
     fw_error err = {0};
     CHECK(fw_mmg_propeller_for_speed(&c3, -1.0, &n, &err) == FW_EINPUT);
@@ -223,7 +214,7 @@ static fw_mmg_state hour(const fw_ship *s, const fw_stepper_def *def, long *rein
 
 static void test_accuracy(void)
 {
-    fw_ship c3 = load("c3");
+    fw_ship c3 = test_load_ship("c3");
     fw_stepper_def tight = fw_default_stepper_def();
     tight.rtol = 1e-11;
     tight.atol_vel = 1e-10;
@@ -241,7 +232,7 @@ static void test_accuracy(void)
 
 static void test_rudder_servo(void)
 {
-    fw_ship c3 = load("c3");
+    fw_ship c3 = test_load_ship("c3");
     fw_stepper *st;
     fw_error err = {0};
     CHECK(fw_stepper_create(&c3, NULL, &st, &err) == FW_OK);

@@ -393,27 +393,36 @@ static void test_threat_during_return(void)
     fw_world_destroy(w);
 }
 
+/* Runs the scenario file rel (under the data root) through SUMO into
+ * tmp_root/sub, for duration s (0: the file's). */
+static void run_data_file(const char *rel, const char *sub, double duration, fw_run_summary *sum,
+                          fw_encounter **e, int *ne)
+{
+    static fw_scenario s;
+    char file[512], dir[600];
+    fw_error err = {0};
+    snprintf(file, sizeof file, "%s/%s", fw_data_root(), rel);
+    CHECK_MSG(fw_scenario_load(file, &s, &err) == FW_OK, "%s", err.msg);
+    if (duration > 0.0)
+        s.duration = duration;
+    snprintf(dir, sizeof dir, "%s/%s", tmp_root, sub);
+    mkdir(dir, 0777);
+    fw_run_def def = fw_default_run_def();
+    def.scenario = &s;
+    def.dir = dir;
+    CHECK_MSG(fw_run_scenario(&def, sum, e, ne, &err) == FW_OK, "%s", err.msg);
+}
+
 /* The strait with its heavy traffic for 20 minutes: no ship moves sideways
  * faster than a lane change allows (1 m/s across 900 m lanes in 900 s), none
  * jumps, none appears, vanishes or starts within 2 nm of the own ship (the
  * routes end beyond its sight and the fill's close ships are taken out). */
 static void test_strait_traffic_monitors(void)
 {
-    static fw_scenario s;
-    char file[512], dir[600];
-    fw_error err = {0};
-    snprintf(file, sizeof file, "%s/scenarios/traffic/strait-crossing.yaml", fw_data_root());
-    CHECK_MSG(fw_scenario_load(file, &s, &err) == FW_OK, "%s", err.msg);
-    s.duration = 1200.0;
-    snprintf(dir, sizeof dir, "%s/strait", tmp_root);
-    mkdir(dir, 0777);
-    fw_run_def def = fw_default_run_def();
-    def.scenario = &s;
-    def.dir = dir;
     fw_run_summary sum;
     fw_encounter *e = NULL;
     int ne = 0;
-    CHECK_MSG(fw_run_scenario(&def, &sum, &e, &ne, &err) == FW_OK, "%s", err.msg);
+    run_data_file("scenarios/traffic/strait-crossing.yaml", "strait", 1200.0, &sum, &e, &ne);
     free(e);
     const fw_monitor_counts *m = &sum.monitors;
     CHECK_MSG(m->sideways == 0 && m->teleport == 0 && m->max_lateral <= 1.0 + 1e-6,
@@ -432,20 +441,10 @@ static void test_strait_traffic_monitors(void)
  * scenario label. */
 static void test_network_and_targets(void)
 {
-    static fw_scenario s;
-    char file[512], dir[600];
-    fw_error err = {0};
-    snprintf(file, sizeof file, "%s/tests/data/network_targets.yaml", fw_data_root());
-    CHECK_MSG(fw_scenario_load(file, &s, &err) == FW_OK, "%s", err.msg);
-    snprintf(dir, sizeof dir, "%s/nt", tmp_root);
-    mkdir(dir, 0777);
-    fw_run_def def = fw_default_run_def();
-    def.scenario = &s;
-    def.dir = dir;
     fw_run_summary sum;
     fw_encounter *e = NULL;
     int ne = 0;
-    CHECK_MSG(fw_run_scenario(&def, &sum, &e, &ne, &err) == FW_OK, "%s", err.msg);
+    run_data_file("tests/data/network_targets.yaml", "nt", 0.0, &sum, &e, &ne);
     int explicit = -1, network = 0;
     for (int i = 0; i < ne; i++) {
         if (strcmp(e[i].id, "X1") == 0)
