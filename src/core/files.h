@@ -22,14 +22,14 @@ fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err);
 fw_status fw_check_parent_dir(const char *opt, const char *path, const char *cannot,
                               fw_error *err);
 
-/* Finishes a file written under a temporary name: flushes, syncs and closes
- * f, then renames tmp to path, so a reader never finds a partial file where a
- * complete one is expected.  On any failure tmp is removed and path left as
- * it was. */
 /* Copies path into dst (size n): FW_EINPUT "PATH: path longer than N
  * characters" when it does not fit, never a truncated path. */
 fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err);
 
+/* Finishes a file written under a temporary name: flushes, syncs and closes
+ * f, then renames tmp to path, so a reader never finds a partial file where a
+ * complete one is expected.  On any failure tmp is removed and path left as
+ * it was. */
 fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err);
 
 /* Formats a path into buf (size bytes); FW_ERUN naming the start of the path

@@ -56,7 +56,8 @@ static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *e
     fw_sumo_source_def dflt = fw_default_sumo_source_def();
     fw_sumo_source_def sd = {.mode = def->mode, .dir = dir, .network = s->network,
                              .density = s->density, .fill = s->fill, .seed = s->seed,
-                             .duration = s->duration, .step = s->step, .targets = s->targets,
+                             .duration = s->duration, .step = s->step, .fcd = s->fcd,
+                             .fcd_period = s->record_every, .targets = s->targets,
                              .n_targets = s->n_targets, .own = own_start(s), .own_leg = s->leg,
                              .radius = s->radius,
                              .area_radius = s->survey ? s->survey_radius : 0.0,

@@ -345,7 +345,7 @@ static fw_status load_survey(const yt_doc *doc, const yt_node *root, fw_scenario
 static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"duration_s", "step_s", "seed", NULL};
-    static const char *const okeys[] = {"targets_csv", "record_every_s", NULL};
+    static const char *const okeys[] = {"targets_csv", "record_every_s", "fcd", NULL};
     const yt_node *r, *o = NULL;
     long seed = 1;
     fw_status st;
@@ -366,6 +366,7 @@ static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s
     s->record_every = s->step;
     if (o && ((st = yt_check_keys(doc, o, "outputs", okeys, err)) ||
               (st = yt_opt_bool(doc, o, "outputs", "targets_csv", &s->targets_csv, err)) ||
+              (st = yt_opt_bool(doc, o, "outputs", "fcd", &s->fcd, err)) ||
               (st = yt_opt_number(doc, o, "outputs", "record_every_s", s->step, 3600,
                                   &s->record_every, err))))
         return st;

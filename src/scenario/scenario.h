@@ -66,6 +66,7 @@ typedef struct fw_scenario {
     /* outputs */
     bool targets_csv;
     double record_every; /* s, time-history sampling (a multiple of step) */
+    bool fcd;            /* SUMO's own FCD output of every ship (sumo/fcd.xml) */
 } fw_scenario;
 
 /* Loads and checks path.  s is large (a ship inside): callers heap-allocate. */

@@ -69,6 +69,12 @@ fw_status fw_traffic_net_check(const fw_sumo_backend *be, const char *net_file,
  * command line a remote run of d needs, as an sh script run in that directory. */
 fw_status fw_traffic_write_remote_command(const fw_traffic_def *d, fw_error *err);
 
+/* SUMO_DIR/run.sumocfg: the run's SUMO inputs (network, routes, types,
+ * step, seed, lane changes, 0 to d->end) as a configuration sumo-gui opens,
+ * with the view settings file view (NULL: none); paths inside SUMO_DIR
+ * relative to it (sumofiles.c). */
+fw_status fw_traffic_write_config(const fw_traffic_def *d, const char *view, fw_error *err);
+
 extern const fw_sumo_backend fw_backend_libsumo;
 extern const fw_sumo_backend fw_backend_libtraci;
 

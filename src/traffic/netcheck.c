@@ -1,5 +1,5 @@
-/* netcheck.c - a remote sumo's network against the one the run expects, and
- * the command line that starts the right sumo (backend.h). */
+/* netcheck.c - a remote sumo's network against the one the run expects
+ * (backend.h). */
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -115,51 +115,4 @@ fw_status fw_traffic_net_check(const fw_sumo_backend *be, const char *net_file, 
     free(want_ids);
     free(have_ids);
     return st;
-}
-
-/* One argument into f, single-quoted for sh, with paths under dir (the
- * run's sumo/ directory) made relative to it: the command is run there, and
- * the run's directory has its final name only once the run is over. */
-static void put_arg(FILE *f, const char *arg, const char *dir)
-{
-    size_t dl = strlen(dir);
-    fputs(" '", f);
-    for (const char *p = arg; *p;) {
-        size_t k = strcspn(p, ","); /* route files are comma-joined */
-        if (strncmp(p, dir, dl) == 0 && p[dl] == '/' && dl < k)
-            p += dl + 1, k -= dl + 1;
-        for (size_t i = 0; i < k; i++)
-            p[i] == '\'' ? fputs("'\\''", f) : fputc(p[i], f);
-        p += k;
-        if (*p == ',')
-            fputc(*p++, f);
-    }
-    fputc('\'', f);
-}
-
-fw_status fw_traffic_write_remote_command(const fw_traffic_def *d, fw_error *err)
-{
-    if (!d->log_file)
-        return FW_OK;
-    char dir[1024], path[1100], buf[128];
-    const char *slash = strrchr(d->log_file, '/');
-    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - d->log_file) : 1,
-             slash ? d->log_file : ".");
-    const char *argv[48];
-    fw_status st;
-    if ((st = fw_traffic_sumo_args(d, "sumo", d->mode.port, argv, 48, buf, sizeof buf, err)) ||
-        (st = fw_path(path, sizeof path, err, "%s/remote-command.txt", dir)))
-        return st;
-    FILE *f = fopen(path, "w");
-    if (!f)
-        return fw_fail(err, FW_ERUN, "cannot write %s", path);
-    fprintf(f, "# The sumo a remote run of this scenario needs (fairway run --sumo "
-               "remote:%s:%d): run\n# it on %s in this directory, e.g. sh remote-command.txt, "
-               "then start the run.\ncd \"$(dirname \"$0\")\" &&", d->mode.host, d->mode.port,
-            d->mode.host);
-    fputs(" sumo", f);
-    for (int i = 1; argv[i]; i++)
-        put_arg(f, argv[i], dir);
-    fputc('\n', f);
-    return fclose(f) ? fw_fail(err, FW_ERUN, "cannot write %s", path) : FW_OK;
 }

@@ -364,10 +364,11 @@ fw_status fw_sumo_source_create(const fw_sumo_source_def *d, fw_source **out, fw
     *out = NULL;
     sumo_files f;
     memset(&f, 0, sizeof f);
-    char slog[1200];
+    char slog[1200], fcd[1200];
     fw_status st;
     if ((st = prepare(d, &f, err)) ||
-        (st = fw_path(slog, sizeof slog, err, "%s/sumo.log", d->dir)))
+        (st = fw_path(slog, sizeof slog, err, "%s/sumo.log", d->dir)) ||
+        (st = fw_path(fcd, sizeof fcd, err, "%s/fcd.xml", d->dir)))
         return st;
     sumo_source *k = calloc(1, sizeof *k);
     if (!k)
@@ -387,6 +388,10 @@ fw_status fw_sumo_source_create(const fw_sumo_source_def *d, fw_source **out, fw
     td.route_file = f.routes;
     td.add_file = f.has_types ? f.types : NULL;
     td.log_file = slog;
+    td.fcd_file = d->fcd ? fcd : NULL;
+    td.fcd_period = d->fcd_period;
+    /* SUMO's clock is a step ahead of fairway's: its first step is t = 0 */
+    td.end = d->duration + d->step;
     td.step = d->step;
     td.seed = d->seed;
     td.own_id = d->own.id;

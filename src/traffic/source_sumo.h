@@ -43,6 +43,8 @@ typedef struct fw_sumo_source_def {
     unsigned long seed;         /* SUMO's and the demand's */
     double duration;            /* s, the run; flows run to duration + step */
     double step;                /* s */
+    bool fcd;                   /* SUMO's FCD of every ship into dir/fcd.xml ... */
+    double fcd_period;          /* s, ... every this (0: every step) */
     const fw_target *targets;   /* explicit ships at t = 0 (constant velocity) */
     int n_targets;
     fw_target own;              /* id, position, course, speed, length, breadth at t = 0 */

@@ -20,6 +20,7 @@
 #include "core/spawn.h"
 #include "core/units.h"
 #include "traffic/backend.h"
+#include "traffic/fcd.h"
 
 struct fw_traffic {
     const fw_sumo_backend *be;
@@ -32,6 +33,8 @@ struct fw_traffic {
     bool placed, dead;
     double time;
     long steps;
+    fw_fcd *fcd;           /* def.fcd_file's writer, or NULL */
+    long fcd_every;        /* steps between two of its timesteps */
     double query_radius;   /* m, of the context subscription */
     double own_x, own_y, own_heading, own_speed; /* as last placed: the query's centre */
     fw_sumo_list raw;      /* fw_traffic_all */
@@ -289,6 +292,14 @@ static fw_status connect_quietly(fw_traffic *t, const char *host, int port, fw_e
     }
 }
 
+/* The view settings sumo-gui is given: --gui-settings or fairway's. */
+static fw_status view_file(const fw_traffic_def *d, char *buf, size_t n, fw_error *err)
+{
+    if (d->mode.kind == FW_TRAFFIC_GUI && d->mode.gui.settings)
+        return fw_path(buf, n, err, "%s", d->mode.gui.settings);
+    return fw_path(buf, n, err, "%s/networks/fairway.view.xml", fw_data_root());
+}
+
 /* A sumo-gui with the run's files and the watching settings (traffic.h
  * fw_traffic_gui), its own messages to LOG.gui beside SUMO's log. */
 static fw_status start_gui(fw_traffic *t, fw_error *err)
@@ -302,13 +313,8 @@ static fw_status start_gui(fw_traffic *t, fw_error *err)
     if ((st = fw_traffic_gui_check("--sumo", err)) || (st = fw_traffic_free_port(&port, err)) ||
         (st = fw_traffic_sumo_args(d, d->sumo_gui, port, argv, 48, buf, sizeof buf, err)))
         return st;
-    if (g->settings)
-        st = fw_path(settings, sizeof settings, err, "%s", g->settings);
-    else
-        st = fw_path(settings, sizeof settings, err, "%s/networks/fairway.view.xml",
-                     fw_data_root());
-    if (st || (st = fw_path(out, sizeof out, err, "%s.gui",
-                            d->log_file ? d->log_file : "/dev/null")))
+    if ((st = view_file(d, settings, sizeof settings, err)) ||
+        (st = fw_path(out, sizeof out, err, "%s.gui", d->log_file ? d->log_file : "/dev/null")))
         return st;
     if (access(settings, R_OK) != 0)
         return fw_fail(err, FW_EINPUT, "--gui-settings %s: cannot be read", settings);
@@ -336,8 +342,11 @@ static fw_status start(fw_traffic *t, fw_error *err)
 {
     const fw_traffic_def *d = &t->def;
     const char *argv[48];
-    char buf[128];
-    fw_status st;
+    char buf[128], view[1100];
+    /* written first, whatever happens next: what the run asked SUMO for */
+    fw_status st = view_file(d, view, sizeof view, err);
+    if (st || (st = fw_traffic_write_config(d, access(view, R_OK) == 0 ? view : NULL, err)))
+        return st;
     switch (d->mode.kind) {
     case FW_TRAFFIC_EMBEDDED:
         if (embedded_open)
@@ -416,6 +425,9 @@ void fw_traffic_close(fw_traffic *t)
     } else if (t->child > 0) {
         fw_spawn_stop(t->child);
     }
+    fw_error ferr = {0};
+    if (fw_fcd_close(t->fcd, !t->dead, &ferr))
+        fprintf(stderr, "fairway: warning: %s\n", ferr.msg);
     fw_free_each(5, t->raw.v, t->ctx.v, t->ships, t->area, t->near);
     fw_idmap_free(&t->ids);
     fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
@@ -445,6 +457,13 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
         (st = fw_path(t->screenshot, sizeof t->screenshot, err, "%s", def->mode.gui.screenshot))) {
         fw_traffic_close(t);
         return st;
+    }
+    if (def->fcd_file) {
+        t->fcd_every = def->fcd_period > def->step ? lround(def->fcd_period / def->step) : 1;
+        if ((st = fw_fcd_open(def->fcd_file, &t->fcd, err))) {
+            fw_traffic_close(t);
+            return st;
+        }
     }
     /* only the start uses the file names; they are not kept */
     if ((st = start(t, err))) {
@@ -547,6 +566,9 @@ fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
         t->dead = true;
     else
         t->steps++;
+    if (!st && t->fcd && (t->steps - 1) % t->fcd_every == 0 &&
+        !(st = t->be->all(&t->raw, err)))
+        st = fw_fcd_step(t->fcd, t->time, t->raw.v, t->raw.n, err);
     /* sumo-gui: the own ship is in the simulation from the first step on */
     if (!st && t->child > 0) {
         double w = t->def.mode.gui.view_m > 0.0 ? t->def.mode.gui.view_m : fw_nm_to_m(3.0);

@@ -74,6 +74,11 @@ typedef struct fw_traffic_def {
     const char *route_file;  /* NULL: no background traffic */
     const char *add_file;    /* NULL: none; normally networks/ships.add.xml */
     const char *log_file;    /* SUMO's messages; NULL: discarded */
+    /* SUMO's floating car data of every ship, its front bumper, every
+     * fcd_period s (SUMO's --fcd-output); NULL: none */
+    const char *fcd_file;
+    double fcd_period;       /* s, 0 = every step */
+    double end;              /* s, the run's end (the replay's), 0 = open */
     double step;             /* s, SUMO step length = controller step */
     /* s, how long a lane change takes (SUMO's --lanechange.duration): by
      * default SUMO moves a ship into the next lane in one step, 900 m sideways
