@@ -2,9 +2,12 @@
 """Pictures of one `fairway run` directory, in the style of the paper's Figures 22-31.
 
 Writes into the run directory (or --out):
-  track.png     own and target tracks with hull outlines every --every seconds and
-                the own domain ellipse (hull-grown for the closest target) at the
-                closest approach
+  track.png     own and target tracks in nautical miles with hull outlines every
+                --every seconds and the own domain ellipse at the closest
+                approach; with a network its lanes (from sumo/run.sumocfg), the
+                ships that came within 2 nm or that the own ship acted for named
+                (the 10 closest), every other ship in sight a thin grey track;
+                a caption line with the run's settings and outcome
   helm.png      helm order and rudder angle against time, with the policy's mode
   distance.png  centre distance to each target against time, domain size marked
 
@@ -15,6 +18,7 @@ import json
 import math
 import os
 import sys
+import xml.etree.ElementTree as ET
 
 import matplotlib
 
@@ -59,28 +63,109 @@ def ellipse(e, n, heading_deg, a, b):
 
 
 # the own ship is always orange; targets never are
-TARGET_COLORS = ["tab:blue", "tab:green", "tab:purple", "tab:brown", "tab:pink", "tab:gray",
+TARGET_COLORS = ["tab:blue", "tab:green", "tab:purple", "tab:brown", "tab:pink",
                  "tab:olive", "tab:cyan", "tab:red"]
 
 
-def plot_track(own, tgt, s, every, path):
-    fig, ax = plt.subplots(figsize=(8, 8))
-    ax.plot(own.east_m, own.north_m, color="tab:orange", lw=1.5, label="own ship")
+NM = 1852.0
+NAMED_WITHIN = 2 * NM  # ships that came this close, or that the own ship acted for, are named
+NAMED_MAX = 10
+
+
+def network_lanes(run):
+    """[(width_m, [(x, y), ...])] of the run's network lanes (sumo/run.sumocfg's net-file),
+    leaving out fairway's generated target and own-ship edges (fw_*) and SUMO's
+    internal ones; [] without a network."""
+    cfg = os.path.join(run, "sumo", "run.sumocfg")
+    try:
+        net = ET.parse(cfg).getroot().find("net-file").get("value")
+        root = ET.parse(os.path.join(os.path.dirname(cfg), net)).getroot()
+    except (OSError, ET.ParseError, AttributeError):
+        return []
+    lanes = []
+    for e in root.iter("edge"):
+        if e.get("function") == "internal" or e.get("id", "").startswith("fw_"):
+            continue
+        for ln in e.iter("lane"):
+            pts = [tuple(map(float, p.split(","))) for p in ln.get("shape", "").split()]
+            lanes.append((float(ln.get("width", "3.2")), pts))
+    return lanes
+
+
+def draw_lanes(ax, lanes):
+    """Each lane as a band of its width, pale (SUMO's x/y are the plane's east/north)."""
+    for w, pts in lanes:
+        for (x0, y0), (x1, y1) in zip(pts, pts[1:]):
+            d = math.hypot(x1 - x0, y1 - y0)
+            if d == 0:
+                continue
+            ox, oy = -(y1 - y0) / d * w / 2, (x1 - x0) / d * w / 2
+            xs = [x0 + ox, x1 + ox, x1 - ox, x0 - ox]
+            ys = [y0 + oy, y1 + oy, y1 - oy, y0 - oy]
+            ax.fill([v / NM for v in xs], [v / NM for v in ys], color="0.93", ec="0.8", lw=0.5,
+                    zorder=0)
+
+
+def named_targets(s):
+    """The ids to name: acted for or within NAMED_WITHIN, the NAMED_MAX closest."""
+    enc = [e for e in s["encounters"]
+           if e.get("t_act_s") is not None or e["min_distance_m"] < NAMED_WITHIN]
+    enc.sort(key=lambda e: e["min_distance_m"])
+    return [e["id"] for e in enc[:NAMED_MAX]]
+
+
+def caption(s, own):
+    speed = own.speed_kn.iloc[0] if "speed_kn" in own and len(own) else float("nan")
+    parts = [f"own ship {s['own_length_m']:.0f} x {s['own_breadth_m']:.0f} m at {speed:.1f} kn",
+             f"domain {s['domain_m']:.0f} m (fore-aft x{s['domain_fore_aft_ratio']:g})",
+             f"traffic {s.get('traffic_behaviour') or 'scripted'}",
+             f"{s['t_end_s']:.0f} s", f"min hull {s['min_hull_distance_m']:.0f} m"
+             if s.get("min_hull_distance_m") is not None else "no hull distance",
+             f"collision {'yes' if s['collision'] else 'no'}",
+             f"domain entered {'yes' if s['domain_entered'] else 'no'}"]
+    return ", ".join(parts)
+
+
+def view_box(own, tgt, named, margin):
+    """The own track and the named ships' tracks, with margin (m) round them."""
+    xs, ys = list(own.east_m), list(own.north_m)
+    if len(tgt) and named:
+        g = tgt[tgt.id.isin(named)]
+        xs += list(g.east_m)
+        ys += list(g.north_m)
+    return min(xs) - margin, max(xs) + margin, min(ys) - margin, max(ys) + margin
+
+
+def plot_track(run, own, tgt, s, every, path):
+    fig, ax = plt.subplots(figsize=(8, 8.4))
+    lanes = network_lanes(run)
+    draw_lanes(ax, lanes)
+    ax.plot(own.east_m / NM, own.north_m / NM, color="tab:orange", lw=1.5, label="own ship")
     dt = own.t_s.iloc[1] - own.t_s.iloc[0] if len(own) > 1 else 1.0
     step = max(1, int(round(every / dt)))
     for _, r in own.iloc[::step].iterrows():
-        ax.fill(*outline(r.east_m, r.north_m, r.heading_deg, s["own_length_m"], s["own_breadth_m"]),
-                color="tab:orange", alpha=0.5)
-        ax.annotate(f"{r.t_s:.0f}", (r.east_m, r.north_m), fontsize=6, xytext=(4, 4),
+        xs, ys = outline(r.east_m, r.north_m, r.heading_deg, s["own_length_m"], s["own_breadth_m"])
+        ax.fill(np.array(xs) / NM, np.array(ys) / NM, color="tab:orange", alpha=0.5)
+        ax.annotate(f"{r.t_s:.0f}", (r.east_m / NM, r.north_m / NM), fontsize=6, xytext=(4, 4),
                     textcoords="offset points")
     enc = {e["id"]: e for e in s["encounters"]}
-    for k, (tid, g) in enumerate(tgt.groupby("id", sort=True) if len(tgt) else []):
-        c = TARGET_COLORS[k % len(TARGET_COLORS)]
+    named = named_targets(s)
+    k = 0
+    for tid, g in (tgt.groupby("id", sort=True) if len(tgt) else []):
         e = enc.get(tid, {})
-        ax.plot(g.east_m, g.north_m, color=c, lw=1, label=f"{tid} ({e.get('situation', '')})")
+        if tid not in named:  # every other ship in sight: its track only, unnamed
+            ax.plot(g.east_m / NM, g.north_m / NM, color="0.6", lw=0.6, zorder=1)
+            continue
+        c = TARGET_COLORS[k % len(TARGET_COLORS)]
+        k += 1
+        ax.plot(g.east_m / NM, g.north_m / NM, color=c, lw=1,
+                label=f"{tid} ({e.get('situation', '')}, {e['min_distance_m']:.0f} m)")
         for _, r in g.iloc[::step].iterrows():
-            ax.fill(*outline(r.east_m, r.north_m, r.heading_deg, e.get("length_m", 200),
-                             e.get("breadth_m", 32)), color=c, alpha=0.5)
+            xs, ys = outline(r.east_m, r.north_m, r.heading_deg, e.get("length_m", 200),
+                             e.get("breadth_m", 32))
+            ax.fill(np.array(xs) / NM, np.array(ys) / NM, color=c, alpha=0.5)
+    if len(tgt) and len(named) < tgt.id.nunique():
+        ax.plot([], [], color="0.6", lw=0.6, label=f"{tgt.id.nunique() - len(named)} other ships in sight")
     # domain at the closest approach of the closest target
     cid = s.get("closest_target")
     if cid and cid in enc and len(tgt):
@@ -88,20 +173,28 @@ def plot_track(own, tgt, s, every, path):
         o = own.iloc[(own.t_s - tmin).abs().argmin()]
         g = tgt[tgt.id == cid]
         t = g.iloc[(g.t_s - tmin).abs().argmin()]
-        ax.plot(*ellipse(o.east_m, o.north_m, o.heading_deg, s["domain_m"] * s["domain_fore_aft_ratio"],
-                         s["domain_m"]), "k--", lw=1, label=f"domain {s['domain_m']:.0f} m at t = {tmin:.0f} s")
-        ax.plot([o.east_m, t.east_m], [o.north_m, t.north_m], "k:", lw=1)
-        ax.annotate(f"{enc[cid]['min_distance_m']:.0f} m", ((o.east_m + t.east_m) / 2,
-                    (o.north_m + t.north_m) / 2), fontsize=8)
-    ax.set_aspect("equal")
-    ax.set_xlabel("east (m)")
-    ax.set_ylabel("north (m)")
+        ex, ey = ellipse(o.east_m, o.north_m, o.heading_deg, s["domain_m"] * s["domain_fore_aft_ratio"],
+                         s["domain_m"])
+        ax.plot(ex / NM, ey / NM, "k--", lw=1, label=f"domain {s['domain_m']:.0f} m at t = {tmin:.0f} s")
+        ax.plot([o.east_m / NM, t.east_m / NM], [o.north_m / NM, t.north_m / NM], "k:", lw=1)
+        ax.annotate(f"{enc[cid]['min_distance_m']:.0f} m", ((o.east_m + t.east_m) / 2 / NM,
+                    (o.north_m + t.north_m) / 2 / NM), fontsize=8)
+    x0, x1, y0, y1 = view_box(own, tgt, named, margin=0.5 * NM if not lanes else 1.0 * NM)
+    ax.set_xlim(x0 / NM, x1 / NM)
+    ax.set_ylim(y0 / NM, y1 / NM)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("east (nm)")
+    ax.set_ylabel("north (nm)")
     fa = s["first_action"]
     act = f"act {fa['t_s']:.0f} s {fa['side']} {fa['helm_deg']:.0f} deg" if fa["acted"] else "no action"
     ax.set_title(f"{s['scenario']}: min {s['min_distance_m']:.0f} m, {act}")
+    if len(tgt) == 0 and s["encounters"]:
+        ax.text(0.5, 0.02, "targets.csv not written (outputs: targets_csv: false): own ship only",
+                transform=ax.transAxes, ha="center", fontsize=8, color="0.3")
     ax.legend(fontsize=7, loc="best")
     ax.grid(alpha=0.3)
-    fig.tight_layout()
+    fig.text(0.5, 0.01, caption(s, own), ha="center", fontsize=7, color="0.25")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
     fig.savefig(path, dpi=110)
     plt.close(fig)
 
@@ -153,7 +246,7 @@ def main():
     own, tgt, s = load(a.run)
     out = a.out or a.run
     os.makedirs(out, exist_ok=True)
-    plot_track(own, tgt, s, a.every, os.path.join(out, "track.png"))
+    plot_track(a.run, own, tgt, s, a.every, os.path.join(out, "track.png"))
     plot_helm(own, s, os.path.join(out, "helm.png"))
     plot_distance(tgt, s, os.path.join(out, "distance.png"))
     print(f"wrote {out}/track.png, helm.png, distance.png")

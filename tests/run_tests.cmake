@@ -50,3 +50,6 @@ set_tests_properties(geojson_export PROPERTIES ENVIRONMENT "${fw_lsan}")
 # every SUMO run's sumo/run.sumocfg, and the FCD replayed in SUMO (headless)
 fw_script_test(sumo_replay 0 "sumo replay ok" sumo_replay.sh)
 set_tests_properties(sumo_replay PROPERTIES ENVIRONMENT "${fw_lsan}")
+# run plots: the network's lanes, which ships are named
+fw_script_test(plot_run 0 "plot run ok" plot_run.sh)
+set_tests_properties(plot_run PROPERTIES ENVIRONMENT "${fw_lsan}")
