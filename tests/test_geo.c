@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/files.h"
 #include "core/units.h"
@@ -127,9 +128,122 @@ static void test_twin_scenario(void)
     free(m);
 }
 
+/* A plane from a PROJ string and an offset (a geo-referenced SUMO network's
+ * projParameter and netOffset) is the string's plane shifted: against the
+ * transverse Mercator checked above. */
+static void test_plane_from_a_network(void)
+{
+    fw_error err = {0};
+    fw_geo *tm = NULL, *net = NULL;
+    CHECK(fw_geo_create(51.05, 1.45, &tm, &err) == FW_OK);
+    CHECK(fw_geo_create_proj(fw_geo_proj_string(tm), 100.0, -50.0, &net, &err) == FW_OK);
+    if (!tm || !net) {
+        fw_geo_destroy(tm);
+        fw_geo_destroy(net);
+        return;
+    }
+    double e0, n0, e1, n1, lat, lon, g0, g1;
+    CHECK(fw_geo_to_plane(tm, 51.1, 1.6, &e0, &n0, &err) == FW_OK);
+    CHECK(fw_geo_to_plane(net, 51.1, 1.6, &e1, &n1, &err) == FW_OK);
+    CHECK_NEAR(e1 - e0, 100.0, 1e-6);
+    CHECK_NEAR(n1 - n0, -50.0, 1e-6);
+    CHECK(fw_geo_to_latlon(net, e1, n1, &lat, &lon, &err) == FW_OK);
+    CHECK_NEAR(lat, 51.1, 1e-10);
+    CHECK_NEAR(lon, 1.6, 1e-10);
+    CHECK(fw_geo_convergence(tm, 51.1, 1.6, &g0, &err) == FW_OK);
+    CHECK(fw_geo_convergence(net, 51.1, 1.6, &g1, &err) == FW_OK);
+    CHECK_NEAR(g1, g0, 1e-12);
+    /* the origin is where the plane's (0, 0) is: the tmerc's (-100, 50) */
+    fw_geo_origin(net, &lat, &lon);
+    CHECK(fw_geo_to_plane(tm, lat, lon, &e0, &n0, &err) == FW_OK);
+    CHECK_NEAR(e0, -100.0, 1e-6);
+    CHECK_NEAR(n0, 50.0, 1e-6);
+    fw_geo_destroy(net);
+    CHECK(fw_geo_create_proj("+proj=nonsense", 0, 0, &net, &err) == FW_EINPUT);
+    CHECK(net == NULL);
+    fw_geo_destroy(tm);
+}
+
+/* SUMO's x, y of a junction in the built net.xml. */
+static bool junction_xy(const char *net, const char *id, double *x, double *y)
+{
+    FILE *f = fopen(net, "rb");
+    char buf[1 << 16], key[64];
+    size_t got = f ? fread(buf, 1, sizeof buf - 1, f) : 0;
+    if (f)
+        fclose(f);
+    buf[got] = '\0';
+    snprintf(key, sizeof key, "<junction id=\"%s\"", id);
+    const char *j = strstr(buf, key), *px = j ? strstr(j, " x=\"") : NULL,
+               *py = j ? strstr(j, " y=\"") : NULL;
+    return px && py && sscanf(px + 4, "%lf", x) == 1 && sscanf(py + 4, "%lf", y) == 1;
+}
+
+static void write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
+/* A scenario on the geo-referenced network geo-channel (nodes in degrees,
+ * projected by netconvert) is in the network's plane: the own ship placed on
+ * the W node's latitude and longitude lands on SUMO's junction W (to the
+ * net.xml's 0.01 m); an origin of its own, or explicit targets, are refused. */
+static void test_geo_network(void)
+{
+    static const char body[] =
+        "own_ship: {ship: c3-mmg, lat_deg: 57.0, lon_deg: 11.335065, course_deg: 90, "
+        "speed_kn: 12, leg_nm: 5}\n"
+        "run: {duration_s: 60}\n";
+    char dir[] = "/tmp/fw_geonet_XXXXXX", path[128], text[1024], net[1200];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/s.yaml", dir);
+    snprintf(text, sizeof text, "name: geo-net\ntraffic: {network: geo-channel}\n%s", body);
+    write_file(path, text);
+    fw_scenario *s = load(path);
+    double x = NAN, y = NAN;
+    snprintf(net, sizeof net, "%s/geo-channel/geo-channel.net.xml", fw_net_dir());
+    CHECK(junction_xy(net, "W", &x, &y));
+    if (s) {
+        CHECK(s->has_origin);
+        CHECK(strstr(s->plane, "+proj=tmerc +lat_0=57 +lon_0=11.5") == s->plane);
+        CHECK_NEAR(s->east, x, 0.006);
+        CHECK_NEAR(s->north, y, 0.006);
+        CHECK_NEAR(s->origin_lat, 57.0, 1e-9);
+        CHECK_NEAR(s->origin_lon, 11.5, 1e-9);
+        printf("  geo-channel: own ship at %.3f, %.3f m, SUMO's junction W at %.2f, %.2f\n",
+               s->east, s->north, x, y);
+    }
+    free(s);
+    fw_scenario *r = calloc(1, sizeof *r);
+    fw_error err = {0};
+    snprintf(text, sizeof text, "name: geo-net\norigin: {lat_deg: 57, lon_deg: 11.5}\n"
+                                "traffic: {network: geo-channel}\n%s", body);
+    write_file(path, text);
+    CHECK(r && fw_scenario_load(path, r, &err) == FW_EINPUT);
+    CHECK(strstr(err.msg, "s.yaml:2: origin: network 'geo-channel' is geo-referenced") != NULL);
+    snprintf(text, sizeof text, "name: geo-net\ntraffic:\n  network: geo-channel\n  targets:\n"
+                                "    - {id: T1, east_m: 0, north_m: 3000, course_deg: 180, "
+                                "speed_kn: 10}\n%s", body);
+    write_file(path, text);
+    memset(&err, 0, sizeof err);
+    CHECK(r && fw_scenario_load(path, r, &err) == FW_EINPUT);
+    CHECK(strstr(err.msg, "traffic.targets: explicit targets on the geo-referenced network") !=
+          NULL);
+    free(r);
+    remove(path);
+    rmdir(dir);
+}
+
 int main(void)
 {
     TEST_RUN(test_plane_against_the_ellipsoid);
     TEST_RUN(test_twin_scenario);
+    TEST_RUN(test_plane_from_a_network);
+    TEST_RUN(test_geo_network);
     return TEST_EXIT();
 }

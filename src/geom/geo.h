@@ -26,9 +26,15 @@ typedef struct fw_geo fw_geo;
 /* A plane centred on (lat_deg, lon_deg); FW_EINPUT outside [-80, 80] x
  * [-180, 180] (transverse Mercator is kept well away from the poles). */
 fw_status fw_geo_create(double lat_deg, double lon_deg, fw_geo **out, fw_error *err);
+/* The plane of a geo-referenced SUMO network: PROJ string proj (the
+ * net.xml's projParameter, e.g. "+proj=utm +zone=32 +ellps=WGS84") with
+ * (off_e, off_n) added to its x, y (the netOffset); the origin is where the
+ * plane's (0, 0) falls.  FW_EINPUT if PROJ cannot make it. */
+fw_status fw_geo_create_proj(const char *proj, double off_e, double off_n, fw_geo **out,
+                             fw_error *err);
 void fw_geo_destroy(fw_geo *g);
 
-/* The origin, and the PROJ string of the plane. */
+/* The origin (where the plane's (0, 0) is), and the PROJ string of the plane. */
 void fw_geo_origin(const fw_geo *g, double *lat_deg, double *lon_deg);
 const char *fw_geo_proj_string(const fw_geo *g);
 

@@ -73,7 +73,7 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
     if (!(r->own = open_in(dir, "own.csv", err)) || !(r->log = open_in(dir, "run.log", err)) ||
         (s->targets_csv && !(r->tgt = open_in(dir, "targets.csv", err))))
         return FW_ERUN;
-    if (s->has_origin && (st = fw_geo_create(s->origin_lat, s->origin_lon, &r->geo, err)))
+    if ((st = fw_scenario_plane(s, &r->geo, err)))
         return st;
     /* with an origin, the positions in degrees too (last, so that the
      * columns of a run in metres are the same either way) */

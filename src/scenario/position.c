@@ -5,6 +5,43 @@
 #include <math.h>
 
 #include "geom/geo.h"
+#include "traffic/demand.h"
+
+fw_status fw_scenario_plane(const fw_scenario *s, fw_geo **g, fw_error *err)
+{
+    *g = NULL;
+    if (!s->has_origin)
+        return FW_OK;
+    return s->plane[0] ? fw_geo_create_proj(s->plane, s->plane_off_e, s->plane_off_n, g, err)
+                       : fw_geo_create(s->origin_lat, s->origin_lon, g, err);
+}
+
+/* traffic.network's plane when the network is geo-referenced (its nodes were
+ * given in degrees and projected by netconvert): the scenario is then in it,
+ * with the origin where the plane's (0, 0) is.  An unknown network is left to
+ * the traffic section's own check. */
+static fw_status network_plane(const yt_doc *doc, const yt_node *root, const yt_node *origin,
+                               fw_scenario *s, fw_error *err)
+{
+    const yt_node *tr = yt_get(root, "traffic"), *net = tr ? yt_get(tr, "network") : NULL;
+    fw_network_files nf;
+    fw_error nerr = {0};
+    if (!net || !net->str || fw_network_find(net->str, &nf, &nerr) ||
+        fw_network_plane(&nf, s->plane, sizeof s->plane, &s->plane_off_e, &s->plane_off_n,
+                         &nerr) || !s->plane[0])
+        return FW_OK;
+    if (origin)
+        return fw_fail_at(err, doc->file, origin->line, "origin",
+                          "network '%s' is geo-referenced (%s): the scenario is in its plane; "
+                          "leave the origin out", net->str, s->plane);
+    fw_geo *g = NULL;
+    if (fw_geo_create_proj(s->plane, s->plane_off_e, s->plane_off_n, &g, &nerr))
+        return fw_fail_at(err, doc->file, net->line, "traffic.network", "%s", nerr.msg);
+    fw_geo_origin(g, &s->origin_lat, &s->origin_lon);
+    fw_geo_destroy(g);
+    s->has_origin = true;
+    return FW_OK;
+}
 
 fw_status fw_scn_load_origin(const yt_doc *doc, const yt_node *root, fw_scenario *s,
                              fw_error *err)
@@ -12,8 +49,10 @@ fw_status fw_scn_load_origin(const yt_doc *doc, const yt_node *root, fw_scenario
     static const char *const keys[] = {"lat_deg", "lon_deg", NULL};
     const yt_node *o;
     fw_status st = yt_opt_map(doc, root, "", "origin", &o, err);
-    if (st || !o)
+    if (st || (st = network_plane(doc, root, o, s, err)))
         return st;
+    if (!o)
+        return FW_OK;
     if ((st = yt_check_keys(doc, o, "origin", keys, err)) ||
         (st = yt_req_number(doc, o, "origin", "lat_deg", -80, 80, &s->origin_lat, err)) ||
         (st = yt_req_number(doc, o, "origin", "lon_deg", -180, 180, &s->origin_lon, err)))
@@ -48,7 +87,7 @@ fw_status fw_scn_load_position(const yt_doc *doc, const yt_node *map, const char
         return st;
     fw_geo *g = NULL;
     fw_error gerr = {0};
-    if (!(st = fw_geo_create(s->origin_lat, s->origin_lon, &g, &gerr)) &&
+    if (!(st = fw_scenario_plane(s, &g, &gerr)) &&
         !(st = fw_geo_to_plane(g, lat, lon, east, north, &gerr)))
         st = fw_geo_convergence(g, lat, lon, gamma, &gerr);
     fw_geo_destroy(g);

@@ -36,6 +36,10 @@ typedef struct fw_scenario {
     char description[256];
     bool has_origin;     /* origin: the plane's centre in WGS84 */
     double origin_lat, origin_lon; /* deg */
+    /* On a geo-referenced network the network's plane instead (its PROJ
+     * string and netOffset: traffic/demand.h fw_network_plane); "" otherwise */
+    char plane[512];
+    double plane_off_e, plane_off_n;
     /* own ship */
     fw_ship ship;
     double east, north;  /* m */
@@ -68,6 +72,12 @@ typedef struct fw_scenario {
     double record_every; /* s, time-history sampling (a multiple of step) */
     bool fcd;            /* SUMO's own FCD output of every ship (sumo/fcd.xml) */
 } fw_scenario;
+
+/* The scenario's plane (geom/geo.h), *g NULL when it has no origin: the
+ * network's own projection on a geo-referenced network, else a transverse
+ * Mercator about the origin.  The caller destroys it. */
+typedef struct fw_geo fw_geo;
+fw_status fw_scenario_plane(const fw_scenario *s, fw_geo **g, fw_error *err);
 
 /* Loads and checks path.  s is large (a ship inside): callers heap-allocate. */
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err);

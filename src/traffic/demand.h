@@ -59,6 +59,12 @@ typedef struct fw_network_files {
     char types[1024];
 } fw_network_files;
 fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err);
+/* A geo-referenced network's plane: the PROJ string netconvert projected its
+ * nodes with (the net.xml's <location projParameter>; "" for a network drawn
+ * in metres) into proj, and its netOffset.  A scenario on such a network is in
+ * its plane (geom/geo.h fw_geo_create_proj). */
+fw_status fw_network_plane(const fw_network_files *nf, char *proj, size_t n, double *off_e,
+                           double *off_n, fw_error *err);
 /* Every edge the demand's streams name is an edge of the network's sources
  * (networks/NAME/NAME.edg.xml): else FW_EINPUT at the demand's line and
  * field, before SUMO is started for nothing. */

@@ -12,7 +12,7 @@
 
 fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err)
 {
-    static const char *const known = "channel, crossing, strait, sea, dover";
+    static const char *const known = "channel, crossing, strait, sea, dover, geo-channel";
     size_t n = strlen(name);
     bool ok = n > 0 && n < 64 && strspn(name, "abcdefghijklmnopqrstuvwxyz"
                                               "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;
@@ -91,4 +91,49 @@ fw_status fw_network_check_demand(const char *name, const fw_demand *dm, fw_erro
             }
     free(xml);
     return st;
+}
+
+/* The value of attribute name="..." inside the tag text tag (up to its '>'),
+ * into out; false when it is not there. */
+static bool tag_attr(const char *tag, const char *name, char *out, size_t n)
+{
+    const char *end = strchr(tag, '>');
+    char key[64];
+    snprintf(key, sizeof key, " %s=\"", name);
+    const char *a = strstr(tag, key);
+    if (!a || (end && a > end))
+        return false;
+    a += strlen(key);
+    const char *q = strchr(a, '"');
+    if (!q || (size_t)(q - a) >= n)
+        return false;
+    memcpy(out, a, (size_t)(q - a));
+    out[q - a] = '\0';
+    return true;
+}
+
+fw_status fw_network_plane(const fw_network_files *nf, char *proj, size_t n, double *off_e,
+                           double *off_n, fw_error *err)
+{
+    proj[0] = '\0';
+    *off_e = *off_n = 0.0;
+    FILE *f = fopen(nf->net, "rb");
+    if (!f)
+        return fw_fail(err, FW_EINPUT, "cannot read %s", nf->net);
+    /* <location> is among the first lines netconvert writes */
+    char head[16384];
+    size_t got = fread(head, 1, sizeof head - 1, f);
+    fclose(f);
+    head[got] = '\0';
+    const char *loc = strstr(head, "<location ");
+    char off[128];
+    if (!loc || !tag_attr(loc, "netOffset", off, sizeof off) ||
+        sscanf(off, "%lf,%lf", off_e, off_n) != 2)
+        return fw_fail(err, FW_EINPUT, "%s: no <location netOffset> in its first 16 kB", nf->net);
+    if (!tag_attr(loc, "projParameter", proj, n))
+        return fw_fail(err, FW_EINPUT, "%s: <location>'s projParameter missing or longer than "
+                                       "%zu characters", nf->net, n - 1);
+    if (strcmp(proj, "!") == 0) /* netconvert's "no projection" */
+        proj[0] = '\0';
+    return FW_OK;
 }
