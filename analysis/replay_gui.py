@@ -53,9 +53,9 @@ def timesteps(path):
 
 
 def period(path):
-    """Seconds between the file's first two timesteps (1 if it has one)."""
+    """The file's first timestep, and the seconds between its first two (1 if it has one)."""
     t = [tm for tm, _ in zip((tm for tm, _ in timesteps(path)), range(2))]
-    return t[1] - t[0] if len(t) == 2 else 1.0
+    return t[0] if t else 0.0, t[1] - t[0] if len(t) == 2 else 1.0
 
 
 def own_size(run):
@@ -97,7 +97,7 @@ def replay(traci, fcd, own, check):
             traci.vehicle.setSpeed(sid, speed)
         present = now
         seen |= now
-        traci.simulationStep(tm)
+        traci.simulationStep()  # one step of the file's period: the ships go where set
         n += 1
         if check:
             for sid, x, y, *_ in ships:
@@ -127,7 +127,8 @@ def main():
     if gui and not os.environ.get("DISPLAY"):
         fail("sumo-gui needs a display ($DISPLAY is not set); --sumo sumo replays without one")
     os.environ.setdefault("SUMO_HOME", os.path.dirname(SUMO_TOOLS))
-    cmd = [a.sumo, "-c", cfg, "--route-files", "", "--step-length", repr(period(fcd)),
+    begin, dt = period(fcd)
+    cmd = [a.sumo, "-c", cfg, "--route-files", "", "--begin", repr(begin), "--step-length", repr(dt),
            "--no-step-log", "true", "--no-warnings", "true", "--log", os.devnull]
     if gui:
         cmd += ["--start", "true", "--delay", repr(a.delay),

@@ -133,12 +133,12 @@ fw_status fw_traffic_write_config(const fw_traffic_def *d, const char *view, fw_
         return fw_fail(err, FW_ERUN, "cannot write %s", tmp);
     fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
           "<!-- written by fairway: the SUMO side of this run (network, routes, ship types,\n"
-          "     step, seed, lane-change time, to its end; SUMO's clock is one step ahead of\n"
-          "     fairway's).  `sumo-gui -c run.sumocfg` shows the traffic SUMO makes of them on\n"
-          "     its own: the run's streams of ships, not its very ships (the own ship, which\n"
-          "     fairway stepped, drew from SUMO's random numbers, and fairway's orders are not\n"
-          "     in it).  The run itself, every ship where it was: outputs: fcd: true in the\n"
-          "     scenario, then python3 analysis/replay_gui.py on the run's directory. -->\n"
+          "     step, seed, lane-change time, to its end).  `sumo-gui -c run.sumocfg` moves the\n"
+          "     background ships as the run had them where fairway ordered none of them and took\n"
+          "     none out at the start (behaviour: blind, fill 0: exactly; else run.log's traffic:\n"
+          "     lines say what differs), without the own ship, which fairway stepped.  The run\n"
+          "     itself, every ship where it was: outputs: fcd: true in the scenario, then\n"
+          "     python3 analysis/replay_gui.py on the run's directory. -->\n"
           "<configuration>\n", f);
     for (int i = 1; argv[i] && argv[i + 1]; i += 2)
         if (!run_only(argv[i]))

@@ -568,7 +568,8 @@ fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
         t->steps++;
     if (!st && t->fcd && (t->steps - 1) % t->fcd_every == 0 &&
         !(st = t->be->all(&t->raw, err)))
-        st = fw_fcd_step(t->fcd, t->time, t->raw.v, t->raw.n, err);
+        /* SUMO labels a timestep with the time its step began */
+        st = fw_fcd_step(t->fcd, t->time - t->def.step, t->raw.v, t->raw.n, err);
     /* sumo-gui: the own ship is in the simulation from the first step on */
     if (!st && t->child > 0) {
         double w = t->def.mode.gui.view_m > 0.0 ? t->def.mode.gui.view_m : fw_nm_to_m(3.0);

@@ -183,6 +183,11 @@ fw_status be_add_own(const char *id, double length, double width, const char *ed
         S::VehicleType::setLength(kOwnType, length);
         S::VehicleType::setWidth(kOwnType, width);
         S::VehicleType::setMinGap(kOwnType, 0.0);
+        // no speed factor drawn from SUMO's random numbers (DEFAULT_VEHTYPE's
+        // deviation is 0.1): the own ship's speed is fairway's, and SUMO's
+        // random stream stays the one sumo alone has on the same inputs, so
+        // that the run's sumo/run.sumocfg replays its traffic (sumofiles.c)
+        S::VehicleType::setSpeedDeviation(kOwnType, 0.0);
         // signal orange: stands out against the background types' blues, browns, greys
         S::VehicleType::setColor(kOwnType, libsumo::TraCIColor(255, 80, 0, 255));
         S::Route::add(kOwnRoute, {edge && edge[0] ? std::string(edge) : ship_edge()});
