@@ -478,6 +478,92 @@ static void test_predictor_is_used(void)
     fw_helm_ctx_destroy(ctx);
 }
 
+/* Smallest normalised domain radius of target t (constant velocity) along
+ * track tr, sampled every `sub`-th of the track's interval (the track's
+ * positions interpolated linearly): the brute force the segment tests and the
+ * closed form are checked against. */
+static double sampled_lambda(const fw_domain_def *dom, const fw_track *tr, const fw_target *t,
+                             int sub)
+{
+    double best = INFINITY;
+    for (int k = 0; k + 1 < tr->n; k++)
+        for (int j = 0; j < sub; j++) {
+            double f = (double)j / sub, tk = (k + f) * tr->dt;
+            double psi = tr->psi[k] + f * (tr->psi[k + 1] - tr->psi[k]);
+            fw_target at = *t;
+            at.east += t->speed * sin(t->course) * tk;
+            at.north += t->speed * cos(t->course) * tk;
+            best = fmin(best, fw_domain_lambda(dom, tr->east[k] + f * (tr->east[k + 1] - tr->east[k]),
+                                               tr->north[k] + f * (tr->north[k + 1] - tr->north[k]),
+                                               psi, &at));
+        }
+    return best;
+}
+
+/* The paper's transverse reading (geom.h) through the assessment's closed
+ * form, the helm search's segment tests and its least helm. */
+static void test_transverse_reading(void)
+{
+    fw_helm_def el = fw_default_helm_def(), tv = el;
+    tv.domain.reading = FW_DOMAIN_TRANSVERSE;
+    fw_own_state own = {.U = fw_kn_to_ms(10)};
+    fw_target t[2] = {
+        {.id = "H", .east = 0, .north = 2000, .course = FW_PI, .speed = fw_kn_to_ms(10),
+         .length = 200, .breadth = 32},
+        {.id = "C", .east = 2000, .north = 2000, .course = 1.5 * FW_PI,
+         .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32},
+    };
+    /* the assessment on the straight course against 0.5 s samples */
+    fw_assessment as[2];
+    fw_assess(&tv.colregs, &tv.domain, 600.0, &own, t, 2, as, NULL);
+    for (int i = 0; i < 2; i++) {
+        double best = INFINITY, t_in = INFINITY;
+        for (double s = 0.0; s <= 600.0; s += 0.5) {
+            fw_target at = t[i];
+            at.east += t[i].speed * sin(t[i].course) * s;
+            at.north += t[i].speed * cos(t[i].course) * s;
+            double l = fw_domain_lambda(&tv.domain, 0.0, own.U * s, 0.0, &at);
+            best = fmin(best, l);
+            if (l < 1.0 && isinf(t_in))
+                t_in = s;
+        }
+        /* a sample is at most 0.25 s (2.6 m, 0.008 of 316 m) from the minimum */
+        CHECK_NEAR(as[i].min_lambda, best, 0.01);
+        CHECK(as[i].enters_domain);
+        CHECK_NEAR(as[i].t_enter, t_in, 0.5);
+    }
+    /* head-on, centre to centre 300 m + 16 m abeam: the target dead ahead on
+     * the reciprocal enters 400 m from its centre (300 m off its bow) */
+    CHECK_NEAR(as[0].t_enter, (2000.0 - 400.0) / (2 * own.U), 1e-9);
+    /* the search's clearance of every starboard candidate against 10-per-
+     * interval samples, and the least clearing helm of each reading */
+    int least[2] = {-1, -1};
+    for (int r = 0; r < 2; r++) {
+        fw_helm_def *d = r ? &tv : &el;
+        fw_helm_ctx *ctx = make_ctx(d);
+        fw_helm_begin(ctx, &own);
+        for (int i = 0; i < fw_helm_count(ctx); i++) {
+            const fw_track *tr;
+            CHECK(fw_helm_track(ctx, FW_SIDE_STARBOARD, i, &tr, NULL) == FW_OK);
+            double cl = fw_track_clearance(d, tr, &t[0], 1, 0.0, NULL);
+            double bf = sampled_lambda(&d->domain, tr, &t[0], 10);
+            CHECK_MSG(fabs(cl - bf) < 0.01, "%s helm %d: clearance %.4f, sampled %.4f",
+                      fw_domain_reading_name(d->domain.reading), i, cl, bf);
+            if (least[r] < 0 && cl >= 1.0)
+                least[r] = i;
+        }
+        fw_helm_ctx_destroy(ctx);
+    }
+    /* the ellipse turns with the own ship and projects the target's hull on
+     * its axes (382 m abeam after a 45 deg turn): the transverse clearance
+     * (316 m from the centre abeam of the target) needs less helm */
+    CHECK_MSG(least[1] >= 0 && (least[0] < 0 || least[1] < least[0]),
+              "least clearing helm: ellipse %d, transverse %d (index from 10 deg)", least[0],
+              least[1]);
+    printf("  head-on at 2000 m, 10 kn each: least clearing helm from t = 0: ellipse %d deg "
+           "(-1: none), transverse %d deg\n", least[0] < 0 ? -1 : least[0] + 10, least[1] + 10);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -490,6 +576,7 @@ int main(void)
     TEST_RUN(test_more_helm_more_clearance);
     TEST_RUN(test_only_one_side_works);
     TEST_RUN(test_predictor_is_used);
+    TEST_RUN(test_transverse_reading);
     TEST_RUN(test_policy_head_on_cycle);
     TEST_RUN(test_policy_follows_target_id);
     TEST_RUN(test_policy_stand_on_rule_17);

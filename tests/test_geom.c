@@ -1,4 +1,6 @@
 /* test_geom.c - the plane geometry of ships (geom/geom.h) against worked answers. */
+#include <string.h>
+
 #include "core/units.h"
 #include "geom/geom.h"
 #include "test.h"
@@ -54,6 +56,65 @@ static void test_domain(void)
     CHECK_NEAR(fw_domain_lambda(&dom, 0, 0, 0, &t), 1.0, 1e-12);
     /* the same seen from a ship turned round: symmetric */
     CHECK_NEAR(fw_domain_lambda(&dom, 0, 0, FW_PI, &t), 1.0, 1e-12);
+}
+
+/* The paper's transverse reading (geom.h): the clearance from the target's
+ * side, in the target's frame. */
+static void test_domain_transverse(void)
+{
+    fw_domain_def el = {.size = 300.0, .fore_aft_ratio = 1.0};
+    fw_domain_def tv = el;
+    tv.reading = FW_DOMAIN_TRANSVERSE;
+    CHECK(fw_domain_reading_parse("transverse") == FW_DOMAIN_TRANSVERSE &&
+          fw_domain_reading_parse("ellipse") == FW_DOMAIN_ELLIPSE &&
+          fw_domain_reading_parse("circle") == -1);
+    CHECK(strcmp(fw_domain_reading_name(FW_DOMAIN_TRANSVERSE), "transverse") == 0);
+    /* a 200 x 32 m target heading south at the origin; the own ship abeam of
+     * it, 316 m east (300 m from its port side): on the boundary whatever the
+     * own heading, and 1 m either way inside or out */
+    fw_target t = {.east = 0, .north = 0, .course = FW_PI, .length = 200, .breadth = 32};
+    for (int h = 0; h < 360; h += 15) {
+        double psi = fw_deg_to_rad(h);
+        CHECK_NEAR(fw_domain_lambda(&tv, 316, 0, psi, &t), 1.0, 1e-12);
+        CHECK(fw_domain_lambda(&tv, 315, 0, psi, &t) < 1.0);
+        CHECK(fw_domain_lambda(&tv, 317, 0, psi, &t) > 1.0);
+        /* symmetric: the starboard side, and ahead and astern alike */
+        CHECK_NEAR(fw_domain_lambda(&tv, -316, 0, psi, &t), 1.0, 1e-12);
+        CHECK_NEAR(fw_domain_lambda(&tv, 0, 400, psi, &t), 1.0, 1e-12);
+        CHECK_NEAR(fw_domain_lambda(&tv, 0, -400, psi, &t), 1.0, 1e-12);
+        double l1 = fw_domain_lambda(&tv, 150, 250, psi, &t);
+        CHECK_NEAR(fw_domain_lambda(&tv, -150, -250, psi, &t), l1, 1e-12);
+        CHECK_NEAR(fw_domain_lambda(&tv, -150, 250, psi, &t), l1, 1e-12);
+    }
+    /* the own ship turned 45 deg away: the ellipse reading projects the
+     * target's hull on the own axes and asks 300 + 116 x 0.707 = 382 m */
+    double psi45 = fw_deg_to_rad(45);
+    double grown = 300.0 + (100.0 + 16.0) * sqrt(0.5);
+    CHECK_NEAR(fw_domain_lambda(&el, 316, 0, psi45, &t), 316.0 / grown, 1e-12);
+    CHECK_NEAR(fw_domain_lambda(&el, grown, 0, psi45, &t), 1.0, 1e-12);
+    /* where they agree: parallel and reciprocal courses, anywhere, with
+     * the domain about the centre and about the hulls */
+    for (int hull = 0; hull < 2; hull++) {
+        el.own_half_length = tv.own_half_length = hull ? 166.6 : 0.0;
+        el.own_half_breadth = tv.own_half_breadth = hull ? 21.4 : 0.0;
+        for (int c = 0; c < 2; c++) {
+            t.course = c ? FW_PI : 0.0;
+            for (double e = -500; e <= 500; e += 125)
+                for (double n = -600; n <= 600; n += 150) {
+                    double a = fw_domain_lambda(&el, e, n, 0.0, &t);
+                    CHECK_NEAR(fw_domain_lambda(&tv, e, n, 0.0, &t), a, 1e-12 * a);
+                }
+        }
+    }
+    /* a fore-aft ratio stretches the target's bow and stern clearance, not
+     * its side: 600 m beyond the bow with ratio 2 */
+    tv.own_half_length = tv.own_half_breadth = 0.0;
+    tv.fore_aft_ratio = 2.0;
+    t.course = 0.0;
+    CHECK_NEAR(fw_domain_lambda(&tv, 0, 700, 1.0, &t), 1.0, 1e-12);
+    CHECK_NEAR(fw_domain_lambda(&tv, 316, 0, 1.0, &t), 1.0, 1e-12);
+    /* reach bounds it */
+    CHECK(fw_domain_reach(&tv, &t) >= 700.0);
 }
 
 static fw_hull_track track(double e, double n, double hdg_deg, double v, double l, double b)
@@ -129,5 +190,6 @@ int main(void)
     TEST_RUN(test_hull_distance);
     TEST_RUN(test_hull_cpa);
     TEST_RUN(test_domain);
+    TEST_RUN(test_domain_transverse);
     return TEST_EXIT();
 }

@@ -180,7 +180,10 @@ static void test_imazu_cases(void)
 }
 
 /* The oracle itself: the paper's case 1 (head-on 2000 m ahead, closing at
- * 20 kn) cannot keep 300 m with 35 deg from t = 0, and its best is nearly a
+ * 20 kn) cannot keep 300 m with 35 deg from t = 0, even read as the paper's
+ * transverse clearance (the scenario's reading: 316 m from the target's
+ * centre abeam of it; its best radius there is 0.72, 0.60 of the ellipse
+ * the scenario used to state), and its best is nearly a
  * mirror pair: a target offset to port asks for about the same as one offset
  * to starboard (not exactly: the single-screw C-3 has different flow-
  * straightening coefficients for port and starboard rudder, gamma_R+-, and
@@ -195,7 +198,7 @@ static void test_oracle(void)
     od.after = 600.0;
     fw_oracle_result r, a, b;
     CHECK_MSG(fw_oracle_best(&s, &od, &r, &err) == FW_OK, "%s", err.msg);
-    CHECK_MSG(r.best_lambda > 0.4 && r.best_lambda < 0.7, "paper-1 best radius %.2f", r.best_lambda);
+    CHECK_MSG(r.best_lambda > 0.6 && r.best_lambda < 0.85, "paper-1 best radius %.2f", r.best_lambda);
     CHECK_MSG(r.best_dist > 170.0 && r.best_dist < 260.0, "paper-1 best distance %.0f m", r.best_dist);
     CHECK(r.side != 0 && r.manoeuvres == 25);
     s.targets[0].east = 150.0;

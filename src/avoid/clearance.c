@@ -129,13 +129,15 @@ double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chu
                 gs = g->path[2 * g->ns + k], gc = g->path[3 * g->ns + k];
             double dx = ge - tr->east[k], dy = gn - tr->north[k];
             double s = tr->sin_psi[k], c = tr->cos_psi[k];
-            double x, y, a, b;
-            fw_to_body(dx, dy, s, c, &x, &y);
+            double x, y, a, b, fs, fc;
+            fw_domain_frame(dom, s, c, gs, gc, &fs, &fc);
+            fw_to_body(dx, dy, fs, fc, &x, &y);
             /* cos and sin of the relative heading, from the angle sums */
             fw_domain_grown(dom, g->hl, g->hb, gc * c + gs * s, gs * c - gc * s, &a, &b);
             if (k > k0) {
                 /* body-frame offsets interpolated linearly over the segment:
-                 * the frame turns by r dt (about 1 deg), a sub-metre error */
+                 * the frame turns by r dt (about 1 deg), a sub-metre error
+                 * (the transverse reading's target frame does not turn) */
                 double l2 = seg_min_lambda2(px, py, x, y, 0.5 * (pa + a), 0.5 * (pb + b));
                 if (l2 < tmin2)
                     tmin2 = l2;

@@ -106,8 +106,9 @@ static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_s
     double best = INFINITY, px = 0, py = 0, pa = 1, pb = 1;
     as->t_enter = INFINITY;
     for (int k = 0; k < ns; k++) {
-        double tk = k * kPathDt, x, y, a, b, rel = c[k] - own->psi;
-        fw_to_body(e[k] - (own->east + ve * tk), n[k] - (own->north + vn * tk), so, co, &x, &y);
+        double tk = k * kPathDt, x, y, a, b, rel = c[k] - own->psi, fs, fc;
+        fw_domain_frame(dom, so, co, sin(c[k]), cos(c[k]), &fs, &fc);
+        fw_to_body(e[k] - (own->east + ve * tk), n[k] - (own->north + vn * tk), fs, fc, &x, &y);
         fw_domain_axes(dom, t, cos(rel), sin(rel), &a, &b);
         double l2 = (x / a) * (x / a) + (y / b) * (y / b);
         if (k == 0 && l2 < 1.0)
@@ -170,14 +171,16 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
             as->enters_domain = isfinite(as->t_enter);
             continue;
         }
-        /* Domain on the straight course: in the own body frame (fixed while both
-         * keep course) the target moves on a line, and lambda^2(t) is a quadratic. */
-        double a, b;
+        /* Domain on the straight course: in the domain's frame (the own
+         * heading's or the target's, both fixed while both keep course) the
+         * target moves on a line, and lambda^2(t) is a quadratic. */
+        double a, b, fs, fc;
         double rel = t[i].course - own->psi;
         fw_domain_axes(dom, &t[i], cos(rel), sin(rel), &a, &b);
+        fw_domain_frame(dom, so, co, sin(t[i].course), cos(t[i].course), &fs, &fc);
         double x, y, ux, uy;
-        fw_to_body(dx, dy, so, co, &x, &y);
-        fw_to_body(vx, vy, so, co, &ux, &uy);
+        fw_to_body(dx, dy, fs, fc, &x, &y);
+        fw_to_body(vx, vy, fs, fc, &ux, &uy);
         double A = ux * ux / (a * a) + uy * uy / (b * b);
         double B = 2.0 * (x * ux / (a * a) + y * uy / (b * b));
         double C = x * x / (a * a) + y * y / (b * b);

@@ -1,13 +1,24 @@
 /* geom.c - see geom.h. */
 #include "geom/geom.h"
 
+#include "core/names.h"
+
 #include <stdio.h>
 #include <string.h>
 
 fw_domain_def fw_default_domain_def(void)
 {
-    return (fw_domain_def){.size = 300.0, .fore_aft_ratio = 1.0};
+    return (fw_domain_def){.size = 300.0, .fore_aft_ratio = 1.0, .reading = FW_DOMAIN_ELLIPSE};
 }
+
+static const char *const kReadingNames[] = {"ellipse", "transverse"}; /* enum order */
+
+const char *fw_domain_reading_name(fw_domain_reading r)
+{
+    return fw_name_of(kReadingNames, 2, (int)r);
+}
+
+int fw_domain_reading_parse(const char *text) { return fw_name_find(kReadingNames, 2, text); }
 
 void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel,
                     double sin_rel, double *a, double *b)
@@ -18,9 +29,10 @@ void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel
 double fw_domain_lambda(const fw_domain_def *dom, double east, double north, double psi,
                         const fw_target *t)
 {
-    double rel = t->course - psi, a, b, x, y;
+    double rel = t->course - psi, a, b, x, y, fs, fc;
     fw_domain_axes(dom, t, cos(rel), sin(rel), &a, &b);
-    fw_to_body(t->east - east, t->north - north, sin(psi), cos(psi), &x, &y);
+    fw_domain_frame(dom, sin(psi), cos(psi), sin(t->course), cos(t->course), &fs, &fc);
+    fw_to_body(t->east - east, t->north - north, fs, fc, &x, &y);
     return sqrt((x / a) * (x / a) + (y / b) * (y / b));
 }
 

@@ -4,7 +4,8 @@
  *   velocity     east/north components of a speed on a course
  *   CPA/TCPA     closest point of approach of two ships at constant velocity
  *   domain       the own ship's domain, an ellipse aligned with its heading,
- *                grown by the other ship's hull (fw_domain_def below)
+ *                grown by the other ship's hull, or the paper's transverse
+ *                clearance about the target (fw_domain_def below)
  *   hulls        do two oriented rectangles overlap (the collision test), how
  *                far apart are they, and how close would they come on straight
  *                tracks (the geometric collision candidate)
@@ -76,25 +77,71 @@ static inline void fw_cpa_sq(double dx, double dy, double vx, double vy, double 
  * grow by them too, and the size is then a clearance between the hulls, so
  * that a size below the own half length (167 m for the C-3) still keeps the
  * bows apart.  Both 0: a domain about the own ship's centre (the paper's, and
- * its five cases and the Imazu set say domain_from: centre). */
+ * its five cases and the Imazu set say domain_from: centre).
+ *
+ * The reading (avoidance.domain_reading):
+ *   ellipse     the above (the default): the ellipse turns with the own
+ *               heading, and the target's extent is projected on the own
+ *               axes, so a head-on target passing an own ship that has turned
+ *               45 deg must stay 382 m from its centre (300 + (100 + 16)
+ *               x 0.707 for a 200 x 32 m target), not 316.
+ *   transverse  the paper's: the clearance is measured from the target ship
+ *               ("300 metres along the side of the moving ships", "a
+ *               distance of 300 metres from the port side of the target
+ *               ship" at the passing, a "transverse safe domain"): an ellipse
+ *               centred on the target and aligned with the target's heading,
+ *               size beyond its side (transverse semi-axis size + B/2) and
+ *               size * fore_aft_ratio beyond its bow and stern (L/2 added);
+ *               the own ship's centre, or with domain_from: hull its outline
+ *               projected on the target's axes, must stay outside.  Abeam of
+ *               the target it asks exactly size from the target's side
+ *               whatever the own heading; for a target on the own ship's beam
+ *               on a parallel course the two readings are the same. */
+typedef enum fw_domain_reading { FW_DOMAIN_ELLIPSE, FW_DOMAIN_TRANSVERSE } fw_domain_reading;
+
+/* "ellipse", "transverse"; parse: -1 for anything else. */
+const char *fw_domain_reading_name(fw_domain_reading r);
+int fw_domain_reading_parse(const char *text);
+
 typedef struct fw_domain_def {
     double size;             /* m, transverse semi-axis (beyond the hulls, see above) */
     double fore_aft_ratio;   /* fore-aft / transverse */
     double own_half_length;  /* m, 0: centred on the own ship */
     double own_half_breadth; /* m */
+    fw_domain_reading reading;
 } fw_domain_def;
 
 fw_domain_def fw_default_domain_def(void);
 
 /* Semi-axes (fore-aft a, transverse b) of the domain grown by a hull of half
  * length hl and half breadth hb whose heading relative to the own ship has
- * cosine cos_rel and sine sin_rel. */
+ * cosine cos_rel and sine sin_rel; with the transverse reading the axes are
+ * the target's (the own hull is the one projected). */
 static inline void fw_domain_grown(const fw_domain_def *dom, double hl, double hb,
                                    double cos_rel, double sin_rel, double *a, double *b)
 {
     double c = fabs(cos_rel), s = fabs(sin_rel);
+    if (dom->reading == FW_DOMAIN_TRANSVERSE) {
+        *a = dom->size * dom->fore_aft_ratio + hl + dom->own_half_length * c +
+             dom->own_half_breadth * s;
+        *b = dom->size + hb + dom->own_half_length * s + dom->own_half_breadth * c;
+        return;
+    }
     *a = dom->size * dom->fore_aft_ratio + dom->own_half_length + hl * c + hb * s;
     *b = dom->size + dom->own_half_breadth + hl * s + hb * c;
+}
+
+/* The domain's frame for an own ship heading (so, co) (sine, cosine) and a
+ * target heading (ts, tc): the own heading (ellipse) or the target's
+ * (transverse).  Offsets and relative velocities go into it by fw_to_body;
+ * the normalised radius is then (x/a)^2 + (y/b)^2 with fw_domain_grown's axes
+ * (cos_rel, sin_rel of the target heading less the own). */
+static inline void fw_domain_frame(const fw_domain_def *dom, double so, double co, double ts,
+                                   double tc, double *fs, double *fc)
+{
+    bool t = dom->reading == FW_DOMAIN_TRANSVERSE;
+    *fs = t ? ts : so;
+    *fc = t ? tc : co;
 }
 
 /* The same for target t. */

@@ -52,26 +52,39 @@ static void lag(const double *in, int n, double dt, double T, double *out)
         out[k] = y = in[k] + (y - in[k]) * E;
 }
 
-/* Best gain c and lag T (grid 0..300 s by 0.5 s) for y ~ c lag_T(x), over
- * m histories of n samples each; returns the RMS residual. */
-static double fit_gain_lag(const double *x, const double *y, int m, int n, double dt,
-                           double *c_out, double *T_out, double *buf)
+/* Best gains c[0..q-1] and one lag T (grid 0..300 s by 0.5 s) for
+ * y ~ sum_i c_i lag_T(x_i), q = 1 or 2 inputs (x[i] of m histories of n
+ * samples each), by least squares at each lag; returns the RMS residual. */
+static double fit_gains_lag(const double *const x[2], int q, const double *y, int m, int n,
+                            double dt, double c_out[2], double *T_out, double *buf)
 {
     double best = INFINITY;
     for (double T = 0.0; T <= 300.0; T += 0.5) {
-        double sxy = 0.0, sxx = 0.0, syy = 0.0;
+        double A[4] = {0}, b[2] = {0}, syy = 0.0;
         for (int j = 0; j < m; j++) {
-            lag(x + (size_t)j * n, n, dt, T, buf);
+            for (int i = 0; i < q; i++)
+                lag(x[i] + (size_t)j * n, n, dt, T, buf + (size_t)i * n);
             for (int k = 0; k < n; k++) {
                 double yk = y[(size_t)j * n + k];
-                sxy += buf[k] * yk, sxx += buf[k] * buf[k], syy += yk * yk;
+                syy += yk * yk;
+                for (int i = 0; i < q; i++) {
+                    b[i] += buf[(size_t)i * n + k] * yk;
+                    for (int l = 0; l < q; l++)
+                        A[i * q + l] += buf[(size_t)i * n + k] * buf[(size_t)l * n + k];
+                }
             }
         }
-        if (!(sxx > 0.0))
+        double c[2] = {b[0], b[1]};
+        if (!(A[0] > 0.0) || !fw_spd_solve(q, A, c))
             continue;
-        double c = sxy / sxx, sse = syy - c * sxy;
-        if (sse < best)
-            best = sse, *c_out = c, *T_out = T;
+        double sse = syy;
+        for (int i = 0; i < q; i++)
+            sse -= c[i] * b[i];
+        if (sse < best) {
+            best = sse, *T_out = T;
+            for (int i = 0; i < q; i++)
+                c_out[i] = c[i];
+        }
     }
     return sqrt(fmax(best, 0.0) / (double)(m * n));
 }
@@ -82,12 +95,17 @@ fw_status fw_ident_slip(const fw_ship *ship, const double *U, const double *helm
 {
     if (m < 1 || n < 2)
         return fw_fail(err, FW_EINPUT, "slip fit: need at least one test of two samples");
+    /* the first FW_IDENT_SLIP_WINDOW_S of each turn only (identify.h) */
+    int nw = (int)floor(FW_IDENT_SLIP_WINDOW_S / dt + 1e-9) + 1;
+    if (nw < n)
+        n = nw;
     size_t mn = (size_t)m * (size_t)n;
     double *r = malloc(sizeof *r * mn), *sp = malloc(sizeof *sp * mn);
     double *be = malloc(sizeof *be * mn), *x = malloc(sizeof *x * mn);
-    double *y = malloc(sizeof *y * mn), *buf = malloc(sizeof *buf * (size_t)n);
+    double *x2 = malloc(sizeof *x2 * mn), *y = malloc(sizeof *y * mn);
+    double *buf = malloc(sizeof *buf * 2 * (size_t)n);
     fw_status s = FW_OK;
-    if (!r || !sp || !be || !x || !y || !buf) {
+    if (!r || !sp || !be || !x || !x2 || !y || !buf) {
         s = fw_fail(err, FW_ERUN, "out of memory for %d turning tests", m);
         goto done;
     }
@@ -96,21 +114,28 @@ fw_status fw_ident_slip(const fw_ship *ship, const double *U, const double *helm
                                   sp + (size_t)j * n, be + (size_t)j * n, err);
     if (s)
         goto done;
-    /* inputs are the MMG's own r' (so the fit sees only the lags, not the
-     * yaw error of the Nomoto model); drift: beta ~ drift lag(r') */
+    /* inputs are the MMG's own r' and beta (so the fit sees only the lags,
+     * not the yaw error of the Nomoto model); drift: beta ~ drift lag(r') */
     for (size_t i = 0; i < mn; i++)
         x[i] = r[i] * ship->L / sp[i], y[i] = be[i];
-    *rms_beta = fit_gain_lag(x, y, m, n, dt, &kb->drift, &kb->drift_lag_s, buf);
-    /* speed: U0 - U ~ speed_loss U0 lag(|r'|) */
+    double c[2] = {0.0, 0.0};
+    const double *xs[2] = {x, x2};
+    *rms_beta = fit_gains_lag(xs, 1, y, m, n, dt, c, &kb->drift_lag_s, buf);
+    kb->drift = c[0];
+    /* speed: U0 - U ~ U0 lag(speed_loss |r'| + speed_loss_drift |beta r'|) */
     for (int j = 0; j < m; j++)
         for (int k = 0; k < n; k++) {
             size_t i = (size_t)j * n + k;
-            x[i] = U[j] * fabs(r[i] * ship->L / sp[i]);
+            double rn = fabs(r[i] * ship->L / sp[i]);
+            x[i] = U[j] * rn;
+            x2[i] = U[j] * fabs(be[i]) * rn;
             y[i] = U[j] - sp[i];
         }
-    *rms_speed = fit_gain_lag(x, y, m, n, dt, &kb->speed_loss, &kb->speed_lag_s, buf);
+    *rms_speed = fit_gains_lag(xs, 2, y, m, n, dt, c, &kb->speed_lag_s, buf);
+    kb->speed_loss = c[0];
+    kb->speed_loss_drift = c[1];
 done:
-    free(r), free(sp), free(be), free(x), free(y), free(buf);
+    free(r), free(sp), free(be), free(x), free(x2), free(y), free(buf);
     return s;
 }
 

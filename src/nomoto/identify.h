@@ -23,11 +23,19 @@ fw_status fw_ident_turning(const fw_ship *ship, double U, double helm, double dt
 fw_status fw_ident_turning_full(const fw_ship *ship, double U, double helm, double dt, int n,
                                 double *r, double *speed, double *beta, fw_error *err);
 
+/* The slip terms are fitted over the first 5 minutes of each turn: the
+ * decisions are made 2-6 minutes before the closest approach and a
+ * manoeuvre is re-predicted every step, so that is the span the predictions
+ * must get right.  Over 15 minutes the fit is pulled towards the steady
+ * turn's speed and the track is off twice as far at 5 minutes. */
+#define FW_IDENT_SLIP_WINDOW_S 300.0
+
 /* The knowledge base's drift and speed-loss terms (ship.h) from m MMG turning
- * tests (speed U[j] m/s, helm[j] rad), n samples dt apart: for each, the gain
- * by linear least squares at every lag on a 0.5 s grid up to 300 s, driven by
- * the MMG's own r' so the yaw model's error stays out of the fit.  Fills
- * kb->drift, drift_lag_s, speed_loss, speed_lag_s; *rms_beta (rad) and
+ * tests (speed U[j] m/s, helm[j] rad), n samples dt apart (only the first
+ * FW_IDENT_SLIP_WINDOW_S used): for each, the gains by linear least squares
+ * at every lag on a 0.5 s grid up to 300 s, driven by the MMG's own r' and
+ * beta so the yaw model's error stays out of the fit.  Fills kb->drift,
+ * drift_lag_s, speed_loss, speed_loss_drift, speed_lag_s; *rms_beta (rad) and
  * *rms_speed (m/s) are the residuals. */
 fw_status fw_ident_slip(const fw_ship *ship, const double *U, const double *helm, int m,
                         double dt, int n, fw_nomoto_kb *kb, double *rms_beta, double *rms_speed,

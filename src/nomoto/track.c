@@ -77,7 +77,7 @@ static void kin_init(kin *k, const fw_ship *ship, const fw_nomoto_kb *kb, const 
 {
     k->kb = kb;
     k->L = ship->L;
-    k->slip = kb->drift > 0.0 || kb->speed_loss > 0.0;
+    k->slip = kb->drift > 0.0 || kb->speed_loss != 0.0 || kb->speed_loss_drift > 0.0;
     k->east = s->east, k->north = s->north;
     k->U = s->U > 0.0 ? s->U : 0.0;
     k->U0 = s->U0 > 0.0 ? s->U0 : k->U;
@@ -103,9 +103,12 @@ static void kin_step(kin *k, double ps, double pc, double sn, double cs, double 
     }
     double rn = k->U > 0.1 ? r * k->L / k->U : 0.0; /* r' */
     double b_ss = k->kb->drift * rn;
-    double u_ss = k->U0 * (1.0 - fmin(k->kb->speed_loss * fabs(rn), 0.9));
-    double U1 = u_ss + (k->U - u_ss) * k->Eu;
     double b1 = b_ss + (k->beta - b_ss) * k->Eb;
+    /* the loss is driven by the drift reached at the step's end, as the
+     * identification drives it by the MMG ship's (identify.c) */
+    double loss = k->kb->speed_loss * fabs(rn) + k->kb->speed_loss_drift * fabs(b1 * rn);
+    double u_ss = k->U0 * (1.0 - fmin(loss, 0.9));
+    double U1 = u_ss + (k->U - u_ss) * k->Eu;
     rotate(&k->sb, &k->cb, b1 - k->beta);
     k->beta = b1;
     double ce1 = sn * k->cb - cs * k->sb, cn1 = cs * k->cb + sn * k->sb;

@@ -212,8 +212,8 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
         e->min_dist = d;
         e->t_min = t;
     }
-    /* where the target actually is against the own domain (same ellipse as
-     * the assessment, grown by the target's hull) */
+    /* where the target actually is against the own domain (the same domain
+     * and reading as the assessment, grown by the target's hull) */
     double lam = fw_domain_lambda(&r->s->helm.domain, own->east, own->north, own->psi, ts);
     if (lam < e->min_lambda)
         e->min_lambda = lam;
@@ -330,8 +330,9 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     fprintf(f, "%s  \"rudder_work_deg_s\": %.1f, \"helm_orders\": %d, \"actions\": %d,\n", ind,
             fw_rad_to_deg(s->rudder_work), s->helm_orders, s->n_actions);
     fprintf(f, "%s  \"own_length_m\": %.1f, \"own_breadth_m\": %.1f, \"domain_m\": %.1f, "
-               "\"domain_fore_aft_ratio\": %.2f,\n",
-            ind, s->own_length, s->own_breadth, s->domain, s->domain_ratio);
+               "\"domain_fore_aft_ratio\": %.2f, \"domain_reading\": \"%s\",\n",
+            ind, s->own_length, s->own_breadth, s->domain, s->domain_ratio,
+            s->domain_reading ? s->domain_reading : fw_domain_reading_name(FW_DOMAIN_ELLIPSE));
     if (s->survey)
         fprintf(f, "%s  \"survey\": {\"traffic_ship_s\": %.1f, \"encounters\": %d, \"head_on\": %d, "
                    "\"overtaking\": %d, \"crossing\": %d, \"with_own\": %d},\n",

@@ -342,6 +342,7 @@ static void init_summary(const fw_run_def *def, fw_run_summary *sum, fw_encounte
     sum->own_breadth = s->ship.B;
     sum->domain = s->helm.domain.size;
     sum->domain_ratio = s->helm.domain.fore_aft_ratio;
+    sum->domain_reading = fw_domain_reading_name(s->helm.domain.reading);
     sum->behaviour = s->reactions.behaviour;
     sum->kb_present = s->ship.nomoto.present;
     sum->kb_speed_min_kn = s->ship.nomoto.speed_min_kn;

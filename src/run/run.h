@@ -98,6 +98,7 @@ typedef struct fw_run_summary {
     double wall_s, sumo_s;
     double own_length, own_breadth; /* m, hull outline (for plots) */
     double domain, domain_ratio;    /* m, transverse semi-axis; fore-aft / transverse */
+    const char *domain_reading;     /* "ellipse" or "transverse" (geom.h): the run's judge too */
     /* The traffic survey (all zero without one). */
     bool survey;
     double traffic_ship_s;          /* ship-seconds in the survey area */

@@ -224,15 +224,25 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
 
 /* avoidance.return: track (the default) or heading (the paper's return);
  * avoidance.domain_from: hull (the default: the domain's size is a
- * clearance beyond the own hull, geom/geom.h) or centre (the paper's). */
+ * clearance beyond the own hull, geom/geom.h) or centre (the paper's);
+ * avoidance.domain_reading: ellipse (the default) or transverse (the
+ * paper's clearance from the target's side, geom/geom.h). */
 static fw_status load_return(const yt_doc *doc, const yt_node *a, fw_scenario *s, fw_error *err)
 {
-    char ret[16] = "", from[16] = "";
+    char ret[16] = "", from[16] = "", reading[16] = "";
     fw_status st = yt_opt_string(doc, a, "avoidance", "return", ret, sizeof ret, err);
     if (!st)
         st = yt_opt_string(doc, a, "avoidance", "domain_from", from, sizeof from, err);
+    if (!st)
+        st = yt_opt_string(doc, a, "avoidance", "domain_reading", reading, sizeof reading, err);
     if (st)
         return st;
+    int rd = reading[0] ? fw_domain_reading_parse(reading) : (int)s->helm.domain.reading;
+    if (rd < 0)
+        return fw_fail_at(err, doc->file, yt_key_line(a, "domain_reading"),
+                          "avoidance.domain_reading", "'%s': expected ellipse or transverse",
+                          reading);
+    s->helm.domain.reading = (fw_domain_reading)rd;
     if (ret[0] && fw_return_parse(ret, &s->policy.ret))
         return fw_fail_at(err, doc->file, yt_key_line(a, "return"), "avoidance.return",
                           "'%s': expected track or heading", ret);
@@ -251,7 +261,7 @@ static fw_status load_avoidance(const yt_doc *doc, const yt_node *root, fw_scena
                                        "max_helm_deg", "horizon_s", "act_range_nm",
                                        "act_lookahead_s", "standon_act_range_nm",
                                        "standon_act_time_s", "overtake_side", "radius_nm",
-                                       "return", "domain_from", NULL};
+                                       "return", "domain_from", "domain_reading", NULL};
     const yt_node *a = NULL;
     fw_status st;
     if ((st = yt_opt_map(doc, root, "", "avoidance", &a, err)))

@@ -53,12 +53,19 @@ typedef struct fw_nomoto_kb {
      * in a turn the hull slides outwards at the drift angle beta (course over
      * ground = heading - beta) and slows down.  Steady values follow the
      * non-dimensional yaw rate r' = r L / U: beta = drift r', U = U0 (1 -
-     * speed_loss |r'|); both approach them with first-order lags.  Without
-     * them a 20 deg turn of the C-3 at 10 kn is predicted 110 m off after
-     * 3 minutes. */
+     * speed_loss |r'| - speed_loss_drift |beta r'|); both approach them with
+     * first-order lags.  Without them a 20 deg turn of the C-3 at 10 kn is
+     * predicted 110 m off after 3 minutes.  The beta r' term is the surge
+     * equation's centripetal one (m + m_y) v r, which makes the loss grow
+     * with the square of the turn (small at 10 deg, large at 35); alone,
+     * |r'| over-predicts the loss of small helms (40 m off after 3 minutes
+     * at 10 kn and 10 deg for the c3-paper-mmg ship, 7 m with both).  With
+     * both, speed_loss may be negative: a propeller in the oblique inflow of
+     * a turn can gain thrust (the MMG wake model's C_2 below 1). */
     double drift;        /* rad of drift per unit r' */
     double drift_lag_s;  /* s */
     double speed_loss;   /* fraction of U0 lost per unit |r'| */
+    double speed_loss_drift; /* fraction of U0 lost per unit |beta r'| (beta in rad) */
     double speed_lag_s;  /* s */
 } fw_nomoto_kb;
 

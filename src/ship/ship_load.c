@@ -132,7 +132,7 @@ static fw_status read_nomoto(const yt_doc *doc, const yt_node *root, const char 
     static const char *const allowed[] = {"source", "speed_min_kn", "speed_max_kn",
                                           "rudder_min_deg", "rudder_max_deg", "K", "T1", "T2",
                                           "T3", "drift", "drift_lag_s", "speed_loss",
-                                          "speed_lag_s", NULL};
+                                          "speed_loss_drift", "speed_lag_s", NULL};
     if ((st = yt_check_keys(doc, map, P, allowed, err)))
         return st;
     char source[256], field[64];
@@ -156,10 +156,13 @@ static fw_status read_nomoto(const yt_doc *doc, const yt_node *root, const char 
         (st = read_index(doc, map, P, "T2", &kb->T2, err)) ||
         (st = read_index(doc, map, P, "T3", &kb->T3, err)))
         return st;
-    kb->drift = kb->drift_lag_s = kb->speed_loss = kb->speed_lag_s = 0.0;
+    kb->drift = kb->drift_lag_s = kb->speed_loss = kb->speed_loss_drift = kb->speed_lag_s = 0.0;
     if ((st = yt_opt_number(doc, map, P, "drift", 0.0, 5.0, &kb->drift, err)) ||
         (st = yt_opt_number(doc, map, P, "drift_lag_s", 0.0, 3600.0, &kb->drift_lag_s, err)) ||
-        (st = yt_opt_number(doc, map, P, "speed_loss", 0.0, 2.0, &kb->speed_loss, err)) ||
+        /* negative: a gain in the turn's oblique inflow (ship.h) */
+        (st = yt_opt_number(doc, map, P, "speed_loss", -1.0, 2.0, &kb->speed_loss, err)) ||
+        (st = yt_opt_number(doc, map, P, "speed_loss_drift", 0.0, 20.0, &kb->speed_loss_drift,
+                            err)) ||
         (st = yt_opt_number(doc, map, P, "speed_lag_s", 0.0, 3600.0, &kb->speed_lag_s, err)))
         return st;
     kb->present = true;

@@ -26,9 +26,12 @@ expect "c.yaml:[0-9]+: avoidance.return: 'home': expected track or heading" \
 sed 's/^  radius_nm: 6 .*/  radius_nm: 6\n  domain_from: bow/' "$base" > "$dir/e.yaml"
 expect "e.yaml:[0-9]+: avoidance.domain_from: 'bow': expected hull or centre" \
   "$FAIRWAY" run "$dir/e.yaml" --out "$dir/runs"
+sed 's/^  radius_nm: 6 .*/  radius_nm: 6\n  domain_reading: circle/' "$base" > "$dir/f.yaml"
+expect "f.yaml:[0-9]+: avoidance.domain_reading: 'circle': expected ellipse or transverse" \
+  "$FAIRWAY" run "$dir/f.yaml" --out "$dir/runs"
 mkdir -p "$dir/root/scenarios"
 cp -r "$FAIRWAY_DATA/networks" "$dir/root/" && cp -r "$FAIRWAY_DATA/scenarios/ships" "$dir/root/scenarios/"
 sed -i 's/edges: \[SW\]/edges: [SW, NOPE]/' "$dir/root/networks/dover/demand.yaml"
 expect "demand.yaml:[0-9]+: streams\[1\].edges: edge 'NOPE' is not in .*dover.edg.xml" \
   env FAIRWAY_DATA="$dir/root" "$FAIRWAY" run "$base" --out "$dir/runs"
-echo "bad traffic input refused: behaviour, density, return, domain_from, demand edge"
+echo "bad traffic input refused: behaviour, density, return, domain_from, domain_reading, demand edge"
