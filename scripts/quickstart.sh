@@ -47,7 +47,7 @@ case "$mode" in
     ./build/fairway manoeuvre report --ship c3 --csv-dir out/manoeuvres
     /usr/bin/python3 analysis/plot_manoeuvre.py out/manoeuvres/*.csv --trial c3 --out out/manoeuvres
     # the paper's five encounters and the 22 Imazu cases, with SUMO moving the targets
-    ./build/fairway run scenarios/paper/*.yaml scenarios/imazu/*.yaml --out out/runs
+    ./build/fairway run scenarios/paper/*.yaml scenarios/paper/fast-time/*.yaml scenarios/imazu/*.yaml --out out/runs
     for run in out/runs/paper-*; do /usr/bin/python3 analysis/plot_run.py "$run" > /dev/null; done
     /usr/bin/python3 analysis/plot_imazu.py out/runs --out out/imazu.png
     # the default study: resumes if out/dover-domain.db already holds some runs

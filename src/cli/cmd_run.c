@@ -74,7 +74,7 @@ static void row(const fw_run_summary *s)
                  fw_rad_to_deg(fabs(s->act_helm)));
     if (!isnan(s->t_return))
         snprintf(ret, sizeof ret, "%.0f", s->t_return);
-    printf("%-24s %8.0f %-6s %-9s %-17s %8.0f %7s %9.0f %9.0f  %s\n", s->scenario, s->min_dist,
+    printf("%-34s %8.0f %-6s %-9s %-17s %8.0f %7s %9.0f %9.0f  %s\n", s->scenario, s->min_dist,
            s->domain_entered ? "yes" : "no", s->collision ? "COLLISION" : "no", act,
            fw_rad_to_deg(s->max_helm), ret, s->path_lengthening, s->time_lost,
            s->status != FW_RUN_OK ? fw_run_status_name(s->status) : (s->colregs_ok ? "ok" : "colregs?"));
@@ -254,7 +254,7 @@ static int run_one(run_opts *o, int i, bool first, bool *fatal, fw_error *err)
 static int run_all(run_opts *o, int fd, fw_error *err)
 {
     if (!o->json)
-        printf("%-24s %8s %-6s %-9s %-17s %8s %7s %9s %9s  %s\n", "scenario", "min_d_m", "domain",
+        printf("%-34s %8s %-6s %-9s %-17s %8s %7s %9s %9s  %s\n", "scenario", "min_d_m", "domain",
                "collision", "action_s side deg", "max_helm", "return", "path_+m", "lost_s",
                "status");
     else

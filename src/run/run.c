@@ -115,7 +115,7 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     fw_vessel_def vd = fw_default_vessel_def();
     vd.id = "fw_own";
     vd.ship = &s->ship;
-    vd.dynamics = FW_DYN_MMG;
+    vd.dynamics = s->nomoto_plant ? FW_DYN_NOMOTO : FW_DYN_MMG;
     vd.east = s->east;
     vd.north = s->north;
     vd.course = s->course;

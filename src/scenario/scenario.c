@@ -23,7 +23,8 @@ static bool name_ok(const char *s)
 static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"ship", "east_m", "north_m", "lat_deg", "lon_deg",
-                                       "course_deg", "speed_kn", "leg_nm", "destination", NULL};
+                                       "course_deg", "speed_kn", "leg_nm", "destination",
+                                       "dynamics", NULL};
     const yt_node *own;
     fw_status st;
     char ship[512];
@@ -38,6 +39,13 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
         return st;
     s->course = fw_wrap_2pi(fw_deg_to_rad(course_deg) - gamma);
     s->speed = fw_kn_to_ms(speed_kn);
+    char dyn[16] = "mmg";
+    if ((st = yt_opt_string(doc, own, "own_ship", "dynamics", dyn, sizeof dyn, err)))
+        return st;
+    if (strcmp(dyn, "mmg") != 0 && strcmp(dyn, "nomoto") != 0)
+        return fw_fail_at(err, doc->file, yt_key_line(own, "dynamics"), "own_ship.dynamics",
+                          "'%s': expected mmg or nomoto", dyn);
+    s->nomoto_plant = strcmp(dyn, "nomoto") == 0;
     /* where it is going: a leg length along the course or a destination on it */
     const yt_node *dest = yt_get(own, "destination");
     bool has_leg = yt_get(own, "leg_nm") != NULL;

@@ -46,6 +46,10 @@ typedef struct fw_scenario {
     double course;       /* rad */
     double speed;        /* m/s */
     double leg;          /* m, planned straight leg along the course */
+    /* own_ship.dynamics: false (mmg, the default) the MMG model integrated by
+     * ARKODE; true (nomoto) the ship's own Nomoto model, the paper's
+     * fast-time simulation: the plant is the prediction (world/vessel.h) */
+    bool nomoto_plant;
     /* traffic */
     char network[64];    /* "" = none */
     double density;      /* demand scale of the network's streams */

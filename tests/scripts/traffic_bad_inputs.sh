@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Bad traffic input is refused before anything runs, with FILE:LINE: FIELD and
 # exit 2, and no run directory is left: an unknown behaviour, a density below
-# zero, an unknown return or domain reading, and a network whose demand names
+# zero, an unknown return, domain reading or own-ship dynamics, and a network whose demand names
 # an edge the network does not have (a copy of the data root with one edge
 # renamed).
 set -u
@@ -29,9 +29,13 @@ expect "e.yaml:[0-9]+: avoidance.domain_from: 'bow': expected hull or centre" \
 sed 's/^  radius_nm: 6 .*/  radius_nm: 6\n  domain_reading: circle/' "$base" > "$dir/f.yaml"
 expect "f.yaml:[0-9]+: avoidance.domain_reading: 'circle': expected ellipse or transverse" \
   "$FAIRWAY" run "$dir/f.yaml" --out "$dir/runs"
+sed 's/^  ship: c3-mmg\(.*\)$/  ship: c3-mmg\1\n  dynamics: euler/' "$base" > "$dir/g.yaml"
+grep -q "dynamics: euler" "$dir/g.yaml" || { echo "g.yaml not made"; exit 1; }
+expect "g.yaml:[0-9]+: own_ship.dynamics: 'euler': expected mmg or nomoto" \
+  "$FAIRWAY" run "$dir/g.yaml" --out "$dir/runs"
 mkdir -p "$dir/root/scenarios"
 cp -r "$FAIRWAY_DATA/networks" "$dir/root/" && cp -r "$FAIRWAY_DATA/scenarios/ships" "$dir/root/scenarios/"
 sed -i 's/edges: \[SW\]/edges: [SW, NOPE]/' "$dir/root/networks/dover/demand.yaml"
 expect "demand.yaml:[0-9]+: streams\[1\].edges: edge 'NOPE' is not in .*dover.edg.xml" \
   env FAIRWAY_DATA="$dir/root" "$FAIRWAY" run "$base" --out "$dir/runs"
-echo "bad traffic input refused: behaviour, density, return, domain_from, domain_reading, demand edge"
+echo "bad traffic input refused: behaviour, density, return, domain_from, domain_reading, dynamics, demand edge"
