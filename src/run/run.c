@@ -4,6 +4,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "ais/ais_track.h"
 #include "core/clock.h"
 #include "core/files.h"
 #include "core/units.h"
@@ -85,6 +86,42 @@ fw_status fw_run_kinematic_source(const fw_scenario *s, double step, double radi
     return fw_kinematic_source_create(&kd, src, err);
 }
 
+fw_status fw_run_ais_tracks(const fw_scenario *s, fw_ais_tracks *t, fw_error *err)
+{
+    const fw_scn_ais *a = &s->ais;
+    fw_ais_track_def d = fw_default_ais_track_def();
+    d.origin_lat = s->origin_lat;
+    d.origin_lon = s->origin_lon;
+    d.start = a->start;
+    d.end = a->end;
+    d.start_rel = a->start_rel;
+    d.end_rel = a->end_rel;
+    d.max_gap = a->max_gap;
+    fw_ais_columns cols;
+    if (a->columns[0] && fw_ais_columns_parse(a->columns, s->file, &cols, err))
+        return err->status;
+    d.cols = a->columns[0] ? &cols : NULL;
+    fw_status st = fw_ais_tracks_load(a->file, &d, t, err);
+    if (!st && t->n == 0)
+        st = fw_fail(err, FW_EINPUT, "%s: no ship reports in the scenario's window and within "
+                                     "%.0f km of its origin", a->file, d.area_radius / 1000);
+    return st;
+}
+
+/* AIS reports replayed (ais/ais_track.h), the run's t = 0 the window's start. */
+static fw_status ais_source(const fw_scenario *s, const fw_replay_def *td, fw_source **src,
+                            fw_error *err)
+{
+    fw_ais_tracks t;
+    fw_status st = fw_run_ais_tracks(s, &t, err);
+    fw_replay_def d = *td;
+    d.max_gap = s->ais.max_gap;
+    if (!st)
+        st = fw_ais_replay_source_create(&t, &d, src, err);
+    fw_ais_tracks_free(&t);
+    return st;
+}
+
 /* The world: the source and the own ship (MMG, the avoidance policy). */
 static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own, fw_error *err)
 {
@@ -95,7 +132,8 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     td.step = s->step;
     td.radius = s->radius;
     /* recorded tracks replay without SUMO, whatever the run asked for */
-    fw_status st = s->tracks[0] ? fw_replay_source_create(&td, &src, err)
+    fw_status st = s->tracks[0]     ? fw_replay_source_create(&td, &src, err)
+                   : s->ais.file[0] ? ais_source(s, &td, &src, err)
                    : def->traffic == FW_RUN_TRAFFIC_KINEMATIC
                        ? fw_run_kinematic_source(s, s->step, s->radius, &src, err)
                        : sumo_source(def, &src, err);
