@@ -11,6 +11,7 @@
 #include "ais/ais.h"
 #include "ais/ais_track.h"
 #include "core/units.h"
+#include "geom/geo.h"
 #include "test.h"
 
 static char bad_rows[1024];
@@ -183,6 +184,122 @@ static void test_tracks(void)
     fw_ais_tracks_free(&t);
 }
 
+/* The reports of one ship in the plane, sorted by time (the test's own
+ * projection and order: what the replay must reproduce). */
+typedef struct ref_pt {
+    double t, e, n, sog;
+} ref_pt;
+
+static int cmp_ref(const void *a, const void *b)
+{
+    double x = ((const ref_pt *)a)->t, y = ((const ref_pt *)b)->t;
+    return (x > y) - (x < y);
+}
+
+static int ref_track(const char *path, long mmsi, double t0, ref_pt *p, int max)
+{
+    fw_ais_reader *rd;
+    fw_geo *g;
+    fw_error err = {0};
+    if (fw_ais_open(path, NULL, &rd, &err) || fw_geo_create(56.5, 11.5, &g, &err))
+        return 0;
+    fw_ais_report r;
+    bool got = true;
+    int n = 0;
+    while (fw_ais_next(rd, &r, &got, &err) == FW_OK && got)
+        if (r.mmsi == mmsi && n < max && (n == 0 || r.t != p[n - 1].t)) {
+            p[n] = (ref_pt){r.t - t0, 0, 0, r.sog};
+            fw_geo_to_plane(g, r.lat, r.lon, &p[n].e, &p[n].n, &err);
+            n++;
+        }
+    fw_geo_destroy(g);
+    fw_ais_close(rd);
+    qsort(p, (size_t)n, sizeof *p, cmp_ref);
+    return n;
+}
+
+/* The example file replayed at 1 s steps: every ship where the linear
+ * interpolation in time of its projected reports puts it (10 m), moving at
+ * its reported SOG (5 %), and the tanker and the ferry on the generator's
+ * straight lines in the plane (10 m). */
+static void test_replay(void)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/scenarios/ais/aisdk-2026-03-01.csv", getenv("FAIRWAY_DATA"));
+    fw_ais_track_def d = fw_default_ais_track_def();
+    d.origin_lat = 56.5;
+    d.origin_lon = 11.5;
+    fw_ais_tracks t;
+    fw_error err = {0};
+    fw_source *src = NULL;
+    fw_replay_def rd = fw_default_replay_def();
+    rd.max_gap = d.max_gap;
+    CHECK_MSG(fw_ais_tracks_load(path, &d, &t, &err) == FW_OK, "%s", err.msg);
+    double t0 = t.t0;
+    CHECK(t.n == 6 && t.duplicates == 1 && t.out_of_order == 1);
+    CHECK(fw_ais_replay_source_create(&t, &rd, &src, &err) == FW_OK);
+    fw_ais_tracks_free(&t);
+    if (!src)
+        return;
+    static ref_pt ref[6][400];
+    static const long mmsi[6] = {219000101, 219000102, 219000103, 219000104, 219000105,
+                                 219000106};
+    int nref[6];
+    for (int k = 0; k < 6; k++)
+        nref[k] = ref_track(path, mmsi[k], t0, ref[k], 400);
+    fw_target own = {.id = "own"}, prev[6];
+    bool had[6] = {false};
+    double worst_pos = 0, worst_speed = 0, worst_line = 0;
+    long steps = 0;
+    fw_source_place(src, &own, &err);
+    for (int step = 0; step <= 2700; step++) {
+        const fw_target *v;
+        int n;
+        CHECK(fw_source_around(src, &v, &n, &err) == FW_OK);
+        bool now[6] = {false};
+        for (int i = 0; i < n; i++) {
+            int k = (int)(atol(v[i].id) - 219000101);
+            if (k < 0 || k > 5)
+                continue;
+            now[k] = true;
+            /* the reports around t, and where their interpolation puts the ship */
+            const ref_pt *r = ref[k];
+            int j = 0;
+            while (j + 1 < nref[k] - 1 && r[j + 1].t <= step)
+                j++;
+            double w = r[j + 1].t > r[j].t ? (step - r[j].t) / (r[j + 1].t - r[j].t) : 0;
+            w = w < 0 ? 0 : w > 1 ? 1 : w;
+            double e = r[j].e + w * (r[j + 1].e - r[j].e), no = r[j].n + w * (r[j + 1].n - r[j].n);
+            double off = hypot(v[i].east - e, v[i].north - no);
+            worst_pos = fmax(worst_pos, off);
+            if (k == 1) /* the tanker: 13600 m east at 10:00, west at 10 kn, 300 m north */
+                worst_line = fmax(worst_line, hypot(v[i].east - (13600 - fw_kn_to_ms(10) * step),
+                                                    v[i].north - 300));
+            if (k == 2) /* the ferry: from x = 0 at 10:20, east at 18 kn, 500 m south */
+                worst_line = fmax(worst_line,
+                                  hypot(v[i].east - fw_kn_to_ms(18) * (step - 1200),
+                                        v[i].north + 500));
+            double sog = isnan(r[j].sog) ? r[j + 1].sog : r[j].sog;
+            if (had[k] && sog > 0) {
+                double sp = hypot(v[i].east - prev[k].east, v[i].north - prev[k].north) / 1.0;
+                worst_speed = fmax(worst_speed, fabs(sp - sog) / sog);
+                steps++;
+            }
+            prev[k] = v[i];
+        }
+        memcpy(had, now, sizeof had);
+        fw_source_advance(src, &err);
+    }
+    printf("replay: %ld speed samples, worst speed error %.3f %%, worst position %.3f m, "
+           "worst off the generator's line %.3f m\n",
+           steps, 100 * worst_speed, worst_pos, worst_line);
+    CHECK(steps > 10000);
+    CHECK_MSG(worst_speed <= 0.05, "%.4f", worst_speed);
+    CHECK_MSG(worst_pos <= 10.0, "%.3f m", worst_pos);
+    CHECK_MSG(worst_line <= 10.0, "%.3f m", worst_line);
+    fw_source_destroy(src);
+}
+
 int main(void)
 {
     const char *root = getenv("FAIRWAY_DATA");
@@ -192,5 +309,6 @@ int main(void)
     TEST_RUN(test_columns);
     TEST_RUN(test_times);
     TEST_RUN(test_tracks);
+    TEST_RUN(test_replay);
     return TEST_EXIT();
 }
