@@ -2,6 +2,7 @@
 #include "ais/ais_track.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -221,6 +222,7 @@ fw_status fw_ais_tracks_load(const char *path, const fw_ais_track_def *def, fw_a
     if (st)
         goto out;
     out->counts = *fw_ais_counts_of(rd);
+    out->max_gap = def->max_gap;
     out->t0 = !isnan(start) ? start : out->counts.t_first;
     if (isnan(out->t0))
         out->t0 = 0.0; /* no reports at all */
@@ -249,15 +251,8 @@ fw_status fw_ais_replay_source_create(fw_ais_tracks *t, const fw_replay_def *def
     return st;
 }
 
-fw_status fw_ais_tracks_write_csv(const fw_ais_tracks *t, const char *path, fw_error *err)
+fw_status fw_ais_tracks_print_csv(const fw_ais_tracks *t, FILE *f, fw_error *err)
 {
-    char tmp[1100];
-    fw_status st = fw_path(tmp, sizeof tmp, err, "%s.tmp", path);
-    if (st)
-        return st;
-    FILE *f = fopen(tmp, "w");
-    if (!f)
-        return fw_fail(err, FW_EINPUT, "%s: cannot write", tmp);
     fprintf(f, "t_s,id,east_m,north_m,course_deg,speed_kn,type,length_m,breadth_m\n");
     for (int i = 0; i < t->n; i++) {
         const fw_rec_track *tr = &t->v[i];
@@ -267,6 +262,23 @@ fw_status fw_ais_tracks_write_csv(const fw_ais_tracks *t, const char *path, fw_e
                     p->north, fw_rad_to_deg(p->course), fw_ms_to_kn(p->speed), tr->info.type,
                     tr->info.length, tr->info.breadth);
         }
+    }
+    return ferror(f) ? fw_fail(err, FW_ERUN, "cannot write the tracks") : FW_OK;
+}
+
+fw_status fw_ais_tracks_write_csv(const fw_ais_tracks *t, const char *path, fw_error *err)
+{
+    char tmp[1100];
+    fw_status st = fw_path(tmp, sizeof tmp, err, "%s.tmp", path);
+    if (st)
+        return st;
+    FILE *f = fopen(tmp, "w");
+    if (!f)
+        return fw_fail(err, FW_EINPUT, "%s: cannot write", tmp);
+    if ((st = fw_ais_tracks_print_csv(t, f, err))) {
+        fclose(f);
+        remove(tmp);
+        return st;
     }
     return fw_file_commit(f, tmp, path, err);
 }

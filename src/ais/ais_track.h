@@ -56,6 +56,7 @@ typedef struct fw_ais_tracks {
     int n;
     double t0;            /* s UTC, the window's start */
     double t_end;         /* s from t0, the window's end (or the last point) */
+    double max_gap;       /* s, the def's */
     fw_ais_counts counts; /* the reader's */
     long out_of_order, duplicates, outside_window, outside_area;
     long points;          /* in the tracks */
@@ -77,6 +78,9 @@ fw_status fw_ais_replay_source_create(fw_ais_tracks *t, const fw_replay_def *def
  * speed_kn,type,length_m,breadth_m), written under a temporary name and
  * renamed: never a partial file. */
 fw_status fw_ais_tracks_write_csv(const fw_ais_tracks *t, const char *path, fw_error *err);
+
+/* The same to an open stream (stdout). */
+fw_status fw_ais_tracks_print_csv(const fw_ais_tracks *t, FILE *f, fw_error *err);
 
 /* The counts of the reading and the tracking as "what: N" lines. */
 void fw_ais_tracks_print(FILE *out, const fw_ais_tracks *t);
