@@ -1,6 +1,8 @@
 /* test_ais_demand.c - a network's demand from AIS (ais/ais_demand.h): the
  * example file's passes on the channel network, the written demand.yaml
- * loaded back, its rates the counted passes per hour, its ship types. */
+ * loaded back, its rates the counted passes per hour, its ship types; and
+ * the replay shown in SUMO (traffic/source_mirror.h): each SUMO vehicle
+ * where the replay puts the ship, ids the MMSIs, gone in a gap. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,6 +11,7 @@
 
 #include "ais/ais_demand.h"
 #include "ais/ais_routes.h"
+#include "traffic/source_mirror.h"
 #include "test.h"
 
 static void test_routes(void)
@@ -100,9 +103,69 @@ static void test_demand(void)
     unlink(out);
 }
 
+static void test_mirror(void)
+{
+    char path[1024], dir[] = "/tmp/fw_ais_mirror_XXXXXX";
+    snprintf(path, sizeof path, "%s/scenarios/ais/aisdk-2026-03-01.csv", getenv("FAIRWAY_DATA"));
+    CHECK(mkdtemp(dir) != NULL);
+    fw_ais_track_def td = fw_default_ais_track_def();
+    td.origin_lat = 56.5;
+    td.origin_lon = 11.5;
+    fw_ais_tracks t;
+    fw_error err = {0};
+    fw_source *inner = NULL, *src = NULL;
+    fw_replay_def rd = fw_default_replay_def();
+    rd.max_gap = td.max_gap;
+    CHECK(fw_ais_tracks_load(path, &td, &t, &err) == FW_OK);
+    CHECK(fw_ais_replay_source_create(&t, &rd, &inner, &err) == FW_OK);
+    fw_ais_tracks_free(&t);
+    fw_mirror_def md = {.mode = {.kind = FW_TRAFFIC_EMBEDDED}, .dir = dir, .step = 1.0,
+                        .seed = 1, .own_leg = 8000, .duration = 1800,
+                        .radius = INFINITY};
+    md.own = (fw_target){.id = "fw_own", .east = 10000, .north = -4000, .speed = 6.0,
+                         .length = 100, .breadth = 16};
+    CHECK_MSG(fw_mirror_source_create(inner, &md, &src, &err) == FW_OK, "%s", err.msg);
+    if (!src)
+        return;
+    fw_traffic *tr = fw_mirror_source_traffic(src);
+    double worst = 0;
+    int checked = 0, in_gap = 0;
+    for (int k = 1; k <= 1800 && !err.status; k++) {
+        fw_target own = md.own;
+        own.north += own.speed * k;
+        const fw_target *v;
+        int n;
+        if (fw_source_place(src, &own, &err) || fw_source_advance(src, &err) ||
+            fw_source_around(src, &v, &n, &err))
+            break;
+        for (int i = 0; i < n; i++) {
+            fw_target x;
+            if (fw_traffic_get(tr, v[i].id, &x, &err) != FW_OK)
+                break;
+            worst = fmax(worst, hypot(x.east - v[i].east, x.north - v[i].north));
+            checked++;
+        }
+        /* the second cargo ship is silent 10:25-10:31: out of SUMO too */
+        fw_target gone;
+        fw_error gerr = {0};
+        if (k == 1700)
+            in_gap = fw_traffic_get(tr, "219000105", &gone, &gerr) != FW_OK;
+    }
+    printf("mirror: %d SUMO positions, worst %.4f m from the replay's\n", checked, worst);
+    CHECK_MSG(err.status == FW_OK, "%s", err.msg);
+    CHECK(checked > 5000);
+    CHECK_MSG(worst <= 0.01, "%.4f m", worst);
+    CHECK(in_gap);
+    fw_source_destroy(src);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    CHECK(system(cmd) == 0);
+}
+
 int main(void)
 {
     TEST_RUN(test_routes);
     TEST_RUN(test_demand);
+    TEST_RUN(test_mirror);
     return TEST_EXIT();
 }

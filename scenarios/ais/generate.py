@@ -126,7 +126,7 @@ def ship_rows(ship):
     rows = []
     t = start
     while t <= SPAN:
-        if mmsi == 219000105 and 10 * 60 + 600 <= t < 16 * 60 + 600:
+        if mmsi == 219000105 and 25 * 60 <= t < 31 * 60:
             t += period  # the gap: silent 10:25 to 10:31
             continue
         d = v * (t - start)
