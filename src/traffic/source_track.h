@@ -29,7 +29,7 @@ typedef struct fw_rec_point {
 /* One ship's points, any order (the source sorts them). */
 typedef struct fw_rec_track {
     fw_target info;    /* id, type, length, breadth */
-    fw_rec_point *p; /* malloc'd */
+    fw_rec_point *p;   /* malloc'd */
     int n, cap;
 } fw_rec_track;
 
