@@ -464,6 +464,11 @@ static void log_start(run_state *R)
             s->name, s->file, s->ship.name, fw_ms_to_kn(s->speed), fw_heading_deg(s->course),
             s->east, s->north, s->n_targets, s->network[0] ? ", network " : "", s->network,
             s->duration, s->step, s->seed);
+    if (s->ais.file[0])
+        fprintf(fw_records_log(R->rec),
+                "traffic: the AIS reports of %s replayed, ids the MMSIs (a ship absent between "
+                "reports more than %.0f s apart; `fairway ais summary` counts what was read)\n",
+                s->ais.file, s->ais.max_gap);
     if (cleared > 0)
         fprintf(fw_records_log(R->rec),
                 "traffic: %d ships the fill put within 2 nm of the own ship or on a collision "
