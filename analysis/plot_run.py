@@ -39,7 +39,7 @@ def load(run):
         with open(os.path.join(run, "summary.json")) as f:
             summary = json.load(f)
         tp = os.path.join(run, "targets.csv")
-        tgt = pd.read_csv(tp) if os.path.exists(tp) else pd.DataFrame()
+        tgt = pd.read_csv(tp, dtype={"id": str}) if os.path.exists(tp) else pd.DataFrame()
     except Exception as exc:  # missing or malformed files all mean "not a run directory"
         fail(f"{run}: not a fairway run directory ({exc})")
     return own, tgt, summary

@@ -2,11 +2,12 @@
 # fuzz/run.sh [SECONDS] [TARGET...] - build the libFuzzer targets and run each
 # for SECONDS (default 60), one after the other, under ASan and UBSan.
 #
-#   targets: fuzz_yaml fuzz_ship fuzz_scenario fuzz_study fuzz_demand (default all)
+#   targets: fuzz_yaml fuzz_ship fuzz_scenario fuzz_study fuzz_demand fuzz_ais (default all)
 #   FUZZ_BUILD  build directory (default build/fuzz, configured with clang)
 #   FUZZ_NICE   nice level of the fuzzers (default 19)
 #
-# Seeds are the shipped data files (ships, scenarios, studies, demands); each
+# Seeds are the shipped data files (ships, scenarios, studies, demands, AIS
+# CSVs: fuzz_ais uses fuzz/ais.dict, the others fuzz/yaml.dict); each
 # target keeps what it finds in FUZZ_BUILD/corpus/TARGET, so a later run
 # starts from there.  Crashes, leaks and UB stop the target, leave the input
 # in FUZZ_BUILD/artifacts/ and make this script exit 1.  Each target's
@@ -16,7 +17,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_yaml fuzz_ship fuzz_scenario fuzz_study fuzz_demand)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_yaml fuzz_ship fuzz_scenario fuzz_study fuzz_demand fuzz_ais)
 build=${FUZZ_BUILD:-build/fuzz}
 nice_level=${FUZZ_NICE:-19}
 export SUMO_HOME=${SUMO_HOME:-/usr/share/sumo}
@@ -33,6 +34,10 @@ seed() { # seed TARGET DIR: the shipped files a target reads
                      cp "$f" "$dir/$(basename "$(dirname "$f")")-$(basename "$f")"; done ;;
     fuzz_study)    cp scenarios/studies/*.yaml "$dir"/ ;;
     fuzz_demand)   for f in networks/*/demand.yaml; do cp "$f" "$dir/$(basename "$(dirname "$f")").yaml"; done ;;
+    fuzz_ais)      # first byte: the variant (fuzz_ais.c); the example cut to its first rows
+                   for f in scenarios/ais/*.csv tests/data/ais/*.csv; do
+                     for m in 0 2 6; do
+                       { printf "\\$(printf %o $m)"; head -c 12000 "$f"; } > "$dir/$m-$(basename "$f")"; done; done ;;
     fuzz_yaml)     # first byte: which edits to try (all)
                    for f in scenarios/*/*.yaml networks/*/demand.yaml; do
                      { printf '\377'; cat "$f"; } > "$dir/$(basename "$(dirname "$f")")-$(basename "$f")"; done ;;
@@ -45,10 +50,12 @@ for t in "${targets[@]}"; do
   seed "$t" "$build/seeds/$t"
   mkdir -p "$build/corpus/$t"
   echo "== $t: $seconds s"
+  dict=fuzz/yaml.dict
+  [ "$t" != fuzz_ais ] || dict=fuzz/ais.dict
   rc=0
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     nice -n "$nice_level" "$build/fuzz/$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \
-      -max_len=16384 -dict=fuzz/yaml.dict -print_final_stats=1 \
+      -max_len=16384 -dict="$dict" -print_final_stats=1 \
       -artifact_prefix="$build/artifacts/$t-" "$build/corpus/$t" "$build/seeds/$t" \
       > "$build/logs/$t.log" 2>&1 || rc=$?
   grep -E "^#[0-9]+.*DONE|stat::number_of_executed_units|stat::peak_rss_mb" "$build/logs/$t.log" || true

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 #include "core/units.h"
@@ -95,11 +96,46 @@ static void test_bad_files(void)
     CHECK(open_source(INFINITY, &err) == NULL && strstr(err.msg, "cannot open"));
 }
 
+/* n tracks of one point each at t = 0 (ids given), for the in-memory source. */
+static fw_rec_track *tracks_of(const char *const *ids, int n, double east)
+{
+    fw_rec_track *t = calloc((size_t)n, sizeof *t);
+    for (int i = 0; i < n; i++) {
+        snprintf(t[i].info.id, sizeof t[i].info.id, "%s", ids[i]);
+        fw_rec_track_reserve(&t[i]);
+        t[i].p[t[i].n++] = (fw_rec_point){0.0, east, 0.0, 0.0, 1.0};
+    }
+    return t;
+}
+
+/* Tracks in memory (the AIS replay's way in): taken over, checked, sorted. */
+static void test_in_memory(void)
+{
+    static const char *const ids[] = {"b", "a"}, *const twice[] = {"a", "a"};
+    fw_replay_def d = fw_default_replay_def();
+    fw_source *s = NULL;
+    fw_error err = {0};
+    CHECK(fw_track_source_create(tracks_of(ids, 2, 5.0), 2, &d, "mem", &s, &err) == FW_OK);
+    fw_target own = {.id = "own"};
+    const fw_target *v;
+    int n;
+    CHECK(s && fw_source_place(s, &own, &err) == FW_OK &&
+          fw_source_around(s, &v, &n, &err) == FW_OK && n == 2 && strcmp(v[0].id, "a") == 0);
+    fw_source_destroy(s);
+    CHECK(fw_track_source_create(tracks_of(twice, 2, 5.0), 2, &d, "mem", &s, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "mem: ship a listed twice");
+    CHECK(fw_track_source_create(tracks_of(ids, 2, NAN), 2, &d, "mem", &s, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "has a point that is not a number");
+    d.max_gap = 0;
+    CHECK(fw_track_source_create(tracks_of(ids, 2, 5.0), 2, &d, "mem", &s, &err) == FW_EINPUT);
+}
+
 int main(void)
 {
     snprintf(path, sizeof path, "/tmp/fw_test_track.%d.csv", (int)getpid());
     TEST_RUN(test_replay);
     TEST_RUN(test_bad_files);
+    TEST_RUN(test_in_memory);
     unlink(path);
     return TEST_EXIT();
 }

@@ -32,6 +32,8 @@ static void help(void)
            "  --sumo MODE      embedded (default), gui, or remote:HOST:PORT\n"
            "  --log FILE       SUMO's messages (default fairway-traffic.log)\n"
            "  --routes FILE    route file written for the run (default fairway-traffic.rou.xml)\n"
+           "  --demand FILE    the network's streams from FILE instead of its demand.yaml\n"
+           "                   (one written by `fairway ais demand`, say)\n"
            "\n"
            "The own ship starts at the west end of the network's east-west fairway (y = 0)\n"
            "heading east.  Exit codes: 0 ok, 1 SUMO failed, 2 bad input.\n");
@@ -62,15 +64,17 @@ static double start_x(const char *net)
 
 static int run(const char *network, long ships, double density, double duration, double step,
                double radius_nm, double speed_kn, long seed, long every, const char *mode,
-               const char *log, const char *routes)
+               const char *log, const char *routes, const char *demand)
 {
     fw_error err = {0};
     fw_traffic_def d = fw_default_traffic_def();
     fw_network_files nf;
     fw_demand dm;
     fw_demand_def dd = fw_default_demand_def();
+    /* --demand: another demand of the network (one written from AIS, say) */
     if (fw_traffic_mode_parse(mode, &d.mode, &err) || fw_network_find(network, &nf, &err) ||
-        fw_demand_load(nf.demand, &dm, &err))
+        fw_demand_load(demand ? demand : nf.demand, &dm, &err) ||
+        fw_network_check_demand(network, &dm, &err))
         return fw_report(&err);
     dd.density = density;
     dd.fill = (int)ships;
@@ -137,7 +141,7 @@ int fw_cmd_traffic(int argc, char **argv)
 {
     fw_error err = {0};
     const char *network = "channel", *mode = "embedded", *log = "fairway-traffic.log",
-               *routes = "fairway-traffic.rou.xml";
+               *routes = "fairway-traffic.rou.xml", *demand = NULL;
     long ships = 50, seed = 1, every = 60;
     double density = 1.0, duration = 600.0, step = 1.0, radius = 6.0, speed = 12.0;
     const fw_opt opts[] = {
@@ -147,7 +151,7 @@ int fw_cmd_traffic(int argc, char **argv)
         FW_OPT("--duration", FW_OPT_DOUBLE, &duration), FW_OPT("--every", FW_OPT_LONG, &every),
         FW_OPT("--radius", FW_OPT_DOUBLE, &radius), FW_OPT("--speed", FW_OPT_DOUBLE, &speed),
         FW_OPT("--log", FW_OPT_TEXT, &log),         FW_OPT("--routes", FW_OPT_TEXT, &routes),
-        FW_OPT_END,
+        FW_OPT("--demand", FW_OPT_TEXT, &demand),   FW_OPT_END,
     };
     int rc = fw_args_parse(argc, argv, "traffic", opts, help, NULL, NULL, &err);
     if (rc >= 0)
@@ -179,5 +183,5 @@ int fw_cmd_traffic(int argc, char **argv)
         fw_check_out_file("--log", log, true, &err))
         return fw_report(&err);
     return run(network, ships, density, duration, step, radius, speed, seed, every, mode, log,
-               routes);
+               routes, demand);
 }

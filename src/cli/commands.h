@@ -16,5 +16,6 @@ int fw_cmd_run(int argc, char **argv);
 int fw_cmd_sweep(int argc, char **argv);
 int fw_cmd_report(int argc, char **argv);
 int fw_cmd_worst(int argc, char **argv);
+int fw_cmd_ais(int argc, char **argv);
 
 #endif

@@ -100,6 +100,42 @@ fw_status fw_check_parent_dir(const char *opt, const char *path, const char *can
     return st;
 }
 
+fw_status fw_read_text(const char *path, char **text, size_t *len, fw_error *err)
+{
+    *text = NULL;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return fw_fail(err, FW_EINPUT, "%s: cannot read: %s", path, strerror(errno));
+    char *buf = NULL;
+    size_t n = 0, cap = 0, got;
+    char chunk[8192];
+    while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) {
+        if (n + got + 1 > cap) {
+            cap = 2 * (n + got + 1);
+            char *p = realloc(buf, cap);
+            if (!p) {
+                free(buf);
+                fclose(f);
+                return fw_fail(err, FW_ERUN, "%s: out of memory", path);
+            }
+            buf = p;
+        }
+        memcpy(buf + n, chunk, got);
+        n += got;
+    }
+    bool bad = ferror(f);
+    fclose(f);
+    if (bad || (!buf && !(buf = calloc(1, 1)))) {
+        free(buf);
+        return fw_fail(err, bad ? FW_EINPUT : FW_ERUN, "%s: cannot read", path);
+    }
+    buf[n] = '\0';
+    *text = buf;
+    if (len)
+        *len = n;
+    return FW_OK;
+}
+
 int fw_csv_split(char *line, char **f, int max)
 {
     int n = 0;

@@ -51,6 +51,10 @@ const char *fw_data_root(void);
  * install, the build tree's networks/ for a build-tree program.  Not moved
  * by $FAIRWAY_DATA: the nets belong to the binary that built them. */
 const char *fw_net_dir(void);
+/* The whole of a (small) file as text: *text malloc'd, NUL-terminated, its
+ * length in *len (may be NULL).  FW_EINPUT "PATH: cannot read: reason". */
+fw_status fw_read_text(const char *path, char **text, size_t *len, fw_error *err);
+
 /* Splits a CSV line (no quoting) in place at its commas, its line end cut:
  * up to max fields into f; returns how many. */
 int fw_csv_split(char *line, char **f, int max);

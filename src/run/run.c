@@ -4,11 +4,13 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "ais/ais_track.h"
 #include "core/clock.h"
 #include "core/files.h"
 #include "core/units.h"
 #include "nomoto/nomoto.h"
 #include "run/run.h"
+#include "traffic/source_mirror.h"
 #include "traffic/source_track.h"
 #include "traffic/source_sumo.h"
 #include "world/controllers.h"
@@ -44,15 +46,22 @@ static double near_radius(const fw_scenario *s)
     return s->radius + 4.0 * FW_NMILE;
 }
 
+/* The run's sumo/ directory, created: SUMO's files and logs. */
+static fw_status sumo_dir(const fw_run_def *def, char *dir, size_t n, fw_error *err)
+{
+    fw_status st = fw_path(dir, n, err, "%s/sumo", def->dir);
+    if (!st && mkdir(dir, 0777) != 0)
+        st = fw_fail(err, FW_ERUN, "cannot create %s", dir);
+    return st;
+}
+
 static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *err)
 {
     const fw_scenario *s = def->scenario;
     char dir[1100];
-    fw_status st = fw_path(dir, sizeof dir, err, "%s/sumo", def->dir);
+    fw_status st = sumo_dir(def, dir, sizeof dir, err);
     if (st)
         return st;
-    if (mkdir(dir, 0777) != 0)
-        return fw_fail(err, FW_ERUN, "cannot create %s", dir);
     fw_sumo_source_def dflt = fw_default_sumo_source_def();
     fw_sumo_source_def sd = {.mode = def->mode, .dir = dir, .network = s->network,
                              .density = s->density, .fill = s->fill, .seed = s->seed,
@@ -86,6 +95,57 @@ fw_status fw_run_kinematic_source(const fw_scenario *s, double step, double radi
     return fw_kinematic_source_create(&kd, src, err);
 }
 
+fw_status fw_run_ais_tracks(const fw_scenario *s, fw_ais_tracks *t, fw_error *err)
+{
+    const fw_scn_ais *a = &s->ais;
+    fw_ais_track_def d = fw_default_ais_track_def();
+    d.origin_lat = s->origin_lat;
+    d.origin_lon = s->origin_lon;
+    d.start = a->start;
+    d.end = a->end;
+    d.start_rel = a->start_rel;
+    d.end_rel = a->end_rel;
+    d.max_gap = a->max_gap;
+    fw_ais_columns cols;
+    if (a->columns[0] && fw_ais_columns_parse(a->columns, s->file, &cols, err))
+        return err->status;
+    d.cols = a->columns[0] ? &cols : NULL;
+    fw_status st = fw_ais_tracks_load(a->file, &d, t, err);
+    if (!st && t->n == 0)
+        st = fw_fail(err, FW_EINPUT, "%s: no ship reports in the scenario's window and within "
+                                     "%.0f km of its origin", a->file, d.area_radius / 1000);
+    return st;
+}
+
+/* AIS reports replayed (ais/ais_track.h), the run's t = 0 the window's
+ * start; with SUMO traffic also shown in SUMO (traffic/source_mirror.h). */
+static fw_status ais_source(const fw_run_def *def, const fw_replay_def *td, fw_source **src,
+                            fw_error *err)
+{
+    const fw_scenario *s = def->scenario;
+    fw_ais_tracks t;
+    fw_status st = fw_run_ais_tracks(s, &t, err);
+    fw_replay_def d = *td;
+    d.max_gap = s->ais.max_gap;
+    bool sumo = def->traffic == FW_RUN_TRAFFIC_SUMO;
+    if (sumo)
+        d.radius = INFINITY; /* every ship shown; the mirror applies the sight */
+    if (!st)
+        st = fw_ais_replay_source_create(&t, &d, src, err);
+    fw_ais_tracks_free(&t);
+    if (st || !sumo)
+        return st;
+    char dir[1100];
+    if ((st = sumo_dir(def, dir, sizeof dir, err)))
+        return st;
+    fw_mirror_def md = {.mode = def->mode, .dir = dir, .step = s->step, .seed = s->seed,
+                        .own = own_start(s), .own_leg = s->leg, .duration = s->duration,
+                        .radius = s->radius};
+    fw_source *inner = *src;
+    *src = NULL;
+    return fw_mirror_source_create(inner, &md, src, err);
+}
+
 /* The world: the source and the own ship (MMG, the avoidance policy). */
 static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own, fw_error *err)
 {
@@ -96,7 +156,8 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     td.step = s->step;
     td.radius = s->radius;
     /* recorded tracks replay without SUMO, whatever the run asked for */
-    fw_status st = s->tracks[0] ? fw_replay_source_create(&td, &src, err)
+    fw_status st = s->tracks[0]     ? fw_replay_source_create(&td, &src, err)
+                   : s->ais.file[0] ? ais_source(def, &td, &src, err)
                    : def->traffic == FW_RUN_TRAFFIC_KINEMATIC
                        ? fw_run_kinematic_source(s, s->step, s->radius, &src, err)
                        : sumo_source(def, &src, err);
@@ -405,6 +466,11 @@ static void log_start(run_state *R)
             s->name, s->file, s->ship.name, fw_ms_to_kn(s->speed), fw_heading_deg(s->course),
             s->east, s->north, s->n_targets, s->network[0] ? ", network " : "", s->network,
             s->duration, s->step, s->seed);
+    if (s->ais.file[0])
+        fprintf(fw_records_log(R->rec),
+                "traffic: the AIS reports of %s replayed, ids the MMSIs (a ship absent between "
+                "reports more than %.0f s apart; `fairway ais summary` counts what was read)\n",
+                s->ais.file, s->ais.max_gap);
     if (cleared > 0)
         fprintf(fw_records_log(R->rec),
                 "traffic: %d ships the fill put within 2 nm of the own ship or on a collision "

@@ -153,6 +153,12 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
 fw_status fw_run_kinematic_source(const fw_scenario *s, double step, double radius,
                                   fw_source **src, fw_error *err);
 
+/* The scenario's AIS reports (traffic.ais) as tracks in its plane
+ * (ais/ais_track.h), t = 0 the window's start; FW_EINPUT also when no ship
+ * is left in the window.  The caller frees t (fw_ais_tracks_free). */
+typedef struct fw_ais_tracks fw_ais_tracks;
+fw_status fw_run_ais_tracks(const fw_scenario *s, fw_ais_tracks *t, fw_error *err);
+
 /* records.c: the encounter book and the result files. */
 typedef struct fw_records fw_records;
 fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *dir,

@@ -8,6 +8,7 @@
 #include "core/units.h"
 #include "nomoto/nomoto.h"
 #include "scenario/position.h"
+#include "scenario/scn_ais.h"
 #include "scenario/scenario.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
@@ -126,30 +127,14 @@ static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *pa
  * relative to the scenario file; the traffic then is that alone. */
 static fw_status load_tracks(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err)
 {
-    char rel[512] = "";
-    fw_status st = yt_opt_string(doc, tr, "traffic", "tracks", rel, sizeof rel, err);
-    if (st || !rel[0])
+    fw_status st = fw_scn_file_key(doc, tr, "traffic", "tracks", s->file, s->tracks,
+                                   sizeof s->tracks, err);
+    if (st || !s->tracks[0])
         return st;
-    int line = yt_key_line(tr, "tracks");
-    if (s->network[0] || yt_get(tr, "targets"))
-        return fw_fail_at(err, doc->file, line, "traffic.tracks",
-                          "recorded tracks are the whole traffic: no network or targets with them");
-    char dir[512];
-    snprintf(dir, sizeof dir, "%s", s->file);
-    char *slash = strrchr(dir, '/');
-    int k;
-    if (rel[0] == '/' || !slash) {
-        k = snprintf(s->tracks, sizeof s->tracks, "%s", rel);
-    } else {
-        *slash = '\0';
-        k = snprintf(s->tracks, sizeof s->tracks, "%s/%s", dir, rel);
-    }
-    if (k < 0 || (size_t)k >= sizeof s->tracks)
-        return fw_fail_at(err, doc->file, line, "traffic.tracks", "path too long");
-    FILE *f = fopen(s->tracks, "r");
-    if (!f)
-        return fw_fail_at(err, doc->file, line, "traffic.tracks", "%s: cannot open", s->tracks);
-    fclose(f);
+    if (s->network[0] || yt_get(tr, "targets") || yt_get(tr, "ais"))
+        return fw_fail_at(err, doc->file, yt_key_line(tr, "tracks"), "traffic.tracks",
+                          "recorded tracks are the whole traffic: no network, targets or AIS "
+                          "with them");
     return FW_OK;
 }
 
@@ -157,7 +142,8 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
                               fw_error *err)
 {
     static const char *const keys[] = {"network", "density", "fill", "targets", "behaviour",
-                                       "tracks", NULL};
+                                       "tracks", "ais", "ais_start", "ais_end",
+                                       "ais_max_gap_s", "ais_columns", NULL};
     const yt_node *tr, *seq = NULL;
     fw_status st;
     if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
@@ -222,11 +208,11 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
             s->n_targets++;
         }
     }
-    if ((st = load_tracks(doc, tr, s, err)))
+    if ((st = load_tracks(doc, tr, s, err)) || (st = fw_scn_load_ais(doc, tr, s, err)))
         return st;
-    if (!s->network[0] && s->n_targets == 0 && !s->tracks[0])
+    if (!s->network[0] && s->n_targets == 0 && !s->tracks[0] && !s->ais.file[0])
         return fw_fail_at(err, doc->file, yt_key_line(root, "traffic"), "traffic",
-                          "needs a network, recorded tracks or at least one target");
+                          "needs a network, recorded tracks, AIS reports or at least one target");
     return FW_OK;
 }
 

@@ -29,6 +29,17 @@
 
 #define FW_SCN_MAX_TARGETS 32
 
+/* traffic.ais: AIS reports replayed as the traffic (ais/ais_track.h). */
+typedef struct fw_scn_ais {
+    char file[1024];     /* "" = none */
+    char columns[512];   /* the column map (ais.h fw_ais_columns_parse), "" = DMA */
+    /* the window: UTC seconds, or seconds after the file's first report
+     * when *_rel; NAN = from the first / to the last report */
+    double start, end;
+    bool start_rel, end_rel;
+    double max_gap;      /* s, reports farther apart are two passes */
+} fw_scn_ais;
+
 
 typedef struct fw_scenario {
     char file[512];
@@ -56,6 +67,7 @@ typedef struct fw_scenario {
     int fill;            /* network ships placed along the routes at t = 0 */
     fw_reactions_def reactions; /* behaviour: colregs (default) or blind */
     char tracks[1024];   /* recorded tracks (traffic/source_track.h) replayed, "" = none */
+    fw_scn_ais ais;      /* AIS reports replayed (needs the origin) */
     int n_targets;
     fw_target targets[FW_SCN_MAX_TARGETS]; /* at t = 0; type: the label kept in the records */
     /* avoidance */

@@ -58,6 +58,10 @@ typedef struct fw_sumo_backend {
      * *ids (malloc'd, the caller frees). */
     fw_status (*net)(double box[4], char **ids, fw_error *err);
     void (*close)(void);
+    /* A ship fairway moves itself (a replayed AIS ship, traffic.h
+     * fw_traffic_add_placed): its own vType of this size and a vehicle on the
+     * own ship's route, placed by `place` from then on. */
+    fw_status (*add_placed)(const char *id, double length, double width, fw_error *err);
 } fw_sumo_backend;
 
 /* A remote sumo (where: "HOST:PORT") must run net_file's network: the same

@@ -177,10 +177,17 @@ fw_status fw_demand_write(const fw_demand *d, const fw_demand_def *def, const ch
         double rate = s->per_hour * def->density / 3600.0; /* ships per second */
         if (rate <= 0.0)
             continue;
+        /* SUMO (to 1.19 at least, eclipse-sumo/sumo#14664) loads a flood of
+         * ships for exp(X) with X below 1e-3 per second and runs out of
+         * memory; below that a per-second insertion probability of the same
+         * rate is the same arrival process to within rate^2 */
         fprintf(f,
                 "    <flow id=\"%s\" type=\"%s\" route=\"r_%s_0\" begin=\"%.17g\" end=\"%.17g\""
-                " period=\"exp(%.9g)\" departLane=\"random\" departSpeed=\"desired\"/>\n",
-                s->id, s->types, s->id, def->begin, def->end, rate);
+                " %s=\"%s%.9g%s\" departLane=\"random\" departSpeed=\"desired\"/>\n",
+                s->id, s->types, s->id, def->begin, def->end,
+                rate < FW_SUMO_EXP_RATE_MIN ? "probability" : "period",
+                rate < FW_SUMO_EXP_RATE_MIN ? "" : "exp(", rate,
+                rate < FW_SUMO_EXP_RATE_MIN ? "" : ")");
     }
     fprintf(f, "</routes>\n");
     if (fclose(f) != 0)

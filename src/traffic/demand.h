@@ -2,7 +2,8 @@
  *
  * A network's streams (networks/NAME/demand.yaml: id, edges, ships per hour at
  * density 1, ship type or type distribution) become flows with Poisson arrivals
- * (SUMO's period="exp(RATE)") whose rates scale with a density factor, so a
+ * (SUMO's period="exp(RATE)", or for rates below 3.6 an hour a per-second
+ * insertion probability: see demand.c) whose rates scale with a density factor, so a
  * study varies traffic without editing files.  Optionally `fill` ships start
  * spread along the routes, so a run begins near steady state instead of with
  * an empty waterway.
@@ -13,6 +14,9 @@
 #include "core/error.h"
 
 #define FW_DEMAND_MAX_STREAMS 32
+/* 1/s: flows slower than this are written as an insertion probability per
+ * second, not exp(RATE) (demand.c says why) */
+#define FW_SUMO_EXP_RATE_MIN 1e-3
 #define FW_DEMAND_MAX_EDGES 16
 
 typedef struct fw_stream {

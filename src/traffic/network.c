@@ -57,30 +57,15 @@ fw_status fw_network_check_demand(const char *name, const fw_demand *dm, fw_erro
                            name, name);
     if (st)
         return st;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return fw_fail(err, FW_EINPUT, "network '%s': cannot read %s", name, path);
     char *xml = NULL;
-    size_t len = 0, cap = 0, got;
-    char buf[4096];
-    while ((got = fread(buf, 1, sizeof buf, f)) > 0) {
-        if (len + got + 1 > cap) {
-            cap = 2 * (len + got + 1);
-            char *p = realloc(xml, cap);
-            if (!p) {
-                free(xml);
-                fclose(f);
-                return fw_fail(err, FW_ERUN, "out of memory reading %s", path);
-            }
-            xml = p;
-        }
-        memcpy(xml + len, buf, got);
-        len += got;
-    }
-    fclose(f);
-    if (!xml)
+    size_t len = 0;
+    fw_error rerr = {0};
+    if ((st = fw_read_text(path, &xml, &len, &rerr)))
+        return fw_fail(err, st, "network '%s': %s", name, rerr.msg);
+    if (len == 0) {
+        free(xml);
         return fw_fail(err, FW_EINPUT, "network '%s': %s is empty", name, path);
-    xml[len] = '\0';
+    }
     for (int i = 0; !st && i < dm->n; i++)
         for (int k = 0; !st && k < dm->streams[i].n_edges; k++)
             if (!has_edge(xml, dm->streams[i].edges[k])) {

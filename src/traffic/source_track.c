@@ -10,14 +10,10 @@
 #include "core/mem.h"
 #include "core/units.h"
 
-typedef struct trk_point {
-    double t, east, north, course, speed;
-} trk_point;
+typedef fw_rec_point trk_point;
 
 typedef struct trk_ship {
-    fw_target info;  /* id, type, size; the position of the last query */
-    trk_point *p;    /* sorted by t */
-    int n, cap;
+    fw_rec_track tr;     /* info: id, type, size; points sorted by t */
     int cur;         /* the point at or before the present time */
 } trk_ship;
 
@@ -31,6 +27,24 @@ typedef struct trk_source {
     bool placed;
     fw_target *out;
 } trk_source;
+
+bool fw_rec_track_reserve(fw_rec_track *tr)
+{
+    if (tr->n < tr->cap)
+        return true;
+    int cap = fw_grown_cap(tr->cap, 64);
+    if (!fw_resize((void **)&tr->p, sizeof *tr->p, (size_t)cap))
+        return false;
+    tr->cap = cap;
+    return true;
+}
+
+void fw_rec_tracks_free(fw_rec_track *tracks, int n)
+{
+    for (int i = 0; tracks && i < n; i++)
+        free(tracks[i].p);
+    free(tracks);
+}
 
 fw_replay_def fw_default_replay_def(void)
 {
@@ -64,19 +78,19 @@ static fw_status trk_advance(fw_source *s, fw_error *err)
 /* Where ship s is at time t; false when it is not there then. */
 static bool at(trk_ship *s, double t, double max_gap, fw_target *out)
 {
-    if (s->n == 0 || t < s->p[0].t - 1e-9 || t > s->p[s->n - 1].t + 1e-9)
+    if (s->tr.n == 0 || t < s->tr.p[0].t - 1e-9 || t > s->tr.p[s->tr.n - 1].t + 1e-9)
         return false;
-    while (s->cur + 1 < s->n && s->p[s->cur + 1].t <= t + 1e-9)
+    while (s->cur + 1 < s->tr.n && s->tr.p[s->cur + 1].t <= t + 1e-9)
         s->cur++;
-    while (s->cur > 0 && s->p[s->cur].t > t + 1e-9)
+    while (s->cur > 0 && s->tr.p[s->cur].t > t + 1e-9)
         s->cur--;
-    const trk_point *a = &s->p[s->cur], *b = s->cur + 1 < s->n ? a + 1 : a;
+    const trk_point *a = &s->tr.p[s->cur], *b = s->cur + 1 < s->tr.n ? a + 1 : a;
     if (b != a && b->t - a->t > max_gap && t > a->t + 1e-9)
         return false; /* between two passes */
     double w = b->t > a->t ? (t - a->t) / (b->t - a->t) : 0.0;
     if (w < 0.0)
         w = 0.0;
-    *out = s->info;
+    *out = s->tr.info;
     out->east = a->east + w * (b->east - a->east);
     out->north = a->north + w * (b->north - a->north);
     out->course = a->course;
@@ -120,7 +134,7 @@ static void trk_destroy(fw_source *s)
 {
     trk_source *k = (trk_source *)s;
     for (int i = 0; i < k->n; i++)
-        free(k->ships[i].p);
+        free(k->ships[i].tr.p);
     fw_free_each(3, k->ships, k->out, k);
 }
 
@@ -151,14 +165,20 @@ static fw_status header(const char *file, char *line, int col[NCOL], fw_error *e
     return FW_OK;
 }
 
-static trk_ship *ship_of(trk_source *k, const char *id)
+/* The tracks a file is read into. */
+typedef struct trk_list {
+    fw_rec_track *v;
+    int n;
+} trk_list;
+
+static fw_rec_track *ship_of(trk_list *k, const char *id)
 {
     for (int i = k->n - 1; i >= 0; i--) /* rows come grouped by time: recent ships last */
-        if (strcmp(k->ships[i].info.id, id) == 0)
-            return &k->ships[i];
-    if (!fw_resize((void **)&k->ships, sizeof *k->ships, (size_t)k->n + 1))
+        if (strcmp(k->v[i].info.id, id) == 0)
+            return &k->v[i];
+    if (!fw_resize((void **)&k->v, sizeof *k->v, (size_t)k->n + 1))
         return NULL;
-    trk_ship *s = &k->ships[k->n++];
+    fw_rec_track *s = &k->v[k->n++];
     memset(s, 0, sizeof *s);
     snprintf(s->info.id, sizeof s->info.id, "%s", id);
     return s;
@@ -172,7 +192,7 @@ static bool number(const char *s, double *v)
 }
 
 /* One data row into its ship. */
-static fw_status row(trk_source *k, const char *file, int line_no, char *line, const int col[NCOL],
+static fw_status row(trk_list *k, const char *file, int line_no, char *line, const int col[NCOL],
                      fw_error *err)
 {
     char *f[64];
@@ -186,9 +206,8 @@ static fw_status row(trk_source *k, const char *file, int line_no, char *line, c
     }
     if (col[C_ID] >= n || !f[col[C_ID]][0] || strlen(f[col[C_ID]]) >= FW_TARGET_ID_MAX)
         return fw_fail(err, FW_EINPUT, "%s:%d: id: empty or too long", file, line_no);
-    trk_ship *s = ship_of(k, f[col[C_ID]]);
-    if (!s || (s->n == s->cap && !fw_resize((void **)&s->p, sizeof *s->p,
-                                            (size_t)(s->cap = fw_grown_cap(s->cap, 64)))))
+    fw_rec_track *s = ship_of(k, f[col[C_ID]]);
+    if (!s || !fw_rec_track_reserve(s))
         return fw_fail(err, FW_ERUN, "%s: out of memory", file);
     if (col[C_TYPE] >= 0 && col[C_TYPE] < n)
         snprintf(s->info.type, sizeof s->info.type, "%s", f[col[C_TYPE]]);
@@ -199,18 +218,7 @@ static fw_status row(trk_source *k, const char *file, int line_no, char *line, c
     return FW_OK;
 }
 
-static int cmp_point(const void *a, const void *b)
-{
-    double x = ((const trk_point *)a)->t, y = ((const trk_point *)b)->t;
-    return (x > y) - (x < y);
-}
-
-static int cmp_ship(const void *a, const void *b)
-{
-    return strcmp(((const trk_ship *)a)->info.id, ((const trk_ship *)b)->info.id);
-}
-
-static fw_status load(trk_source *k, const char *file, fw_error *err)
+static fw_status load(trk_list *k, const char *file, fw_error *err)
 {
     FILE *fp = fopen(file, "r");
     if (!fp)
@@ -225,37 +233,84 @@ static fw_status load(trk_source *k, const char *file, fw_error *err)
         else
             line_no++;
     fclose(fp);
-    if (st)
-        return st;
+    return st;
+}
+
+static int cmp_point(const void *a, const void *b)
+{
+    double x = ((const trk_point *)a)->t, y = ((const trk_point *)b)->t;
+    return (x > y) - (x < y);
+}
+
+static int cmp_ship(const void *a, const void *b)
+{
+    return strcmp(((const trk_ship *)a)->tr.info.id, ((const trk_ship *)b)->tr.info.id);
+}
+
+/* Sorted ships and points; what is wrong with them. */
+static fw_status check(trk_source *k, const char *what, fw_error *err)
+{
     qsort(k->ships, (size_t)k->n, sizeof *k->ships, cmp_ship);
     for (int i = 0; i < k->n; i++) {
-        trk_ship *s = &k->ships[i];
+        fw_rec_track *s = &k->ships[i].tr;
+        if (!s->info.id[0])
+            return fw_fail(err, FW_EINPUT, "%s: a ship without an id", what);
+        if (i > 0 && strcmp(s->info.id, k->ships[i - 1].tr.info.id) == 0)
+            return fw_fail(err, FW_EINPUT, "%s: ship %s listed twice", what, s->info.id);
         qsort(s->p, (size_t)s->n, sizeof *s->p, cmp_point);
-        for (int j = 1; j < s->n; j++)
-            if (s->p[j].t == s->p[j - 1].t)
-                return fw_fail(err, FW_EINPUT, "%s: ship %s has two points at t = %g s", file,
-                               s->info.id, s->p[j].t);
+        for (int j = 0; j < s->n; j++) {
+            const trk_point *q = &s->p[j];
+            if (!isfinite(q->t) || !isfinite(q->east) || !isfinite(q->north) ||
+                !isfinite(q->course) || !isfinite(q->speed))
+                return fw_fail(err, FW_EINPUT, "%s: ship %s has a point that is not a number",
+                               what, s->info.id);
+            if (j > 0 && q->t == s->p[j - 1].t)
+                return fw_fail(err, FW_EINPUT, "%s: ship %s has two points at t = %g s", what,
+                               s->info.id, q->t);
+        }
     }
     return FW_OK;
 }
 
-fw_status fw_replay_source_create(const fw_replay_def *def, fw_source **out, fw_error *err)
+fw_status fw_track_source_create(fw_rec_track *tracks, int n, const fw_replay_def *def,
+                                 const char *what, fw_source **out, fw_error *err)
 {
     *out = NULL;
-    if (!def->file || !(def->step > 0.0) || !(def->radius > 0.0) || !(def->max_gap > 0.0))
-        return fw_fail(err, FW_EINPUT, "track source: a file, step > 0, radius > 0, gap > 0");
     trk_source *k = calloc(1, sizeof *k);
-    if (!k)
+    if (!k || !(k->ships = calloc((size_t)(n > 0 ? n : 1), sizeof *k->ships)) ||
+        !(k->out = malloc((size_t)(n > 0 ? n : 1) * sizeof *k->out))) {
+        if (k)
+            fw_free_each(2, k->ships, k);
+        fw_rec_tracks_free(tracks, n);
         return fw_fail(err, FW_ERUN, "out of memory");
+    }
     k->base.ops = &trk_ops;
     k->def = *def;
-    fw_status st = load(k, def->file, err);
-    if (!st && !(k->out = malloc((size_t)(k->n > 0 ? k->n : 1) * sizeof *k->out)))
-        st = fw_fail(err, FW_ERUN, "out of memory");
+    for (int i = 0; i < n; i++)
+        k->ships[i].tr = tracks[i];
+    free(tracks); /* the points are the ships' now */
+    k->n = n;
+    fw_status st = !(def->step > 0.0) || !(def->radius > 0.0) || !(def->max_gap > 0.0)
+                       ? fw_fail(err, FW_EINPUT, "track source: step > 0, radius > 0, gap > 0")
+                       : check(k, what, err);
     if (st) {
         trk_destroy(&k->base);
         return st;
     }
     *out = &k->base;
     return FW_OK;
+}
+
+fw_status fw_replay_source_create(const fw_replay_def *def, fw_source **out, fw_error *err)
+{
+    *out = NULL;
+    if (!def->file)
+        return fw_fail(err, FW_EINPUT, "track source: no file");
+    trk_list k = {0};
+    fw_status st = load(&k, def->file, err);
+    if (st) {
+        fw_rec_tracks_free(k.v, k.n);
+        return st;
+    }
+    return fw_track_source_create(k.v, k.n, def, def->file, out, err);
 }

@@ -12,15 +12,34 @@
  * `blind` traffic (what the ships did, reactions included, is in the track).
  *
  * fairway's own runs write such files (the study's worst cases: `fairway
- * worst`); AIS tracks converted to this layout replay the same way.
+ * worst`).  AIS reports (ais/ais_track.h) replay through the same source,
+ * built from tracks in memory (fw_track_source_create), with a max_gap of
+ * minutes: AIS ships report seconds to minutes apart.
  */
 #ifndef FW_TRAFFIC_SOURCE_TRACK_H
 #define FW_TRAFFIC_SOURCE_TRACK_H
 
 #include "traffic/source.h"
 
+/* One recorded point: time, hull centre, course (rad, grid), speed (m/s). */
+typedef struct fw_rec_point {
+    double t, east, north, course, speed;
+} fw_rec_point;
+
+/* One ship's points, any order (the source sorts them). */
+typedef struct fw_rec_track {
+    fw_target info;    /* id, type, length, breadth */
+    fw_rec_point *p;   /* malloc'd */
+    int n, cap;
+} fw_rec_track;
+
+/* Room for one more point in tr (false: out of memory, tr as it was). */
+bool fw_rec_track_reserve(fw_rec_track *tr);
+/* Frees n tracks' points and the array (safe on NULL). */
+void fw_rec_tracks_free(fw_rec_track *tracks, int n);
+
 typedef struct fw_replay_def {
-    const char *file;    /* the CSV */
+    const char *file;    /* the CSV (fw_replay_source_create only) */
     double step;         /* s, > 0 */
     double radius;       /* m, sight (hull centre to hull centre); INFINITY = all */
     double max_gap;      /* s, 1.5: points farther apart are two passes */
@@ -31,5 +50,12 @@ fw_replay_def fw_default_replay_def(void);
 /* FW_EINPUT naming FILE:LINE for a row that cannot be read (a missing
  * column, a number that is not one, a time twice for one ship). */
 fw_status fw_replay_source_create(const fw_replay_def *def, fw_source **out, fw_error *err);
+
+/* The same source from n tracks in memory, which it takes over (freed by
+ * it, also on failure).  FW_EINPUT for an empty or duplicate id, a
+ * non-finite value or two points of one ship at one time (`what` names the
+ * tracks' origin in the message). */
+fw_status fw_track_source_create(fw_rec_track *tracks, int n, const fw_replay_def *def,
+                                 const char *what, fw_source **out, fw_error *err);
 
 #endif

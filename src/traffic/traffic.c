@@ -535,6 +535,27 @@ fw_status fw_traffic_set_speed(fw_traffic *t, const char *id, double speed, fw_e
 
 static fw_status context(fw_traffic *t, fw_error *err);
 
+fw_status fw_traffic_add_placed(fw_traffic *t, const char *id, double length, double width,
+                                fw_error *err)
+{
+    if (alive(t, err))
+        return FW_ERUN;
+    if (strcmp(id, t->own_id) == 0 || !(length > 0) || !(width > 0))
+        return fw_fail(err, FW_ERUN, "ship '%s': not the own ship's id, a size > 0", id);
+    return t->be->add_placed(id, length, width, err);
+}
+
+fw_status fw_traffic_move(fw_traffic *t, const char *id, double x, double y, double heading,
+                          double length, fw_error *err)
+{
+    if (alive(t, err))
+        return FW_ERUN;
+    double fx, fy, a;
+    fw_traffic_to_sumo(x, y, heading, length, &fx, &fy, &a);
+    /* the range query stays about the own ship */
+    return t->be->place(id, fx, fy, a, t->own_x, t->own_y, err);
+}
+
 fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err)
 {
     if (alive(t, err) || context(t, err))

@@ -133,6 +133,15 @@ fw_status fw_traffic_set_speed(fw_traffic *t, const char *id, double speed, fw_e
 /* Takes background ship id out of SUMO; it is left out of the queries of
  * this step already (SUMO lists it until its next step). */
 fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err);
+/* Ships fairway moves itself, shown in SUMO (sumo-gui) where fairway puts
+ * them: a replayed AIS ship.  add_placed gives ship id (not yet in SUMO) a
+ * vType of its size and a vehicle; move places its hull centre (heading
+ * rad) for the next step, off the lanes like the own ship (SUMO's ships
+ * never react to it); fw_traffic_remove takes it out. */
+fw_status fw_traffic_add_placed(fw_traffic *t, const char *id, double length, double width,
+                                fw_error *err);
+fw_status fw_traffic_move(fw_traffic *t, const char *id, double x, double y, double heading,
+                          double length, fw_error *err);
 /* Advances SUMO by one step. */
 fw_status fw_traffic_step(fw_traffic *t, fw_error *err);
 /* Ships within the radius of the own ship after the last step, own ship

@@ -234,6 +234,21 @@ fw_status be_place(const char *id, double fx, double fy, double angle_deg, doubl
     });
 }
 
+fw_status be_add_placed(const char *id, double length, double width, fw_error *err)
+{
+    return guarded("cannot add a replayed ship", err, [&] {
+        // a ship back after a gap in its reports keeps the type it had
+        const std::string type = std::string("fw_placed_") + id;
+        const std::vector<std::string> types = S::VehicleType::getIDList();
+        if (std::find(types.begin(), types.end(), type) == types.end())
+            S::VehicleType::copy(kOwnType, type);
+        S::VehicleType::setLength(type, length);
+        S::VehicleType::setWidth(type, width);
+        S::VehicleType::setColor(type, libsumo::TraCIColor(40, 110, 220, 255));
+        S::Vehicle::add(id, kOwnRoute, type, "now");
+    });
+}
+
 fw_status be_set_speed(const char *id, double speed, fw_error *err)
 {
     return guarded("cannot set a ship's speed", err, [&] {
@@ -378,5 +393,5 @@ void be_close(void)
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
     be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_gui_follow,
-    be_gui_screenshot, be_net, be_close,
+    be_gui_screenshot, be_net, be_close, be_add_placed,
 };
