@@ -211,7 +211,8 @@ fw_status fw_ais_tracks_load(const char *path, const fw_ais_track_def *def, fw_a
     collect c = {.t = out, .lo = isnan(start) ? -INFINITY : start - def->max_gap,
                  .hi = isnan(end) ? INFINITY : end + def->max_gap, .radius = def->area_radius};
     fw_ais_reader *rd = NULL;
-    if ((st = fw_geo_create(def->origin_lat, def->origin_lon, &c.geo, err)) ||
+    if ((st = def->proj ? fw_geo_create_proj(def->proj, def->off_e, def->off_n, &c.geo, err)
+                        : fw_geo_create(def->origin_lat, def->origin_lon, &c.geo, err)) ||
         (st = fw_ais_open(path, def->cols, &rd, err)))
         goto out;
     fw_ais_report r;

@@ -28,7 +28,9 @@
 #include "traffic/source_track.h"
 
 typedef struct fw_ais_track_def {
-    double origin_lat, origin_lon; /* deg: the plane */
+    double origin_lat, origin_lon; /* deg: the plane, a transverse Mercator about it ... */
+    const char *proj;              /* ... or this PROJ string (a geo-referenced network's) */
+    double off_e, off_n;           /*     with its netOffset (geom/geo.h fw_geo_create_proj) */
     const fw_ais_columns *cols;    /* NULL: DMA */
     /* The window, UTC seconds; with start_rel / end_rel, seconds after the
      * file's earliest kept report instead.  NAN: from the first / to the

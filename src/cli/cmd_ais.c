@@ -13,6 +13,7 @@
 #include "core/idmap.h"
 #include "core/mem.h"
 #include "core/units.h"
+#include "traffic/demand.h"
 
 static void help(void)
 {
@@ -38,7 +39,8 @@ static void help(void)
            "           (nearest length and service speed within the type)\n"
            "\n"
            "  --origin LAT,LON  the plane's centre (deg): the scenario's origin, or where\n"
-           "                    the network's (0, 0) lies\n"
+           "                    the network's (0, 0) lies; not with a geo-referenced\n"
+           "                    network (networks/README.md), whose own plane is used\n"
            "  --columns MAP     header names for another CSV: FIELD=NAME,... with FIELD\n"
            "                    one of time class mmsi lat lon sog cog heading type width\n"
            "                    length a b c d (\"class=\": no class column)\n"
@@ -80,11 +82,21 @@ static fw_status window_opt(const char *opt, const char *text, double *t, bool *
     return FW_OK;
 }
 
-static fw_status track_def(const ais_opts *o, double gap, fw_ais_track_def *d, fw_error *err)
+/* proj: a geo-referenced network's plane (NULL: --origin's). */
+static fw_status track_def(const ais_opts *o, double gap, const char *proj, const double off[2],
+                           fw_ais_track_def *d, fw_error *err)
 {
     *d = fw_default_ais_track_def();
-    if (o->n_origin != 2)
+    if (proj && o->n_origin)
+        return fw_fail(err, FW_EINPUT, "--origin: network '%s' is geo-referenced (%s): its plane "
+                                       "is used; leave --origin out", o->network, proj);
+    if (proj) {
+        d->proj = proj;
+        d->off_e = off[0];
+        d->off_n = off[1];
+    } else if (o->n_origin != 2) {
         return fw_fail(err, FW_EINPUT, "--origin LAT,LON: the plane's centre is needed");
+    }
     d->origin_lat = o->origin[0];
     d->origin_lon = o->origin[1];
     d->cols = &o->cols;
@@ -144,7 +156,8 @@ static int tracks(const ais_opts *o, fw_error *err)
 {
     fw_ais_track_def d;
     fw_ais_tracks t;
-    if (track_def(o, 300.0, &d, err) || (o->out && fw_check_out_file("--out", o->out, true, err)))
+    if (track_def(o, 300.0, NULL, NULL, &d, err) ||
+        (o->out && fw_check_out_file("--out", o->out, true, err)))
         return fw_report(err);
     fw_status st = fw_ais_tracks_load(o->file, &d, &t, err);
     if (!st)
@@ -162,7 +175,15 @@ static int demand(const ais_opts *o, fw_error *err)
     if (!o->network || !o->out)
         return fw_report((fw_fail(err, FW_EINPUT, "ais demand: give --network NAME and --out "
                                                   "FILE (see fairway ais --help)"), err));
-    if (track_def(o, 1800.0, &d, err) || fw_check_out_file("--out", o->out, true, err))
+    /* on a geo-referenced network the reports go into the network's own plane */
+    fw_network_files nf;
+    char proj[512] = "";
+    double off[2] = {0.0, 0.0};
+    if (fw_network_find(o->network, &nf, err) ||
+        fw_network_plane(&nf, proj, sizeof proj, &off[0], &off[1], err))
+        return fw_report(err);
+    if (track_def(o, 1800.0, proj[0] ? proj : NULL, off, &d, err) ||
+        fw_check_out_file("--out", o->out, true, err))
         return fw_report(err);
     fw_ais_demand_def dd = fw_default_ais_demand_def();
     dd.network = o->network;

@@ -101,6 +101,11 @@ fw_status fw_run_ais_tracks(const fw_scenario *s, fw_ais_tracks *t, fw_error *er
     fw_ais_track_def d = fw_default_ais_track_def();
     d.origin_lat = s->origin_lat;
     d.origin_lon = s->origin_lon;
+    if (s->plane[0]) {
+        d.proj = s->plane;
+        d.off_e = s->plane_off_e;
+        d.off_n = s->plane_off_n;
+    }
     d.start = a->start;
     d.end = a->end;
     d.start_rel = a->start_rel;

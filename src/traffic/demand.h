@@ -11,6 +11,8 @@
 #ifndef FW_DEMAND_H
 #define FW_DEMAND_H
 
+#include <stddef.h>
+
 #include "core/error.h"
 
 #define FW_DEMAND_MAX_STREAMS 32
