@@ -6,66 +6,66 @@
  * ours in it: no own ship, no subscription, no reactions.
  *
  * Whole processes, start-up included (that is what a study pays per run):
- * RUNS pairs, A and B in turn, CPU (user + system, the kernel's accounting
- * of the reaped child) and wall.  Printed: the medians and the median of the
- * pairwise ratios.  Results: bench/results/sumo_alone.txt.
+ * RUNS rounds, each running A, (A0,) B in turn, CPU (user + system, the
+ * kernel's accounting of the reaped child) and wall.  Printed: the medians,
+ * the median of the pairwise ratios and their range (the spread).  A0, if
+ * given, is a baseline fairway (say the build of the commit before a change)
+ * measured in the same rounds: A/A0 says what the change did, A0/B what the
+ * coupling cost before it.  CSV_FILE gets one row per round and program.
+ * Results: bench/results/sumo_alone.csv.
  *
- *     build/bench/bench_sumo_alone [FAIRWAY]    (default: the fairway beside
- *                                                this program's directory) */
-#include <errno.h>
+ *     build/bench/bench_sumo_alone [CSV_FILE|- [FAIRWAY [BASELINE_FAIRWAY]]]
+ *     (default FAIRWAY: the build tree's; the baseline needs FAIRWAY_DATA
+ *     when it is not a build-tree or installed program) */
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <sys/time.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "bench.h"
+#include "bench_proc.h"
 #include "core/files.h"
-#include "core/spawn.h"
 
-enum { RUNS = 5 };
+enum { RUNS = 7 };
 
-/* Runs argv to the end: CPU and wall seconds; exits on failure. */
-static void timed(const char *const *argv, double *cpu, double *wall)
+/* Median of the n ratios a[k] / b[k], and their range. */
+static double ratio_median(const double *a, const double *b, int n, double *lo, double *hi)
 {
-    fw_error err = {0};
-    pid_t pid;
-    double t0 = bench_now();
-    if (fw_spawn(&(fw_spawn_def){.argv = argv}, &pid, &err)) {
-        fprintf(stderr, "bench_sumo_alone: %s\n", err.msg);
-        exit(1);
-    }
-    int status;
-    struct rusage ru;
-    while (wait4(pid, &status, 0, &ru) < 0 && errno == EINTR)
-        ;
-    *wall = bench_now() - t0;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        fprintf(stderr, "bench_sumo_alone: %s failed (status %d)\n", argv[0], status);
-        exit(1);
-    }
-    *cpu = (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
-           1e-6 * (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+    double r[RUNS];
+    for (int k = 0; k < n; k++)
+        r[k] = a[k] / b[k];
+    double m = bench_median(r, n); /* sorts r */
+    *lo = r[0], *hi = r[n - 1];
+    return m;
+}
+
+static void print_ratio(const char *what, const double *ac, const double *bc, const double *aw,
+                        const double *bw)
+{
+    double lo, hi, wlo, whi;
+    double c = ratio_median(ac, bc, RUNS, &lo, &hi), w = ratio_median(aw, bw, RUNS, &wlo, &whi);
+    printf("%-22s %10.2f %10.2f   cpu range %.2f-%.2f\n", what, c, w, lo, hi);
 }
 
 int main(int argc, char **argv)
 {
-    char fairway[PATH_MAX + 16], self[PATH_MAX];
-    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (argc > 2 || n <= 0) {
-        fprintf(stderr, "usage: bench_sumo_alone [FAIRWAY]\n");
+    char fairway[PATH_MAX + 16];
+    if (argc > 4 || (argc == 2 && strcmp(argv[1], "--help") == 0)) {
+        fprintf(stderr, "usage: bench_sumo_alone [CSV_FILE|- [FAIRWAY [BASELINE_FAIRWAY]]]\n");
         return 2;
     }
-    self[n] = '\0';
-    char *slash = strrchr(self, '/');
-    if (slash)
-        *slash = '\0';
-    snprintf(fairway, sizeof fairway, "%s", argc == 2 ? argv[1] : self);
-    if (argc < 2)
-        strncat(fairway, "/../fairway", sizeof fairway - strlen(fairway) - 1);
+    if (argc > 2)
+        snprintf(fairway, sizeof fairway, "%s", argv[2]);
+    else if (bench_proc_fairway(fairway, sizeof fairway)) {
+        fprintf(stderr, "bench_sumo_alone: cannot find the build tree's fairway\n");
+        return 1;
+    }
+    const char *base = argc > 3 ? argv[3] : NULL;
+    FILE *csv = argc > 1 && strcmp(argv[1], "-") ? fopen(argv[1], "w") : NULL;
+    if (argc > 1 && strcmp(argv[1], "-") && !csv) {
+        perror(argv[1]);
+        return 1;
+    }
     char dir[] = "/tmp/bench_sumo_alone.XXXXXX";
     if (!mkdtemp(dir)) {
         perror("bench_sumo_alone: mkdtemp");
@@ -81,25 +81,49 @@ int main(int argc, char **argv)
                           "--collision.action", "warn", "--lanechange.duration", "2800",
                           "--no-step-log", "true", "--duration-log.disable", "true", "--end",
                           "3600", "--log", "/dev/null", NULL};
-    double ac[RUNS], aw[RUNS], bc[RUNS], bw[RUNS], rc[RUNS], rw[RUNS];
+    double ac[RUNS], aw[RUNS], oc[RUNS], ow[RUNS], bc[RUNS], bw[RUNS];
+    if (csv)
+        fprintf(csv, "round,program,cpu_s,wall_s\n");
     for (int k = 0; k <= RUNS; k++) {
-        /* run 0 is the warm-up, and writes the route file sumo replays */
+        /* round 0 is the warm-up, and writes the route file sumo replays */
         snprintf(out, sizeof out, "%s/r%d", dir, k);
         const char *run[] = {fairway, "run", scn, "--out", out, NULL};
         double c, w;
-        timed(run, &c, &w);
+        bench_proc_run(run, NULL, &c, &w);
         if (k == 0)
             continue;
         ac[k - 1] = c, aw[k - 1] = w;
-        timed(sumo, &bc[k - 1], &bw[k - 1]);
-        rc[k - 1] = ac[k - 1] / bc[k - 1];
-        rw[k - 1] = aw[k - 1] / bw[k - 1];
+        if (base) {
+            snprintf(out, sizeof out, "%s/b%d", dir, k);
+            const char *run0[] = {base, "run", scn, "--out", out, NULL};
+            bench_proc_run(run0, NULL, &oc[k - 1], &ow[k - 1]);
+        }
+        bench_proc_run(sumo, NULL, &bc[k - 1], &bw[k - 1]);
+        if (csv) {
+            fprintf(csv, "%d,fairway,%.4f,%.4f\n", k, ac[k - 1], aw[k - 1]);
+            if (base)
+                fprintf(csv, "%d,baseline,%.4f,%.4f\n", k, oc[k - 1], ow[k - 1]);
+            fprintf(csv, "%d,sumo,%.4f,%.4f\n", k, bc[k - 1], bw[k - 1]);
+        }
     }
     printf("%-22s %10s %10s\n", "", "cpu_s", "wall_s");
-    printf("%-22s %10.3f %10.3f\n", "fairway run", bench_median(ac, RUNS), bench_median(aw, RUNS));
-    printf("%-22s %10.3f %10.3f\n", "sumo alone", bench_median(bc, RUNS), bench_median(bw, RUNS));
-    printf("%-22s %10.2f %10.2f\n", "ratio (pairwise)", bench_median(rc, RUNS),
-           bench_median(rw, RUNS));
+    double t[RUNS], u[RUNS];
+    memcpy(t, ac, sizeof t), memcpy(u, aw, sizeof u);
+    printf("%-22s %10.3f %10.3f\n", "fairway run", bench_median(t, RUNS), bench_median(u, RUNS));
+    if (base) {
+        memcpy(t, oc, sizeof t), memcpy(u, ow, sizeof u);
+        printf("%-22s %10.3f %10.3f\n", "baseline run", bench_median(t, RUNS),
+               bench_median(u, RUNS));
+    }
+    memcpy(t, bc, sizeof t), memcpy(u, bw, sizeof u);
+    printf("%-22s %10.3f %10.3f\n", "sumo alone", bench_median(t, RUNS), bench_median(u, RUNS));
+    print_ratio("ratio fairway/sumo", ac, bc, aw, bw);
+    if (base) {
+        print_ratio("ratio baseline/sumo", oc, bc, ow, bw);
+        print_ratio("ratio fairway/baseline", ac, oc, aw, ow);
+    }
+    if (csv && fclose(csv) != 0)
+        perror(argv[1]);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     return system(cmd) == 0 ? 0 : 1;

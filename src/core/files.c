@@ -117,7 +117,7 @@ int fw_csv_split(char *line, char **f, int max)
 }
 
 /* Where the data are, worked out once (fw_data_root in files.h). */
-static char g_root[PATH_MAX], g_net[PATH_MAX];
+static char g_root[PATH_MAX], g_net[PATH_MAX], g_mod[PATH_MAX];
 static pthread_once_t g_located = PTHREAD_ONCE_INIT;
 
 /* Is path inside dir (both resolved)? */
@@ -132,24 +132,27 @@ static bool inside(const char *path, const char *dir)
 
 static void locate(void)
 {
-    char exe[PATH_MAX], bin[PATH_MAX], share[PATH_MAX + 32] = "/usr/share/fairway";
+    /* PREFIX: the directory above the (resolved) executable's own */
+    char exe[PATH_MAX], bin[PATH_MAX], prefix[PATH_MAX] = "/usr", share[PATH_MAX + 32];
     bool have_exe = realpath("/proc/self/exe", exe) != NULL;
     if (have_exe) {
-        /* exe is resolved: PREFIX is the directory above its own */
         memcpy(bin, exe, sizeof bin);
-        char *prefix = dirname(dirname(bin));
-        snprintf(share, sizeof share, "%s/share/fairway", strcmp(prefix, "/") ? prefix : "");
+        const char *p = dirname(dirname(bin));
+        snprintf(prefix, sizeof prefix, "%s", strcmp(p, "/") ? p : "");
     }
+    snprintf(share, sizeof share, "%s/share/fairway", prefix);
     char marker[PATH_MAX + 64];
     snprintf(marker, sizeof marker, "%s/networks/ships.add.xml", share);
     bool installed = access(marker, R_OK) == 0;
     if (!installed && have_exe && inside(exe, FAIRWAY_BUILD_DIR)) {
         snprintf(g_root, sizeof g_root, "%s", FAIRWAY_DATA_DIR);
         snprintf(g_net, sizeof g_net, "%s", FAIRWAY_NET_DIR);
+        snprintf(g_mod, sizeof g_mod, "%s", FAIRWAY_MODULE_DIR);
         return;
     }
     snprintf(g_root, sizeof g_root, "%.*s", PATH_MAX - 1, share);
     snprintf(g_net, sizeof g_net, "%.*s/networks", PATH_MAX - 16, share);
+    snprintf(g_mod, sizeof g_mod, "%.*s/lib/fairway", PATH_MAX - 16, prefix);
 }
 
 const char *fw_data_root(void)
@@ -165,4 +168,10 @@ const char *fw_net_dir(void)
 {
     pthread_once(&g_located, locate);
     return g_net;
+}
+
+const char *fw_module_dir(void)
+{
+    pthread_once(&g_located, locate);
+    return g_mod;
 }

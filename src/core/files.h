@@ -51,6 +51,10 @@ const char *fw_data_root(void);
  * install, the build tree's networks/ for a build-tree program.  Not moved
  * by $FAIRWAY_DATA: the nets belong to the binary that built them. */
 const char *fw_net_dir(void);
+/* Where the loadable modules are (the SUMO back ends, traffic/backend.h):
+ * PREFIX/lib/fairway of an install, the build tree's lib/fairway for a
+ * build-tree program.  Not moved by $FAIRWAY_DATA, like the networks. */
+const char *fw_module_dir(void);
 /* Splits a CSV line (no quoting) in place at its commas, its line end cut:
  * up to max fields into f; returns how many. */
 int fw_csv_split(char *line, char **f, int max);

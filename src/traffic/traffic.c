@@ -342,8 +342,8 @@ static fw_status start(fw_traffic *t, fw_error *err)
     case FW_TRAFFIC_EMBEDDED:
         if (embedded_open)
             return fw_fail(err, FW_ERUN, "an embedded SUMO is already running in this process");
-        t->be = &fw_backend_libsumo;
-        if ((st = fw_traffic_sumo_args(d, "sumo", 0, argv, 48, buf, sizeof buf, err)))
+        if ((st = fw_sumo_backend_load(false, &t->be, err)) ||
+            (st = fw_traffic_sumo_args(d, "sumo", 0, argv, 48, buf, sizeof buf, err)))
             return st;
         /* libsumo only says "Process Error"; SUMO's reasons are in its log,
          * which it flushes when the process ends */
@@ -354,7 +354,8 @@ static fw_status start(fw_traffic *t, fw_error *err)
         return FW_OK;
     case FW_TRAFFIC_REMOTE:
         own_sigpipe();
-        t->be = &fw_backend_libtraci;
+        if ((st = fw_sumo_backend_load(true, &t->be, err)))
+            return st;
         /* what the sumo there must run, written first: the way out of the
          * errors below */
         if ((st = fw_traffic_write_remote_command(d, err)))
@@ -367,7 +368,8 @@ static fw_status start(fw_traffic *t, fw_error *err)
         return fw_traffic_net_check(t->be, d->net_file, where, err);
     case FW_TRAFFIC_GUI:
         own_sigpipe();
-        t->be = &fw_backend_libtraci;
+        if ((st = fw_sumo_backend_load(true, &t->be, err)))
+            return st;
         return start_gui(t, err);
     }
     return fw_fail(err, FW_EINPUT, "unknown SUMO mode");
@@ -407,7 +409,7 @@ void fw_traffic_close(fw_traffic *t)
         gui_screenshot(t);
     if (t->be) {
         t->be->close();
-        if (t->be == &fw_backend_libsumo)
+        if (t->def.mode.kind == FW_TRAFFIC_EMBEDDED)
             embedded_open = false;
     }
     if (t->child > 0 && t->def.mode.gui.keep && !t->dead) {
@@ -419,6 +421,12 @@ void fw_traffic_close(fw_traffic *t)
     fw_free_each(5, t->raw.v, t->ctx.v, t->ships, t->area, t->near);
     fw_idmap_free(&t->ids);
     fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
+}
+
+fw_status fw_traffic_load(fw_traffic_kind kind, fw_error *err)
+{
+    const fw_sumo_backend *be;
+    return fw_sumo_backend_load(kind != FW_TRAFFIC_EMBEDDED, &be, err);
 }
 
 fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error *err)

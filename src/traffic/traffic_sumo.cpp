@@ -2,10 +2,11 @@
 //
 // Compiled twice: plain against libsumo (in-process) and with FW_LIBTRACI
 // against libtraci (socket); the two share the source because both libraries
-// expose the same classes under namespaces libsumo / libtraci.  Each build
-// exports exactly one table (fw_backend_libsumo or fw_backend_libtraci), so
-// their symbols never clash.  Every entry point catches everything: a SUMO
-// exception becomes an fw_status and a message.
+// expose the same classes under namespaces libsumo / libtraci.  Each build is
+// a loadable module (fairway-libsumo.so, fairway-libtraci.so) built with
+// hidden visibility, exporting one function, fw_sumo_backend_table, that
+// returns its table (backend.h).  Every entry point catches everything: a
+// SUMO exception becomes an fw_status and a message.
 #ifdef FW_LIBTRACI
 #include <libsumo/libtraci.h>
 namespace S = libtraci;
@@ -370,8 +371,14 @@ void be_close(void)
 
 } // namespace
 
+// hidden like everything else here: the entry below hands it out
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
     be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_gui_follow,
     be_gui_screenshot, be_net, be_close,
 };
+
+extern "C" __attribute__((visibility("default"))) const fw_sumo_backend *fw_sumo_backend_table(void)
+{
+    return &FW_BACKEND_TABLE;
+}
