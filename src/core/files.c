@@ -83,6 +83,60 @@ fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *e
     return FW_OK;
 }
 
+fw_status fw_file_read(const char *path, char **data, size_t *n, fw_error *err)
+{
+    *data = NULL;
+    *n = 0;
+    FILE *f = fopen(path, "rb");
+    struct stat sb;
+    if (!f || fstat(fileno(f), &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        int e = f ? (errno ? errno : EINVAL) : errno;
+        if (f)
+            fclose(f);
+        return fw_fail(err, FW_ERUN, "cannot read %s: %s", path, strerror(e));
+    }
+    char *buf = malloc((size_t)sb.st_size + 1);
+    size_t got = buf ? fread(buf, 1, (size_t)sb.st_size, f) : 0;
+    bool bad = !buf || got != (size_t)sb.st_size || ferror(f);
+    fclose(f);
+    if (bad) {
+        free(buf);
+        return fw_fail(err, FW_ERUN, "cannot read %s: %s", path,
+                       buf ? "short read" : "out of memory");
+    }
+    buf[got] = '\0';
+    *data = buf;
+    *n = got;
+    return FW_OK;
+}
+
+fw_status fw_file_write(const char *path, const void *data, size_t n, fw_error *err)
+{
+    char tmp[PATH_MAX + 32];
+    if (snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", path) >= (int)sizeof tmp)
+        return fw_fail(err, FW_ERUN, "%s: path too long", path);
+    int fd = mkstemp(tmp);
+    FILE *f = fd >= 0 ? fdopen(fd, "wb") : NULL;
+    if (!f) {
+        int e = errno;
+        if (fd >= 0) {
+            close(fd);
+            remove(tmp);
+        }
+        return fw_fail(err, FW_ERUN, "%s: cannot write: %s", path, strerror(e));
+    }
+    /* mkstemp's 0600 would make the file private: as fopen would have it */
+    mode_t um = umask(0);
+    umask(um);
+    fchmod(fd, 0666 & ~um);
+    if (n > 0 && fwrite(data, 1, n, f) != n) {
+        fclose(f);
+        remove(tmp);
+        return fw_fail(err, FW_ERUN, "%s: write failed", path);
+    }
+    return fw_file_commit(f, tmp, path, err);
+}
+
 fw_status fw_check_parent_dir(const char *opt, const char *path, const char *cannot,
                               fw_error *err)
 {

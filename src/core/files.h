@@ -32,6 +32,13 @@ fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err);
 
 fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err);
 
+/* The whole of path in a malloc'd buffer (*data, NUL-terminated, the caller
+ * frees) of *n bytes; FW_ERUN "cannot read PATH: reason". */
+fw_status fw_file_read(const char *path, char **data, size_t *n, fw_error *err);
+/* n bytes of data as path, written under a temporary name beside it and
+ * renamed (fw_file_commit): path is whole or as it was. */
+fw_status fw_file_write(const char *path, const void *data, size_t n, fw_error *err);
+
 /* Formats a path into buf (size bytes); FW_ERUN naming the start of the path
  * if it does not fit: a path is never silently cut. */
 fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
