@@ -20,11 +20,13 @@ namespace S = libsumo;
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 extern "C" {
@@ -41,6 +43,26 @@ const char *const kRangePoi = "fw_own_range";
 
 std::string g_own;      // own vehicle id
 bool g_subscribed = false;
+// MEASUREMENT ONLY (issue 15): how the range query is read, from
+// $FW_TRAFFIC_READ: 0 ctx6 (6-variable context subscription), 1 ctx3
+// (position, angle, speed; length, width, type by getters once per ship),
+// 2 getters (every ship's position by getter, the range test here).
+int g_read = 0;
+double g_radius = 0.0, g_cx = 0.0, g_cy = 0.0;
+struct Static {
+    std::string type;
+    double length, width;
+};
+std::unordered_map<std::string, Static> g_static;
+
+const Static &static_of(const std::string &id)
+{
+    auto it = g_static.find(id);
+    if (it != g_static.end())
+        return it->second;
+    Static s{S::Vehicle::getTypeID(id), S::Vehicle::getLength(id), S::Vehicle::getWidth(id)};
+    return g_static.emplace(id, s).first->second;
+}
 // Only a started simulation or an open connection may be closed: libtraci's
 // close after a failed init follows a dangling connection.
 bool g_open = false;
@@ -192,9 +214,17 @@ fw_status be_add_own(const char *id, double length, double width, const char *ed
         // the vehicle: a vehicle context is evaluated from its lane, and the own
         // ship is often off the lanes.  Transparent, so sumo-gui shows the ship.
         S::POI::add(kRangePoi, 0.0, 0.0, libsumo::TraCIColor(0, 0, 0, 0), "fw_range");
-        S::POI::subscribeContext(kRangePoi, libsumo::CMD_GET_VEHICLE_VARIABLE, radius,
-                                 {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED,
-                                  libsumo::VAR_LENGTH, libsumo::VAR_WIDTH, libsumo::VAR_TYPE});
+        const char *rd = std::getenv("FW_TRAFFIC_READ");
+        g_read = rd && !std::strcmp(rd, "ctx3") ? 1 : rd && !std::strcmp(rd, "getters") ? 2 : 0;
+        g_radius = radius;
+        g_static.clear();
+        if (g_read == 0)
+            S::POI::subscribeContext(kRangePoi, libsumo::CMD_GET_VEHICLE_VARIABLE, radius,
+                                     {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED,
+                                      libsumo::VAR_LENGTH, libsumo::VAR_WIDTH, libsumo::VAR_TYPE});
+        else if (g_read == 1)
+            S::POI::subscribeContext(kRangePoi, libsumo::CMD_GET_VEHICLE_VARIABLE, radius,
+                                     {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED});
         g_subscribed = true;
     });
 }
@@ -227,6 +257,8 @@ fw_status be_place(const char *id, double fx, double fy, double angle_deg, doubl
         // lanes they keep lane and speed, as the benchmark targets do.
         S::Vehicle::moveToXY(id, "", -1, fx, fy, angle_deg, 2, 1e-3);
         S::POI::setPosition(kRangePoi, cx, cy);
+        g_cx = cx;
+        g_cy = cy;
     });
 }
 
@@ -252,6 +284,33 @@ fw_status be_step(double *time, fw_error *err)
     });
 }
 
+void context_getters(fw_sumo_list *out, fw_status *st, fw_error *err)
+{
+    const std::vector<std::string> ids = S::Vehicle::getIDList();
+    if ((*st = reserve(out, (int)ids.size(), err)) != FW_OK)
+        return;
+    for (const std::string &id : ids) {
+        if (id == g_own)
+            continue;
+        const libsumo::TraCIPosition p = S::Vehicle::getPosition(id);
+        const double dx = p.x - g_cx, dy = p.y - g_cy;
+        if (std::sqrt(dx * dx + dy * dy) > g_radius)
+            continue;
+        fw_sumo_raw *r = &out->v[out->n++];
+        copy_id(r->id, sizeof r->id, id);
+        r->x = p.x;
+        r->y = p.y;
+        r->angle_deg = S::Vehicle::getAngle(id);
+        r->speed = S::Vehicle::getSpeed(id);
+        const Static &c = static_of(id);
+        r->length = c.length;
+        r->width = c.width;
+        copy_id(r->type, sizeof r->type, c.type);
+    }
+    std::sort(out->v, out->v + out->n,
+              [](const fw_sumo_raw &a, const fw_sumo_raw &b) { return std::strcmp(a.id, b.id) < 0; });
+}
+
 fw_status be_context(fw_sumo_list *out, fw_error *err)
 {
     out->n = 0;
@@ -260,6 +319,10 @@ fw_status be_context(fw_sumo_list *out, fw_error *err)
                        FW_BACKEND_NAME);
     fw_status st = FW_OK;
     fw_status gst = guarded("range query failed", err, [&] {
+        if (g_read == 2) {
+            context_getters(out, &st, err);
+            return;
+        }
         const libsumo::SubscriptionResults res =
             S::POI::getContextSubscriptionResults(kRangePoi);
         if ((st = reserve(out, (int)res.size(), err)) != FW_OK)
@@ -279,6 +342,13 @@ fw_status be_context(fw_sumo_list *out, fw_error *err)
             r->y = pos->y;
             r->angle_deg = as_double(v, libsumo::VAR_ANGLE);
             r->speed = as_double(v, libsumo::VAR_SPEED);
+            if (g_read == 1) {
+                const Static &c = static_of(kv.first);
+                r->length = c.length;
+                r->width = c.width;
+                copy_id(r->type, sizeof r->type, c.type);
+                continue;
+            }
             r->length = as_double(v, libsumo::VAR_LENGTH);
             r->width = as_double(v, libsumo::VAR_WIDTH);
             auto tit = v.find(libsumo::VAR_TYPE);
