@@ -32,7 +32,7 @@ struct fw_traffic {
     bool placed, dead;
     double time;
     long steps;
-    double query_radius;   /* m, of the context subscription */
+    double query_radius;   /* m, of the range query */
     double own_x, own_y, own_heading, own_speed; /* as last placed: the query's centre */
     fw_sumo_list raw;      /* fw_traffic_all */
     fw_sumo_list ctx;      /* the context results of step ctx_step */
@@ -465,7 +465,7 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
         return fw_fail(err, FW_EINPUT, "SUMO's step length is %g s, the controller's %g s",
                        dt, def->step);
     }
-    /* one subscription serves both queries */
+    /* one range query serves all the queries */
     t->query_radius = def->radius;
     if (def->area_radius > 0.0)
         t->query_radius = fmax(def->radius, def->area_radius + kHalfLengthMax);
@@ -668,7 +668,7 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n, fw_e
         st = room(&t->ships, &t->ships_cap, t->ctx.n, err);
     if (st)
         return st;
-    /* a subscription widened for the area holds more than SUMO's range test
+    /* a range query widened for the area holds more than SUMO's range test
      * would give: apply that test (front bumper within radius) here */
     bool filter = t->query_radius > t->def.radius;
     int m = 0;

@@ -42,13 +42,15 @@ const char *const kOwnRoute = "fw_own_route";
 const char *const kRangePoi = "fw_own_range";
 
 std::string g_own;      // own vehicle id
-bool g_subscribed = false;
-// MEASUREMENT ONLY (issue 15): how the range query is read, from
-// $FW_TRAFFIC_READ: 0 ctx6 (6-variable context subscription), 1 ctx3
-// (position, angle, speed; length, width, type by getters once per ship),
-// 2 getters (every ship's position by getter, the range test here).
-int g_read = 0;
+bool g_subscribed = false; // the range query is set up (the own ship added)
+// The range query: ships whose front bumper is within g_radius of (g_cx,
+// g_cy), the own ship's hull centre as last placed.
 double g_radius = 0.0, g_cx = 0.0, g_cy = 0.0;
+
+#ifndef FW_LIBTRACI
+// What never changes for a ship, asked of SUMO once: its type, length and
+// width.  Forgotten when the ship leaves (arrives or is removed), so an id
+// used again is asked again.
 struct Static {
     std::string type;
     double length, width;
@@ -63,10 +65,12 @@ const Static &static_of(const std::string &id)
     Static s{S::Vehicle::getTypeID(id), S::Vehicle::getLength(id), S::Vehicle::getWidth(id)};
     return g_static.emplace(id, s).first->second;
 }
+#endif
 // Only a started simulation or an open connection may be closed: libtraci's
 // close after a failed init follows a dangling connection.
 bool g_open = false;
 
+#ifdef FW_LIBTRACI
 // A variable subscription result as double / string, whatever the back end
 // stored it as.
 double as_double(const libsumo::TraCIResults &r, int var)
@@ -79,6 +83,7 @@ double as_double(const libsumo::TraCIResults &r, int var)
         throw libsumo::TraCIException("subscription variable " + std::to_string(var) + " is not a number");
     return d->value;
 }
+#endif
 
 fw_status fail(fw_error *err, fw_status st, const char *what, const char *detail)
 {
@@ -210,21 +215,21 @@ fw_status be_add_own(const char *id, double length, double width, const char *ed
         S::VehicleType::setColor(kOwnType, libsumo::TraCIColor(255, 80, 0, 255));
         S::Route::add(kOwnRoute, {edge && edge[0] ? std::string(edge) : ship_edge()});
         S::Vehicle::add(g_own, kOwnRoute, kOwnType, "now");
-        // The range query hangs on a POI at the own ship's hull centre, not on
+        // The range query's centre is a POI at the own ship's hull centre, not
         // the vehicle: a vehicle context is evaluated from its lane, and the own
-        // ship is often off the lanes.  Transparent, so sumo-gui shows the ship.
+        // ship is often off the lanes.  Transparent, so sumo-gui shows the ship;
+        // kept in libsumo too, so that both back ends simulate the same objects.
         S::POI::add(kRangePoi, 0.0, 0.0, libsumo::TraCIColor(0, 0, 0, 0), "fw_range");
-        const char *rd = std::getenv("FW_TRAFFIC_READ");
-        g_read = rd && !std::strcmp(rd, "ctx3") ? 1 : rd && !std::strcmp(rd, "getters") ? 2 : 0;
         g_radius = radius;
+#ifdef FW_LIBTRACI
+        // over a socket, one subscription (answered with every step) beats a
+        // round trip per ship and variable
+        S::POI::subscribeContext(kRangePoi, libsumo::CMD_GET_VEHICLE_VARIABLE, radius,
+                                 {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED,
+                                  libsumo::VAR_LENGTH, libsumo::VAR_WIDTH, libsumo::VAR_TYPE});
+#else
         g_static.clear();
-        if (g_read == 0)
-            S::POI::subscribeContext(kRangePoi, libsumo::CMD_GET_VEHICLE_VARIABLE, radius,
-                                     {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED,
-                                      libsumo::VAR_LENGTH, libsumo::VAR_WIDTH, libsumo::VAR_TYPE});
-        else if (g_read == 1)
-            S::POI::subscribeContext(kRangePoi, libsumo::CMD_GET_VEHICLE_VARIABLE, radius,
-                                     {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED});
+#endif
         g_subscribed = true;
     });
 }
@@ -273,7 +278,12 @@ fw_status be_set_speed(const char *id, double speed, fw_error *err)
 
 fw_status be_remove(const char *id, fw_error *err)
 {
-    return guarded("cannot remove a ship", err, [&] { S::Vehicle::remove(id); });
+    return guarded("cannot remove a ship", err, [&] {
+        S::Vehicle::remove(id);
+#ifndef FW_LIBTRACI
+        g_static.erase(id);
+#endif
+    });
 }
 
 fw_status be_step(double *time, fw_error *err)
@@ -281,10 +291,51 @@ fw_status be_step(double *time, fw_error *err)
     return guarded("step failed", err, [&] {
         S::Simulation::step();
         *time = S::Simulation::getTime();
+#ifndef FW_LIBTRACI
+        for (const std::string &id : S::Simulation::getArrivedIDList())
+            g_static.erase(id);
+#endif
     });
 }
 
-void context_getters(fw_sumo_list *out, fw_status *st, fw_error *err)
+#ifdef FW_LIBTRACI
+// The subscription's results: SUMO's own range test, made at the step.
+void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
+{
+    const libsumo::SubscriptionResults res = S::POI::getContextSubscriptionResults(kRangePoi);
+    if ((*st = reserve(out, (int)res.size(), err)) != FW_OK)
+        return;
+    for (const auto &kv : res) {
+        if (kv.first == g_own)
+            continue;
+        fw_sumo_raw *r = &out->v[out->n++];
+        const libsumo::TraCIResults &v = kv.second;
+        copy_id(r->id, sizeof r->id, kv.first);
+        auto pit = v.find(libsumo::VAR_POSITION);
+        auto *pos = pit == v.end() ? nullptr
+                    : dynamic_cast<const libsumo::TraCIPosition *>(pit->second.get());
+        if (!pos)
+            throw libsumo::TraCIException("subscription result without a position");
+        r->x = pos->x;
+        r->y = pos->y;
+        r->angle_deg = as_double(v, libsumo::VAR_ANGLE);
+        r->speed = as_double(v, libsumo::VAR_SPEED);
+        r->length = as_double(v, libsumo::VAR_LENGTH);
+        r->width = as_double(v, libsumo::VAR_WIDTH);
+        auto tit = v.find(libsumo::VAR_TYPE);
+        r->type[0] = '\0';
+        if (tit != v.end())
+            copy_id(r->type, sizeof r->type, tit->second->getString());
+    }
+}
+#else
+// In-process, every ship's position by getter and the range test here cost
+// less than SUMO evaluating a context subscription each step (measured,
+// bench/results/traffic_read.txt).  The test is SUMO's own for a context
+// (libsumo Helper: distance2D(centre, position) <= range, the square root of
+// the summed squares), the order the subscription's (a map by id), so the
+// ships and their order are the subscription's exactly.
+void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
 {
     const std::vector<std::string> ids = S::Vehicle::getIDList();
     if ((*st = reserve(out, (int)ids.size(), err)) != FW_OK)
@@ -307,9 +358,11 @@ void context_getters(fw_sumo_list *out, fw_status *st, fw_error *err)
         r->width = c.width;
         copy_id(r->type, sizeof r->type, c.type);
     }
-    std::sort(out->v, out->v + out->n,
-              [](const fw_sumo_raw &a, const fw_sumo_raw &b) { return std::strcmp(a.id, b.id) < 0; });
+    std::sort(out->v, out->v + out->n, [](const fw_sumo_raw &a, const fw_sumo_raw &b) {
+        return std::strcmp(a.id, b.id) < 0;
+    });
 }
+#endif
 
 fw_status be_context(fw_sumo_list *out, fw_error *err)
 {
@@ -318,45 +371,7 @@ fw_status be_context(fw_sumo_list *out, fw_error *err)
         return fw_fail(err, FW_ERUN, "SUMO (%s): no range query (own ship not added)",
                        FW_BACKEND_NAME);
     fw_status st = FW_OK;
-    fw_status gst = guarded("range query failed", err, [&] {
-        if (g_read == 2) {
-            context_getters(out, &st, err);
-            return;
-        }
-        const libsumo::SubscriptionResults res =
-            S::POI::getContextSubscriptionResults(kRangePoi);
-        if ((st = reserve(out, (int)res.size(), err)) != FW_OK)
-            return;
-        for (const auto &kv : res) {
-            if (kv.first == g_own)
-                continue;
-            fw_sumo_raw *r = &out->v[out->n++];
-            const libsumo::TraCIResults &v = kv.second;
-            copy_id(r->id, sizeof r->id, kv.first);
-            auto pit = v.find(libsumo::VAR_POSITION);
-            auto *pos = pit == v.end() ? nullptr
-                        : dynamic_cast<const libsumo::TraCIPosition *>(pit->second.get());
-            if (!pos)
-                throw libsumo::TraCIException("subscription result without a position");
-            r->x = pos->x;
-            r->y = pos->y;
-            r->angle_deg = as_double(v, libsumo::VAR_ANGLE);
-            r->speed = as_double(v, libsumo::VAR_SPEED);
-            if (g_read == 1) {
-                const Static &c = static_of(kv.first);
-                r->length = c.length;
-                r->width = c.width;
-                copy_id(r->type, sizeof r->type, c.type);
-                continue;
-            }
-            r->length = as_double(v, libsumo::VAR_LENGTH);
-            r->width = as_double(v, libsumo::VAR_WIDTH);
-            auto tit = v.find(libsumo::VAR_TYPE);
-            r->type[0] = '\0';
-            if (tit != v.end())
-                copy_id(r->type, sizeof r->type, tit->second->getString());
-        }
-    });
+    fw_status gst = guarded("range query failed", err, [&] { read_context(out, &st, err); });
     return gst ? gst : st;
 }
 
