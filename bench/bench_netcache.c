@@ -22,21 +22,11 @@ enum { RUNS = 7 };
 int main(int argc, char **argv)
 {
     char fairway[PATH_MAX + 16], scn[1200], out[128], cache[128];
-    if (argc > 3 || (argc == 2 && strcmp(argv[1], "--help") == 0)) {
-        fprintf(stderr, "usage: bench_netcache [CSV_FILE|- [FAIRWAY]]\n");
-        return 2;
-    }
-    if (argc > 2)
-        snprintf(fairway, sizeof fairway, "%s", argv[2]);
-    else if (bench_proc_fairway(fairway, sizeof fairway)) {
-        fprintf(stderr, "bench_netcache: cannot find the build tree's fairway\n");
-        return 1;
-    }
-    FILE *csv = argc > 1 && strcmp(argv[1], "-") ? fopen(argv[1], "w") : NULL;
-    if (argc > 1 && strcmp(argv[1], "-") && !csv) {
-        perror(argv[1]);
-        return 1;
-    }
+    FILE *csv;
+    int st = bench_proc_args(argc, argv, 2, "bench_netcache [CSV_FILE|- [FAIRWAY]]", fairway,
+                             sizeof fairway, &csv);
+    if (st >= 0)
+        return st;
     char dir[] = "/tmp/bench_netcache.XXXXXX";
     if (!mkdtemp(dir)) {
         perror("bench_netcache: mkdtemp");

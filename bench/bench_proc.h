@@ -58,4 +58,29 @@ static inline int bench_proc_fairway(char *out, size_t n)
     return (size_t)snprintf(out, n, "%s/../fairway", self) < n ? 0 : -1;
 }
 
+/* The arguments of a process benchmark, `NAME [CSV_FILE|- [FAIRWAY ...]]`
+ * with at most max_args of them: *csv opened (NULL for none or "-"),
+ * fairway argv[2] or the build tree's.  -1 to go on, else the exit code
+ * (usage printed: 2; a failure: 1). */
+static inline int bench_proc_args(int argc, char **argv, int max_args, const char *usage,
+                                  char *fairway, size_t n, FILE **csv)
+{
+    *csv = NULL;
+    if (argc > max_args + 1 || (argc == 2 && strcmp(argv[1], "--help") == 0)) {
+        fprintf(stderr, "usage: %s\n", usage);
+        return 2;
+    }
+    if (argc > 2)
+        snprintf(fairway, n, "%s", argv[2]);
+    else if (bench_proc_fairway(fairway, n)) {
+        fprintf(stderr, "%s: cannot find the build tree's fairway\n", argv[0]);
+        return 1;
+    }
+    if (argc > 1 && strcmp(argv[1], "-") && !(*csv = fopen(argv[1], "w"))) {
+        perror(argv[1]);
+        return 1;
+    }
+    return -1;
+}
+
 #endif
