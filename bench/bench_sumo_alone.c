@@ -6,66 +6,139 @@
  * ours in it: no own ship, no subscription, no reactions.
  *
  * Whole processes, start-up included (that is what a study pays per run):
- * RUNS pairs, A and B in turn, CPU (user + system, the kernel's accounting
- * of the reaped child) and wall.  Printed: the medians and the median of the
- * pairwise ratios.  Results: bench/results/sumo_alone.txt.
+ * RUNS rounds, each running A, (A0,) B in turn, CPU (user + system, the
+ * kernel's accounting of the reaped child) and wall.  Printed: the medians,
+ * the median of the pairwise ratios and their range (the spread).  A0, if
+ * given, is a baseline fairway (say the build of the commit before a change)
+ * measured in the same rounds: A/A0 says what the change did, A0/B what the
+ * coupling cost before it.  L, "libsumo alone", is SUMO through fairway's
+ * libsumo back end and nothing else (this program re-run as
+ * `bench_sumo_alone --libsumo-only SUMO_ARGS...`: the module loaded, the same
+ * simulation started and stepped the hour, no own ship, no reads): L - B is
+ * what loading libsumo costs a process, A - L what fairway adds; L's split
+ * (load, start, steps) is printed too.  CSV_FILE gets one row per round and
+ * program.  Results: bench/results/sumo_alone.csv.
  *
- *     build/bench/bench_sumo_alone [FAIRWAY]    (default: the fairway beside
- *                                                this program's directory) */
-#include <errno.h>
+ *     build/bench/bench_sumo_alone [CSV_FILE|- [FAIRWAY [BASELINE_FAIRWAY]]]
+ *     (default FAIRWAY: the build tree's; the baseline needs FAIRWAY_DATA
+ *     when it is not a build-tree or installed program) */
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
-#include <sys/time.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "bench.h"
+#include "bench_proc.h"
 #include "core/files.h"
-#include "core/spawn.h"
+#include "traffic/backend.h"
 
-enum { RUNS = 5 };
+enum { RUNS = 7 };
 
-/* Runs argv to the end: CPU and wall seconds; exits on failure. */
-static void timed(const char *const *argv, double *cpu, double *wall)
+static double cpu_self(void)
 {
-    fw_error err = {0};
-    pid_t pid;
-    double t0 = bench_now();
-    if (fw_spawn(&(fw_spawn_def){.argv = argv}, &pid, &err)) {
-        fprintf(stderr, "bench_sumo_alone: %s\n", err.msg);
-        exit(1);
-    }
-    int status;
     struct rusage ru;
-    while (wait4(pid, &status, 0, &ru) < 0 && errno == EINTR)
-        ;
-    *wall = bench_now() - t0;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        fprintf(stderr, "bench_sumo_alone: %s failed (status %d)\n", argv[0], status);
+    getrusage(RUSAGE_SELF, &ru);
+    return (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+           1e-6 * (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+}
+
+/* L: the libsumo back end alone on sumo's argv, one simulated hour; prints
+ * CPU seconds "start-up,load,start,steps" (start-up: before main). */
+static int libsumo_only(const char *const *argv)
+{
+    double t0 = cpu_self();
+    const fw_sumo_backend *be;
+    fw_error err = {0};
+    double t1 = 0, t2 = 0, tm;
+    if (fw_sumo_backend_load(false, &be, &err) || (t1 = cpu_self(), be->start(argv, &err)))
+        goto fail;
+    t2 = cpu_self();
+    for (int k = 0; k < 3600; k++)
+        if (be->step(&tm, &err))
+            goto fail;
+    double t3 = cpu_self();
+    be->close();
+    printf("%.4f,%.4f,%.4f,%.4f\n", t0, t1 - t0, t2 - t1, t3 - t2);
+    return 0;
+fail:
+    fprintf(stderr, "bench_sumo_alone --libsumo-only: %s\n", err.msg);
+    return 1;
+}
+
+/* The split libsumo_only printed into file. */
+static void read_split(const char *file, double split[4])
+{
+    FILE *f = fopen(file, "r");
+    if (!f || fscanf(f, "%lf,%lf,%lf,%lf", &split[0], &split[1], &split[2], &split[3]) != 4) {
+        fprintf(stderr, "bench_sumo_alone: no split in %s\n", file);
         exit(1);
     }
-    *cpu = (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
-           1e-6 * (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+    fclose(f);
+}
+
+/* Median of the n ratios a[k] / b[k], and their range. */
+static double ratio_median(const double *a, const double *b, int n, double *lo, double *hi)
+{
+    double r[RUNS];
+    for (int k = 0; k < n; k++)
+        r[k] = a[k] / b[k];
+    double m = bench_median(r, n); /* sorts r */
+    *lo = r[0], *hi = r[n - 1];
+    return m;
+}
+
+static void print_ratio(const char *what, const double *ac, const double *bc, const double *aw,
+                        const double *bw)
+{
+    double lo, hi, wlo, whi;
+    double c = ratio_median(ac, bc, RUNS, &lo, &hi), w = ratio_median(aw, bw, RUNS, &wlo, &whi);
+    printf("%-22s %10.2f %10.2f   cpu range %.2f-%.2f\n", what, c, w, lo, hi);
+}
+
+static void print_median(const char *what, const double *cpu, const double *wall)
+{
+    double t[RUNS], u[RUNS];
+    memcpy(t, cpu, sizeof t), memcpy(u, wall, sizeof u);
+    printf("%-22s %10.3f %10.3f\n", what, bench_median(t, RUNS), bench_median(u, RUNS));
+}
+
+/* The medians and ratios of A (ac, aw), A0 (oc, ow; oc NULL: none), B and L. */
+static void report(const double *ac, const double *aw, const double *oc, const double *ow,
+                   const double *bc, const double *bw, const double *lc, const double *lw,
+                   double split[4][RUNS])
+{
+    printf("%-22s %10s %10s\n", "", "cpu_s", "wall_s");
+    print_median("fairway run", ac, aw);
+    if (oc)
+        print_median("baseline run", oc, ow);
+    print_median("sumo alone", bc, bw);
+    print_median("libsumo alone", lc, lw);
+    printf("  libsumo alone, CPU: before main %.3f, module load %.3f, start %.3f, steps %.3f\n",
+           bench_median(split[0], RUNS), bench_median(split[1], RUNS),
+           bench_median(split[2], RUNS), bench_median(split[3], RUNS));
+    print_ratio("ratio fairway/sumo", ac, bc, aw, bw);
+    print_ratio("ratio libsumo/sumo", lc, bc, lw, bw);
+    print_ratio("ratio fairway/libsumo", ac, lc, aw, lw);
+    if (oc) {
+        print_ratio("ratio baseline/sumo", oc, bc, ow, bw);
+        print_ratio("ratio fairway/baseline", ac, oc, aw, ow);
+    }
 }
 
 int main(int argc, char **argv)
 {
-    char fairway[PATH_MAX + 16], self[PATH_MAX];
-    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (argc > 2 || n <= 0) {
-        fprintf(stderr, "usage: bench_sumo_alone [FAIRWAY]\n");
-        return 2;
-    }
-    self[n] = '\0';
-    char *slash = strrchr(self, '/');
-    if (slash)
-        *slash = '\0';
-    snprintf(fairway, sizeof fairway, "%s", argc == 2 ? argv[1] : self);
-    if (argc < 2)
-        strncat(fairway, "/../fairway", sizeof fairway - strlen(fairway) - 1);
+    char fairway[PATH_MAX + 16];
+    if (argc > 1 && strcmp(argv[1], "--libsumo-only") == 0)
+        return libsumo_only((const char *const *)argv + 2);
+    FILE *csv;
+    int rc = bench_proc_args(argc, argv, 3,
+                             "bench_sumo_alone [CSV_FILE|- [FAIRWAY [BASELINE_FAIRWAY]]]", fairway,
+                             sizeof fairway, &csv);
+    if (rc >= 0)
+        return rc;
+    const char *base = argc > 3 ? argv[3] : NULL;
     char dir[] = "/tmp/bench_sumo_alone.XXXXXX";
     if (!mkdtemp(dir)) {
         perror("bench_sumo_alone: mkdtemp");
@@ -81,25 +154,53 @@ int main(int argc, char **argv)
                           "--collision.action", "warn", "--lanechange.duration", "2800",
                           "--no-step-log", "true", "--duration-log.disable", "true", "--end",
                           "3600", "--log", "/dev/null", NULL};
-    double ac[RUNS], aw[RUNS], bc[RUNS], bw[RUNS], rc[RUNS], rw[RUNS];
+    /* L's argv: this program, the mode, then sumo's own */
+    char self[PATH_MAX], split_file[128];
+    ssize_t sn = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (sn <= 0) {
+        perror("bench_sumo_alone: /proc/self/exe");
+        return 1;
+    }
+    self[sn] = '\0';
+    const char *lib[40] = {self, "--libsumo-only"};
+    for (int i = 0; sumo[i]; i++)
+        lib[2 + i] = sumo[i];
+    snprintf(split_file, sizeof split_file, "%s/split.txt", dir);
+    double ac[RUNS], aw[RUNS], oc[RUNS], ow[RUNS], bc[RUNS], bw[RUNS], lc[RUNS], lw[RUNS];
+    double split[4][RUNS];
+    if (csv)
+        fprintf(csv, "round,program,cpu_s,wall_s\n");
     for (int k = 0; k <= RUNS; k++) {
-        /* run 0 is the warm-up, and writes the route file sumo replays */
+        /* round 0 is the warm-up, and writes the route file sumo replays */
         snprintf(out, sizeof out, "%s/r%d", dir, k);
         const char *run[] = {fairway, "run", scn, "--out", out, NULL};
         double c, w;
-        timed(run, &c, &w);
+        bench_proc_run(run, NULL, &c, &w);
         if (k == 0)
             continue;
         ac[k - 1] = c, aw[k - 1] = w;
-        timed(sumo, &bc[k - 1], &bw[k - 1]);
-        rc[k - 1] = ac[k - 1] / bc[k - 1];
-        rw[k - 1] = aw[k - 1] / bw[k - 1];
+        if (base) {
+            snprintf(out, sizeof out, "%s/b%d", dir, k);
+            const char *run0[] = {base, "run", scn, "--out", out, NULL};
+            bench_proc_run(run0, NULL, &oc[k - 1], &ow[k - 1]);
+        }
+        bench_proc_run(sumo, NULL, &bc[k - 1], &bw[k - 1]);
+        bench_proc_run(lib, split_file, &lc[k - 1], &lw[k - 1]);
+        double sp[4];
+        read_split(split_file, sp);
+        for (int j = 0; j < 4; j++)
+            split[j][k - 1] = sp[j];
+        if (csv) {
+            fprintf(csv, "%d,fairway,%.4f,%.4f\n", k, ac[k - 1], aw[k - 1]);
+            if (base)
+                fprintf(csv, "%d,baseline,%.4f,%.4f\n", k, oc[k - 1], ow[k - 1]);
+            fprintf(csv, "%d,sumo,%.4f,%.4f\n", k, bc[k - 1], bw[k - 1]);
+            fprintf(csv, "%d,libsumo,%.4f,%.4f\n", k, lc[k - 1], lw[k - 1]);
+        }
     }
-    printf("%-22s %10s %10s\n", "", "cpu_s", "wall_s");
-    printf("%-22s %10.3f %10.3f\n", "fairway run", bench_median(ac, RUNS), bench_median(aw, RUNS));
-    printf("%-22s %10.3f %10.3f\n", "sumo alone", bench_median(bc, RUNS), bench_median(bw, RUNS));
-    printf("%-22s %10.2f %10.2f\n", "ratio (pairwise)", bench_median(rc, RUNS),
-           bench_median(rw, RUNS));
+    report(ac, aw, base ? oc : NULL, ow, bc, bw, lc, lw, split);
+    if (csv && fclose(csv) != 0)
+        perror(argv[1]);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     return system(cmd) == 0 ? 0 : 1;

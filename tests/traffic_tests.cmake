@@ -29,6 +29,15 @@ endforeach()
 fw_script_test(traffic_bad_inputs 0 "bad traffic input refused" traffic_bad_inputs.sh)
 set_tests_properties(traffic_bad_inputs PROPERTIES ENVIRONMENT "${fw_lsan}")
 
+# SUMO is a loadable module (traffic/backend.h): the commands that do not
+# simulate never map it, a simulating run maps it once.
+fw_script_test(sumo_loading 0 "ok: SUMO loaded only to simulate, once" sumo_loading.sh)
+set_tests_properties(sumo_loading PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
+
+# Networks built at run time are kept by their inputs' content (netcache.h).
+fw_script_test(netcache 0 "ok: networks reused byte for byte" netcache.sh)
+set_tests_properties(netcache PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 300)
+
 # Recorded tracks as a traffic source (traffic/source_track.h), and a study's
 # worst encounters exported as scenarios that replay them (fairway worst).
 fw_test(test_track test_track.c)

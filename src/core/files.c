@@ -83,6 +83,60 @@ fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *e
     return FW_OK;
 }
 
+fw_status fw_file_read(const char *path, char **data, size_t *n, fw_error *err)
+{
+    *data = NULL;
+    *n = 0;
+    FILE *f = fopen(path, "rb");
+    struct stat sb;
+    if (!f || fstat(fileno(f), &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        int e = f ? (errno ? errno : EINVAL) : errno;
+        if (f)
+            fclose(f);
+        return fw_fail(err, FW_ERUN, "cannot read %s: %s", path, strerror(e));
+    }
+    char *buf = malloc((size_t)sb.st_size + 1);
+    size_t got = buf ? fread(buf, 1, (size_t)sb.st_size, f) : 0;
+    bool bad = !buf || got != (size_t)sb.st_size || ferror(f);
+    fclose(f);
+    if (bad) {
+        free(buf);
+        return fw_fail(err, FW_ERUN, "cannot read %s: %s", path,
+                       buf ? "short read" : "out of memory");
+    }
+    buf[got] = '\0';
+    *data = buf;
+    *n = got;
+    return FW_OK;
+}
+
+fw_status fw_file_write(const char *path, const void *data, size_t n, fw_error *err)
+{
+    char tmp[PATH_MAX + 32];
+    if (snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", path) >= (int)sizeof tmp)
+        return fw_fail(err, FW_ERUN, "%s: path too long", path);
+    int fd = mkstemp(tmp);
+    FILE *f = fd >= 0 ? fdopen(fd, "wb") : NULL;
+    if (!f) {
+        int e = errno;
+        if (fd >= 0) {
+            close(fd);
+            remove(tmp);
+        }
+        return fw_fail(err, FW_ERUN, "%s: cannot write: %s", path, strerror(e));
+    }
+    /* mkstemp's 0600 would make the file private: as fopen would have it */
+    mode_t um = umask(0);
+    umask(um);
+    fchmod(fd, 0666 & ~um);
+    if (n > 0 && fwrite(data, 1, n, f) != n) {
+        fclose(f);
+        remove(tmp);
+        return fw_fail(err, FW_ERUN, "%s: write failed", path);
+    }
+    return fw_file_commit(f, tmp, path, err);
+}
+
 fw_status fw_check_parent_dir(const char *opt, const char *path, const char *cannot,
                               fw_error *err)
 {
@@ -153,7 +207,7 @@ int fw_csv_split(char *line, char **f, int max)
 }
 
 /* Where the data are, worked out once (fw_data_root in files.h). */
-static char g_root[PATH_MAX], g_net[PATH_MAX];
+static char g_root[PATH_MAX], g_net[PATH_MAX], g_mod[PATH_MAX];
 static pthread_once_t g_located = PTHREAD_ONCE_INIT;
 
 /* Is path inside dir (both resolved)? */
@@ -168,24 +222,27 @@ static bool inside(const char *path, const char *dir)
 
 static void locate(void)
 {
-    char exe[PATH_MAX], bin[PATH_MAX], share[PATH_MAX + 32] = "/usr/share/fairway";
+    /* PREFIX: the directory above the (resolved) executable's own */
+    char exe[PATH_MAX], bin[PATH_MAX], prefix[PATH_MAX] = "/usr", share[PATH_MAX + 32];
     bool have_exe = realpath("/proc/self/exe", exe) != NULL;
     if (have_exe) {
-        /* exe is resolved: PREFIX is the directory above its own */
         memcpy(bin, exe, sizeof bin);
-        char *prefix = dirname(dirname(bin));
-        snprintf(share, sizeof share, "%s/share/fairway", strcmp(prefix, "/") ? prefix : "");
+        const char *p = dirname(dirname(bin));
+        snprintf(prefix, sizeof prefix, "%s", strcmp(p, "/") ? p : "");
     }
+    snprintf(share, sizeof share, "%s/share/fairway", prefix);
     char marker[PATH_MAX + 64];
     snprintf(marker, sizeof marker, "%s/networks/ships.add.xml", share);
     bool installed = access(marker, R_OK) == 0;
     if (!installed && have_exe && inside(exe, FAIRWAY_BUILD_DIR)) {
         snprintf(g_root, sizeof g_root, "%s", FAIRWAY_DATA_DIR);
         snprintf(g_net, sizeof g_net, "%s", FAIRWAY_NET_DIR);
+        snprintf(g_mod, sizeof g_mod, "%s", FAIRWAY_MODULE_DIR);
         return;
     }
     snprintf(g_root, sizeof g_root, "%.*s", PATH_MAX - 1, share);
     snprintf(g_net, sizeof g_net, "%.*s/networks", PATH_MAX - 16, share);
+    snprintf(g_mod, sizeof g_mod, "%.*s/lib/fairway", PATH_MAX - 16, prefix);
 }
 
 const char *fw_data_root(void)
@@ -201,4 +258,10 @@ const char *fw_net_dir(void)
 {
     pthread_once(&g_located, locate);
     return g_net;
+}
+
+const char *fw_module_dir(void)
+{
+    pthread_once(&g_located, locate);
+    return g_mod;
 }

@@ -32,6 +32,13 @@ fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err);
  * it was. */
 fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err);
 
+/* The whole of path in a malloc'd buffer (*data, NUL-terminated, the caller
+ * frees) of *n bytes; FW_ERUN "cannot read PATH: reason". */
+fw_status fw_file_read(const char *path, char **data, size_t *n, fw_error *err);
+/* n bytes of data as path, written under a temporary name beside it and
+ * renamed (fw_file_commit): path is whole or as it was. */
+fw_status fw_file_write(const char *path, const void *data, size_t n, fw_error *err);
+
 /* Formats a path into buf (size bytes); FW_ERUN naming the start of the path
  * if it does not fit: a path is never silently cut. */
 fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
@@ -55,6 +62,10 @@ const char *fw_net_dir(void);
  * length in *len (may be NULL).  FW_EINPUT "PATH: cannot read: reason". */
 fw_status fw_read_text(const char *path, char **text, size_t *len, fw_error *err);
 
+/* Where the loadable modules are (the SUMO back ends, traffic/backend.h):
+ * PREFIX/lib/fairway of an install, the build tree's lib/fairway for a
+ * build-tree program.  Not moved by $FAIRWAY_DATA, like the networks. */
+const char *fw_module_dir(void);
 /* Splits a CSV line (no quoting) in place at its commas, its line end cut:
  * up to max fields into f; returns how many. */
 int fw_csv_split(char *line, char **f, int max);

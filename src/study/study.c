@@ -12,16 +12,6 @@
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
 
-uint64_t fw_fnv1a(uint64_t h, const void *data, size_t n)
-{
-    const unsigned char *p = data;
-    for (size_t i = 0; i < n; i++) {
-        h ^= p[i];
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
-
 /* splitmix64: a well-mixed value per (seed, stream, replication), the same on
  * every machine, so a replication's traffic never depends on who runs it. */
 static uint64_t mix(uint64_t x)

@@ -36,6 +36,7 @@
 #include <stdint.h>
 
 #include "core/error.h"
+#include "core/hash.h"
 #include "scenario/scenario.h"
 
 #define FW_STUDY_MAX_LEVELS 32
@@ -100,9 +101,5 @@ fw_study_run fw_study_run_at(const fw_study *s, int run_id);
 /* The scenario of one run: the base with the run's domain size and shape,
  * density, behaviour, seed, duration and start, named "<study>-<run_id>". */
 void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *out);
-
-/* 64-bit FNV-1a, chained through h (start with FW_FNV_INIT). */
-#define FW_FNV_INIT 0xcbf29ce484222325ull
-uint64_t fw_fnv1a(uint64_t h, const void *data, size_t n);
 
 #endif

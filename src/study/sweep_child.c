@@ -123,6 +123,10 @@ fw_status fw_sweep_spawn(const fw_study *s, int run_id, const char *work_dir, bo
     if (pipe(fds) != 0)
         return fw_fail(err, FW_ERUN, "pipe: %s", strerror(errno));
     pid_t parent = getpid();
+    /* SUMO loaded once, here, and inherited by every run's process (a
+     * process loading it pays 0.2 s of CPU); a failure to load it is the
+     * run's to report, so it is not one here */
+    fw_traffic_load(mode->kind, NULL);
     fflush(NULL);
     pid_t pid = fork();
     if (pid < 0) {

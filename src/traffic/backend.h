@@ -1,5 +1,10 @@
 /* backend.h - the table of operations traffic_sumo.cpp provides, once per SUMO
- * library (fw_backend_libsumo, fw_backend_libtraci).  Internal to src/traffic.
+ * library.  Internal to src/traffic.
+ *
+ * Each compilation of traffic_sumo.cpp is a loadable module of its own
+ * (fairway-libsumo.so, fairway-libtraci.so in fw_module_dir()), opened on
+ * first use by fw_sumo_backend_load: a process that never simulates never
+ * pays for linking SUMO's few hundred shared libraries.
  *
  * Values cross this boundary raw, in SUMO's own terms (front bumper, degrees);
  * traffic.c converts them.  Each function returns an fw_status and fills err;
@@ -79,7 +84,14 @@ fw_status fw_traffic_write_remote_command(const fw_traffic_def *d, fw_error *err
  * relative to it (sumofiles.c). */
 fw_status fw_traffic_write_config(const fw_traffic_def *d, const char *view, fw_error *err);
 
-extern const fw_sumo_backend fw_backend_libsumo;
-extern const fw_sumo_backend fw_backend_libtraci;
+/* What each module exports: a function of this name returning its table. */
+#define FW_SUMO_BACKEND_ENTRY "fw_sumo_backend_table"
+typedef const fw_sumo_backend *(*fw_sumo_backend_entry)(void);
+
+/* The libsumo (libtraci false) or libtraci back end, its module opened at the
+ * first call and kept for the process's life (SUMO cannot be unloaded).
+ * FW_ERUN naming the module's path and the loader's reason when it cannot be
+ * opened.  Safe to call from several threads. */
+fw_status fw_sumo_backend_load(bool libtraci, const fw_sumo_backend **be, fw_error *err);
 
 #endif

@@ -6,44 +6,28 @@
 #include "core/files.h"
 #include "core/spawn.h"
 #include "traffic/netbuild.h"
+#include "traffic/netcache.h"
 
 /* "<!-- generated on YYYY-MM-DD HH:MM:SS by ..." -> without the date. */
 static fw_status strip_date(const char *path, fw_error *err)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return fw_fail(err, FW_ERUN, "cannot read %s", path);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *buf = malloc((size_t)n + 1);
-    if (!buf || fread(buf, 1, (size_t)n, f) != (size_t)n) {
-        fclose(f);
-        free(buf);
-        return fw_fail(err, FW_ERUN, "cannot read %s", path);
-    }
-    fclose(f);
-    buf[n] = '\0';
+    char *buf;
+    size_t n;
+    fw_status st = fw_file_read(path, &buf, &n, err);
+    if (st)
+        return st;
     const char *key = "generated on ";
     char *p = strstr(buf, key);
-    size_t skip = 0;
     /* only within the header comment, and only a date-like 20 characters */
-    if (p && p - buf < 200 && strlen(p) > strlen(key) + 20 && p[strlen(key) + 4] == '-')
-        skip = 20;
-    f = fopen(path, "wb");
-    if (!f) {
-        free(buf);
-        return fw_fail(err, FW_ERUN, "cannot write %s", path);
-    }
-    if (skip) {
+    if (p && p - buf < 200 && strlen(p) > strlen(key) + 20 && p[strlen(key) + 4] == '-') {
         size_t head = (size_t)(p - buf) + strlen("generated ");
-        fwrite(buf, 1, head, f);
-        fwrite(p + strlen(key) + skip, 1, (size_t)n - (head + 3 + skip), f);
-    } else {
-        fwrite(buf, 1, (size_t)n, f);
+        size_t skip = strlen(key) + 20;
+        memmove(buf + head, p + skip, n - (size_t)(p - buf) - skip);
+        n -= skip - strlen("generated ");
+        st = fw_file_write(path, buf, n, err);
     }
     free(buf);
-    return fclose(f) == 0 ? FW_OK : fw_fail(err, FW_ERUN, "cannot write %s", path);
+    return st;
 }
 
 fw_status fw_netconvert(const char *dir, const char *nodes, const char *edges, const char *types,
@@ -70,17 +54,29 @@ fw_status fw_netconvert(const char *dir, const char *nodes, const char *edges, c
     argv[k++] = out;
     argv[k] = NULL;
     setenv("SUMO_HOME", FW_SUMO_HOME, 0);
+    char path[2048];
+    fw_status st = fw_path(path, sizeof path, err, "%s%s%s", out[0] == '/' ? "" : dir,
+                           out[0] == '/' ? "" : "/", out);
+    if (st)
+        return st;
+    /* the same inputs built before: their files, byte for byte (netcache.h) */
+    const char *inputs[] = {nodes, edges, types, NULL};
+    const char *names[] = {"net.xml", "netconvert.log"}, *files[] = {path, log};
+    fw_netcache_key key;
+    bool keyed = fw_netcache_key_make(dir, argv, inputs, log ? 2 : 1, names, &key);
+    if (keyed && fw_netcache_get(&key, files)) {
+        fw_netcache_key_free(&key);
+        return FW_OK;
+    }
     const char *sink = log ? log : "/dev/null";
     fw_spawn_def sp = {.argv = argv, .log = log, .dir = dir};
     int status;
-    fw_status st = fw_spawn_run(&sp, &status, err);
-    if (st)
-        return st;
-    if (status != 0)
-        return fw_fail(err, FW_ERUN, "netconvert failed building %s (messages in %s)", out, sink);
-    char path[2048];
-    if ((st = fw_path(path, sizeof path, err, "%s%s%s", out[0] == '/' ? "" : dir,
-                      out[0] == '/' ? "" : "/", out)))
-        return st;
-    return strip_date(path, err);
+    if (!(st = fw_spawn_run(&sp, &status, err)) && status != 0)
+        st = fw_fail(err, FW_ERUN, "netconvert failed building %s (messages in %s)", out, sink);
+    if (!st)
+        st = strip_date(path, err);
+    if (!st && keyed)
+        fw_netcache_put(&key, files);
+    fw_netcache_key_free(&key);
+    return st;
 }

@@ -35,7 +35,7 @@ struct fw_traffic {
     long steps;
     fw_fcd *fcd;           /* def.fcd_file's writer, or NULL */
     long fcd_every;        /* steps between two of its timesteps */
-    double query_radius;   /* m, of the context subscription */
+    double query_radius;   /* m, of the range query */
     double own_x, own_y, own_heading, own_speed; /* as last placed: the query's centre */
     fw_sumo_list raw;      /* fw_traffic_all */
     fw_sumo_list ctx;      /* the context results of step ctx_step */
@@ -351,8 +351,8 @@ static fw_status start(fw_traffic *t, fw_error *err)
     case FW_TRAFFIC_EMBEDDED:
         if (embedded_open)
             return fw_fail(err, FW_ERUN, "an embedded SUMO is already running in this process");
-        t->be = &fw_backend_libsumo;
-        if ((st = fw_traffic_sumo_args(d, "sumo", 0, argv, 48, buf, sizeof buf, err)))
+        if ((st = fw_sumo_backend_load(false, &t->be, err)) ||
+            (st = fw_traffic_sumo_args(d, "sumo", 0, argv, 48, buf, sizeof buf, err)))
             return st;
         /* libsumo only says "Process Error"; SUMO's reasons are in its log,
          * which it flushes when the process ends */
@@ -363,7 +363,8 @@ static fw_status start(fw_traffic *t, fw_error *err)
         return FW_OK;
     case FW_TRAFFIC_REMOTE:
         own_sigpipe();
-        t->be = &fw_backend_libtraci;
+        if ((st = fw_sumo_backend_load(true, &t->be, err)))
+            return st;
         /* what the sumo there must run, written first: the way out of the
          * errors below */
         if ((st = fw_traffic_write_remote_command(d, err)))
@@ -376,7 +377,8 @@ static fw_status start(fw_traffic *t, fw_error *err)
         return fw_traffic_net_check(t->be, d->net_file, where, err);
     case FW_TRAFFIC_GUI:
         own_sigpipe();
-        t->be = &fw_backend_libtraci;
+        if ((st = fw_sumo_backend_load(true, &t->be, err)))
+            return st;
         return start_gui(t, err);
     }
     return fw_fail(err, FW_EINPUT, "unknown SUMO mode");
@@ -416,7 +418,7 @@ void fw_traffic_close(fw_traffic *t)
         gui_screenshot(t);
     if (t->be) {
         t->be->close();
-        if (t->be == &fw_backend_libsumo)
+        if (t->def.mode.kind == FW_TRAFFIC_EMBEDDED)
             embedded_open = false;
     }
     if (t->child > 0 && t->def.mode.gui.keep && !t->dead) {
@@ -431,6 +433,12 @@ void fw_traffic_close(fw_traffic *t)
     fw_free_each(5, t->raw.v, t->ctx.v, t->ships, t->area, t->near);
     fw_idmap_free(&t->ids);
     fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
+}
+
+fw_status fw_traffic_load(fw_traffic_kind kind, fw_error *err)
+{
+    const fw_sumo_backend *be;
+    return fw_sumo_backend_load(kind != FW_TRAFFIC_EMBEDDED, &be, err);
 }
 
 fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error *err)
@@ -476,7 +484,7 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
         return fw_fail(err, FW_EINPUT, "SUMO's step length is %g s, the controller's %g s",
                        dt, def->step);
     }
-    /* one subscription serves both queries */
+    /* one range query serves all the queries */
     t->query_radius = def->radius;
     if (def->area_radius > 0.0)
         t->query_radius = fmax(def->radius, def->area_radius + kHalfLengthMax);
@@ -704,7 +712,7 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n, fw_e
         st = room(&t->ships, &t->ships_cap, t->ctx.n, err);
     if (st)
         return st;
-    /* a subscription widened for the area holds more than SUMO's range test
+    /* a range query widened for the area holds more than SUMO's range test
      * would give: apply that test (front bumper within radius) here */
     bool filter = t->query_radius > t->def.radius;
     int m = 0;

@@ -114,10 +114,17 @@ typedef struct fw_traffic fw_traffic;
 /* The SUMO vehicle type of the own ship. */
 #define FW_TRAFFIC_OWN_TYPE "fw_own_type"
 
+/* Loads SUMO for kind now (libsumo, or libtraci for remote and gui) instead
+ * of at the first fw_traffic_open: a process that forks its runs loads it
+ * once, and every child inherits it.  FW_ERUN when the back end's module
+ * cannot be loaded.  Commands that do not simulate never load SUMO. */
+fw_status fw_traffic_load(fw_traffic_kind kind, fw_error *err);
+
 /* Starts or connects to SUMO, adds the own ship's type, route and vehicle and
- * the range query: one context subscription of radius max(radius, area_radius
- * or near_radius + the half length of the longest ship), which the queries
- * filter.  Call
+ * the range query: one query of radius max(radius, area_radius or
+ * near_radius + the half length of the longest ship), read once a step (a
+ * context subscription over libtraci, getters and SUMO's own range test in
+ * libsumo), which the queries filter.  Call
  * fw_traffic_place before the first step. */
 fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error *err);
 /* Ends the simulation (or the connection), stops a sumo-gui started here and

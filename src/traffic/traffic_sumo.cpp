@@ -2,10 +2,11 @@
 //
 // Compiled twice: plain against libsumo (in-process) and with FW_LIBTRACI
 // against libtraci (socket); the two share the source because both libraries
-// expose the same classes under namespaces libsumo / libtraci.  Each build
-// exports exactly one table (fw_backend_libsumo or fw_backend_libtraci), so
-// their symbols never clash.  Every entry point catches everything: a SUMO
-// exception becomes an fw_status and a message.
+// expose the same classes under namespaces libsumo / libtraci.  Each build is
+// a loadable module (fairway-libsumo.so, fairway-libtraci.so) built with
+// hidden visibility, exporting one function, fw_sumo_backend_table, that
+// returns its table (backend.h).  Every entry point catches everything: a
+// SUMO exception becomes an fw_status and a message.
 #ifdef FW_LIBTRACI
 #include <libsumo/libtraci.h>
 namespace S = libtraci;
@@ -19,11 +20,13 @@ namespace S = libsumo;
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 extern "C" {
@@ -39,11 +42,35 @@ const char *const kOwnRoute = "fw_own_route";
 const char *const kRangePoi = "fw_own_range";
 
 std::string g_own;      // own vehicle id
-bool g_subscribed = false;
+bool g_subscribed = false; // the range query is set up (the own ship added)
+// The range query: ships whose front bumper is within g_radius of (g_cx,
+// g_cy), the own ship's hull centre as last placed.
+double g_radius = 0.0, g_cx = 0.0, g_cy = 0.0;
+
+#ifndef FW_LIBTRACI
+// What never changes for a ship, asked of SUMO once: its type, length and
+// width.  Forgotten when the ship leaves (arrives or is removed), so an id
+// used again is asked again.
+struct Static {
+    std::string type;
+    double length, width;
+};
+std::unordered_map<std::string, Static> g_static;
+
+const Static &static_of(const std::string &id)
+{
+    auto it = g_static.find(id);
+    if (it != g_static.end())
+        return it->second;
+    Static s{S::Vehicle::getTypeID(id), S::Vehicle::getLength(id), S::Vehicle::getWidth(id)};
+    return g_static.emplace(id, s).first->second;
+}
+#endif
 // Only a started simulation or an open connection may be closed: libtraci's
 // close after a failed init follows a dangling connection.
 bool g_open = false;
 
+#ifdef FW_LIBTRACI
 // A variable subscription result as double / string, whatever the back end
 // stored it as.
 double as_double(const libsumo::TraCIResults &r, int var)
@@ -56,6 +83,7 @@ double as_double(const libsumo::TraCIResults &r, int var)
         throw libsumo::TraCIException("subscription variable " + std::to_string(var) + " is not a number");
     return d->value;
 }
+#endif
 
 fw_status fail(fw_error *err, fw_status st, const char *what, const char *detail)
 {
@@ -192,13 +220,21 @@ fw_status be_add_own(const char *id, double length, double width, const char *ed
         S::VehicleType::setColor(kOwnType, libsumo::TraCIColor(255, 80, 0, 255));
         S::Route::add(kOwnRoute, {edge && edge[0] ? std::string(edge) : ship_edge()});
         S::Vehicle::add(g_own, kOwnRoute, kOwnType, "now");
-        // The range query hangs on a POI at the own ship's hull centre, not on
+        // The range query's centre is a POI at the own ship's hull centre, not
         // the vehicle: a vehicle context is evaluated from its lane, and the own
-        // ship is often off the lanes.  Transparent, so sumo-gui shows the ship.
+        // ship is often off the lanes.  Transparent, so sumo-gui shows the ship;
+        // kept in libsumo too, so that both back ends simulate the same objects.
         S::POI::add(kRangePoi, 0.0, 0.0, libsumo::TraCIColor(0, 0, 0, 0), "fw_range");
+        g_radius = radius;
+#ifdef FW_LIBTRACI
+        // over a socket, one subscription (answered with every step) beats a
+        // round trip per ship and variable
         S::POI::subscribeContext(kRangePoi, libsumo::CMD_GET_VEHICLE_VARIABLE, radius,
                                  {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED,
                                   libsumo::VAR_LENGTH, libsumo::VAR_WIDTH, libsumo::VAR_TYPE});
+#else
+        g_static.clear();
+#endif
         g_subscribed = true;
     });
 }
@@ -231,6 +267,8 @@ fw_status be_place(const char *id, double fx, double fy, double angle_deg, doubl
         // lanes they keep lane and speed, as the benchmark targets do.
         S::Vehicle::moveToXY(id, "", -1, fx, fy, angle_deg, 2, 1e-3);
         S::POI::setPosition(kRangePoi, cx, cy);
+        g_cx = cx;
+        g_cy = cy;
     });
 }
 
@@ -260,7 +298,12 @@ fw_status be_set_speed(const char *id, double speed, fw_error *err)
 
 fw_status be_remove(const char *id, fw_error *err)
 {
-    return guarded("cannot remove a ship", err, [&] { S::Vehicle::remove(id); });
+    return guarded("cannot remove a ship", err, [&] {
+        S::Vehicle::remove(id);
+#ifndef FW_LIBTRACI
+        g_static.erase(id);
+#endif
+    });
 }
 
 fw_status be_step(double *time, fw_error *err)
@@ -268,8 +311,78 @@ fw_status be_step(double *time, fw_error *err)
     return guarded("step failed", err, [&] {
         S::Simulation::step();
         *time = S::Simulation::getTime();
+#ifndef FW_LIBTRACI
+        for (const std::string &id : S::Simulation::getArrivedIDList())
+            g_static.erase(id);
+#endif
     });
 }
+
+#ifdef FW_LIBTRACI
+// The subscription's results: SUMO's own range test, made at the step.
+void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
+{
+    const libsumo::SubscriptionResults res = S::POI::getContextSubscriptionResults(kRangePoi);
+    if ((*st = reserve(out, (int)res.size(), err)) != FW_OK)
+        return;
+    for (const auto &kv : res) {
+        if (kv.first == g_own)
+            continue;
+        fw_sumo_raw *r = &out->v[out->n++];
+        const libsumo::TraCIResults &v = kv.second;
+        copy_id(r->id, sizeof r->id, kv.first);
+        auto pit = v.find(libsumo::VAR_POSITION);
+        auto *pos = pit == v.end() ? nullptr
+                    : dynamic_cast<const libsumo::TraCIPosition *>(pit->second.get());
+        if (!pos)
+            throw libsumo::TraCIException("subscription result without a position");
+        r->x = pos->x;
+        r->y = pos->y;
+        r->angle_deg = as_double(v, libsumo::VAR_ANGLE);
+        r->speed = as_double(v, libsumo::VAR_SPEED);
+        r->length = as_double(v, libsumo::VAR_LENGTH);
+        r->width = as_double(v, libsumo::VAR_WIDTH);
+        auto tit = v.find(libsumo::VAR_TYPE);
+        r->type[0] = '\0';
+        if (tit != v.end())
+            copy_id(r->type, sizeof r->type, tit->second->getString());
+    }
+}
+#else
+// In-process, every ship's position by getter and the range test here cost
+// less than SUMO evaluating a context subscription each step (measured,
+// bench/results/traffic_read.txt).  The test is SUMO's own for a context
+// (libsumo Helper: distance2D(centre, position) <= range, the square root of
+// the summed squares), the order the subscription's (a map by id), so the
+// ships and their order are the subscription's exactly.
+void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
+{
+    const std::vector<std::string> ids = S::Vehicle::getIDList();
+    if ((*st = reserve(out, (int)ids.size(), err)) != FW_OK)
+        return;
+    for (const std::string &id : ids) {
+        if (id == g_own)
+            continue;
+        const libsumo::TraCIPosition p = S::Vehicle::getPosition(id);
+        const double dx = p.x - g_cx, dy = p.y - g_cy;
+        if (std::sqrt(dx * dx + dy * dy) > g_radius)
+            continue;
+        fw_sumo_raw *r = &out->v[out->n++];
+        copy_id(r->id, sizeof r->id, id);
+        r->x = p.x;
+        r->y = p.y;
+        r->angle_deg = S::Vehicle::getAngle(id);
+        r->speed = S::Vehicle::getSpeed(id);
+        const Static &c = static_of(id);
+        r->length = c.length;
+        r->width = c.width;
+        copy_id(r->type, sizeof r->type, c.type);
+    }
+    std::sort(out->v, out->v + out->n, [](const fw_sumo_raw &a, const fw_sumo_raw &b) {
+        return std::strcmp(a.id, b.id) < 0;
+    });
+}
+#endif
 
 fw_status be_context(fw_sumo_list *out, fw_error *err)
 {
@@ -278,34 +391,7 @@ fw_status be_context(fw_sumo_list *out, fw_error *err)
         return fw_fail(err, FW_ERUN, "SUMO (%s): no range query (own ship not added)",
                        FW_BACKEND_NAME);
     fw_status st = FW_OK;
-    fw_status gst = guarded("range query failed", err, [&] {
-        const libsumo::SubscriptionResults res =
-            S::POI::getContextSubscriptionResults(kRangePoi);
-        if ((st = reserve(out, (int)res.size(), err)) != FW_OK)
-            return;
-        for (const auto &kv : res) {
-            if (kv.first == g_own)
-                continue;
-            fw_sumo_raw *r = &out->v[out->n++];
-            const libsumo::TraCIResults &v = kv.second;
-            copy_id(r->id, sizeof r->id, kv.first);
-            auto pit = v.find(libsumo::VAR_POSITION);
-            auto *pos = pit == v.end() ? nullptr
-                        : dynamic_cast<const libsumo::TraCIPosition *>(pit->second.get());
-            if (!pos)
-                throw libsumo::TraCIException("subscription result without a position");
-            r->x = pos->x;
-            r->y = pos->y;
-            r->angle_deg = as_double(v, libsumo::VAR_ANGLE);
-            r->speed = as_double(v, libsumo::VAR_SPEED);
-            r->length = as_double(v, libsumo::VAR_LENGTH);
-            r->width = as_double(v, libsumo::VAR_WIDTH);
-            auto tit = v.find(libsumo::VAR_TYPE);
-            r->type[0] = '\0';
-            if (tit != v.end())
-                copy_id(r->type, sizeof r->type, tit->second->getString());
-        }
-    });
+    fw_status gst = guarded("range query failed", err, [&] { read_context(out, &st, err); });
     return gst ? gst : st;
 }
 
@@ -390,8 +476,14 @@ void be_close(void)
 
 } // namespace
 
+// hidden like everything else here: the entry below hands it out
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
     be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_gui_follow,
     be_gui_screenshot, be_net, be_close, be_add_placed,
 };
+
+extern "C" __attribute__((visibility("default"))) const fw_sumo_backend *fw_sumo_backend_table(void)
+{
+    return &FW_BACKEND_TABLE;
+}

@@ -7,7 +7,9 @@
 # network scenario run from the moved prefix and give the build tree's
 # results byte for byte, and once the prefix's share/fairway is taken away the
 # same run fails naming the prefix's data directory, although the source tree
-# is still there to fall back on.
+# is still there to fall back on; without the prefix's lib/fairway (the SUMO
+# modules) a run fails naming the module, and a command that does not
+# simulate still works.
 set -euo pipefail
 cmake_cmd=$1 build=$2
 tmp=$(mktemp -d)
@@ -15,7 +17,8 @@ trap 'rm -rf "$tmp"' EXIT
 "$cmake_cmd" --install "$build" --prefix "$tmp/first" > "$tmp/install.log"
 mv "$tmp/first" "$tmp/p"
 p=$tmp/p
-for f in bin/fairway share/fairway/scenarios/ships/c3.yaml share/fairway/scenarios/paper/1-head-on.yaml \
+for f in bin/fairway lib/fairway/fairway-libsumo.so lib/fairway/fairway-libtraci.so \
+         share/fairway/scenarios/ships/c3.yaml share/fairway/scenarios/paper/1-head-on.yaml \
          share/fairway/networks/ships.add.xml share/fairway/networks/dover/dover.net.xml \
          share/fairway/networks/dover/demand.yaml share/fairway/analysis/plot_study.py \
          share/man/man1/fairway.1; do
@@ -47,6 +50,19 @@ for r in paper-1-head-on dover-crossing; do
   done
 done
 echo "installed runs ok: the build tree's results"
+
+# take the SUMO modules away: what does not simulate still works, a run
+# says which module it misses (exit 1: the input was fine)
+mv "$p/lib/fairway" "$p/lib/gone"
+"$p/bin/fairway" ship c3 > out 2>&1 || { echo "ship c3 needs the SUMO modules:"; cat out; exit 1; }
+rc=0
+env -u FAIRWAY_DATA "$p/bin/fairway" run "$p/share/fairway/scenarios/traffic/dover-crossing.yaml" \
+  --out runs3 > out 2>&1 || rc=$?
+if [ "$rc" -ne 1 ] || ! grep -qF "cannot load the SUMO back end $p/lib/fairway/fairway-libsumo.so" out; then
+  echo "without its SUMO modules the installed fairway gave exit $rc:"; cat out; exit 1
+fi
+echo "without lib/fairway: $(grep -F 'cannot load' out | head -1)"
+mv "$p/lib/gone" "$p/lib/fairway"
 
 # take the prefix's data away: no fallback to the source tree may hide it
 mv "$p/share/fairway" "$p/share/gone"

@@ -1,0 +1,65 @@
+# netcache.sh - the network cache (src/traffic/netcache.h): a paper case's
+# network built once and reused, byte for byte what netconvert writes; an
+# entry is what a hit hands out (a marked entry shows up in the next run), a
+# changed input misses, a damaged entry is rebuilt, parallel runs leave one
+# whole entry and no temporary directories.
+set -euo pipefail
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export XDG_CACHE_HOME=$tmp/cache
+net=$XDG_CACHE_HOME/fairway/net
+p=$FAIRWAY_DATA/scenarios/paper
+files="own.csv targets.csv encounters.csv summary.json sumo/run.net.xml sumo/netconvert.log"
+run() { # OUT SCENARIO...
+  local out=$1; shift
+  "$FAIRWAY" run "$@" --out "$tmp/$out" > "$tmp/$out.table" 2>&1 ||
+    { echo "run $out failed:"; cat "$tmp/$out.table"; exit 1; }
+}
+same() { # A B SCENARIO_NAME
+  for f in $files; do
+    cmp -s "$tmp/$1/$3/$f" "$tmp/$2/$3/$f" || { echo "$1 and $2: $3/$f differ"; exit 1; }
+  done
+}
+entries() { find "$net" -mindepth 1 -maxdepth 1 -type d -name '[0-9a-f]*' | wc -l; }
+
+FAIRWAY_NETCACHE=off run ref "$p/1-head-on.yaml"
+[ ! -e "$XDG_CACHE_HOME" ] || { echo "FAIRWAY_NETCACHE=off wrote a cache"; exit 1; }
+run first "$p/1-head-on.yaml"
+[ "$(entries)" -eq 1 ] || { echo "after one run: $(entries) entries, not 1"; exit 1; }
+run second "$p/1-head-on.yaml"
+same ref first paper-1-head-on
+same ref second paper-1-head-on
+echo "cached network: the same files as netconvert's"
+
+# a hit copies the entry: a comment added to it appears in the next run
+e=$(find "$net" -mindepth 1 -maxdepth 1 -type d -name '[0-9a-f]*')
+cp "$e/net.xml" "$tmp/saved.xml"
+echo "<!-- marked by netcache.sh -->" >> "$e/net.xml"
+run marked "$p/1-head-on.yaml"
+grep -q "marked by netcache.sh" "$tmp/marked/paper-1-head-on/sumo/run.net.xml" ||
+  { echo "the second run did not take its network from the cache"; exit 1; }
+cp "$tmp/saved.xml" "$e/net.xml"
+
+# other targets, other tracks: a miss and an entry of their own
+run other "$p/2-overtaking.yaml"
+[ "$(entries)" -eq 2 ] || { echo "another scenario: $(entries) entries, not 2"; exit 1; }
+
+# an entry missing its network is rebuilt, the run unharmed
+rm "$e/net.xml"
+run damaged "$p/1-head-on.yaml"
+same ref damaged paper-1-head-on
+run repaired "$p/1-head-on.yaml"
+[ -f "$e/net.xml" ] && cmp -s "$e/net.xml" "$tmp/saved.xml" ||
+  { echo "the damaged entry was not stored again"; exit 1; }
+echo "miss on other inputs, damaged entry rebuilt"
+
+# four runs at once on an empty cache: one entry, nothing half-written
+rm -rf "$XDG_CACHE_HOME"
+FAIRWAY_NETCACHE=off run ref3 "$p/3-crossing.yaml"
+for k in 1 2 3 4; do run "par$k" "$p/3-crossing.yaml" & done
+wait
+for k in 1 2 3 4; do same ref3 "par$k" paper-3-crossing; done
+[ "$(entries)" -eq 1 ] || { echo "parallel runs: $(entries) entries, not 1"; exit 1; }
+left=$(find "$net" -name '.tmp*' | wc -l)
+[ "$left" -eq 0 ] || { echo "parallel runs left $left temporary files"; exit 1; }
+echo "ok: networks reused byte for byte"
