@@ -103,22 +103,36 @@ static void worker(const fw_sweep_def *def, const char *work, const char *why)
     }
 }
 
+/* Runs queued at each worker: the one it runs and the next, so that it
+ * starts that one as soon as it has sent a result, without waiting for rank
+ * 0 to notice the result (rank 0 sleeps up to 20 ms between looks, and
+ * commits first).  Measured on the default study (80 runs of about 0.5 s,
+ * 2 cores shared with other work, 3 interleaved pairs of -np 3 against
+ * --jobs 2, wall): 0.80 (0.48-0.91) of --jobs 2's throughput with one run
+ * queued, 0.86 (0.82-1.06) with two; the load made both noisy. */
+enum { QUEUE_DEPTH = 2 };
+
 /* Rank 0: hand out the pending runs, commit what comes back. */
 static fw_status root(const fw_sweep_def *def, fw_store *st, const int *pending, int n_pending,
                       int size, fw_sweep_result *res, fw_error *err)
 {
     const fw_study *s = def->study;
     int next = 0, busy = 0;
+    int *queued = calloc((size_t)size, sizeof *queued);
+    if (!queued)
+        MPI_Abort(MPI_COMM_WORLD, 1);
     fw_status r = FW_OK;
     fw_progress *prog = fw_progress_start(def, n_pending, res->total, res->skipped);
-    for (int rank = 1; rank < size; rank++) {
-        if (next < n_pending) {
+    /* one run to each rank, then the second: the first runs spread first */
+    for (int k = 0; k < QUEUE_DEPTH; k++)
+        for (int rank = 1; rank < size && next < n_pending; rank++) {
             send_run(rank, pending[next++]);
+            queued[rank]++;
             busy++;
-        } else {
-            send_run(rank, -1);
         }
-    }
+    for (int rank = 1; rank < size; rank++)
+        if (!queued[rank])
+            send_run(rank, -1);
     while (busy > 0) {
         MPI_Status stt;
         int n = 0;
@@ -129,15 +143,18 @@ static fw_status root(const fw_sweep_def *def, fw_store *st, const int *pending,
             MPI_Abort(MPI_COMM_WORLD, 1);
         MPI_Recv(buf, n, MPI_BYTE, stt.MPI_SOURCE, TAG_RESULT, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         busy--;
+        queued[stt.MPI_SOURCE]--;
         fw_outcome o;
         fw_error uerr = {0};
         bool unpacked = fw_outcome_unpack(buf, (size_t)n, &o, &uerr) == FW_OK;
         free(buf);
-        /* after an error, no new work: every rank is told to stop */
+        /* after an error, no new work: every rank is told to stop once its
+         * queue is done */
         if (!r && next < n_pending) {
             send_run(stt.MPI_SOURCE, pending[next++]);
+            queued[stt.MPI_SOURCE]++;
             busy++;
-        } else {
+        } else if (!queued[stt.MPI_SOURCE]) {
             send_run(stt.MPI_SOURCE, -1);
         }
         if (!unpacked) {
@@ -150,6 +167,7 @@ static fw_status root(const fw_sweep_def *def, fw_store *st, const int *pending,
         fw_outcome_free(&o);
     }
     fw_progress_end(prog, res->done, res->failed);
+    free(queued);
     return r;
 }
 
