@@ -270,12 +270,10 @@ fw_status fw_ais_tracks_print_csv(const fw_ais_tracks *t, FILE *f, fw_error *err
 fw_status fw_ais_tracks_write_csv(const fw_ais_tracks *t, const char *path, fw_error *err)
 {
     char tmp[1100];
-    fw_status st = fw_path(tmp, sizeof tmp, err, "%s.tmp", path);
-    if (st)
-        return st;
-    FILE *f = fopen(tmp, "w");
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
     if (!f)
-        return fw_fail(err, FW_EINPUT, "%s: cannot write", tmp);
+        return err->status;
+    fw_status st;
     if ((st = fw_ais_tracks_print_csv(t, f, err))) {
         fclose(f);
         remove(tmp);

@@ -70,6 +70,16 @@ fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err)
     return FW_OK;
 }
 
+FILE *fw_file_begin(const char *path, char *tmp, size_t n, fw_error *err)
+{
+    if (fw_path(tmp, n, err, "%s.tmp", path))
+        return NULL;
+    FILE *f = fopen(tmp, "w");
+    if (!f)
+        fw_fail(err, FW_EINPUT, "%s: cannot write: %s", path, strerror(errno));
+    return f;
+}
+
 fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err)
 {
     int bad = fflush(f) != 0 || ferror(f);

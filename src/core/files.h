@@ -26,6 +26,11 @@ fw_status fw_check_parent_dir(const char *opt, const char *path, const char *can
  * characters" when it does not fit, never a truncated path. */
 fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err);
 
+/* Starts the file path under a temporary name (PATH.tmp, into tmp of size
+ * n), to be finished by fw_file_commit: NULL and FW_EINPUT "PATH: cannot
+ * write: reason" when it cannot be opened. */
+FILE *fw_file_begin(const char *path, char *tmp, size_t n, fw_error *err);
+
 /* Finishes a file written under a temporary name: flushes, syncs and closes
  * f, then renames tmp to path, so a reader never finds a partial file where a
  * complete one is expected.  On any failure tmp is removed and path left as

@@ -25,4 +25,17 @@ void fw_free_each(int n, ...);
 /* Capacity for n when cap is too small: at least double, at least n. */
 static inline int fw_grown_cap(int cap, int n) { return n > 2 * cap ? n : 2 * cap; }
 
+/* Room for n elements in *p, whose capacity *cap grows by fw_grown_cap;
+ * false (the block and *cap kept) when memory runs out. */
+static inline bool fw_reserve(void **p, size_t elem, int *cap, int n)
+{
+    if (n <= *cap)
+        return true;
+    int c = fw_grown_cap(*cap, n);
+    if (!fw_resize(p, elem, (size_t)c))
+        return false;
+    *cap = c;
+    return true;
+}
+
 #endif

@@ -41,12 +41,9 @@ fw_status fw_history_write_csv(const fw_history *h, const char *path, fw_error *
     /* Written to a temporary name and renamed, so a failure never leaves a
      * truncated file where a complete one is expected. */
     char tmp[1024];
-    fw_status st = fw_path(tmp, sizeof tmp, err, "%s.tmp", path);
-    if (st)
-        return st;
-    FILE *f = fopen(tmp, "w");
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
     if (!f)
-        return fw_fail(err, FW_EINPUT, "%s: cannot write: %s", path, strerror(errno));
+        return err->status;
     fprintf(f, "t_s,east_m,north_m,heading_deg,u_mps,v_mps,r_degps,rudder_deg,helm_deg,"
                "propeller_rps\n");
     for (size_t i = 0; i < h->n; i++) {

@@ -19,15 +19,10 @@ fw_status fw_fcd_open(const char *path, fw_fcd **out, fw_error *err)
     fw_fcd *d = calloc(1, sizeof *d);
     if (!d)
         return fw_fail(err, FW_ERUN, "out of memory");
-    fw_status st;
-    if ((st = fw_path(d->path, sizeof d->path, err, "%s", path)) ||
-        (st = fw_path(d->tmp, sizeof d->tmp, err, "%s.tmp", path))) {
+    if (fw_path(d->path, sizeof d->path, err, "%s", path) ||
+        !(d->f = fw_file_begin(path, d->tmp, sizeof d->tmp, err))) {
         free(d);
-        return st;
-    }
-    if (!(d->f = fopen(d->tmp, "w"))) {
-        free(d);
-        return fw_fail(err, FW_ERUN, "cannot write %s", path);
+        return err->status;
     }
     fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
           "<!-- written by fairway in SUMO's FCD layout: every ship, x/y its front bumper -->\n"

@@ -89,11 +89,8 @@ static fw_status mr_around(fw_source *s, const fw_target **v, int *n, fw_error *
     fw_status st = fw_source_around(m->inner, &all, &na, err);
     if (st)
         return st;
-    if (na > m->out_cap) {
-        if (!fw_resize((void **)&m->out, sizeof *m->out, (size_t)na))
-            return fw_fail(err, FW_ERUN, "out of memory");
-        m->out_cap = na;
-    }
+    if (!fw_reserve((void **)&m->out, sizeof *m->out, &m->out_cap, na))
+        return fw_fail(err, FW_ERUN, "out of memory");
     for (int i = 0; i < na; i++)
         if (hypot(all[i].east - m->own.east, all[i].north - m->own.north) <= m->radius)
             m->out[(*n)++] = all[i];

@@ -229,11 +229,8 @@ static fw_status ss_around(fw_source *s, const fw_target **v, int *n, fw_error *
     fw_status st = fw_traffic_around(k->tr, &raw, &m, err);
     if (st)
         return st;
-    if (m > k->cap) {
-        if (!fw_resize((void **)&k->sorted, sizeof *k->sorted, 2 * (size_t)m))
-            return fw_fail(err, FW_ERUN, "out of memory for %d ships", m);
-        k->cap = 2 * m;
-    }
+    if (!fw_reserve((void **)&k->sorted, sizeof *k->sorted, &k->cap, m))
+        return fw_fail(err, FW_ERUN, "out of memory for %d ships", m);
     if (m > 0) /* no ship in range yet: the buffer may still be NULL */
         memcpy(k->sorted, raw, sizeof *raw * (size_t)m);
     for (int i = 0; i < m; i++) {

@@ -125,12 +125,11 @@ fw_status fw_traffic_write_config(const fw_traffic_def *d, const char *view, fw_
     const char *argv[48];
     fw_status st;
     if ((st = fw_traffic_sumo_args(d, "sumo", 0, argv, 48, buf, sizeof buf, err)) ||
-        (st = fw_path(path, sizeof path, err, "%s/run.sumocfg", dir)) ||
-        (st = fw_path(tmp, sizeof tmp, err, "%s.tmp", path)))
+        (st = fw_path(path, sizeof path, err, "%s/run.sumocfg", dir)))
         return st;
-    FILE *f = fopen(tmp, "w");
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
     if (!f)
-        return fw_fail(err, FW_ERUN, "cannot write %s", tmp);
+        return err->status;
     fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
           "<!-- written by fairway: the SUMO side of this run (network, routes, ship types,\n"
           "     step, seed, lane-change time, to its end).  `sumo-gui -c run.sumocfg` moves the\n"
