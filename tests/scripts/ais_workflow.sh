@@ -59,4 +59,10 @@ out=$("$FAIRWAY" run "$dir/bad-window.yaml" --out "$dir/bad-runs" 2>&1)
 rc=$?
 [ $rc -eq 2 ] || fail "bad window: exit $rc: $out"
 grep -Eq "bad-window.yaml:[0-9]+: traffic.ais_end: expected" <<<"$out" || fail "bad window: $out"
+# a geo-referenced network has its own plane: --origin is refused there
+out=$("$FAIRWAY" ais demand "$file" --network geo-channel --origin 57,11.5 --out "$dir/geo.yaml" 2>&1)
+rc=$?
+[ $rc -eq 2 ] || fail "geo network with --origin: exit $rc: $out"
+grep -q "network 'geo-channel' is geo-referenced" <<<"$out" || fail "geo network with --origin: $out"
+[ ! -e "$dir/geo.yaml" ] || fail "geo network with --origin: a demand was written"
 echo "ok: AIS workflow"
