@@ -117,7 +117,8 @@ def named_targets(s):
 def caption(s, own):
     speed = own.speed_kn.iloc[0] if "speed_kn" in own and len(own) else float("nan")
     parts = [f"own ship {s['own_length_m']:.0f} x {s['own_breadth_m']:.0f} m at {speed:.1f} kn",
-             f"domain {s['domain_m']:.0f} m (fore-aft x{s['domain_fore_aft_ratio']:g})",
+             f"domain {s['domain_m']:.0f} m (fore-aft x{s['domain_fore_aft_ratio']:g}, "
+             f"{s.get('domain_reading', 'ellipse')})",
              f"traffic {s.get('traffic_behaviour') or 'scripted'}",
              f"{s['t_end_s']:.0f} s", f"min hull {s['min_hull_distance_m']:.0f} m"
              if s.get("min_hull_distance_m") is not None else "no hull distance",
@@ -173,9 +174,18 @@ def plot_track(run, own, tgt, s, every, path):
         o = own.iloc[(own.t_s - tmin).abs().argmin()]
         g = tgt[tgt.id == cid]
         t = g.iloc[(g.t_s - tmin).abs().argmin()]
-        ex, ey = ellipse(o.east_m, o.north_m, o.heading_deg, s["domain_m"] * s["domain_fore_aft_ratio"],
-                         s["domain_m"])
-        ax.plot(ex / NM, ey / NM, "k--", lw=1, label=f"domain {s['domain_m']:.0f} m at t = {tmin:.0f} s")
+        fa_ratio = s["domain_fore_aft_ratio"]
+        if s.get("domain_reading") == "transverse":
+            # the paper's reading: about the target, in its frame, beyond its hull (src/geom/geom.h)
+            e = enc[cid]
+            ex, ey = ellipse(t.east_m, t.north_m, t.heading_deg,
+                             s["domain_m"] * fa_ratio + e.get("length_m", 200) / 2,
+                             s["domain_m"] + e.get("breadth_m", 32) / 2)
+            what = f"domain {s['domain_m']:.0f} m beyond {cid}'s hull (transverse)"
+        else:
+            ex, ey = ellipse(o.east_m, o.north_m, o.heading_deg, s["domain_m"] * fa_ratio, s["domain_m"])
+            what = f"domain {s['domain_m']:.0f} m"
+        ax.plot(ex / NM, ey / NM, "k--", lw=1, label=f"{what} at t = {tmin:.0f} s")
         ax.plot([o.east_m / NM, t.east_m / NM], [o.north_m / NM, t.north_m / NM], "k:", lw=1)
         ax.annotate(f"{enc[cid]['min_distance_m']:.0f} m", ((o.east_m + t.east_m) / 2 / NM,
                     (o.north_m + t.north_m) / 2 / NM), fontsize=8)
