@@ -44,7 +44,15 @@ void fw_track_free(fw_track *tr)
 /* Unit vector (sin, cos) of heading a+d from that of a; for the small d of one
  * sample step a 5th-order series (error < d^6/720, 1e-12 at 2 deg) is cheaper
  * than sin and cos, and the rotation keeps the vector's length. */
-static void rotate(double *s, double *c, double d)
+static void sin_cos(double d, double *sd, double *cd)
+{
+    *sd = sin(d);
+    *cd = cos(d);
+}
+
+/* Inlined (it runs twice per sample; the library's sine and cosine, rare,
+ * stay out of line). */
+static inline void rotate(double *s, double *c, double d)
 {
     double sd, cd;
     if (fabs(d) < 0.035) {
@@ -52,8 +60,7 @@ static void rotate(double *s, double *c, double d)
         sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0));
         cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0);
     } else {
-        sd = sin(d);
-        cd = cos(d);
+        sin_cos(d, &sd, &cd);
     }
     double s0 = *s, c0 = *c;
     *s = s0 * cd + c0 * sd;
@@ -92,7 +99,8 @@ static void kin_init(kin *k, const fw_ship *ship, const fw_nomoto_kb *kb, const 
 }
 
 /* One step of dt from heading vector (ps, pc) to (sn, cs), yaw rate r at its end. */
-static void kin_step(kin *k, double ps, double pc, double sn, double cs, double r, double dt)
+static inline void kin_step(kin *k, double ps, double pc, double sn, double cs, double r,
+                            double dt)
 {
     if (!k->slip) {
         /* trapezoid on the unit vectors: direction exact for a constant
@@ -107,7 +115,7 @@ static void kin_step(kin *k, double ps, double pc, double sn, double cs, double 
     /* the loss is driven by the drift reached at the step's end, as the
      * identification drives it by the MMG ship's (identify.c) */
     double loss = k->kb->speed_loss * fabs(rn) + k->kb->speed_loss_drift * fabs(b1 * rn);
-    double u_ss = k->U0 * (1.0 - fmin(loss, 0.9));
+    double u_ss = k->U0 * (1.0 - (loss < 0.9 ? loss : 0.9)); /* fmin, inlined: loss is finite */
     double U1 = u_ss + (k->U - u_ss) * k->Eu;
     rotate(&k->sb, &k->cb, b1 - k->beta);
     k->beta = b1;
