@@ -169,6 +169,7 @@ static int run_count(bench *b, int mode, int n)
     int *order = malloc(sizeof *order * 2 * (size_t)n);
     int threats = 0, feasible = 0, inside = 0, bad = 0;
     long tracks = 0;
+    double predicted = 0.0;
     rng = 88172645463325252ULL + 7919ULL * (unsigned long long)(1000 * mode + n);
     for (int s = 0; s < SCENES && tg && as && order && !bad; s++) {
         make_scene(&b->own, mode, tg, n);
@@ -186,6 +187,14 @@ static int run_count(bench *b, int mode, int n)
         }
         times[s] = (bench_now() - t0) / reps;
         tracks += fw_helm_tracks_computed(b->ctx);
+        predicted += fw_helm_tracks_predicted(b->ctx);
+        threats += d.search.threat;
+        feasible += d.search.feasible;
+        for (int i = 0; i < n; i++)
+            if (as[i].t_enter == 0.0) {
+                inside++;
+                break;
+            }
         if (decisions_only)
             continue;
         int allowed = fw_permitted_sides(&b->hdef, as, n);
@@ -198,13 +207,6 @@ static int run_count(bench *b, int mode, int n)
                     b->ship->name, n, s);
             bad = 1;
         }
-        for (int i = 0; i < n; i++)
-            if (as[i].t_enter == 0.0) {
-                inside++;
-                break;
-            }
-        threats += d.search.threat;
-        feasible += d.search.feasible;
     }
     if (!tg || !as || !order)
         bad = 1, fprintf(stderr, "bench_helm: out of memory\n");
@@ -212,14 +214,15 @@ static int run_count(bench *b, int mode, int n)
         double p90 = (bench_median(times, SCENES), times[(int)(0.9 * SCENES)]);
         double med = bench_median(times, SCENES), mn = bench_median(t_new, SCENES);
         double mr = bench_median(t_ref, SCENES), mo = bench_median(t_old, SCENES);
-        printf("%8d %11.1f %9.1f %7.0f %7.1f %9.0f %10.1f %8.1f %7.2f %8.1f %7.0f\n", n,
+        printf("%8d %11.1f %9.1f %7.0f %7.1f %9.1f %9.0f %10.1f %8.1f %7.2f %8.1f %7.0f\n", n,
                1e6 * med, 1e6 * p90, 100.0 * threats / SCENES, (double)tracks / SCENES,
+               predicted / SCENES,
                100.0 * feasible / SCENES, 1e6 * mn, 1e6 * mr, mr / mn, 1e6 * mo,
                100.0 * inside / SCENES);
         if (b->csv)
-            fprintf(b->csv, "%s,%s,%d,%.2f,%.2f,%.0f,%.2f,%.0f,%.2f,%.2f,%.3f,%.2f,%.0f,%d\n",
+            fprintf(b->csv, "%s,%s,%d,%.2f,%.2f,%.0f,%.2f,%.2f,%.0f,%.2f,%.2f,%.3f,%.2f,%.0f,%d\n",
                     b->ship->name, mode ? "dense" : "mixed", n, 1e6 * med, 1e6 * p90,
-                    100.0 * threats / SCENES, (double)tracks / SCENES,
+                    100.0 * threats / SCENES, (double)tracks / SCENES, predicted / SCENES,
                     100.0 * feasible / SCENES, 1e6 * mn, 1e6 * mr, mr / mn, 1e6 * mo,
                     100.0 * inside / SCENES, reps);
     }
@@ -277,9 +280,9 @@ static int run_ship(const char *name, int only_n, FILE *csv)
     for (int mode = 0; mode < 2 && !bad; mode++) {
         printf("# %s\n", mode ? "dense: every target aimed within 800 m of the own track (stress)"
                               : "mixed: 1 in 10 targets aimed, the rest anywhere within 3 nm");
-        printf("%8s %11s %9s %7s %7s %9s %10s %8s %7s %8s %7s\n", "targets", "decision_us",
-               "p90_us", "threat%", "tracks", "feasible%", "search_us", "ref_us", "ref/new",
-               "old_us", "inside%");
+        printf("%8s %11s %9s %7s %7s %9s %9s %10s %8s %7s %8s %7s\n", "targets", "decision_us",
+               "p90_us", "threat%", "tracks", "predicted", "feasible%", "search_us", "ref_us",
+               "ref/new", "old_us", "inside%");
         for (size_t c = 0; c < sizeof counts / sizeof counts[0] && !bad; c++)
             if (!only_n || counts[c] == only_n)
                 bad = run_count(&b, mode, counts[c]);
@@ -318,7 +321,7 @@ int main(int argc, char **argv)
         return 2;
     }
     if (csv)
-        fprintf(csv, "ship,scenes,targets,decision_us,decision_p90_us,threat_pct,tracks_avg,"
+        fprintf(csv, "ship,scenes,targets,decision_us,decision_p90_us,threat_pct,tracks_avg,predicted_avg,"
                      "feasible_pct,search_us,ref_us,ref_over_new,old_us,inside_pct,reps\n");
     printf("# fairway bench_helm: horizon 600 s, dt 5 s, helms 10-35 deg step 1\n");
     static const char *ships[] = {"c3", "c3-mmg"};

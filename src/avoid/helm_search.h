@@ -58,6 +58,9 @@ fw_status fw_helm_keep_track(fw_helm_ctx *ctx, const fw_track **tr, fw_error *er
 /* Computes every candidate track now (benchmark baseline). */
 fw_status fw_helm_precompute(fw_helm_ctx *ctx, fw_error *err);
 int fw_helm_tracks_computed(const fw_helm_ctx *ctx);
+/* The samples predicted this decision, in whole tracks (a candidate is
+ * predicted only as far as its check looks; mirrored ones not counted). */
+double fw_helm_tracks_predicted(const fw_helm_ctx *ctx);
 
 /* Smallest normalised domain radius of any target along a track (>= 1: all
  * outside); *limiting gets that target (-1 if n = 0).  With stop_below > 0 it
