@@ -26,6 +26,9 @@ struct fw_helm_ctx {
     int *nbox;             /* chunks with their box */
     int *src;              /* mirrored from this slot; -1: predicted */
     int *fail;             /* chunk where the clearing check found a target inside */
+    double *ub2;           /* a value of lambda^2 met along the candidate: >= its minimum */
+    double *val;           /* its clearance once known exactly, else NAN */
+    int *ord;              /* [2][2 nh] the fallback's orders of the candidates */
     fw_chunk_boxes *boxes; /* per track slot */
     int nchunks;           /* chunks of a track */
     int computed;
@@ -66,7 +69,8 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     if (c->tracks)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
-    fw_free_each(16, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->boxes, c->idx,
+    fw_free_each(19, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
+                 c->val, c->ord, c->boxes, c->idx,
                  c->jlo, c->jhi, c->act, c->nact, c->prep, c->paths, c);
 }
 
@@ -103,9 +107,12 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     c->nbox = calloc((size_t)ntr, sizeof *c->nbox);
     c->src = calloc((size_t)ntr, sizeof *c->src);
     c->fail = calloc((size_t)ntr, sizeof *c->fail);
+    c->ub2 = calloc((size_t)ntr, sizeof *c->ub2);
+    c->val = calloc((size_t)ntr, sizeof *c->val);
+    c->ord = calloc((size_t)(4 * c->nh), sizeof *c->ord);
     c->nact = calloc((size_t)c->nchunks, sizeof *c->nact);
     if (!c->tracks || !c->have || !c->boxes || !c->gen || !c->ready || !c->nbox || !c->src ||
-        !c->fail || !c->nact) {
+        !c->fail || !c->ub2 || !c->val || !c->ord || !c->nact) {
         fw_helm_ctx_destroy(c);
         return fw_fail(err, FW_ERUN, "out of memory");
     }
@@ -144,7 +151,8 @@ void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
     for (int i = 0; i < 2 * c->nh; i++)
         c->have[i] = false;
     for (int i = 0; i <= 2 * c->nh; i++)
-        c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1;
+        c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1, c->ub2[i] = INFINITY,
+        c->val[i] = NAN;
     c->have_keep = false;
     c->computed = 0;
     c->samples = 0;
@@ -293,6 +301,8 @@ static double scan_min2(fw_helm_ctx *c, int slot, int j0, double stop2, bool exa
                 a[0] = i;
                 if (!exact)
                     c->fail[slot] = j;
+                if (best < c->ub2[slot])
+                    c->ub2[slot] = best;
                 return best;
             }
         }
@@ -488,68 +498,92 @@ static fw_status least_helms(fw_helm_ctx *c, int allowed, int found[2], fw_helm_
     return FW_OK;
 }
 
-/* Nothing clears: the helm that keeps the nearest target farthest out, by
- * branch and bound (a track is abandoned, and predicted no further, as soon
- * as some target comes closer than the best track's nearest one).  Every
+/* Clearance of a candidate in the fallback, or a value below stop: every
  * candidate failed the clearing check at chunk fail[slot], all its earlier
- * chunks keeping every target out (lambda >= 1): the minimum, below 1, and
- * anything below the bound lie from there on.  With probe >= 0 the bound
- * starts at theta (below that candidate's clearance, and so below the best):
- * a candidate below it is never the pick, nor does it change which later one
- * is (all > theta + 1e-9 raise the best over it); one in [theta, theta +
- * 1e-9) while the best is still below theta would, and returns -1. */
-static fw_status branch_bound(fw_helm_ctx *c, int allowed, int probe, double theta,
-                              double probe_cl, int *pick, int *side, fw_error *err)
+ * chunks keeping every target out (lambda >= 1), so the minimum (below 1)
+ * and anything below stop (< 1) lie from there on. */
+static double fallback_cl(fw_helm_ctx *c, int slot, double stop)
 {
-    static const int sides[2] = {FW_SIDE_STARBOARD, FW_SIDE_PORT};
+    if (!isnan(c->val[slot]))
+        return c->val[slot];
+    double m2 = scan_min2(c, slot, c->fail[slot], stop * stop, true);
+    if (!(m2 < stop * stop))
+        c->val[slot] = sqrt(m2);
+    return sqrt(m2);
+}
+
+/* The reference search's branch and bound over the candidates ord[0..m-1]
+ * in its order: the pick is the first whose clearance beats the best so far
+ * by 1e-9, the best so far bounding each scan.  A candidate whose upper bound
+ * (ub2) cannot beat it needs no scan.  With theta > 0 (at most the largest
+ * clearance) the best starts out as "somewhere below theta": a candidate
+ * below theta is then scanned only that far and skipped (whatever it did
+ * there is overtaken by the first one above theta + 1e-9, which beats any
+ * best below theta); one in [theta, theta + 1e-9) could go either way and
+ * gives *pick = -1. */
+static void replay(fw_helm_ctx *c, const int *ord, int m, double theta, int *pick)
+{
     double best = -1.0;
-    bool known = probe < 0; /* best is the reference search's, not just "below theta" */
-    for (int s = 0; s < 2; s++) {
-        if (!(allowed & (s ? FW_ALLOW_PORT : FW_ALLOW_STARBOARD)))
-            continue;
-        for (int i = 0; i < c->nh; i++) {
+    bool known = !(theta > 0.0);
+    *pick = -1;
+    for (int q = 0; q < m; q++) {
+        int slot = ord[q];
+        double bar = known ? best + 1e-9 : theta, ub = sqrt(c->ub2[slot]);
+        if (ub < bar || (known && ub <= bar))
+            continue; /* cannot beat it */
+        double cl = fallback_cl(c, slot, known ? (best > 0.0 ? best : 0.0) : theta);
+        if (!known) {
+            if (cl < theta)
+                continue;
+            if (cl < theta + 1e-9) {
+                *pick = -1;
+                return;
+            }
+            known = true, best = cl, *pick = slot;
+        } else if (cl > best + 1e-9) {
+            best = cl, *pick = slot;
+        }
+    }
+}
+
+/* Nothing clears: the helm that keeps the nearest target farthest out, as
+ * the reference search picks it (its branch and bound over the candidates in
+ * order, starboard then port by helm).  First the largest clearance by branch
+ * and bound from the most promising candidate down (by upper bound: the
+ * value that failed its clearing check), which stops most scans early; then
+ * the reference order replayed from just below it. */
+static fw_status best_available(fw_helm_ctx *c, int allowed, int *pick, int *side, fw_error *err)
+{
+    int *ord = c->ord, *by_ub = c->ord + 2 * c->nh, m = 0;
+    static const int sides[2] = {FW_SIDE_STARBOARD, FW_SIDE_PORT};
+    for (int s = 0; s < 2; s++)
+        for (int i = 0; i < c->nh && (allowed & (s ? FW_ALLOW_PORT : FW_ALLOW_STARBOARD)); i++) {
             int slot;
             fw_status st = slot_open(c, sides[s], i, &slot, err);
             if (st)
                 return st;
-            double stop = known ? (best > 0.0 ? best : 0.0) : theta, cl = probe_cl;
-            if (slot != probe)
-                cl = sqrt(scan_min2(c, slot, c->fail[slot], stop * stop, true));
-            if (!known) {
-                if (cl < theta)
-                    continue;
-                if (cl < theta + 1e-9) {
-                    *pick = -1;
-                    return FW_OK;
-                }
-                known = true, best = cl, *pick = i, *side = s;
-            } else if (cl > best + 1e-9) {
-                best = cl, *pick = i, *side = s;
-            }
+            ord[m] = slot;
+            /* insertion, stable: the largest upper bound first */
+            int q = m++;
+            for (; q > 0 && c->ub2[by_ub[q - 1]] < c->ub2[slot]; q--)
+                by_ub[q] = by_ub[q - 1];
+            by_ub[q] = slot;
         }
+    double M = -1.0;
+    for (int q = 0; q < m; q++) {
+        int slot = by_ub[q];
+        if (sqrt(c->ub2[slot]) <= M)
+            continue;
+        double cl = fallback_cl(c, slot, M > 0.0 ? M : 0.0);
+        if (!isnan(c->val[slot]) && cl > M)
+            M = cl;
     }
+    replay(c, ord, m, M - 1e-7, pick);
+    if (*pick < 0)
+        replay(c, ord, m, 0.0, pick);
+    *side = *pick >= c->nh;
+    *pick -= *side * c->nh;
     return FW_OK;
-}
-
-/* The probe: the candidate whose first failure came latest (the likeliest
- * to keep the nearest target farthest out), its clearance exact. */
-static fw_status best_available(fw_helm_ctx *c, int allowed, int *pick, int *side, fw_error *err)
-{
-    int probe = -1;
-    for (int s = 0; s < 2; s++)
-        for (int i = 0; i < c->nh; i++) {
-            int slot = s * c->nh + i;
-            if ((allowed & (s ? FW_ALLOW_PORT : FW_ALLOW_STARBOARD)) &&
-                (probe < 0 || c->fail[slot] > c->fail[probe]))
-                probe = slot;
-        }
-    double cl = sqrt(scan_min2(c, probe, c->fail[probe], 0.0, true));
-    double theta = cl - 1e-7;
-    fw_status st = FW_OK;
-    if (theta > 0.0 && !(st = branch_bound(c, allowed, probe, theta, cl, pick, side, err)) &&
-        *pick >= 0)
-        return FW_OK;
-    return st ? st : branch_bound(c, allowed, -1, 0.0, 0.0, pick, side, err);
 }
 
 /* fw_track_clearance of the chosen candidate, over the prepared targets. */
