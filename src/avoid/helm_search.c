@@ -27,8 +27,9 @@ struct fw_helm_ctx {
     int *src;              /* mirrored from this slot; -1: predicted */
     int *fail;             /* chunk where the clearing check found a target inside */
     double *ub2;           /* a value of lambda^2 met along the candidate: >= its minimum */
-    double *val;           /* its clearance once known exactly, else NAN */
-    int *ord;              /* [2][2 nh] the fallback's orders of the candidates */
+    int *next;             /* the fallback's next chunk to scan */
+    int *ord;              /* [3][2 nh] the fallback's order of the candidates, its heap,
+                              and each slot's place in the order */
     fw_chunk_boxes *boxes; /* per track slot */
     int nchunks;           /* chunks of a track */
     int computed;
@@ -70,7 +71,7 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
     fw_free_each(19, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
-                 c->val, c->ord, c->boxes, c->idx,
+                 c->next, c->ord, c->boxes, c->idx,
                  c->jlo, c->jhi, c->act, c->nact, c->prep, c->paths, c);
 }
 
@@ -108,11 +109,11 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     c->src = calloc((size_t)ntr, sizeof *c->src);
     c->fail = calloc((size_t)ntr, sizeof *c->fail);
     c->ub2 = calloc((size_t)ntr, sizeof *c->ub2);
-    c->val = calloc((size_t)ntr, sizeof *c->val);
-    c->ord = calloc((size_t)(4 * c->nh), sizeof *c->ord);
+    c->next = calloc((size_t)ntr, sizeof *c->next);
+    c->ord = calloc((size_t)(6 * c->nh), sizeof *c->ord);
     c->nact = calloc((size_t)c->nchunks, sizeof *c->nact);
     if (!c->tracks || !c->have || !c->boxes || !c->gen || !c->ready || !c->nbox || !c->src ||
-        !c->fail || !c->ub2 || !c->val || !c->ord || !c->nact) {
+        !c->fail || !c->ub2 || !c->next || !c->ord || !c->nact) {
         fw_helm_ctx_destroy(c);
         return fw_fail(err, FW_ERUN, "out of memory");
     }
@@ -151,8 +152,7 @@ void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
     for (int i = 0; i < 2 * c->nh; i++)
         c->have[i] = false;
     for (int i = 0; i <= 2 * c->nh; i++)
-        c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1, c->ub2[i] = INFINITY,
-        c->val[i] = NAN;
+        c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1, c->ub2[i] = INFINITY;
     c->have_keep = false;
     c->computed = 0;
     c->samples = 0;
@@ -268,46 +268,58 @@ fw_status fw_helm_precompute(fw_helm_ctx *c, fw_error *err)
     return st;
 }
 
-/* Smallest lambda^2 of the targets along candidate slot, chunk by chunk in
- * time, the track predicted only as far as the scan has come: it returns as
- * soon as one is below stop2, so a failing candidate is predicted only up to
- * its first failure.  Over the chunks each target's reach window holds: the
- * others are culled on every track.  The target that stops the scan goes to
- * the front of its chunk's list: neighbouring helms fail on the same one.
- * The minimum, when it does not stop, is the one over every target and
- * chunk from j0 on, whatever the order (exact), or (not exact: only whether
- * it is below stop2 matters) some value >= stop2.  A stop is noted in
- * c->fail[slot] (the chunk) when not exact. */
-static double scan_min2(fw_helm_ctx *c, int slot, int j0, double stop2, bool exact)
+/* Does some target come inside the domain (lambda^2 < stop2) along
+ * candidate slot?  Chunk by chunk in time, the track predicted only as far as
+ * the scan has come, so a failing candidate is predicted only up to its first
+ * failure, noted in c->fail[slot] with the value found in c->ub2[slot] (>=
+ * the candidate's minimum).  Over the chunks each target's reach window holds:
+ * the others are culled on every track.  The target that stops the scan goes
+ * to the front of its chunk's list: neighbouring helms fail on the same one.
+ * Returns that value, or (none below stop2) some value >= stop2. */
+static double scan_min2(fw_helm_ctx *c, int slot, double stop2)
 {
     const fw_track *tr = &c->tracks[slot];
     const fw_chunk_boxes *cb = &c->boxes[slot];
-    double best = INFINITY;
-    for (int j = j0; j < c->nchunks; j++) {
+    for (int j = 0; j < c->nchunks; j++) {
         int na = c->nact[j], *a = c->act + (size_t)j * (size_t)c->cap;
         if (na == 0)
             continue;
         slot_chunk(c, slot, j);
         for (int p = 0; p < na; p++) {
-            /* below stop2 it stops, and above it only the exact minimum
-             * matters (if at all): a value above the smallest yet is not it */
+            /* values above stop2 do not matter */
             double m2 = fw_target_min2_cap(&c->def.domain, tr, cb, &c->prep[a[p]], j, j + 1,
-                                           stop2, exact ? best : stop2);
-            if (m2 < best)
-                best = m2;
-            if (best < stop2) {
+                                           stop2, stop2);
+            if (m2 < stop2) {
                 int i = a[p];
                 memmove(a + 1, a, sizeof *a * (size_t)p);
                 a[0] = i;
-                if (!exact)
-                    c->fail[slot] = j;
-                if (best < c->ub2[slot])
-                    c->ub2[slot] = best;
-                return best;
+                c->fail[slot] = j;
+                c->ub2[slot] = m2;
+                return m2;
             }
         }
     }
-    return best;
+    return INFINITY;
+}
+
+/* Lowers ub2[slot] to the smallest lambda^2 of chunk j (the smallest found
+ * so far bounding the exact tests: the value over all chunks scanned stays
+ * the exact minimum of what the reference search computes). */
+static void scan_chunk(fw_helm_ctx *c, int slot, int j)
+{
+    int na = c->nact[j];
+    const int *a = c->act + (size_t)j * (size_t)c->cap;
+    if (na == 0)
+        return;
+    slot_chunk(c, slot, j);
+    double best = c->ub2[slot];
+    for (int p = 0; p < na; p++) {
+        double m2 = fw_target_min2_cap(&c->def.domain, &c->tracks[slot], &c->boxes[slot],
+                                       &c->prep[a[p]], j, j + 1, 0.0, best);
+        if (m2 < best)
+            best = m2;
+    }
+    c->ub2[slot] = best;
 }
 
 /* A path buffer for one predicted target: on the stack when it fits (the
@@ -485,7 +497,7 @@ static fw_status least_helms(fw_helm_ctx *c, int allowed, int found[2], fw_helm_
             fw_status st = slot_open(c, sides[s], i, &slot, err);
             if (st)
                 return st;
-            if (sqrt(scan_min2(c, slot, 0, 1.0, false)) >= 1.0) {
+            if (sqrt(scan_min2(c, slot, 1.0)) >= 1.0) {
                 found[s] = i;
                 res->side_helm[s] = fw_helm_value(c, sides[s], i);
                 break;
@@ -498,18 +510,17 @@ static fw_status least_helms(fw_helm_ctx *c, int allowed, int found[2], fw_helm_
     return FW_OK;
 }
 
-/* Clearance of a candidate in the fallback, or a value below stop: every
- * candidate failed the clearing check at chunk fail[slot], all its earlier
- * chunks keeping every target out (lambda >= 1), so the minimum (below 1)
- * and anything below stop (< 1) lie from there on. */
+/* Clearance of a candidate in the fallback, or a value below stop, scanning
+ * on from where the fallback left it: every candidate failed the clearing
+ * check at chunk fail[slot], all its earlier chunks keeping every target out
+ * (lambda >= 1), so its minimum (below 1) lies from there on, and so does
+ * anything below stop (< 1).  Exact once every chunk is scanned. */
 static double fallback_cl(fw_helm_ctx *c, int slot, double stop)
 {
-    if (!isnan(c->val[slot]))
-        return c->val[slot];
-    double m2 = scan_min2(c, slot, c->fail[slot], stop * stop, true);
-    if (!(m2 < stop * stop))
-        c->val[slot] = sqrt(m2);
-    return sqrt(m2);
+    double s2 = stop * stop;
+    while (c->next[slot] < c->nchunks && !(c->ub2[slot] < s2))
+        scan_chunk(c, slot, c->next[slot]++);
+    return sqrt(c->ub2[slot]);
 }
 
 /* The reference search's branch and bound over the candidates ord[0..m-1]
@@ -546,15 +557,40 @@ static void replay(fw_helm_ctx *c, const int *ord, int m, double theta, int *pic
     }
 }
 
+/* Max-heap of candidate slots by ub2 (ties: the first in the reference
+ * order, pos[] gives it). */
+static bool heap_above(const fw_helm_ctx *c, const int *pos, int a, int b)
+{
+    return c->ub2[a] > c->ub2[b] || (c->ub2[a] == c->ub2[b] && pos[a] < pos[b]);
+}
+
+static void heap_down(const fw_helm_ctx *c, const int *pos, int *h, int m, int q)
+{
+    for (;;) {
+        int l = 2 * q + 1, r = l + 1, top = q;
+        if (l < m && heap_above(c, pos, h[l], h[top]))
+            top = l;
+        if (r < m && heap_above(c, pos, h[r], h[top]))
+            top = r;
+        if (top == q)
+            return;
+        int t = h[q];
+        h[q] = h[top], h[top] = t;
+        q = top;
+    }
+}
+
 /* Nothing clears: the helm that keeps the nearest target farthest out, as
  * the reference search picks it (its branch and bound over the candidates in
- * order, starboard then port by helm).  First the largest clearance by branch
- * and bound from the most promising candidate down (by upper bound: the
- * value that failed its clearing check), which stops most scans early; then
- * the reference order replayed from just below it. */
+ * order, starboard then port by helm).  First the largest clearance, best
+ * first: the candidate whose bound (the smallest value met along it) is
+ * highest is scanned a chunk further, until the highest is one scanned to the
+ * end, exact, and so the largest.  Each candidate is then scanned (and
+ * predicted) only until it falls below that.  Then the reference order is
+ * replayed from just below it. */
 static fw_status best_available(fw_helm_ctx *c, int allowed, int *pick, int *side, fw_error *err)
 {
-    int *ord = c->ord, *by_ub = c->ord + 2 * c->nh, m = 0;
+    int *ord = c->ord, *heap = c->ord + 2 * c->nh, *pos = c->ord + 4 * c->nh, m = 0;
     static const int sides[2] = {FW_SIDE_STARBOARD, FW_SIDE_PORT};
     for (int s = 0; s < 2; s++)
         for (int i = 0; i < c->nh && (allowed & (s ? FW_ALLOW_PORT : FW_ALLOW_STARBOARD)); i++) {
@@ -562,21 +598,24 @@ static fw_status best_available(fw_helm_ctx *c, int allowed, int *pick, int *sid
             fw_status st = slot_open(c, sides[s], i, &slot, err);
             if (st)
                 return st;
-            ord[m] = slot;
-            /* insertion, stable: the largest upper bound first */
-            int q = m++;
-            for (; q > 0 && c->ub2[by_ub[q - 1]] < c->ub2[slot]; q--)
-                by_ub[q] = by_ub[q - 1];
-            by_ub[q] = slot;
+            pos[slot] = m;
+            ord[m] = heap[m] = slot;
+            c->next[slot] = c->fail[slot];
+            m++;
         }
-    double M = -1.0;
-    for (int q = 0; q < m; q++) {
-        int slot = by_ub[q];
-        if (sqrt(c->ub2[slot]) <= M)
-            continue;
-        double cl = fallback_cl(c, slot, M > 0.0 ? M : 0.0);
-        if (!isnan(c->val[slot]) && cl > M)
-            M = cl;
+    if (m == 0)
+        return fw_fail(err, FW_EINPUT, "helm search: no side allowed");
+    for (int q = m / 2 - 1; q >= 0; q--)
+        heap_down(c, pos, heap, m, q);
+    double M;
+    for (;;) {
+        int top = heap[0];
+        if (c->next[top] >= c->nchunks) {
+            M = sqrt(c->ub2[top]);
+            break;
+        }
+        scan_chunk(c, top, c->next[top]++);
+        heap_down(c, pos, heap, m, 0);
     }
     replay(c, ord, m, M - 1e-7, pick);
     if (*pick < 0)
