@@ -184,52 +184,65 @@ static inline double seg_lower(double x0, double y0, double x1, double y1, const
     return xm * xm * g->ia_min + ym * ym * g->ib_min;
 }
 
+/* Body-frame offsets (x, y) of target g at samples k0..k1 of the track, and
+ * the sine and cosine of its heading there (gs, gc). */
+static void chunk_offsets(const fw_domain_def *dom, const fw_track *tr, const fw_prep_target *g,
+                          int k0, int k1, double *x, double *y, double *gs, double *gc)
+{
+    bool tv = dom->reading == FW_DOMAIN_TRANSVERSE;
+    for (int k = k0, q = 0; k <= k1; k++, q++) {
+        double tk = k * tr->dt, ge, gn;
+        fw_prep_at(g, k, tk, &ge, &gn);
+        gs[q] = g->path ? g->path[2 * g->ns + k] : g->sc;
+        gc[q] = g->path ? g->path[3 * g->ns + k] : g->cc;
+        double dx = ge - tr->east[k], dy = gn - tr->north[k];
+        /* fw_domain_frame: the own heading's frame, or the target's */
+        double fs = tv ? gs[q] : tr->sin_psi[k], fc = tv ? gc[q] : tr->cos_psi[k];
+        fw_to_body(dx, dy, fs, fc, &x[q], &y[q]);
+    }
+}
+
+/* Grown axes at sample k (offset q in the chunk), from the relative heading's
+ * cosine and sine by the angle sums. */
+static inline void axes_at(const fw_domain_def *dom, const fw_track *tr, const fw_prep_target *g,
+                           int k, double gs, double gc, double *a, double *b)
+{
+    double s = tr->sin_psi[k], c = tr->cos_psi[k];
+    fw_domain_grown(dom, g->hl, g->hb, gc * c + gs * s, gs * c - gc * s, a, b);
+}
+
 double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
                           const fw_prep_target *g, int j0, int j1, double stop2, double cap2)
 {
     double tmin2 = INFINITY;
+    double x[FW_CHUNK + 1], y[FW_CHUNK + 1], gs[FW_CHUNK + 1], gc[FW_CHUNK + 1];
     for (int j = j0; j < j1 && j * FW_CHUNK < cb->nseg; j++) {
         int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
         if (j < cb->nch && fw_chunk_misses(tr->dt, g, j, cb->nseg, cb->b[j]))
             continue;
-        /* the previous sample's offsets, and its axes once made */
-        double px = 0, py = 0, pa = 1, pb = 1, prc = 1, prs = 0;
-        bool p_axes = false;
-        for (int k = k0; k <= k1; k++) {
-            double tk = k * tr->dt, ge, gn, gs = g->sc, gc = g->cc;
-            fw_prep_at(g, k, tk, &ge, &gn);
-            if (g->path)
-                gs = g->path[2 * g->ns + k], gc = g->path[3 * g->ns + k];
-            double dx = ge - tr->east[k], dy = gn - tr->north[k];
-            double s = tr->sin_psi[k], c = tr->cos_psi[k];
-            double x, y, fs, fc;
-            fw_domain_frame(dom, s, c, gs, gc, &fs, &fc);
-            fw_to_body(dx, dy, fs, fc, &x, &y);
-            /* cos and sin of the relative heading, from the angle sums */
-            double rc = gc * c + gs * s, rs = gs * c - gc * s;
-            bool axes = false;
-            double a = 1, b = 1;
-            if (k > k0) {
-                /* a segment that cannot come below the smallest value found
-                 * (or cap2) cannot change the result: skipped.  The margins
-                 * cover the rounding of both (see clearance.h) */
-                double lo = seg_lower(px, py, x, y, g);
-                double cap = tmin2 < cap2 ? tmin2 : cap2;
-                if (!(lo * (1.0 - 1e-6) - 1e-12 > cap)) {
-                    if (!p_axes)
-                        fw_domain_grown(dom, g->hl, g->hb, prc, prs, &pa, &pb);
-                    fw_domain_grown(dom, g->hl, g->hb, rc, rs, &a, &b);
-                    axes = true;
-                    /* body-frame offsets interpolated linearly over the
-                     * segment: the frame turns by r dt (about 1 deg), a
-                     * sub-metre error (the transverse reading's target frame
-                     * does not turn) */
-                    double l2 = seg_min_lambda2(px, py, x, y, 0.5 * (pa + a), 0.5 * (pb + b));
-                    if (l2 < tmin2)
-                        tmin2 = l2;
-                }
-            }
-            px = x, py = y, pa = a, pb = b, prc = rc, prs = rs, p_axes = axes;
+        chunk_offsets(dom, tr, g, k0, k1, x, y, gs, gc);
+        double pa = 0, pb = 0; /* axes of the segment's first sample, when made */
+        int have = -1;
+        for (int q = 1; q <= k1 - k0; q++) {
+            /* a segment that cannot come below the smallest value found (or
+             * cap2) cannot change the result: skipped.  The margins cover
+             * the rounding of both (see clearance.h) */
+            double lo = seg_lower(x[q - 1], y[q - 1], x[q], y[q], g);
+            double cap = tmin2 < cap2 ? tmin2 : cap2;
+            if (lo * (1.0 - 1e-6) - 1e-12 > cap)
+                continue;
+            double a, b;
+            if (have != q - 1)
+                axes_at(dom, tr, g, k0 + q - 1, gs[q - 1], gc[q - 1], &pa, &pb);
+            axes_at(dom, tr, g, k0 + q, gs[q], gc[q], &a, &b);
+            /* body-frame offsets interpolated linearly over the segment: the
+             * frame turns by r dt (about 1 deg), a sub-metre error (the
+             * transverse reading's target frame does not turn) */
+            double l2 = seg_min_lambda2(x[q - 1], y[q - 1], x[q], y[q], 0.5 * (pa + a),
+                                        0.5 * (pb + b));
+            if (l2 < tmin2)
+                tmin2 = l2;
+            pa = a, pb = b, have = q;
         }
         if (tmin2 < stop2)
             break;
