@@ -271,8 +271,8 @@ fw_status fw_helm_precompute(fw_helm_ctx *c, fw_error *err)
 /* Does some target come inside the domain (lambda^2 < stop2) along
  * candidate slot?  Chunk by chunk in time, the track predicted only as far as
  * the scan has come, so a failing candidate is predicted only up to its first
- * failure, noted in c->fail[slot] with the value found in c->ub2[slot] (>=
- * the candidate's minimum).  Over the chunks each target's reach window holds:
+ * failure, noted in c->fail[slot] with the smallest value of that chunk in
+ * c->ub2[slot] (>= the candidate's minimum).  Over the chunks each target's reach window holds:
  * the others are culled on every track.  The target that stops the scan goes
  * to the front of its chunk's list: neighbouring helms fail on the same one.
  * Returns that value, or (none below stop2) some value >= stop2. */
@@ -291,6 +291,14 @@ static double scan_min2(fw_helm_ctx *c, int slot, double stop2)
                                            stop2, stop2);
             if (m2 < stop2) {
                 int i = a[p];
+                /* the rest of the chunk too, for the fallback: its bound is
+                 * then the chunk's smallest value (the targets before gave
+                 * none below stop2), and it goes on from the next chunk */
+                for (int q = p + 1; q < na; q++) {
+                    double v = fw_target_min2_cap(&c->def.domain, tr, cb, &c->prep[a[q]], j,
+                                                  j + 1, 0.0, m2);
+                    m2 = v < m2 ? v : m2;
+                }
                 memmove(a + 1, a, sizeof *a * (size_t)p);
                 a[0] = i;
                 c->fail[slot] = j;
@@ -514,7 +522,8 @@ static fw_status least_helms(fw_helm_ctx *c, int allowed, int found[2], fw_helm_
  * on from where the fallback left it: every candidate failed the clearing
  * check at chunk fail[slot], all its earlier chunks keeping every target out
  * (lambda >= 1), so its minimum (below 1) lies from there on, and so does
- * anything below stop (< 1).  Exact once every chunk is scanned. */
+ * anything below stop (< 1); ub2 holds that chunk's smallest value, next
+ * the chunk after.  Exact once every chunk is scanned. */
 static double fallback_cl(fw_helm_ctx *c, int slot, double stop)
 {
     double s2 = stop * stop;
@@ -600,7 +609,7 @@ static fw_status best_available(fw_helm_ctx *c, int allowed, int *pick, int *sid
                 return st;
             pos[slot] = m;
             ord[m] = heap[m] = slot;
-            c->next[slot] = c->fail[slot];
+            c->next[slot] = c->fail[slot] + 1; /* its chunk is done */
             m++;
         }
     if (m == 0)
