@@ -100,13 +100,19 @@ static inline void kin_step(kin *k, double ps, double pc, double sn, double cs, 
         k->north += 0.5 * k->U * dt * (pc + cs);
         return;
     }
-    double rn = k->U > 0.1 ? r * k->L / k->U : 0.0; /* r' */
+    /* r' (a zero rate, on a straight or steadied stretch, is its own r':
+     * +-0 L / U, without the division on the speed's chain) */
+    double rn = k->U > 0.1 ? (r == 0.0 ? r : r * k->L / k->U) : 0.0;
     double b_ss = k->kb->drift * rn;
     double b1 = b_ss + (k->beta - b_ss) * k->Eb;
     /* the loss is driven by the drift reached at the step's end, as the
-     * identification drives it by the MMG ship's (identify.c) */
-    double loss = k->kb->speed_loss * fabs(rn) + k->kb->speed_loss_drift * fabs(b1 * rn);
-    double u_ss = k->U0 * (1.0 - (loss < 0.9 ? loss : 0.9)); /* fmin, inlined: loss is finite */
+     * identification drives it by the MMG ship's (identify.c); at r' = 0 it
+     * is +-0 and u_ss = U0 (1 - 0) = U0 exactly */
+    double u_ss = k->U0;
+    if (rn != 0.0 || !isfinite(b1)) {
+        double loss = k->kb->speed_loss * fabs(rn) + k->kb->speed_loss_drift * fabs(b1 * rn);
+        u_ss = k->U0 * (1.0 - (loss < 0.9 ? loss : 0.9)); /* fmin, inlined: loss is finite */
+    }
     double U1 = u_ss + (k->U - u_ss) * k->Eu;
     rotate(&k->sb, &k->cb, b1 - k->beta);
     k->beta = b1;
