@@ -223,7 +223,8 @@ static void run_group(const char *ship_name, fw_domain_reading reading, bool hul
         int n = counts[s % 12];
         h = run_scene(ctx, ref, &hdef, n, (s / 12) % 2 == 1, (s / 24) % 2 == 1, h, &tl);
     }
-    printf("  %-26s %d scenes: %d threats, %d infeasible; sides (3 searches each) %d starboard, %d port; %d acted\n",
+    printf("  %-26s %d scenes: %d threats, %d infeasible; sides (3 searches each) %d "
+           "starboard, %d port; %d acted\n",
            key, tl.scenes, tl.threats, tl.infeasible, tl.starboard, tl.port, tl.acted);
     /* the comparison covers both outcomes and both sides */
     CHECK(tl.threats > tl.scenes / 2 && tl.infeasible > tl.scenes / 10);

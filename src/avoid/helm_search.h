@@ -2,12 +2,17 @@
  *
  * For each permitted side, the least helm from min_helm to max_helm (step
  * 1 deg) whose Nomoto-predicted own track keeps every target (constant
- * velocity) outside the own domain over the horizon.  Tracks depend only on
- * the own state, so a context computes each at most once per decision, lazily
- * (most decisions need the keep-course track and a few helms only), and
- * mirrors the port tracks from the starboard ones when the start is symmetric.
- * Each target-track check is culled chunk by chunk with bounding boxes in
- * space and time before the exact per-segment ellipse test.
+ * velocity) outside the own domain over the horizon; if none does, the helm
+ * whose nearest target stays farthest out.  Tracks depend only on the own
+ * state, so a context computes each at most once per decision, lazily, and
+ * only as far as a check looks along it (a candidate that lets a target in is
+ * predicted up to that point only), and mirrors the port tracks from the
+ * starboard ones when the start is symmetric.  Checks go chunk by chunk in
+ * time, culled with bounding boxes in space and time and with each target's
+ * reach window (how far the own ship can have gone), then segment by segment
+ * with a cheap lower bound before the exact ellipse test.  The results are
+ * those of the plain search to the bit (tests/test_decide.c compares them with
+ * tests/helm_reference.c, the search before these shortcuts).
  */
 #ifndef FW_HELM_SEARCH_H
 #define FW_HELM_SEARCH_H
