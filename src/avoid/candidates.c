@@ -100,37 +100,44 @@ double fw_cand_fails(fw_helm_ctx *c, int slot, double stop2)
     return INFINITY;
 }
 
-/* Lowers ub2[slot] to the smallest lambda^2 of chunk j (the smallest found
- * so far bounding the exact tests: the value over all chunks scanned stays
- * the exact minimum of what the reference search computes). */
-static void scan_chunk(fw_helm_ctx *c, int slot, int j)
+/* Scans slot on from where it was left (chunk next[slot], target nextp[slot]
+ * in that chunk's list) until its bound ub2[slot] falls below `below` or
+ * every chunk is scanned.  The smallest value found so far bounds the exact
+ * tests, so ub2 is always a value met along the candidate, and once every
+ * chunk is scanned its exact minimum (of what the reference search
+ * computes, from the chunk after the failing one on; see fallback_cl). */
+static void scan_on(fw_helm_ctx *c, int slot, double below)
 {
-    int na = c->nact[j];
-    const int *a = c->act + (size_t)j * (size_t)c->cap;
-    if (na == 0)
-        return;
-    fw_cand_chunk(c, slot, j);
     double best = c->ub2[slot];
-    for (int p = 0; p < na; p++) {
-        double m2 = fw_target_min2_cap(&c->def.domain, &c->tracks[slot], &c->boxes[slot],
-                                       &c->prep[a[p]], j, j + 1, 0.0, best);
-        if (m2 < best)
-            best = m2;
+    int j = c->next[slot], p = c->nextp[slot];
+    while (j < c->nchunks && !(best < below)) {
+        int na = c->nact[j];
+        const int *a = c->act + (size_t)j * (size_t)c->cap;
+        if (p < na)
+            fw_cand_chunk(c, slot, j);
+        for (; p < na && !(best < below); p++) {
+            double m2 = fw_target_min2_cap(&c->def.domain, &c->tracks[slot], &c->boxes[slot],
+                                           &c->prep[a[p]], j, j + 1, 0.0, best);
+            if (m2 < best)
+                best = m2;
+        }
+        if (p >= na)
+            j++, p = 0;
     }
     c->ub2[slot] = best;
+    c->next[slot] = j;
+    c->nextp[slot] = p;
 }
 
 /* Clearance of a candidate in the fallback, or a value below stop, scanning
  * on from where the fallback left it: every candidate failed the clearing
  * check at chunk fail[slot], all its earlier chunks keeping every target out
  * (lambda >= 1), so its minimum (below 1) lies from there on, and so does
- * anything below stop (< 1); ub2 holds that chunk's smallest value, next
- * the chunk after.  Exact once every chunk is scanned. */
+ * anything below stop (< 1); ub2 starts at that chunk's smallest value.
+ * Exact once every chunk is scanned. */
 static double fallback_cl(fw_helm_ctx *c, int slot, double stop)
 {
-    double s2 = stop * stop;
-    while (c->next[slot] < c->nchunks && !(c->ub2[slot] < s2))
-        scan_chunk(c, slot, c->next[slot]++);
+    scan_on(c, slot, stop * stop);
     return sqrt(c->ub2[slot]);
 }
 
@@ -195,8 +202,8 @@ static void heap_down(const fw_helm_ctx *c, const int *pos, int *h, int m, int q
  * the reference search picks it (its branch and bound over the candidates in
  * order, starboard then port by helm).  First the largest clearance, best
  * first: the candidate whose bound (the smallest value met along it) is
- * highest is scanned a chunk further, until the highest is one scanned to the
- * end, exact, and so the largest.  Each candidate is then scanned (and
+ * highest is scanned on until it is no longer the highest, until the highest
+ * is one scanned to the end, exact, and so the largest.  Each candidate is then scanned (and
  * predicted) only until it falls below that.  Then the reference order is
  * replayed from just below it. */
 fw_status fw_cand_best_available(fw_helm_ctx *c, int allowed, int *pick, int *side, fw_error *err)
@@ -212,6 +219,7 @@ fw_status fw_cand_best_available(fw_helm_ctx *c, int allowed, int *pick, int *si
             pos[slot] = m;
             ord[m] = heap[m] = slot;
             c->next[slot] = c->fail[slot] + 1; /* its chunk is done */
+            c->nextp[slot] = 0;
             m++;
         }
     if (m == 0)
@@ -225,7 +233,11 @@ fw_status fw_cand_best_available(fw_helm_ctx *c, int allowed, int *pick, int *si
             M = sqrt(c->ub2[top]);
             break;
         }
-        scan_chunk(c, top, c->next[top]++);
+        /* on until it is no longer the highest */
+        double second = -1.0;
+        for (int q = 1; q <= 2 && q < m; q++)
+            second = c->ub2[heap[q]] > second ? c->ub2[heap[q]] : second;
+        scan_on(c, top, second);
         heap_down(c, pos, heap, m, 0);
     }
     replay(c, ord, m, M - 1e-7, pick);

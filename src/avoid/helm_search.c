@@ -33,8 +33,8 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     if (c->tracks)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
-    fw_free_each(19, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
-                 c->next, c->ord, c->boxes, c->idx,
+    fw_free_each(20, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
+                 c->next, c->nextp, c->ord, c->boxes, c->idx,
                  c->jlo, c->jhi, c->act, c->nact, c->prep, c->paths, c);
 }
 
@@ -73,10 +73,11 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     c->fail = calloc((size_t)ntr, sizeof *c->fail);
     c->ub2 = calloc((size_t)ntr, sizeof *c->ub2);
     c->next = calloc((size_t)ntr, sizeof *c->next);
+    c->nextp = calloc((size_t)ntr, sizeof *c->nextp);
     c->ord = calloc((size_t)(6 * c->nh), sizeof *c->ord);
     c->nact = calloc((size_t)c->nchunks, sizeof *c->nact);
     if (!c->tracks || !c->have || !c->boxes || !c->gen || !c->ready || !c->nbox || !c->src ||
-        !c->fail || !c->ub2 || !c->next || !c->ord || !c->nact) {
+        !c->fail || !c->ub2 || !c->next || !c->nextp || !c->ord || !c->nact) {
         fw_helm_ctx_destroy(c);
         return fw_fail(err, FW_ERUN, "out of memory");
     }
