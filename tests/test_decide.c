@@ -6,7 +6,8 @@
  * already turning) is searched by fw_helm_search and by the reference search
  * (helm_reference.c, the search before the change), on the sides COLREGs
  * permit, either side and port only: every field of the two results must
- * agree bit for bit.  Each scene's policy step (assessment,
+ * agree bit for bit, and so must the steering and delayed-helm checks that
+ * reuse the search's prepared targets, against fw_track_clearance.  Each scene's policy step (assessment,
  * search, action check) is hashed too and compared with
  * tests/data/digests/decisions.txt, made before the change: that also checks
  * the predicted tracks, which both searches share.
@@ -117,8 +118,37 @@ static FILE *digest_out;
 
 /* What the scenes of one group covered, so that the comparison is not vacuous. */
 typedef struct tally {
-    int scenes, threats, infeasible, port, starboard, acted;
+    int scenes, threats, infeasible, port, starboard, acted, later;
 } tally;
+
+static const fw_ship *ctx_ship; /* the ship of the group under test */
+static fw_track tr;              /* steer_and_later's */
+
+/* The policy's other checks after a search (fw_helm_steer_clearance and
+ * fw_helm_clears_after, which reuse the search's prepared targets) against
+ * the same tracks checked by fw_track_clearance from scratch. */
+static void steer_and_later(fw_helm_ctx *ctx, const fw_helm_def *hdef, const fw_own_state *own,
+                            const fw_target *tg, int n, tally *tl)
+{
+    if (!tr.east && fw_track_alloc(&tr, fw_track_samples(&hdef->track), NULL))
+        return;
+    fw_steer_def ap = {.psi_ref = own->psi + 0.5, .kp = 1.0, .kd = 20.0,
+                       .max_helm = fw_deg_to_rad(20)};
+    double cl;
+    bool later;
+    CHECK(fw_helm_steer_clearance(ctx, tg, n, &ap, false, &cl, NULL) == FW_OK);
+    CHECK(fw_track_predict_steer(ctx_ship, &hdef->track, own, &ap, &tr, NULL) == FW_OK);
+    double want = fw_track_clearance(hdef, &tr, tg, n, 0.0, NULL);
+    CHECK_MSG(memcmp(&cl, &want, sizeof cl) == 0, "steer clearance %.17g, expected %.17g", cl,
+              want);
+    double helm = fw_deg_to_rad(tl->scenes % 2 ? 12 : -30);
+    CHECK(fw_helm_clears_after(ctx, tg, n, helm, 60.0, &later, NULL) == FW_OK);
+    fw_track_def d = hdef->track;
+    d.delay = 60.0;
+    CHECK(fw_track_predict(ctx_ship, &d, own, helm, &tr, NULL) == FW_OK);
+    CHECK(later == (fw_track_clearance(hdef, &tr, tg, n, 1.0, NULL) >= 1.0));
+    tl->later += later;
+}
 
 static uint64_t run_scene(fw_helm_ctx *ctx, fw_helm_ref *ref, const fw_helm_def *hdef, int n,
                           bool dense, bool turning_now, uint64_t h, tally *tl)
@@ -156,6 +186,7 @@ static uint64_t run_scene(fw_helm_ctx *ctx, fw_helm_ref *ref, const fw_helm_def 
         tl->port += rn.side == FW_SIDE_PORT;
         tl->starboard += rn.side == FW_SIDE_STARBOARD;
     }
+    steer_and_later(ctx, hdef, &own, tg, n, tl);
     int ints[3] = {d.mode, d.acted, d.primary};
     h = mix(h, ints, sizeof ints);
     h = mix(h, &d.helm, sizeof d.helm);
@@ -206,6 +237,7 @@ static void run_group(const char *ship_name, fw_domain_reading reading, bool hul
     }
     fw_helm_ctx *ctx = NULL;
     fw_helm_ref *ref = NULL;
+    ctx_ship = &ship;
     CHECK(fw_helm_ctx_create(&ship, &hdef, &ctx, &err) == FW_OK);
     CHECK(ctx && fw_helm_ref_create(&hdef, fw_helm_count(ctx), &ref, &err) == FW_OK);
     if (!ctx || !ref) {
@@ -230,6 +262,7 @@ static void run_group(const char *ship_name, fw_domain_reading reading, bool hul
     CHECK(tl.threats > tl.scenes / 2 && tl.infeasible > tl.scenes / 10);
     CHECK(tl.threats - tl.infeasible > tl.scenes / 10);
     CHECK(tl.port > 100 && tl.starboard > 100 && tl.acted > 100);
+    CHECK(tl.later > 10 && tl.later < tl.scenes - 10); /* both verdicts met */
     check_digest(key, h);
     fw_helm_ref_destroy(ref);
     fw_helm_ctx_destroy(ctx);
@@ -250,6 +283,7 @@ int main(void)
     if (wd && *wd && !(digest_out = fopen(wd, "w")))
         return 1;
     TEST_RUN(test_decisions_unchanged);
+    fw_track_free(&tr);
     if (digest_out)
         fclose(digest_out);
     return TEST_EXIT();

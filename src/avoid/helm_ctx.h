@@ -45,6 +45,8 @@ struct fw_helm_ctx {
     int *jlo, *jhi;
     int *act, *nact;       /* act[j cap + p], p < nact[j] */
     fw_prep_target *prep;
+    const fw_target *prep_t; /* prep holds these n targets (this decision's search) */
+    int prep_n;
     double *paths;         /* the predicted targets' paths (clearance.h) */
     size_t paths_cap;      /* doubles */
 };

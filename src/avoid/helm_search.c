@@ -118,6 +118,7 @@ void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
     for (int i = 0; i <= 2 * c->nh; i++)
         c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1, c->ub2[i] = INFINITY;
     c->have_keep = false;
+    c->prep_t = NULL;
     c->computed = 0;
     c->samples = 0;
     c->umax = speed_bound(c->ship, own);
@@ -394,6 +395,7 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
     res->side = FW_SIDE_NONE;
     res->helm = 0.0;
     keep_check(c, tr, t, n, res);
+    c->prep_t = t, c->prep_n = n;
     res->threat = res->keep_clearance < 1.0;
     res->clearance = res->keep_clearance;
     if (!res->threat)
@@ -420,6 +422,28 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
     return FW_OK;
 }
 
+/* fw_track_clearance(def, spare track, t, n, stop_below, NULL), over the
+ * targets this decision's search prepared when they are these (the reach
+ * windows hold for any track from this own state; only values below the
+ * smallest yet, or with `only_below` below stop_below, are tested exactly). */
+static double spare_clearance(fw_helm_ctx *c, const fw_target *t, int n, double stop_below,
+                              bool only_below)
+{
+    fw_track *tr = &c->tracks[2 * c->nh + 1];
+    if (c->prep_t != t || c->prep_n != n)
+        return fw_track_clearance(&c->def, tr, t, n, stop_below, NULL);
+    fw_chunk_boxes *cb = &c->boxes[2 * c->nh + 1];
+    fw_track_boxes(tr, cb);
+    double best = INFINITY, stop2 = stop_below * stop_below;
+    for (int i = 0; i < n && !(best < stop2); i++) {
+        double m2 = fw_target_min2_cap(&c->def.domain, tr, cb, &c->prep[i], c->jlo[i], c->jhi[i],
+                                       stop2, only_below && stop2 < best ? stop2 : best);
+        if (m2 < best)
+            best = m2;
+    }
+    return sqrt(best);
+}
+
 fw_status fw_helm_clears_after(fw_helm_ctx *c, const fw_target *t, int n, double helm,
                                double delay, bool *clears, fw_error *err)
 {
@@ -430,7 +454,7 @@ fw_status fw_helm_clears_after(fw_helm_ctx *c, const fw_target *t, int n, double
     if (st)
         return st;
     c->computed++;
-    *clears = fw_track_clearance(&c->def, spare, t, n, 1.0, NULL) >= 1.0;
+    *clears = spare_clearance(c, t, n, 1.0, true) >= 1.0;
     return FW_OK;
 }
 
@@ -488,7 +512,7 @@ fw_status fw_helm_steer_clearance(fw_helm_ctx *c, const fw_target *t, int n,
     if (st)
         return st;
     c->computed++;
-    double cl = fw_track_clearance(&c->def, tr, t, n, 0.0, NULL);
+    double cl = spare_clearance(c, t, n, 0.0, false);
     if (beyond && tr->n > 0)
         cl = fmin(cl, beyond_horizon(c, tr, t, n));
     *clearance = cl;

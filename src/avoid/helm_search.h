@@ -100,7 +100,10 @@ fw_status fw_helm_search(fw_helm_ctx *ctx, const fw_target *t, int n, int allowe
                          fw_helm_result *res, fw_error *err);
 
 /* Does a track with `helm` started after waiting `delay` s keep all targets
- * out?  (For the action policy: would the minimum helm still do later?) */
+ * out?  (For the action policy: would the minimum helm still do later?)
+ * This and fw_helm_steer_clearance check against the targets as this
+ * decision's fw_helm_search prepared them when given the same array and
+ * count (the policy's calls): they must not have changed in between. */
 fw_status fw_helm_clears_after(fw_helm_ctx *ctx, const fw_target *t, int n, double helm,
                                double delay, bool *clears, fw_error *err);
 
