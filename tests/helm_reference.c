@@ -96,8 +96,15 @@ static void prune_targets(fw_helm_ref *r, int allowed, int *m)
             first = false;
         }
     }
-    if (first || u.nch * FW_CHUNK < u.nseg)
+    if (first || u.nch * FW_CHUNK < u.nseg) {
+        /* no pruning: every chunk.  (f49b4df returned here with the windows
+         * unset, holding the threat flags and earlier decisions' values: a
+         * horizon beyond FW_MAX_CHUNKS chunks, 2560 s at 5 s, got a wrong
+         * fallback; fixed here, the search never had it since) */
+        for (int p = 0; p < *m; p++)
+            r->jlo[r->idx[p]] = 0, r->jhi[r->idx[p]] = SHRT_MAX;
         return;
+    }
     int kept = 0;
     for (int p = 0; p < *m; p++) {
         int i = r->idx[p], lo = -1, hi = -1;
