@@ -1,36 +1,46 @@
 /* bench_helm - time per avoidance decision (assessment + helm search + action
- * check) with 1, 10, 50 and 200 targets in range, against the cost of
- * computing every candidate track (the precomputation the search avoids
- * doing in full) measured in the same run.
+ * check, fw_policy_step) with 1, 10, 30, 50 and 200 targets in range, for the
+ * C-3 (Nomoto tracks without drift and speed loss) and the C-3 the scenarios
+ * use (c3-mmg: with them, dearer per track; straight, and already turning as
+ * in a run, where no track is a mirror image); and the helm search alone against
+ * the reference search (tests/helm_reference.c, the search before the
+ * decision was made cheaper) and the search as first written (old_search
+ * below), all in the same run on the same scenes and checked to decide alike.
  *
- * Scenes: own ship C-3 at 10 kn heading north at the origin; an aimed target
+ * Scenes: own ship at 10 kn heading north at the origin; an aimed target
  * heads for a random point within 800 m of the own ship's straight track at a
  * random time 100-600 s ahead, from a random direction at 5-15 kn.  Mixed
  * scenes aim 1 target in 10 (the rest anywhere within 3 nm, random courses);
  * dense scenes aim all of them, which no helm clears beyond a few targets, so
- * the search falls back to scoring every candidate track.  A fixed-seed generator keeps the
- * scenes identical between runs. */
+ * the search falls back to scoring every candidate track.  A fixed-seed
+ * generator per scene set keeps the scenes identical between runs and ships.
+ *
+ * usage: bench_helm [--targets N] [--ship NAME] [--reps R] [--csv FILE] [--decisions-only]
+ * (--targets and --ship restrict the run, --decisions-only times fw_policy_step
+ * alone: for profiling). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
+#include <string.h>
 
 #include "bench.h"
 #include "avoid/policy.h"
 #include "core/units.h"
+#include "helm_reference.h"
 
-static unsigned long long rng = 88172645463325252ULL;
+static unsigned long long rng;
 static double uniform(void)
 {
     rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
     return (double)(rng >> 11) / 9007199254740992.0;
 }
 
-enum { SCENES = 200, REPS = 5 };
+enum { SCENES = 200 };
+static int reps = 5;
+static bool decisions_only; /* --decisions-only: no search timings (profiling) */
 
 /* The search as first written (before the target ordering and pruning in
- * helm_search.c), through the public API: the in-run baseline, and a check
- * that the fast search decides exactly the same. */
+ * helm_search.c), through the public API. */
 static fw_status old_search(fw_helm_ctx *c, const fw_helm_def *def, const fw_target *t, int n,
                             int allowed, fw_helm_result *res, fw_error *err)
 {
@@ -91,167 +101,247 @@ static fw_status old_search(fw_helm_ctx *c, const fw_helm_def *def, const fw_tar
     return FW_OK;
 }
 
+typedef struct bench {
+    const fw_ship *ship;
+    const char *own_name;
+    fw_helm_def hdef;
+    fw_policy_def pdef;
+    fw_helm_ctx *ctx;
+    fw_helm_ref *ref;
+    fw_own_state own;
+    FILE *csv;
+} bench;
+
+enum { S_NEW, S_REF, S_OLD };
+
 /* Median time of the search alone (fresh tracks each repetition). */
-static double time_search(fw_helm_ctx *ctx, const fw_helm_def *hdef, const fw_own_state *own,
-                          const fw_target *tg, int n, int allowed, bool old, fw_helm_result *res)
+static double time_search(bench *b, const fw_target *tg, int n, int allowed, int which,
+                          fw_helm_result *res)
 {
     fw_error err = {0};
     double t0 = bench_now();
-    for (int r = 0; r < REPS; r++) {
-        fw_helm_begin(ctx, own);
-        if (old)
-            old_search(ctx, hdef, tg, n, allowed, res, &err);
+    for (int r = 0; r < reps; r++) {
+        fw_helm_begin(b->ctx, &b->own);
+        if (which == S_OLD)
+            old_search(b->ctx, &b->hdef, tg, n, allowed, res, &err);
+        else if (which == S_REF)
+            fw_helm_search_reference(b->ref, b->ctx, tg, n, allowed, res, &err);
         else
-            fw_helm_search(ctx, tg, n, allowed, res, &err);
+            fw_helm_search(b->ctx, tg, n, allowed, res, &err);
     }
-    return (bench_now() - t0) / REPS;
+    return (bench_now() - t0) / reps;
 }
 
-int main(void)
+static bool same_result(const fw_helm_result *a, const fw_helm_result *b, bool full)
+{
+    bool same = a->threat == b->threat && a->feasible == b->feasible && a->side == b->side &&
+                a->helm == b->helm && a->clearance == b->clearance;
+    if (!full)
+        return same;
+    return same && a->keep_clearance == b->keep_clearance && a->limiting == b->limiting &&
+           a->allowed == b->allowed &&
+           memcmp(a->side_helm, b->side_helm, sizeof a->side_helm) == 0;
+}
+
+static void make_scene(const fw_own_state *own, int mode, fw_target *tg, int n)
+{
+    for (int i = 0; i < n; i++) {
+        double tm = 100 + 500 * uniform(), off = 1600 * (uniform() - 0.5);
+        double course = 2 * FW_PI * uniform(), v = fw_kn_to_ms(5 + 10 * uniform());
+        double me = off, mn = own->U * tm + 1600 * (uniform() - 0.5);
+        if (mode == 0 && i % 10 != 0) {
+            /* anywhere within 3 nm now */
+            double rr = 3 * FW_NMILE * sqrt(uniform()), b = 2 * FW_PI * uniform();
+            me = rr * sin(b) + v * sin(course) * tm;
+            mn = rr * cos(b) + v * cos(course) * tm;
+        }
+        tg[i] = (fw_target){.east = me - v * sin(course) * tm, .north = mn - v * cos(course) * tm,
+                            .course = course, .speed = v, .length = 100 + 200 * uniform(),
+                            .breadth = 30};
+    }
+}
+
+/* One line: scene set `mode`, n targets. */
+static int run_count(bench *b, int mode, int n)
+{
+    static double times[SCENES], t_new[SCENES], t_ref[SCENES], t_old[SCENES];
+    fw_error err = {0};
+    fw_target *tg = malloc(sizeof *tg * (size_t)n);
+    fw_assessment *as = malloc(sizeof *as * (size_t)n);
+    int *order = malloc(sizeof *order * 2 * (size_t)n);
+    int threats = 0, feasible = 0, inside = 0, bad = 0;
+    long tracks = 0;
+    double predicted = 0.0;
+    rng = 88172645463325252ULL + 7919ULL * (unsigned long long)(1000 * mode + n);
+    for (int s = 0; s < SCENES && tg && as && order && !bad; s++) {
+        make_scene(&b->own, mode, tg, n);
+        fw_decision d;
+        double t0 = bench_now();
+        for (int r = 0; r < reps && !bad; r++) {
+            fw_policy pol;
+            fw_policy_init(&pol, &b->pdef);
+            fw_policy_input in = {.ctx = b->ctx, .helm = &b->hdef, .t = 0.0, .own = &b->own,
+                                  .targets = tg, .n = n, .as = as, .order = order};
+            if (fw_policy_step(&pol, &in, &d, &err)) {
+                fprintf(stderr, "%s\n", err.msg);
+                bad = 1;
+            }
+        }
+        times[s] = (bench_now() - t0) / reps;
+        tracks += fw_helm_tracks_computed(b->ctx);
+        predicted += fw_helm_tracks_predicted(b->ctx);
+        threats += d.search.threat;
+        feasible += d.search.feasible;
+        for (int i = 0; i < n; i++)
+            if (as[i].t_enter == 0.0) {
+                inside++;
+                break;
+            }
+        if (decisions_only)
+            continue;
+        int allowed = fw_permitted_sides(&b->hdef, as, n);
+        fw_helm_result rn = {0}, rr = {0}, ro = {0};
+        t_new[s] = time_search(b, tg, n, allowed, S_NEW, &rn);
+        t_ref[s] = time_search(b, tg, n, allowed, S_REF, &rr);
+        t_old[s] = time_search(b, tg, n, allowed, S_OLD, &ro);
+        if (!same_result(&rn, &rr, true) || !same_result(&rn, &ro, false)) {
+            fprintf(stderr, "bench_helm: the searches differ (%s, %d targets, scene %d)\n",
+                    b->ship->name, n, s);
+            bad = 1;
+        }
+    }
+    if (!tg || !as || !order)
+        bad = 1, fprintf(stderr, "bench_helm: out of memory\n");
+    if (!bad) {
+        double p90 = (bench_median(times, SCENES), times[(int)(0.9 * SCENES)]);
+        double med = bench_median(times, SCENES), mn = bench_median(t_new, SCENES);
+        double mr = bench_median(t_ref, SCENES), mo = bench_median(t_old, SCENES);
+        printf("%8d %11.1f %9.1f %7.0f %7.1f %9.1f %9.0f %10.1f %8.1f %7.2f %8.1f %7.0f\n", n,
+               1e6 * med, 1e6 * p90, 100.0 * threats / SCENES, (double)tracks / SCENES,
+               predicted / SCENES,
+               100.0 * feasible / SCENES, 1e6 * mn, 1e6 * mr, mr / mn, 1e6 * mo,
+               100.0 * inside / SCENES);
+        if (b->csv)
+            fprintf(b->csv,
+                    "%s,%s,%s,%d,%.2f,%.2f,%.0f,%.2f,%.2f,%.0f,%.2f,%.2f,%.3f,%.2f,%.0f,%d\n",
+                    b->ship->name, b->own_name, mode ? "dense" : "mixed", n, 1e6 * med, 1e6 * p90,
+                    100.0 * threats / SCENES, (double)tracks / SCENES, predicted / SCENES,
+                    100.0 * feasible / SCENES, 1e6 * mn, 1e6 * mr, mr / mn, 1e6 * mo,
+                    100.0 * inside / SCENES, reps);
+    }
+    free(tg);
+    free(as);
+    free(order);
+    return bad;
+}
+
+/* Track costs: one track, all 2 x 26 candidates + keep (mirrored, unmirrored). */
+static void baselines(bench *b)
+{
+    static double base[SCENES], one[SCENES];
+    fw_error err = {0};
+    int ntr = 2 * fw_helm_count(b->ctx) + 1;
+    for (int s = 0; s < SCENES; s++) {
+        double t0 = bench_now();
+        for (int r = 0; r < reps; r++) {
+            fw_helm_begin(b->ctx, &b->own);
+            fw_helm_precompute(b->ctx, &err);
+        }
+        base[s] = (bench_now() - t0) / reps;
+        fw_own_state turning = b->own;
+        turning.r = 1e-4; /* not symmetric: every track computed */
+        t0 = bench_now();
+        for (int r = 0; r < reps; r++) {
+            fw_helm_begin(b->ctx, &turning);
+            fw_helm_precompute(b->ctx, &err);
+        }
+        one[s] = (bench_now() - t0) / reps / ntr;
+    }
+    double o = bench_median(one, SCENES);
+    printf("baseline one_track_us %.2f all_tracks_mirrored_us %.1f all_tracks_unmirrored_us %.1f\n",
+           1e6 * o, 1e6 * bench_median(base, SCENES), 1e6 * o * ntr);
+}
+
+/* The own ship at 10 kn heading north: straight with the rudder amidships
+ * (the port tracks are then mirror images of the starboard ones), or already
+ * turning a little (every track predicted, as in a run: the MMG ship's yaw
+ * rate is never exactly 0). */
+static int run_ship(const char *name, bool turning, int only_n, FILE *csv)
 {
     fw_error err = {0};
     fw_ship ship;
-    if (fw_ship_load("c3", &ship, &err)) {
+    bench b = {.ship = &ship, .own_name = turning ? "turning" : "straight",
+               .hdef = fw_default_helm_def(), .pdef = fw_default_policy_def(),
+               .own = {.U = fw_kn_to_ms(10)}, .csv = csv};
+    if (turning)
+        b.own.r = fw_deg_to_rad(0.01), b.own.delta = fw_deg_to_rad(0.5);
+    if (fw_ship_load(name, &ship, &err) ||
+        fw_helm_ctx_create(&ship, &b.hdef, &b.ctx, &err) ||
+        fw_helm_ref_create(&b.hdef, fw_helm_count(b.ctx), &b.ref, &err)) {
         fprintf(stderr, "%s\n", err.msg);
+        fw_helm_ctx_destroy(b.ctx);
         return 1;
     }
-    fw_helm_def hdef = fw_default_helm_def();
-    fw_policy_def pdef = fw_default_policy_def();
-    fw_helm_ctx *ctx;
-    if (fw_helm_ctx_create(&ship, &hdef, &ctx, &err)) {
-        fprintf(stderr, "%s\n", err.msg);
-        return 1;
+    printf("# ship %s at 10 kn, %s, %d scenes x %d repetitions, median per call\n", name,
+           turning ? "turning at 0.01 deg/s (rudder 0.5 deg)" : "straight", SCENES, reps);
+    baselines(&b);
+    static const int counts[] = {1, 10, 30, 50, 200};
+    int bad = 0;
+    for (int mode = 0; mode < 2 && !bad; mode++) {
+        printf("# %s\n", mode ? "dense: every target aimed within 800 m of the own track (stress)"
+                              : "mixed: 1 in 10 targets aimed, the rest anywhere within 3 nm");
+        printf("%8s %11s %9s %7s %7s %9s %9s %10s %8s %7s %8s %7s\n", "targets", "decision_us",
+               "p90_us", "threat%", "tracks", "predicted", "feasible%", "search_us", "ref_us",
+               "ref/new", "old_us", "inside%");
+        for (size_t c = 0; c < sizeof counts / sizeof counts[0] && !bad; c++)
+            if (!only_n || counts[c] == only_n)
+                bad = run_count(&b, mode, counts[c]);
     }
-    fw_own_state own = {.U = fw_kn_to_ms(10)};
-    static double times[SCENES], base[SCENES], one[SCENES], t_old[SCENES], t_new[SCENES];
-    printf("# fairway bench_helm: C-3 at 10 kn, %d scenes x %d repetitions, median per call\n",
-           SCENES, REPS);
-    printf("# horizon %.0f s, dt %.0f s, helms %.0f-%.0f deg step %.0f\n", hdef.track.horizon,
-           hdef.track.dt, hdef.min_helm_deg, hdef.max_helm_deg, hdef.step_deg);
-    /* baselines: one track, and all 2 x 26 candidates + keep (mirroring on) */
-    for (int s = 0; s < SCENES; s++) {
-        double t0 = bench_now();
-        for (int r = 0; r < REPS; r++) {
-            fw_helm_begin(ctx, &own);
-            fw_helm_precompute(ctx, &err);
+    fw_helm_ref_destroy(b.ref);
+    fw_helm_ctx_destroy(b.ctx);
+    return bad;
+}
+
+int main(int argc, char **argv)
+{
+    const char *only_ship = NULL, *csv_path = NULL;
+    int only_n = 0;
+    for (int i = 1; i < argc; i++) {
+        bool val = i + 1 < argc;
+        if (val && strcmp(argv[i], "--targets") == 0)
+            only_n = atoi(argv[++i]);
+        else if (val && strcmp(argv[i], "--ship") == 0)
+            only_ship = argv[++i];
+        else if (val && strcmp(argv[i], "--reps") == 0)
+            reps = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--decisions-only") == 0)
+            decisions_only = true;
+        else if (val && strcmp(argv[i], "--csv") == 0)
+            csv_path = argv[++i];
+        else {
+            fprintf(stderr, "usage: bench_helm [--targets N] [--ship NAME] [--reps R] [--csv FILE] "
+                            "[--decisions-only]\n");
+            return 2;
         }
-        base[s] = (bench_now() - t0) / REPS;
-        fw_own_state turning = own;
-        turning.r = 1e-4; /* not symmetric: every track computed */
-        t0 = bench_now();
-        for (int r = 0; r < REPS; r++) {
-            fw_helm_begin(ctx, &turning);
-            fw_helm_precompute(ctx, &err);
-        }
-        one[s] = (bench_now() - t0) / REPS / (2 * fw_helm_count(ctx) + 1);
     }
-    printf("baseline one_track_us %.2f all_tracks_mirrored_us %.1f all_tracks_unmirrored_us %.1f\n",
-           1e6 * bench_median(one, SCENES), 1e6 * bench_median(base, SCENES),
-           1e6 * bench_median(one, SCENES) * (2 * fw_helm_count(ctx) + 1));
-    /* the drift and speed-loss terms (c3-mmg has them, c3 not): one track each */
-    fw_ship slip;
-    if (fw_ship_load("c3-mmg", &slip, &err)) {
-        fprintf(stderr, "%s\n", err.msg);
-        return 1;
+    if (reps < 1)
+        reps = 1;
+    FILE *csv = csv_path ? fopen(csv_path, "w") : NULL;
+    if (csv_path && !csv) {
+        fprintf(stderr, "bench_helm: cannot write %s\n", csv_path);
+        return 2;
     }
-    {
-        fw_track tr;
-        static double plain[SCENES], slipped[SCENES];
-        if (fw_track_alloc(&tr, fw_track_samples(&hdef.track), &err)) {
-            fprintf(stderr, "%s\n", err.msg);
-            return 1;
-        }
-        for (int s = 0; s < SCENES; s++) {
-            double h = fw_deg_to_rad(10.0 + s % 26);
-            double t0 = bench_now();
-            for (int r = 0; r < 20 * REPS; r++)
-                fw_track_predict(&ship, &hdef.track, &own, h, &tr, &err);
-            plain[s] = (bench_now() - t0) / (20 * REPS);
-            t0 = bench_now();
-            for (int r = 0; r < 20 * REPS; r++)
-                fw_track_predict(&slip, &hdef.track, &own, h, &tr, &err);
-            slipped[s] = (bench_now() - t0) / (20 * REPS);
-        }
-        double a = bench_median(plain, SCENES), b = bench_median(slipped, SCENES);
-        printf("track_us without drift and speed loss %.2f, with %.2f (ratio %.2f)\n", 1e6 * a,
-               1e6 * b, b / a);
-        fw_track_free(&tr);
-    }
-    static const int counts[] = {1, 10, 50, 200};
-    for (int mode = 0; mode < 2; mode++) {
-    printf("# %s\n", mode ? "dense: every target aimed within 800 m of the own track (stress)"
-                          : "mixed: 1 in 10 targets aimed, the rest anywhere within 3 nm on random courses");
-    printf("%8s %12s %12s %10s %10s %10s %10s %10s %10s %9s\n", "targets", "median_us", "p90_us",
-           "threat_pct", "tracks_avg", "feasible_pct", "search_us", "old_us", "speedup",
-           "inside_pct");
-    for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
-        int n = counts[c];
-        fw_target *tg = malloc(sizeof *tg * (size_t)n);
-        fw_assessment *as = malloc(sizeof *as * (size_t)n);
-        int *order = malloc(sizeof *order * 2 * (size_t)n);
-        int threats = 0, feasible = 0, inside = 0;
-        long tracks = 0;
-        for (int s = 0; s < SCENES; s++) {
-            for (int i = 0; i < n; i++) {
-                double tm = 100 + 500 * uniform(), off = 1600 * (uniform() - 0.5);
-                double course = 2 * FW_PI * uniform(), v = fw_kn_to_ms(5 + 10 * uniform());
-                double me = off, mn = own.U * tm + 1600 * (uniform() - 0.5);
-                if (mode == 0 && i % 10 != 0) {
-                    /* anywhere within 3 nm now */
-                    double rr = 3 * FW_NMILE * sqrt(uniform()), b = 2 * FW_PI * uniform();
-                    me = rr * sin(b) + v * sin(course) * tm;
-                    mn = rr * cos(b) + v * cos(course) * tm;
-                }
-                tg[i] = (fw_target){.east = me - v * sin(course) * tm,
-                                    .north = mn - v * cos(course) * tm,
-                                    .course = course, .speed = v,
-                                    .length = 100 + 200 * uniform(), .breadth = 30};
-            }
-            fw_decision d;
-            double t0 = bench_now();
-            for (int r = 0; r < REPS; r++) {
-                fw_policy pol;
-                fw_policy_init(&pol, &pdef);
-                fw_policy_input in = {.ctx = ctx, .helm = &hdef, .t = 0.0, .own = &own,
-                                      .targets = tg, .n = n, .as = as, .order = order};
-                if (fw_policy_step(&pol, &in, &d, &err)) {
-                    fprintf(stderr, "%s\n", err.msg);
-                    return 1;
-                }
-            }
-            times[s] = (bench_now() - t0) / REPS;
-            tracks += fw_helm_tracks_computed(ctx);
-            /* the search alone, fast and as first written, on the same scene */
-            int allowed = fw_permitted_sides(&hdef, as, n);
-            fw_helm_result rn = {0}, ro = {0};
-            t_new[s] = time_search(ctx, &hdef, &own, tg, n, allowed, false, &rn);
-            t_old[s] = time_search(ctx, &hdef, &own, tg, n, allowed, true, &ro);
-            if (rn.threat != ro.threat || rn.feasible != ro.feasible || rn.side != ro.side ||
-                rn.helm != ro.helm || rn.clearance != ro.clearance) {
-                fprintf(stderr, "bench_helm: fast and old search differ (%d targets, scene %d)\n",
-                        n, s);
-                return 1;
-            }
-            /* a target inside the domain now: no helm can clear it */
-            for (int i = 0; i < n; i++)
-                if (as[i].t_enter == 0.0) {
-                    inside++;
-                    break;
-                }
-            threats += d.search.threat;
-            feasible += d.search.feasible;
-        }
-        double med = bench_median(times, SCENES);
-        double mn = bench_median(t_new, SCENES), mo = bench_median(t_old, SCENES);
-        printf("%8d %12.1f %12.1f %10.0f %10.1f %10.0f %10.1f %10.1f %10.1f %9.0f\n", n, 1e6 * med,
-               1e6 * times[(int)(0.9 * SCENES)], 100.0 * threats / SCENES,
-               (double)tracks / SCENES, 100.0 * feasible / SCENES, 1e6 * mn, 1e6 * mo, mo / mn,
-               100.0 * inside / SCENES);
-        free(tg);
-        free(as);
-        free(order);
-    }
-    }
-    fw_helm_ctx_destroy(ctx);
-    return 0;
+    if (csv)
+        fprintf(csv, "ship,own,scenes,targets,decision_us,decision_p90_us,threat_pct,tracks_avg,"
+                     "predicted_avg,feasible_pct,search_us,ref_us,ref_over_new,old_us,inside_pct,"
+                     "reps\n");
+    printf("# fairway bench_helm: horizon 600 s, dt 5 s, helms 10-35 deg step 1\n");
+    static const char *ships[] = {"c3", "c3-mmg", "c3-mmg"};
+    int bad = 0;
+    for (int s = 0; s < 3 && !bad; s++)
+        if (!only_ship || strcmp(only_ship, ships[s]) == 0)
+            bad = run_ship(ships[s], s == 2, only_n, csv);
+    if (csv)
+        fclose(csv);
+    return bad;
 }

@@ -37,3 +37,11 @@ fw_cli_test(identify_both_sides 0 "^port: drift [0-9.]+ rad per unit"
 fw_cli_test(identify_bad_speed 2 "--speeds: 'x' is not a number" identify --ship c3 --speeds 10,x)
 fw_cli_test(identify_unknown_ship 2 "unknown ship 'nosuch'" identify --ship nosuch)
 fw_cli_test(identify_bad_rudder 2 "--rudders: 50 deg outside" identify --ship c3 --rudders 10,50)
+
+# The helm search before the decision was made cheaper: the reference that
+# test_decide and bench_helm compare fw_helm_search with.
+add_library(fw_helm_reference STATIC helm_reference.c)
+target_link_libraries(fw_helm_reference PUBLIC fairway_core)
+target_include_directories(fw_helm_reference PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+fw_test(test_decide test_decide.c)
+target_link_libraries(test_decide PRIVATE fw_helm_reference)

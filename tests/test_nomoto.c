@@ -1,5 +1,6 @@
 /* Nomoto model: the paper's indices, eq 9 and its T1 = T2 limit, ramp tracks. */
 #include <math.h>
+#include <string.h>
 
 #include "core/units.h"
 #include "nomoto/nomoto.h"
@@ -181,6 +182,56 @@ static void test_track_mirror_and_limit(void)
     fw_track_free(&m);
 }
 
+/* A prediction made a few samples at a time (fw_track_extend, as the helm
+ * search makes its candidates) is the whole prediction to the bit, however
+ * the extensions are cut: c3 and c3-mmg (drift and speed loss), a delay (three
+ * rudder pieces), turning starts, every cut from 1 to 17 samples; and a
+ * mirrored range is the mirrored whole. */
+static void test_track_in_pieces_is_the_track(void)
+{
+    fw_ship mmg;
+    fw_error err = {0};
+    CHECK(fw_ship_load("c3-mmg", &mmg, &err) == FW_OK);
+    const fw_ship *ships[2] = {&c3, &mmg};
+    fw_track_def def = fw_default_track_def();
+    int n = fw_track_samples(&def), differ = 0, cases = 0;
+    fw_track whole, part, m1, m2;
+    fw_track_alloc(&whole, n, NULL);
+    fw_track_alloc(&part, n, NULL);
+    fw_track_alloc(&m1, n, NULL);
+    fw_track_alloc(&m2, n, NULL);
+    for (int sh = 0; sh < 2; sh++)
+        for (int c = 0; c < 4; c++) {
+            fw_own_state s = {.east = 10, .north = -20, .psi = fw_deg_to_rad(70 * c),
+                              .U = fw_kn_to_ms(8 + c), .r = c % 2 ? fw_deg_to_rad(0.2) : 0.0,
+                              .delta = c % 2 ? fw_deg_to_rad(-10) : 0.0,
+                              .beta = c % 2 ? 0.02 : 0.0};
+            fw_track_def d = def;
+            d.delay = c >= 2 ? 12.5 : 0.0;
+            double helm = fw_deg_to_rad(c % 2 ? -27 : 18);
+            CHECK(fw_track_predict(ships[sh], &d, &s, helm, &whole, NULL) == FW_OK);
+            fw_track_mirror(&whole, &s, &m1);
+            for (int cut = 1; cut <= 17; cut++) {
+                fw_track_gen g;
+                CHECK(fw_track_start(ships[sh], &d, &s, helm, &part, &g, NULL) == FW_OK);
+                for (int k = 0; k < n; k += cut) {
+                    fw_track_extend(&g, &part, k + cut);
+                    fw_track_mirror_range(&part, &s, &m2, k, k + cut < n ? k + cut : n);
+                }
+                fw_track_extend(&g, &part, n + 5); /* past the end: nothing more */
+                cases++;
+                differ += part.n != n || g.k != n ||
+                          memcmp(part.east, whole.east, sizeof(double) * 8 * (size_t)n) != 0 ||
+                          memcmp(m2.east, m1.east, sizeof(double) * 8 * (size_t)n) != 0;
+            }
+        }
+    CHECK_MSG(differ == 0, "%d of %d piecewise predictions differ from the whole", differ, cases);
+    fw_track_free(&whole);
+    fw_track_free(&part);
+    fw_track_free(&m1);
+    fw_track_free(&m2);
+}
+
 /* The autopilot prediction is the closed loop it stands for: one-second
  * steps of the fixed-helm predictor with the PD order recomputed each second
  * give nearly the same track (no drift terms in c3, so nothing is lost
@@ -231,5 +282,6 @@ int main(void)
     TEST_RUN(test_track_against_rk4);
     TEST_RUN(test_track_mirror_and_limit);
     TEST_RUN(test_steer_prediction_is_the_closed_loop);
+    TEST_RUN(test_track_in_pieces_is_the_track);
     return TEST_EXIT();
 }

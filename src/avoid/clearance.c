@@ -21,6 +21,26 @@ static void fill_path(const fw_target *g, const fw_track_def *tdef, int ns, doub
     }
 }
 
+/* 1 / the largest squared axes fw_domain_grown can give this target (at any
+ * relative heading: |c| hl + |s| hb <= hypot(hl, hb)), a little smaller
+ * still: a lower bound of the normalised radius from them is never above the
+ * exact one. */
+static void axes_bound(const fw_domain_def *dom, fw_prep_target *g)
+{
+    double a, b;
+    if (dom->reading == FW_DOMAIN_TRANSVERSE) {
+        double own = hypot(dom->own_half_length, dom->own_half_breadth);
+        a = dom->size * dom->fore_aft_ratio + g->hl + own;
+        b = dom->size + g->hb + own;
+    } else {
+        double hull = hypot(g->hl, g->hb);
+        a = dom->size * dom->fore_aft_ratio + dom->own_half_length + hull;
+        b = dom->size + dom->own_half_breadth + hull;
+    }
+    g->ia_min = (1.0 - 1e-9) / (a * a);
+    g->ib_min = (1.0 - 1e-9) / (b * b);
+}
+
 void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const fw_target *t,
                      int n, fw_prep_target *out, double *paths)
 {
@@ -32,6 +52,7 @@ void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const f
                                   .ve = g->speed * s, .vn = g->speed * c, .sc = s, .cc = c,
                                   .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
                                   .reach = fw_domain_reach(dom, g)};
+        axes_bound(dom, &out[i]);
         if (g->pred && paths) {
             out[i].ns = len / 4;
             fill_path(g, tdef, out[i].ns, paths);
@@ -41,23 +62,63 @@ void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const f
     }
 }
 
-void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
+void fw_track_boxes_init(const fw_track *tr, fw_chunk_boxes *cb)
 {
     cb->nseg = tr->n - 1;
     cb->nch = (cb->nseg + FW_CHUNK - 1) / FW_CHUNK;
     if (cb->nch > FW_MAX_CHUNKS)
         cb->nch = FW_MAX_CHUNKS;
-    for (int j = 0; j < cb->nch; j++) {
-        int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
-        double e0 = tr->east[k0], e1 = e0, n0 = tr->north[k0], n1 = n0;
-        for (int k = k0 + 1; k <= k1; k++) {
-            e0 = mn(e0, tr->east[k]);
-            e1 = mx(e1, tr->east[k]);
-            n0 = mn(n0, tr->north[k]);
-            n1 = mx(n1, tr->north[k]);
-        }
-        cb->b[j][0] = e0, cb->b[j][1] = e1, cb->b[j][2] = n0, cb->b[j][3] = n1;
+}
+
+void fw_track_box(const fw_track *tr, fw_chunk_boxes *cb, int j)
+{
+    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
+    double e0 = tr->east[k0], e1 = e0, n0 = tr->north[k0], n1 = n0;
+    for (int k = k0 + 1; k <= k1; k++) {
+        e0 = mn(e0, tr->east[k]);
+        e1 = mx(e1, tr->east[k]);
+        n0 = mn(n0, tr->north[k]);
+        n1 = mx(n1, tr->north[k]);
     }
+    cb->b[j][0] = e0, cb->b[j][1] = e1, cb->b[j][2] = n0, cb->b[j][3] = n1;
+}
+
+void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
+{
+    fw_track_boxes_init(tr, cb);
+    for (int j = 0; j < cb->nch; j++)
+        fw_track_box(tr, cb, j);
+}
+
+void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
+                     double umax, int *lo, int *hi)
+{
+    int nchunks = (nseg + FW_CHUNK - 1) / FW_CHUNK;
+    int nch = nchunks < FW_MAX_CHUNKS ? nchunks : FW_MAX_CHUNKS;
+    if (!(umax >= 0.0)) {
+        *lo = 0, *hi = nchunks;
+        return;
+    }
+    *lo = -1, *hi = 0;
+    for (int j = 0; j < nch; j++) {
+        int k1 = j * FW_CHUNK + FW_CHUNK < nseg ? j * FW_CHUNK + FW_CHUNK : nseg;
+        /* every sample of the chunk is within R of the start; the margin
+         * covers the rounding of the positions summed step by step */
+        double R = umax * (k1 * dt) * (1.0 + 1e-9) + 1e-6;
+        double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
+        if (!fw_chunk_misses(dt, g, j, nseg, env)) {
+            if (*lo < 0)
+                *lo = j;
+            *hi = j + 1;
+        }
+    }
+    if (nchunks > nch) { /* chunks without boxes are never culled */
+        if (*lo < 0)
+            *lo = nch;
+        *hi = nchunks;
+    }
+    if (*lo < 0)
+        *lo = 0;
 }
 
 void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb)
@@ -113,39 +174,84 @@ static double seg_min_lambda2(double x0, double y0, double x1, double y1, double
     return x * x * ia + y * y * ib;
 }
 
-double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
-                      const fw_prep_target *g, int j0, int j1, double stop2)
+/* A lower bound of seg_min_lambda2 over the segment: each coordinate's
+ * smallest magnitude on it (0 if it changes sign) over the largest axes the
+ * target can give. */
+static inline double seg_lower(double x0, double y0, double x1, double y1, const fw_prep_target *g)
+{
+    double xm = x0 * x1 > 0.0 ? mn(fabs(x0), fabs(x1)) : 0.0;
+    double ym = y0 * y1 > 0.0 ? mn(fabs(y0), fabs(y1)) : 0.0;
+    return xm * xm * g->ia_min + ym * ym * g->ib_min;
+}
+
+/* Body-frame offsets (x, y) of target g at samples k0..k1 of the track, and
+ * the sine and cosine of its heading there (gs, gc). */
+static void chunk_offsets(const fw_domain_def *dom, const fw_track *tr, const fw_prep_target *g,
+                          int k0, int k1, double *x, double *y, double *gs, double *gc)
+{
+    bool tv = dom->reading == FW_DOMAIN_TRANSVERSE;
+    for (int k = k0, q = 0; k <= k1; k++, q++) {
+        double tk = k * tr->dt, ge, gn;
+        fw_prep_at(g, k, tk, &ge, &gn);
+        gs[q] = g->path ? g->path[2 * g->ns + k] : g->sc;
+        gc[q] = g->path ? g->path[3 * g->ns + k] : g->cc;
+        double dx = ge - tr->east[k], dy = gn - tr->north[k];
+        /* fw_domain_frame: the own heading's frame, or the target's */
+        double fs = tv ? gs[q] : tr->sin_psi[k], fc = tv ? gc[q] : tr->cos_psi[k];
+        fw_to_body(dx, dy, fs, fc, &x[q], &y[q]);
+    }
+}
+
+/* Grown axes at sample k (offset q in the chunk), from the relative heading's
+ * cosine and sine by the angle sums. */
+static inline void axes_at(const fw_domain_def *dom, const fw_track *tr, const fw_prep_target *g,
+                           int k, double gs, double gc, double *a, double *b)
+{
+    double s = tr->sin_psi[k], c = tr->cos_psi[k];
+    fw_domain_grown(dom, g->hl, g->hb, gc * c + gs * s, gs * c - gc * s, a, b);
+}
+
+double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
+                          const fw_prep_target *g, int j0, int j1, double stop2, double cap2)
 {
     double tmin2 = INFINITY;
+    double x[FW_CHUNK + 1], y[FW_CHUNK + 1], gs[FW_CHUNK + 1], gc[FW_CHUNK + 1];
     for (int j = j0; j < j1 && j * FW_CHUNK < cb->nseg; j++) {
         int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
         if (j < cb->nch && fw_chunk_misses(tr->dt, g, j, cb->nseg, cb->b[j]))
             continue;
-        double px = 0, py = 0, pa = 1, pb = 1;
-        for (int k = k0; k <= k1; k++) {
-            double tk = k * tr->dt, ge, gn, gs = g->sc, gc = g->cc;
-            fw_prep_at(g, k, tk, &ge, &gn);
-            if (g->path)
-                gs = g->path[2 * g->ns + k], gc = g->path[3 * g->ns + k];
-            double dx = ge - tr->east[k], dy = gn - tr->north[k];
-            double s = tr->sin_psi[k], c = tr->cos_psi[k];
-            double x, y, a, b, fs, fc;
-            fw_domain_frame(dom, s, c, gs, gc, &fs, &fc);
-            fw_to_body(dx, dy, fs, fc, &x, &y);
-            /* cos and sin of the relative heading, from the angle sums */
-            fw_domain_grown(dom, g->hl, g->hb, gc * c + gs * s, gs * c - gc * s, &a, &b);
-            if (k > k0) {
-                /* body-frame offsets interpolated linearly over the segment:
-                 * the frame turns by r dt (about 1 deg), a sub-metre error
-                 * (the transverse reading's target frame does not turn) */
-                double l2 = seg_min_lambda2(px, py, x, y, 0.5 * (pa + a), 0.5 * (pb + b));
-                if (l2 < tmin2)
-                    tmin2 = l2;
-            }
-            px = x, py = y, pa = a, pb = b;
+        chunk_offsets(dom, tr, g, k0, k1, x, y, gs, gc);
+        double pa = 0, pb = 0; /* axes of the segment's first sample, when made */
+        int have = -1;
+        for (int q = 1; q <= k1 - k0; q++) {
+            /* a segment that cannot come below the smallest value found (or
+             * cap2) cannot change the result: skipped.  The margins cover
+             * the rounding of both (see clearance.h) */
+            double lo = seg_lower(x[q - 1], y[q - 1], x[q], y[q], g);
+            double cap = tmin2 < cap2 ? tmin2 : cap2;
+            if (lo * (1.0 - 1e-6) - 1e-12 > cap)
+                continue;
+            double a, b;
+            if (have != q - 1)
+                axes_at(dom, tr, g, k0 + q - 1, gs[q - 1], gc[q - 1], &pa, &pb);
+            axes_at(dom, tr, g, k0 + q, gs[q], gc[q], &a, &b);
+            /* body-frame offsets interpolated linearly over the segment: the
+             * frame turns by r dt (about 1 deg), a sub-metre error (the
+             * transverse reading's target frame does not turn) */
+            double l2 = seg_min_lambda2(x[q - 1], y[q - 1], x[q], y[q], 0.5 * (pa + a),
+                                        0.5 * (pb + b));
+            if (l2 < tmin2)
+                tmin2 = l2;
+            pa = a, pb = b, have = q;
         }
         if (tmin2 < stop2)
             break;
     }
     return tmin2;
+}
+
+double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
+                      const fw_prep_target *g, int j0, int j1, double stop2)
+{
+    return fw_target_min2_cap(dom, tr, cb, g, j0, j1, stop2, INFINITY);
 }

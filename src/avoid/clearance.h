@@ -24,6 +24,7 @@ typedef struct fw_prep_target {
     double sc, cc;              /* sin, cos of the course */
     double hl, hb;              /* half length, half breadth */
     double reach;               /* m: beyond this centre distance always outside */
+    double ia_min, ib_min;      /* 1/m^2, bounds of 1 / a^2, 1 / b^2 (the grown axes) */
     /* NULL: constant velocity (the numbers above).  Else the target's
      * predictor's path at the track's ns samples, in four runs of ns: east,
      * north, sin and cos of the course */
@@ -44,6 +45,11 @@ typedef struct fw_chunk_boxes {
 void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const fw_target *t,
                      int n, fw_prep_target *out, double *paths);
 void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb);
+/* The same a chunk at a time, for a track predicted as far as it is looked
+ * at: _init sets nseg and nch, fw_track_box makes the box of chunk j < nch
+ * (its samples j FW_CHUNK .. (j + 1) FW_CHUNK, at most nseg, must be there). */
+void fw_track_boxes_init(const fw_track *tr, fw_chunk_boxes *cb);
+void fw_track_box(const fw_track *tr, fw_chunk_boxes *cb, int j);
 /* Grows u to hold cb too. */
 void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb);
 
@@ -62,9 +68,28 @@ static inline void fw_prep_at(const fw_prep_target *g, int k, double tk, double 
 /* Does the target's path over chunk j, grown by its reach, miss box b? */
 bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4]);
 
+/* The chunks [*lo, *hi) of a track of nseg segments in which target g may
+ * come within its reach of an own ship that starts at (e0, n0) and goes no
+ * faster than umax (m/s) on any course: every other chunk's box test misses
+ * on every such track (the chunk's samples lie in the square of half side
+ * umax t about the start), so skipping them changes nothing.  Chunks from
+ * FW_MAX_CHUNKS on have no box and are always in; umax < 0 (no bound known):
+ * all chunks.  *lo = *hi when none. */
+void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
+                     double umax, int *lo, int *hi);
+
 /* Smallest lambda^2 (normalised domain radius squared) of one target along
  * the track over chunks [j0, j1); returns early once below stop2. */
 double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
                       const fw_prep_target *g, int j0, int j1, double stop2);
+/* The same where only values below cap2 matter: a segment whose cheap lower
+ * bound (each body-frame coordinate's least magnitude on it over the largest
+ * axes) is above cap2, or above the smallest value found so far, gets no exact
+ * test.  The result is the same to the bit when below cap2, and >= cap2
+ * otherwise.  The bound is exact arithmetic's less a relative 1e-6 and 1e-12
+ * absolute, far more than the rounding of either side (a few 1e-16
+ * relative; the offsets are below 1e5 m). */
+double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
+                          const fw_prep_target *g, int j0, int j1, double stop2, double cap2);
 
 #endif

@@ -1,6 +1,6 @@
 #include "avoid/helm_search.h"
 
-#include "avoid/clearance.h"
+#include "avoid/helm_ctx.h"
 #include "core/mem.h"
 
 #include <limits.h>
@@ -9,28 +9,6 @@
 #include <string.h>
 
 #include "core/units.h"
-
-struct fw_helm_ctx {
-    const fw_ship *ship;
-    fw_helm_def def;
-    fw_own_state own;
-    bool symmetric;  /* start on a straight course with the rudder amidships */
-    int nh;
-    fw_track *tracks; /* [side 0 = starboard, 1 = port][nh], then keep, then spare */
-    bool *have;
-    bool have_keep;
-    int computed;
-    /* per-decision scratch over the targets (grown on demand): the order in
-     * which targets are checked, and each one's window of chunks that can
-     * reach the domain of any candidate track */
-    int cap;
-    int *idx;
-    short *jlo, *jhi;
-    fw_prep_target *prep;
-    double *paths;         /* the predicted targets' paths (clearance.h) */
-    size_t paths_cap;      /* doubles */
-    fw_chunk_boxes *boxes; /* per track slot, made with the track */
-};
 
 const char *fw_side_name(int side)
 {
@@ -55,7 +33,9 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     if (c->tracks)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
-    fw_free_each(9, c->tracks, c->have, c->idx, c->jlo, c->jhi, c->prep, c->paths, c->boxes, c);
+    fw_free_each(20, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
+                 c->next, c->nextp, c->ord, c->boxes, c->idx,
+                 c->jlo, c->jhi, c->act, c->nact, c->prep, c->paths, c);
 }
 
 fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_helm_ctx **out,
@@ -81,15 +61,26 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     c->ship = ship;
     c->def = *def;
     c->nh = (int)floor((def->max_helm_deg - def->min_helm_deg) / def->step_deg + 1e-9) + 1;
-    int ntr = 2 * c->nh + 2;
+    int ntr = 2 * c->nh + 2, ns = fw_track_samples(&def->track);
+    c->nchunks = (ns - 1 + FW_CHUNK - 1) / FW_CHUNK;
     c->tracks = calloc((size_t)ntr, sizeof *c->tracks);
     c->have = calloc((size_t)(2 * c->nh), sizeof *c->have);
     c->boxes = calloc((size_t)ntr, sizeof *c->boxes);
-    if (!c->tracks || !c->have || !c->boxes) {
+    c->gen = calloc((size_t)ntr, sizeof *c->gen);
+    c->ready = calloc((size_t)ntr, sizeof *c->ready);
+    c->nbox = calloc((size_t)ntr, sizeof *c->nbox);
+    c->src = calloc((size_t)ntr, sizeof *c->src);
+    c->fail = calloc((size_t)ntr, sizeof *c->fail);
+    c->ub2 = calloc((size_t)ntr, sizeof *c->ub2);
+    c->next = calloc((size_t)ntr, sizeof *c->next);
+    c->nextp = calloc((size_t)ntr, sizeof *c->nextp);
+    c->ord = calloc((size_t)(6 * c->nh), sizeof *c->ord);
+    c->nact = calloc((size_t)c->nchunks, sizeof *c->nact);
+    if (!c->tracks || !c->have || !c->boxes || !c->gen || !c->ready || !c->nbox || !c->src ||
+        !c->fail || !c->ub2 || !c->next || !c->nextp || !c->ord || !c->nact) {
         fw_helm_ctx_destroy(c);
         return fw_fail(err, FW_ERUN, "out of memory");
     }
-    int ns = fw_track_samples(&def->track);
     for (int i = 0; i < ntr; i++) {
         fw_status st = fw_track_alloc(&c->tracks[i], ns, err);
         if (st) {
@@ -101,6 +92,21 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     return FW_OK;
 }
 
+/* The fastest any candidate track can go (kin_step in track.c): the speed
+ * relaxes from U towards U0 (1 - loss), which is at most U0 while the loss
+ * terms are not negative; a knowledge base with a negative one (a propeller
+ * that gains thrust in the turn) gives no bound. */
+static double speed_bound(const fw_ship *ship, const fw_own_state *s)
+{
+    const fw_nomoto_kb *kb[2] = {&ship->nomoto, &ship->nomoto_port};
+    for (int i = 0; i < 2; i++)
+        if ((i == 0 || kb[i]->present) &&
+            (kb[i]->speed_loss < 0.0 || kb[i]->speed_loss_drift < 0.0))
+            return -1.0;
+    double U = s->U > 0.0 ? s->U : 0.0, U0 = s->U0 > 0.0 ? s->U0 : U;
+    return U > U0 ? U : U0;
+}
+
 void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
 {
     c->own = *own;
@@ -109,8 +115,13 @@ void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
                    !c->ship->nomoto_port.present;
     for (int i = 0; i < 2 * c->nh; i++)
         c->have[i] = false;
+    for (int i = 0; i <= 2 * c->nh; i++)
+        c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1, c->ub2[i] = INFINITY;
     c->have_keep = false;
+    c->prep_t = NULL;
     c->computed = 0;
+    c->samples = 0;
+    c->umax = speed_bound(c->ship, own);
 }
 
 int fw_helm_count(const fw_helm_ctx *c) { return c->nh; }
@@ -125,36 +136,32 @@ double fw_helm_value(const fw_helm_ctx *c, int side, int i)
 
 int fw_helm_tracks_computed(const fw_helm_ctx *c) { return c->computed; }
 
+double fw_helm_tracks_predicted(const fw_helm_ctx *c)
+{
+    return (double)c->samples / c->tracks[0].cap;
+}
+
 fw_status fw_helm_track(fw_helm_ctx *c, int side, int i, const fw_track **tr, fw_error *err)
 {
-    int s = side == FW_SIDE_PORT ? 1 : 0;
-    int slot = s * c->nh + i;
-    if (!c->have[slot]) {
-        int other = (1 - s) * c->nh + i;
-        if (c->symmetric && c->have[other]) {
-            fw_track_mirror(&c->tracks[other], &c->own, &c->tracks[slot]);
-        } else {
-            fw_status st = fw_track_predict(c->ship, &c->def.track, &c->own,
-                                            fw_helm_value(c, side, i), &c->tracks[slot], err);
-            if (st)
-                return st;
-            c->computed++;
-        }
-        fw_track_boxes(&c->tracks[slot], &c->boxes[slot]);
-        c->have[slot] = true;
-    }
+    int slot;
+    fw_status st = fw_cand_open(c, side, i, &slot, err);
+    if (st)
+        return st;
+    fw_cand_chunk(c, slot, c->nchunks - 1);
     *tr = &c->tracks[slot];
     return FW_OK;
 }
 
 fw_status fw_helm_keep_track(fw_helm_ctx *c, const fw_track **tr, fw_error *err)
 {
-    fw_track *k = &c->tracks[2 * c->nh];
+    int slot = 2 * c->nh;
+    fw_track *k = &c->tracks[slot];
     if (!c->have_keep) {
-        fw_status st = fw_track_predict(c->ship, &c->def.track, &c->own, 0.0, k, err);
+        fw_status st = fw_track_start(c->ship, &c->def.track, &c->own, 0.0, k, &c->gen[slot], err);
         if (st)
             return st;
-        fw_track_boxes(k, &c->boxes[2 * c->nh]);
+        fw_track_boxes_init(k, &c->boxes[slot]);
+        fw_cand_chunk(c, slot, c->nchunks - 1);
         c->have_keep = true;
         c->computed++;
     }
@@ -170,30 +177,6 @@ fw_status fw_helm_precompute(fw_helm_ctx *c, fw_error *err)
         for (int i = 0; i < c->nh && !st; i++)
             st = fw_helm_track(c, s ? FW_SIDE_PORT : FW_SIDE_STARBOARD, i, &tr, err);
     return st;
-}
-
-/* Clearance of a candidate track over the prepared targets c->idx[0..m-1] in
- * that order (each within its chunk window if windows is set).  A target that
- * stops the scan is moved to the front: neighbouring helms fail on the same
- * target, so the next track finds it first. */
-static double clearance_idx(fw_helm_ctx *c, const fw_track *tr, int m, bool windows,
-                            double stop_below)
-{
-    const fw_chunk_boxes *cb = &c->boxes[tr - c->tracks];
-    double best = INFINITY, stop2 = stop_below * stop_below;
-    for (int p = 0; p < m; p++) {
-        int i = c->idx[p];
-        int j0 = windows ? c->jlo[i] : 0, j1 = windows ? c->jhi[i] : INT_MAX / FW_CHUNK;
-        double m2 = fw_target_min2(&c->def.domain, tr, cb, &c->prep[i], j0, j1, stop2);
-        if (m2 < best)
-            best = m2;
-        if (best < stop2) {
-            memmove(c->idx + 1, c->idx, sizeof *c->idx * (size_t)p);
-            c->idx[0] = i;
-            break;
-        }
-    }
-    return sqrt(best);
 }
 
 /* A path buffer for one predicted target: on the stack when it fits (the
@@ -300,74 +283,16 @@ int fw_permitted_sides(const fw_helm_def *def, const fw_assessment *as, int n)
     return allowed ? allowed : FW_ALLOW_STARBOARD;
 }
 
-static fw_status ensure_scratch(fw_helm_ctx *c, int n, fw_error *err)
+static fw_status ensure_scratch(fw_helm_ctx *c, const fw_target *t, int n, fw_error *err)
 {
-    if (n <= c->cap)
-        return FW_OK;
-    if (!fw_resize_each((size_t)n, 4, (void **)&c->idx, sizeof *c->idx,
-                        (void **)&c->jlo, sizeof *c->jlo, (void **)&c->jhi, sizeof *c->jhi,
-                        (void **)&c->prep, sizeof *c->prep))
-        return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
-    c->cap = n;
-    return FW_OK;
-}
-
-/* Keeps in idx[0..*m-1] only the targets that can reach the domain of some
- * candidate track (those of the allowed sides, all computed by now), each
- * with its window of such chunks.  The test is the per-chunk culling test
- * against the union of the candidates' chunk boxes, so a dropped target would
- * have been culled on every candidate (its clearance is >= 1 on all of them)
- * and each window holds every chunk not culled on some candidate. */
-static void prune_targets(fw_helm_ctx *c, int allowed, int *m)
-{
-    fw_chunk_boxes u;
-    bool first = true;
-    for (int s = 0; s < 2; s++) {
-        if (!(allowed & (s ? FW_ALLOW_PORT : FW_ALLOW_STARBOARD)))
-            continue;
-        for (int i = 0; i < c->nh; i++) {
-            const fw_chunk_boxes *cb = &c->boxes[s * c->nh + i];
-            if (first)
-                u = *cb;
-            else
-                fw_boxes_union(&u, cb);
-            first = false;
-        }
+    if (n > c->cap) {
+        if (!fw_resize_each((size_t)n, 4, (void **)&c->idx, sizeof *c->idx, (void **)&c->jlo,
+                            sizeof *c->jlo, (void **)&c->jhi, sizeof *c->jhi, (void **)&c->prep,
+                            sizeof *c->prep) ||
+            !fw_resize((void **)&c->act, sizeof *c->act, (size_t)n * (size_t)c->nchunks))
+            return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
+        c->cap = n;
     }
-    if (first || u.nch * FW_CHUNK < u.nseg)
-        return; /* chunks without boxes: no pruning */
-    int kept = 0;
-    for (int p = 0; p < *m; p++) {
-        int i = c->idx[p], lo = -1, hi = -1;
-        for (int j = 0; j < u.nch; j++)
-            if (!fw_chunk_misses(c->def.track.dt, &c->prep[i], j, u.nseg, u.b[j])) {
-                if (lo < 0)
-                    lo = j;
-                hi = j + 1;
-            }
-        if (lo < 0)
-            continue;
-        c->jlo[i] = (short)lo;
-        c->jhi[i] = (short)hi;
-        c->idx[kept++] = i;
-    }
-    *m = kept;
-}
-
-fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
-                         fw_helm_result *res, fw_error *err)
-{
-    const fw_track *tr;
-    fw_status st = fw_helm_keep_track(c, &tr, err);
-    if (st || (st = ensure_scratch(c, n, err)))
-        return st;
-    res->allowed = allowed;
-    res->side_helm[0] = res->side_helm[1] = NAN;
-    res->feasible = true;
-    res->side = FW_SIDE_NONE;
-    res->helm = 0.0;
-    /* keep course, target by target: the threats (inside the domain on the
-     * keep track) are checked first on the candidates, the likeliest to fail */
     size_t npred = 0, len = (size_t)fw_prep_path_len(&c->def.track);
     for (int i = 0; i < n; i++)
         npred += t[i].pred != NULL;
@@ -376,35 +301,60 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
             return fw_fail(err, FW_ERUN, "out of memory for %zu predicted paths", npred);
         c->paths_cap = npred * len;
     }
+    return FW_OK;
+}
+
+/* The targets prepared, their reach windows, the keep-course check (its
+ * clearance, the limiting target, the threats: inside the domain on the keep
+ * track) and the check order, threats first (the likeliest to fail), in each
+ * chunk's list of the targets whose window holds it. */
+static void keep_check(fw_helm_ctx *c, const fw_track *keep, const fw_target *t, int n,
+                       fw_helm_result *res)
+{
     fw_prep_targets(&c->def.domain, &c->def.track, t, n, c->prep, c->paths);
     const fw_chunk_boxes *kb = &c->boxes[2 * c->nh];
     double kbest = INFINITY;
-    int nthreat = 0;
+    int nthreat = 0, *threat = c->act; /* scratch: the lists are made after */
     res->limiting = -1;
     for (int i = 0; i < n; i++) {
-        double m2 = fw_target_min2(&c->def.domain, tr, kb, &c->prep[i], 0, INT_MAX / FW_CHUNK, 0.0);
+        fw_reach_window(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
+                        c->umax, &c->jlo[i], &c->jhi[i]);
+        /* what matters: below 1 (a threat) and below the smallest yet */
+        double m2 = fw_target_min2_cap(&c->def.domain, keep, kb, &c->prep[i], c->jlo[i],
+                                       c->jhi[i], 0.0, kbest > 1.0 ? kbest : 1.0);
         if (m2 < kbest)
             kbest = m2, res->limiting = i;
-        c->jlo[i] = m2 < 1.0; /* scratch: threat flag, the windows come later */
+        threat[i] = m2 < 1.0;
         nthreat += m2 < 1.0;
     }
     for (int i = 0, a = 0, b = nthreat; i < n; i++)
-        c->idx[c->jlo[i] ? a++ : b++] = i;
+        c->idx[threat[i] ? a++ : b++] = i;
     res->keep_clearance = sqrt(kbest);
-    res->threat = res->keep_clearance < 1.0;
-    res->clearance = res->keep_clearance;
-    if (!res->threat)
-        return FW_OK;
+    for (int j = 0; j < c->nchunks; j++)
+        c->nact[j] = 0;
+    for (int p = 0; p < n; p++) {
+        int i = c->idx[p];
+        for (int j = c->jlo[i]; j < c->jhi[i]; j++)
+            c->act[(size_t)j * (size_t)c->cap + (size_t)c->nact[j]++] = i;
+    }
+}
+
+/* For each allowed side the least helm whose track keeps every target out
+ * (found[s], -1 if none), the port side stopping at the starboard one's. */
+static fw_status least_helms(fw_helm_ctx *c, int allowed, int found[2], fw_helm_result *res,
+                             fw_error *err)
+{
     static const int sides[2] = {FW_SIDE_STARBOARD, FW_SIDE_PORT};
     static const int masks[2] = {FW_ALLOW_STARBOARD, FW_ALLOW_PORT};
-    int found[2] = {-1, -1};
     for (int s = 0; s < 2; s++) {
         if (!(allowed & masks[s]))
             continue;
         for (int i = 0; i < c->nh; i++) {
-            if ((st = fw_helm_track(c, sides[s], i, &tr, err)))
+            int slot;
+            fw_status st = fw_cand_open(c, sides[s], i, &slot, err);
+            if (st)
                 return st;
-            if (clearance_idx(c, tr, n, false, 1.0) >= 1.0) {
+            if (sqrt(fw_cand_fails(c, slot, 1.0)) >= 1.0) {
                 found[s] = i;
                 res->side_helm[s] = fw_helm_value(c, sides[s], i);
                 break;
@@ -414,40 +364,84 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
                 break;
         }
     }
+    return FW_OK;
+}
+
+/* fw_track_clearance of the chosen candidate, over the prepared targets. */
+static double chosen_clearance(fw_helm_ctx *c, int slot, int n, int *limiting)
+{
+    fw_cand_chunk(c, slot, c->nchunks - 1);
+    double best = INFINITY;
+    *limiting = -1;
+    for (int i = 0; i < n; i++) {
+        double m2 = fw_target_min2_cap(&c->def.domain, &c->tracks[slot], &c->boxes[slot],
+                                       &c->prep[i], c->jlo[i], c->jhi[i], 0.0, best);
+        if (m2 < best)
+            best = m2, *limiting = i;
+    }
+    return sqrt(best);
+}
+
+fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
+                         fw_helm_result *res, fw_error *err)
+{
+    const fw_track *tr;
+    fw_status st = fw_helm_keep_track(c, &tr, err);
+    if (st || (st = ensure_scratch(c, t, n, err)))
+        return st;
+    res->allowed = allowed;
+    res->side_helm[0] = res->side_helm[1] = NAN;
+    res->feasible = true;
+    res->side = FW_SIDE_NONE;
+    res->helm = 0.0;
+    keep_check(c, tr, t, n, res);
+    c->prep_t = t, c->prep_n = n;
+    res->threat = res->keep_clearance < 1.0;
+    res->clearance = res->keep_clearance;
+    if (!res->threat)
+        return FW_OK;
+    int found[2] = {-1, -1};
+    if ((st = least_helms(c, allowed, found, res, err)))
+        return st;
     int pick = -1, side = -1;
     if (found[0] >= 0 && (found[1] < 0 || found[0] <= found[1]))
         pick = found[0], side = 0;
     else if (found[1] >= 0)
         pick = found[1], side = 1;
     if (pick < 0) {
-        /* nothing clears: the helm that keeps the nearest target farthest out.
-         * Every candidate track exists now; only the targets that can reach
-         * some candidate's domain can be the nearest (all nearest are < 1). */
         res->feasible = false;
-        int m = n;
-        prune_targets(c, allowed, &m);
-        double best = -1.0;
-        for (int s = 0; s < 2; s++) {
-            if (!(allowed & masks[s]))
-                continue;
-            for (int i = 0; i < c->nh; i++) {
-                if ((st = fw_helm_track(c, sides[s], i, &tr, err)))
-                    return st;
-                /* branch and bound: a track is abandoned as soon as some
-                 * target comes closer than the best track's nearest one; the
-                 * target that did it is tried first on the next track */
-                double cl = clearance_idx(c, tr, m, true, best > 0.0 ? best : 0.0);
-                if (cl > best + 1e-9)
-                    best = cl, pick = i, side = s;
-            }
-        }
+        if ((st = fw_cand_best_available(c, allowed, &pick, &side, err)))
+            return st;
     }
-    res->side = sides[side];
-    res->helm = fw_helm_value(c, sides[side], pick);
-    if ((st = fw_helm_track(c, sides[side], pick, &tr, err)))
+    int slot;
+    res->side = side ? FW_SIDE_PORT : FW_SIDE_STARBOARD;
+    res->helm = fw_helm_value(c, res->side, pick);
+    if ((st = fw_cand_open(c, res->side, pick, &slot, err)))
         return st;
-    res->clearance = fw_track_clearance(&c->def, tr, t, n, 0.0, &res->limiting);
+    res->clearance = chosen_clearance(c, slot, n, &res->limiting);
     return FW_OK;
+}
+
+/* fw_track_clearance(def, spare track, t, n, stop_below, NULL), over the
+ * targets this decision's search prepared when they are these (the reach
+ * windows hold for any track from this own state; only values below the
+ * smallest yet, or with `only_below` below stop_below, are tested exactly). */
+static double spare_clearance(fw_helm_ctx *c, const fw_target *t, int n, double stop_below,
+                              bool only_below)
+{
+    fw_track *tr = &c->tracks[2 * c->nh + 1];
+    if (c->prep_t != t || c->prep_n != n)
+        return fw_track_clearance(&c->def, tr, t, n, stop_below, NULL);
+    fw_chunk_boxes *cb = &c->boxes[2 * c->nh + 1];
+    fw_track_boxes(tr, cb);
+    double best = INFINITY, stop2 = stop_below * stop_below;
+    for (int i = 0; i < n && !(best < stop2); i++) {
+        double m2 = fw_target_min2_cap(&c->def.domain, tr, cb, &c->prep[i], c->jlo[i], c->jhi[i],
+                                       stop2, only_below && stop2 < best ? stop2 : best);
+        if (m2 < best)
+            best = m2;
+    }
+    return sqrt(best);
 }
 
 fw_status fw_helm_clears_after(fw_helm_ctx *c, const fw_target *t, int n, double helm,
@@ -460,7 +454,7 @@ fw_status fw_helm_clears_after(fw_helm_ctx *c, const fw_target *t, int n, double
     if (st)
         return st;
     c->computed++;
-    *clears = fw_track_clearance(&c->def, spare, t, n, 1.0, NULL) >= 1.0;
+    *clears = spare_clearance(c, t, n, 1.0, true) >= 1.0;
     return FW_OK;
 }
 
@@ -518,7 +512,7 @@ fw_status fw_helm_steer_clearance(fw_helm_ctx *c, const fw_target *t, int n,
     if (st)
         return st;
     c->computed++;
-    double cl = fw_track_clearance(&c->def, tr, t, n, 0.0, NULL);
+    double cl = spare_clearance(c, t, n, 0.0, false);
     if (beyond && tr->n > 0)
         cl = fmin(cl, beyond_horizon(c, tr, t, n));
     *clearance = cl;

@@ -2,12 +2,17 @@
  *
  * For each permitted side, the least helm from min_helm to max_helm (step
  * 1 deg) whose Nomoto-predicted own track keeps every target (constant
- * velocity) outside the own domain over the horizon.  Tracks depend only on
- * the own state, so a context computes each at most once per decision, lazily
- * (most decisions need the keep-course track and a few helms only), and
- * mirrors the port tracks from the starboard ones when the start is symmetric.
- * Each target-track check is culled chunk by chunk with bounding boxes in
- * space and time before the exact per-segment ellipse test.
+ * velocity) outside the own domain over the horizon; if none does, the helm
+ * whose nearest target stays farthest out.  Tracks depend only on the own
+ * state, so a context computes each at most once per decision, lazily, and
+ * only as far as a check looks along it (a candidate that lets a target in is
+ * predicted up to that point only), and mirrors the port tracks from the
+ * starboard ones when the start is symmetric.  Checks go chunk by chunk in
+ * time, culled with bounding boxes in space and time and with each target's
+ * reach window (how far the own ship can have gone), then segment by segment
+ * with a cheap lower bound before the exact ellipse test.  The results are
+ * those of the plain search to the bit (tests/test_decide.c compares them with
+ * tests/helm_reference.c, the search before these shortcuts).
  */
 #ifndef FW_HELM_SEARCH_H
 #define FW_HELM_SEARCH_H
@@ -58,6 +63,9 @@ fw_status fw_helm_keep_track(fw_helm_ctx *ctx, const fw_track **tr, fw_error *er
 /* Computes every candidate track now (benchmark baseline). */
 fw_status fw_helm_precompute(fw_helm_ctx *ctx, fw_error *err);
 int fw_helm_tracks_computed(const fw_helm_ctx *ctx);
+/* The samples predicted this decision, in whole tracks (a candidate is
+ * predicted only as far as its check looks; mirrored ones not counted). */
+double fw_helm_tracks_predicted(const fw_helm_ctx *ctx);
 
 /* Smallest normalised domain radius of any target along a track (>= 1: all
  * outside); *limiting gets that target (-1 if n = 0).  With stop_below > 0 it
@@ -92,7 +100,10 @@ fw_status fw_helm_search(fw_helm_ctx *ctx, const fw_target *t, int n, int allowe
                          fw_helm_result *res, fw_error *err);
 
 /* Does a track with `helm` started after waiting `delay` s keep all targets
- * out?  (For the action policy: would the minimum helm still do later?) */
+ * out?  (For the action policy: would the minimum helm still do later?)
+ * This and fw_helm_steer_clearance check against the targets as this
+ * decision's fw_helm_search prepared them when given the same array and
+ * count (the policy's calls): they must not have changed in between. */
 fw_status fw_helm_clears_after(fw_helm_ctx *ctx, const fw_target *t, int n, double helm,
                                double delay, bool *clears, fw_error *err);
 

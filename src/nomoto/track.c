@@ -44,7 +44,15 @@ void fw_track_free(fw_track *tr)
 /* Unit vector (sin, cos) of heading a+d from that of a; for the small d of one
  * sample step a 5th-order series (error < d^6/720, 1e-12 at 2 deg) is cheaper
  * than sin and cos, and the rotation keeps the vector's length. */
-static void rotate(double *s, double *c, double d)
+static void sin_cos(double d, double *sd, double *cd)
+{
+    *sd = sin(d);
+    *cd = cos(d);
+}
+
+/* Inlined (it runs twice per sample; the library's sine and cosine, rare,
+ * stay out of line). */
+static inline void rotate(double *s, double *c, double d)
 {
     double sd, cd;
     if (fabs(d) < 0.035) {
@@ -52,8 +60,7 @@ static void rotate(double *s, double *c, double d)
         sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0));
         cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0);
     } else {
-        sd = sin(d);
-        cd = cos(d);
+        sin_cos(d, &sd, &cd);
     }
     double s0 = *s, c0 = *c;
     *s = s0 * cd + c0 * sd;
@@ -61,16 +68,7 @@ static void rotate(double *s, double *c, double d)
 }
 
 /* Position, speed and drift along a predicted track (see track.h). */
-typedef struct kin {
-    const fw_nomoto_kb *kb;
-    double L;
-    bool slip;                /* the knowledge base has drift or speed loss */
-    double east, north;
-    double U, U0, beta;       /* speed now, on a straight course, drift angle */
-    double sb, cb;            /* sin, cos of beta, kept by rotation: beta moves slowly */
-    double cse, csn;          /* unit vector of the course over ground */
-    double Eb, Eu;            /* lag factors over one step */
-} kin;
+typedef fw_track_kin kin;
 
 static void kin_init(kin *k, const fw_ship *ship, const fw_nomoto_kb *kb, const fw_own_state *s,
                      double dt)
@@ -92,7 +90,8 @@ static void kin_init(kin *k, const fw_ship *ship, const fw_nomoto_kb *kb, const 
 }
 
 /* One step of dt from heading vector (ps, pc) to (sn, cs), yaw rate r at its end. */
-static void kin_step(kin *k, double ps, double pc, double sn, double cs, double r, double dt)
+static inline void kin_step(kin *k, double ps, double pc, double sn, double cs, double r,
+                            double dt)
 {
     if (!k->slip) {
         /* trapezoid on the unit vectors: direction exact for a constant
@@ -101,13 +100,19 @@ static void kin_step(kin *k, double ps, double pc, double sn, double cs, double 
         k->north += 0.5 * k->U * dt * (pc + cs);
         return;
     }
-    double rn = k->U > 0.1 ? r * k->L / k->U : 0.0; /* r' */
+    /* r' (a zero rate, on a straight or steadied stretch, is its own r':
+     * +-0 L / U, without the division on the speed's chain) */
+    double rn = k->U > 0.1 ? (r == 0.0 ? r : r * k->L / k->U) : 0.0;
     double b_ss = k->kb->drift * rn;
     double b1 = b_ss + (k->beta - b_ss) * k->Eb;
     /* the loss is driven by the drift reached at the step's end, as the
-     * identification drives it by the MMG ship's (identify.c) */
-    double loss = k->kb->speed_loss * fabs(rn) + k->kb->speed_loss_drift * fabs(b1 * rn);
-    double u_ss = k->U0 * (1.0 - fmin(loss, 0.9));
+     * identification drives it by the MMG ship's (identify.c); at r' = 0 it
+     * is +-0 and u_ss = U0 (1 - 0) = U0 exactly */
+    double u_ss = k->U0;
+    if (rn != 0.0 || !isfinite(b1)) {
+        double loss = k->kb->speed_loss * fabs(rn) + k->kb->speed_loss_drift * fabs(b1 * rn);
+        u_ss = k->U0 * (1.0 - (loss < 0.9 ? loss : 0.9)); /* fmin, inlined: loss is finite */
+    }
     double U1 = u_ss + (k->U - u_ss) * k->Eu;
     rotate(&k->sb, &k->cb, b1 - k->beta);
     k->beta = b1;
@@ -117,8 +122,8 @@ static void kin_step(kin *k, double ps, double pc, double sn, double cs, double 
     k->U = U1, k->cse = ce1, k->csn = cn1;
 }
 
-fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
-                           double helm, fw_track *out, fw_error *err)
+fw_status fw_track_start(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
+                         double helm, fw_track *out, fw_track_gen *g, fw_error *err)
 {
     int n = fw_track_samples(def);
     if (n > out->cap)
@@ -127,11 +132,9 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
         helm = ship->rudder_max;
     if (helm < -ship->rudder_max)
         helm = -ship->rudder_max;
-    fw_nomoto_indices ix;
     /* the side's own knowledge base (ship.h), slip terms included */
     const fw_nomoto_kb *kb = fw_ship_kb(ship, helm);
-    fw_status st = fw_nomoto_indices_at(kb, fw_ms_to_kn(s->U),
-                                        fw_rad_to_deg(helm), &ix, err);
+    fw_status st = fw_nomoto_indices_at(kb, fw_ms_to_kn(s->U), fw_rad_to_deg(helm), &g->ix, err);
     if (st)
         return st;
 
@@ -139,82 +142,132 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
     double t_ramp0 = def->delay > 0.0 ? def->delay : 0.0;
     double ramp = fabs(helm - s->delta) / ship->rudder_rate;
     double rho = helm > s->delta ? ship->rudder_rate : -ship->rudder_rate;
-    double piece_start[3] = {0.0, t_ramp0, t_ramp0 + ramp};
-    double piece_rho[3] = {0.0, ramp > 0.0 ? rho : 0.0, 0.0};
-    double piece_delta0[3] = {s->delta, s->delta, helm};
+    g->piece_start[0] = 0.0, g->piece_start[1] = t_ramp0, g->piece_start[2] = t_ramp0 + ramp;
+    g->piece_rho[0] = 0.0, g->piece_rho[1] = ramp > 0.0 ? rho : 0.0, g->piece_rho[2] = 0.0;
+    g->piece_delta0[0] = g->piece_delta0[1] = s->delta, g->piece_delta0[2] = helm;
 
-    const double dt = def->dt;
+    g->dt = def->dt;
+    g->max_turn = def->max_turn;
+    g->psi0 = s->psi;
     out->n = n;
-    out->dt = dt;
+    out->dt = def->dt;
     out->helm = helm;
-    double r0 = s->r, v0 = s->rdot, turned0 = 0.0;
-    double sn = sin(s->psi), cs = cos(s->psi);
-    double prev_turn = 0.0;
-    bool steadied = false;
-    kin kn;
-    kin_init(&kn, ship, kb, s, dt);
-    int k = 0;
-    for (int p = 0; p < 3 && k < n; p++) {
-        double t_end = p < 2 ? piece_start[p + 1] : INFINITY;
-        fw_nomoto_piece pc;
-        fw_nomoto_piece_init(&pc, &ix, piece_delta0[p], piece_rho[p], r0, v0);
-        if (k * dt < t_end) {
-            /* Samples in this piece by recurrence: with E = exp(-dt/T),
-             * e2(tau + dt) = E2 e2(tau) and phi(tau + dt) = E1 phi(tau) + e2(tau) phi(dt),
-             * which is exact and as well conditioned as phi itself. */
-            double tau = k * dt - piece_start[p];
-            double E1 = exp(-dt / ix.T1), E2 = exp(-dt / ix.T2);
-            double phidt = fw_nomoto_phi(ix.T1, ix.T2, dt);
-            double e2 = exp(-tau / ix.T2), ph = fw_nomoto_phi(ix.T1, ix.T2, tau);
-            double A = ix.T1 * (ix.T2 * pc.h1 + pc.h0);
-            double B = ix.T1 * (ix.T2 * pc.h2 + pc.h1);
-            double TT = ix.T1 * ix.T2, TS = ix.T1 + ix.T2;
-            for (; k < n && k * dt < t_end; k++, tau += dt) {
-                double h = pc.h0 * e2 + A * ph;
-                double hd = pc.h1 * e2 + B * ph;
-                double H = -TT * (hd - pc.h1) - TS * (h - pc.h0);
-                double r = pc.c0 + pc.b * tau + h, rd = pc.b + hd;
-                double turn = turned0 + pc.c0 * tau + 0.5 * pc.b * tau * tau + H;
-                double dl = piece_delta0[p] + piece_rho[p] * tau;
-                if (steadied) {
-                    turn = prev_turn;
-                    r = rd = 0.0;
-                    dl = 0.0;
-                } else if (def->max_turn > 0.0 && fabs(turn) >= def->max_turn) {
-                    /* clamped at the sample: the steadying is instantaneous in
-                     * the prediction, an error of at most r dt in heading */
-                    steadied = true;
-                    turn = copysign(def->max_turn, turn);
-                    r = rd = 0.0;
-                    dl = 0.0;
-                }
-                if (k > 0) {
-                    double ps = sn, pcs = cs;
-                    rotate(&sn, &cs, turn - prev_turn);
-                    kin_step(&kn, ps, pcs, sn, cs, r, dt);
-                }
-                prev_turn = turn;
-                out->east[k] = kn.east;
-                out->north[k] = kn.north;
-                out->psi[k] = s->psi + turn;
-                out->r[k] = r;
-                out->rdot[k] = rd;
-                out->delta[k] = dl;
-                out->sin_psi[k] = sn;
-                out->cos_psi[k] = cs;
-                double ph_next = E1 * ph + e2 * phidt;
-                e2 *= E2;
-                ph = ph_next;
-            }
-        }
-        if (p < 2) {
-            double len = piece_start[p + 1] - piece_start[p];
-            double turned;
-            fw_nomoto_piece_eval(&pc, len, &r0, &v0, &turned);
-            turned0 += turned;
-        }
-    }
+    g->n = n;
+    g->k = 0;
+    g->p = 0;
+    g->in_piece = false;
+    g->r0 = s->r, g->v0 = s->rdot, g->turned0 = 0.0;
+    g->sn = sin(s->psi), g->cs = cos(s->psi);
+    g->prev_turn = 0.0;
+    g->steadied = false;
+    kin_init(&g->kn, ship, kb, s, def->dt);
     return FW_OK;
+}
+
+/* Enters piece g->p at sample g->k: its response from the state reached, and
+ * the recurrences' factors if a sample falls in it. */
+static void piece_enter(fw_track_gen *g)
+{
+    int p = g->p;
+    fw_track_piece *q = &g->q;
+    q->t_end = p < 2 ? g->piece_start[p + 1] : INFINITY;
+    fw_nomoto_piece_init(&q->pc, &g->ix, g->piece_delta0[p], g->piece_rho[p], g->r0, g->v0);
+    if (g->k * g->dt < q->t_end) {
+        /* Samples in this piece by recurrence: with E = exp(-dt/T),
+         * e2(tau + dt) = E2 e2(tau) and phi(tau + dt) = E1 phi(tau) + e2(tau) phi(dt),
+         * which is exact and as well conditioned as phi itself. */
+        const fw_nomoto_indices *ix = &g->ix;
+        double dt = g->dt;
+        q->tau = g->k * dt - g->piece_start[p];
+        q->E1 = exp(-dt / ix->T1), q->E2 = exp(-dt / ix->T2);
+        q->phidt = fw_nomoto_phi(ix->T1, ix->T2, dt);
+        q->e2 = exp(-q->tau / ix->T2), q->ph = fw_nomoto_phi(ix->T1, ix->T2, q->tau);
+        q->A = ix->T1 * (ix->T2 * q->pc.h1 + q->pc.h0);
+        q->B = ix->T1 * (ix->T2 * q->pc.h2 + q->pc.h1);
+        q->TT = ix->T1 * ix->T2, q->TS = ix->T1 + ix->T2;
+    }
+    g->in_piece = true;
+}
+
+/* Samples g->k .. kmax-1 within the present piece.  The state is worked on in
+ * a local copy: the stores into the track may alias it otherwise. */
+static void piece_run(fw_track_gen *gp, fw_track *out, int kmax)
+{
+    fw_track_gen g = *gp;
+    fw_track_piece q = gp->q;
+    const fw_nomoto_piece pc = q.pc;
+    const double dt = g.dt, dl0 = g.piece_delta0[g.p], rh = g.piece_rho[g.p];
+    for (; g.k < kmax && g.k * dt < q.t_end; g.k++, q.tau += dt) {
+        double tau = q.tau;
+        double h = pc.h0 * q.e2 + q.A * q.ph;
+        double hd = pc.h1 * q.e2 + q.B * q.ph;
+        double H = -q.TT * (hd - pc.h1) - q.TS * (h - pc.h0);
+        double r = pc.c0 + pc.b * tau + h, rd = pc.b + hd;
+        double turn = g.turned0 + pc.c0 * tau + 0.5 * pc.b * tau * tau + H;
+        double dl = dl0 + rh * tau;
+        if (g.steadied) {
+            turn = g.prev_turn;
+            r = rd = 0.0;
+            dl = 0.0;
+        } else if (g.max_turn > 0.0 && fabs(turn) >= g.max_turn) {
+            /* clamped at the sample: the steadying is instantaneous in
+             * the prediction, an error of at most r dt in heading */
+            g.steadied = true;
+            turn = copysign(g.max_turn, turn);
+            r = rd = 0.0;
+            dl = 0.0;
+        }
+        if (g.k > 0) {
+            double ps = g.sn, pcs = g.cs;
+            rotate(&g.sn, &g.cs, turn - g.prev_turn);
+            kin_step(&g.kn, ps, pcs, g.sn, g.cs, r, dt);
+        }
+        g.prev_turn = turn;
+        int k = g.k;
+        out->east[k] = g.kn.east;
+        out->north[k] = g.kn.north;
+        out->psi[k] = g.psi0 + turn;
+        out->r[k] = r;
+        out->rdot[k] = rd;
+        out->delta[k] = dl;
+        out->sin_psi[k] = g.sn;
+        out->cos_psi[k] = g.cs;
+        double ph_next = q.E1 * q.ph + q.e2 * q.phidt;
+        q.e2 *= q.E2;
+        q.ph = ph_next;
+    }
+    g.q = q;
+    *gp = g;
+}
+
+void fw_track_extend(fw_track_gen *g, fw_track *out, int kmax)
+{
+    if (kmax > g->n)
+        kmax = g->n;
+    while (g->k < kmax && g->p < 3) {
+        if (!g->in_piece)
+            piece_enter(g);
+        piece_run(g, out, kmax);
+        if (g->k * g->dt < g->q.t_end)
+            return; /* paused inside the piece */
+        if (g->p < 2) {
+            double len = g->piece_start[g->p + 1] - g->piece_start[g->p], turned;
+            fw_nomoto_piece_eval(&g->q.pc, len, &g->r0, &g->v0, &turned);
+            g->turned0 += turned;
+        }
+        g->p++;
+        g->in_piece = false;
+    }
+}
+
+fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
+                           double helm, fw_track *out, fw_error *err)
+{
+    fw_track_gen g;
+    fw_status st = fw_track_start(ship, def, s, helm, out, &g, err);
+    if (!st)
+        fw_track_extend(&g, out, g.n);
+    return st;
 }
 
 fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
@@ -291,14 +344,15 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
     return FW_OK;
 }
 
-void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst)
+void fw_track_mirror_range(const fw_track *src, const fw_own_state *s, fw_track *dst, int k0,
+                           int k1)
 {
     double ux = sin(s->psi), uy = cos(s->psi); /* along the initial heading */
     double s2 = sin(2.0 * s->psi), c2 = cos(2.0 * s->psi);
     dst->n = src->n;
     dst->dt = src->dt;
     dst->helm = -src->helm;
-    for (int k = 0; k < src->n; k++) {
+    for (int k = k0; k < k1; k++) {
         double dx = src->east[k] - s->east, dy = src->north[k] - s->north;
         double along = dx * ux + dy * uy;
         double perp = dx * uy - dy * ux; /* starboard offset */
@@ -312,4 +366,9 @@ void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst)
         dst->sin_psi[k] = s2 * src->cos_psi[k] - c2 * src->sin_psi[k];
         dst->cos_psi[k] = c2 * src->cos_psi[k] + s2 * src->sin_psi[k];
     }
+}
+
+void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst)
+{
+    fw_track_mirror_range(src, s, dst, 0, src->n);
 }

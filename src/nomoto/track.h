@@ -15,7 +15,10 @@
 #ifndef FW_TRACK_H
 #define FW_TRACK_H
 
+#include <stdbool.h>
+
 #include "core/error.h"
+#include "nomoto/nomoto.h"
 #include "ship/ship.h"
 
 /* What the predictor needs of the own ship, SI. */
@@ -61,6 +64,43 @@ void fw_track_free(fw_track *tr);
 fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
                            double helm, fw_track *out, fw_error *err);
 
+/* The same prediction made a few samples at a time (the helm search predicts
+ * a candidate only as far as its clearance check looks): fw_track_start sets
+ * out up (n, dt, helm; no samples yet), fw_track_extend computes samples up to
+ * kmax (exclusive, at most n) that are not there yet.  The samples are those
+ * of fw_track_predict to the bit, however the extensions are cut. */
+typedef struct fw_track_kin {  /* position, speed and drift (track.c) */
+    const fw_nomoto_kb *kb;
+    double L;
+    bool slip;                /* the knowledge base has drift or speed loss */
+    double east, north;
+    double U, U0, beta;       /* speed now, on a straight course, drift angle */
+    double sb, cb;            /* sin, cos of beta, kept by rotation: beta moves slowly */
+    double cse, csn;          /* unit vector of the course over ground */
+    double Eb, Eu;            /* lag factors over one step */
+} fw_track_kin;
+
+typedef struct fw_track_piece { /* the rudder piece under way and its recurrences */
+    fw_nomoto_piece pc;
+    double t_end, tau, E1, E2, phidt, e2, ph, A, B, TT, TS;
+} fw_track_piece;
+
+typedef struct fw_track_gen { /* the predictor's state between extensions */
+    fw_nomoto_indices ix;
+    fw_track_kin kn;
+    fw_track_piece q;
+    double piece_start[3], piece_rho[3], piece_delta0[3];
+    double dt, max_turn, psi0;
+    int n, k, p;              /* samples in all, computed; rudder piece */
+    bool in_piece, steadied;
+    double r0, v0, turned0;   /* at the start of piece p */
+    double sn, cs, prev_turn; /* heading at sample k - 1 */
+} fw_track_gen;
+
+fw_status fw_track_start(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
+                         double helm, fw_track *out, fw_track_gen *g, fw_error *err);
+void fw_track_extend(fw_track_gen *g, fw_track *out, int kmax);
+
 /* A heading autopilot: helm = -kp (psi - psi_ref) - kd r, within +-max_helm. */
 typedef struct fw_steer_def {
     double psi_ref;   /* rad */
@@ -83,5 +123,8 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
 /* The mirror image of src about the line of the initial heading: the track
  * for -helm when the start is symmetric (r = rdot = delta = 0). */
 void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst);
+/* The same for samples k0..k1-1 of src only. */
+void fw_track_mirror_range(const fw_track *src, const fw_own_state *s, fw_track *dst, int k0,
+                           int k1);
 
 #endif
