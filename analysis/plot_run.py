@@ -64,7 +64,7 @@ def ellipse(e, n, heading_deg, a, b):
 
 # the own ship is always orange; targets never are
 TARGET_COLORS = ["tab:blue", "tab:green", "tab:purple", "tab:brown", "tab:pink",
-                 "tab:olive", "tab:cyan", "tab:red"]
+                 "tab:olive", "tab:cyan", "tab:red", "navy", "darkgoldenrod"]  # 10: NAMED_MAX
 
 
 NM = 1852.0
