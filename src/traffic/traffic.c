@@ -1,6 +1,7 @@
-/* traffic.c - the C side of the SUMO coupling: mode strings, the one frame
- * conversion, SUMO's command line, and the step-loop calls dispatched to the
- * libsumo or libtraci table of traffic_sumo.cpp. */
+/* traffic.c - the C side of the SUMO coupling: starting SUMO (embedded, a
+ * sumo-gui, a remote sumo), the one frame conversion, and the step-loop calls
+ * dispatched to the libsumo or libtraci table of traffic_sumo.cpp.  The
+ * queries are in traffic_query.c, SUMO's command line in sumoargs.c. */
 #include "core/files.h"
 #include "traffic/traffic.h"
 
@@ -21,45 +22,8 @@
 #include "core/units.h"
 #include "traffic/backend.h"
 #include "traffic/fcd.h"
+#include "traffic/traffic_internal.h"
 
-struct fw_traffic {
-    const fw_sumo_backend *be;
-    fw_traffic_def def;
-    char own_id[64];
-    char log_file[1024];
-    pid_t child; /* sumo-gui started here, or 0 */
-    char screenshot[1024]; /* gui: the PNG taken at the end ("" none) */
-    bool zoomed;           /* gui: the view is zoomed on the own ship */
-    bool placed, dead;
-    double time;
-    long steps;
-    fw_fcd *fcd;           /* def.fcd_file's writer, or NULL */
-    long fcd_every;        /* steps between two of its timesteps */
-    double query_radius;   /* m, of the range query */
-    double own_x, own_y, own_heading, own_speed; /* as last placed: the query's centre */
-    fw_sumo_list raw;      /* fw_traffic_all */
-    fw_sumo_list ctx;      /* the context results of step ctx_step */
-    long ctx_step;
-    fw_target *ships;
-    int ships_cap;
-    fw_target *area;
-    int area_cap;
-    fw_target *near;
-    int near_cap;
-    fw_target *conv;       /* the context results converted (and motion followed) */
-    int conv_cap;
-    /* the hull centre of every ship at its last context step, by id: the
-     * direction of motion of a ship changing lanes */
-    fw_idmap ids;
-    double *last_e, *last_n;
-    long *last_step;
-    int last_cap;
-};
-
-/* m, half the length of the longest ship there is (a 400 m ULCV, with room):
- * a ship whose hull centre is within the area has its front bumper, SUMO's
- * position, within area_radius + this. */
-static const double kHalfLengthMax = 500.0;
 
 static bool embedded_open = false; /* libsumo: one simulation per process */
 
@@ -80,50 +44,6 @@ fw_traffic_def fw_default_traffic_def(void)
     return d;
 }
 
-fw_status fw_traffic_mode_parse(const char *text, fw_traffic_mode *out, fw_error *err)
-{
-    memset(out, 0, sizeof *out);
-    if (!text || strcmp(text, "embedded") == 0) {
-        out->kind = FW_TRAFFIC_EMBEDDED;
-        return FW_OK;
-    }
-    if (strcmp(text, "gui") == 0) {
-        out->kind = FW_TRAFFIC_GUI;
-        return FW_OK;
-    }
-    if (strncmp(text, "remote:", 7) == 0) {
-        const char *host = text + 7;
-        const char *colon = strrchr(host, ':');
-        size_t hl = colon ? (size_t)(colon - host) : 0;
-        if (!colon || hl == 0)
-            return fw_fail(err, FW_EINPUT, "--sumo '%s': expected remote:HOST:PORT", text);
-        if (hl >= sizeof out->host)
-            return fw_fail(err, FW_EINPUT, "--sumo '%s': host name too long", text);
-        char *end = NULL;
-        long port = strtol(colon + 1, &end, 10);
-        if (end == colon + 1 || *end != '\0' || port < 1 || port > 65535)
-            return fw_fail(err, FW_EINPUT, "--sumo '%s': port must be 1..65535", text);
-        memcpy(out->host, host, hl);
-        out->host[hl] = '\0';
-        out->port = (int)port;
-        out->kind = FW_TRAFFIC_REMOTE;
-        return FW_OK;
-    }
-    return fw_fail(err, FW_EINPUT,
-                   "--sumo '%s': expected embedded, gui or remote:HOST:PORT", text);
-}
-
-fw_status fw_traffic_gui_check(const char *opt, fw_error *err)
-{
-    const char *display = getenv("DISPLAY");
-    if (!display || !display[0])
-        return fw_fail(err, FW_EINPUT,
-                       "%s gui: no display ($DISPLAY is not set): run under xvfb-run, or use "
-                       "--sumo embedded",
-                       opt);
-    return FW_OK;
-}
-
 void fw_traffic_to_sumo(double x, double y, double heading, double length, double *fx,
                         double *fy, double *angle_deg)
 {
@@ -139,71 +59,6 @@ void fw_traffic_from_sumo(double fx, double fy, double angle_deg, double length,
     *x = fx - 0.5 * length * sin(h);
     *y = fy - 0.5 * length * cos(h);
     *heading = fw_wrap_2pi(h);
-}
-
-fw_status fw_traffic_sumo_args(const fw_traffic_def *def, const char *program, int remote_port,
-                               const char **argv, int max, char *buf, size_t bufsz,
-                               fw_error *err)
-{
-    int n = 0;
-    size_t used = 0;
-    bool overflow = false;
-#define ARG(s)                                                                              \
-    do {                                                                                    \
-        if (n + 1 < max) argv[n++] = (s); else overflow = true;                             \
-    } while (0)
-    /* numbers are printed into buf so argv can point at them */
-#define NUM(fmt, v)                                                                         \
-    do {                                                                                    \
-        int k_ = snprintf(buf + used, bufsz - used, fmt, v);                                \
-        if (k_ < 0 || (size_t)k_ >= bufsz - used) { overflow = true; break; }               \
-        ARG(buf + used);                                                                    \
-        used += (size_t)k_ + 1;                                                             \
-    } while (0)
-    ARG(program);
-    ARG("--net-file");
-    ARG(def->net_file);
-    if (def->route_file) {
-        ARG("--route-files");
-        ARG(def->route_file);
-    }
-    if (def->add_file) {
-        ARG("--additional-files");
-        ARG(def->add_file);
-    }
-    ARG("--step-length");
-    NUM("%.17g", def->step);
-    ARG("--seed");
-    NUM("%lu", def->seed);
-    /* ships are never teleported; collisions are fairway's to judge */
-    ARG("--time-to-teleport");
-    ARG("-1");
-    ARG("--collision.action");
-    ARG("warn");
-    /* lane changes as ship manoeuvres, not jumps (traffic.h) */
-    if (def->lane_change_s > 0.0) {
-        ARG("--lanechange.duration");
-        NUM("%.17g", def->lane_change_s);
-    }
-    ARG("--no-step-log");
-    ARG("true");
-    ARG("--duration-log.disable");
-    ARG("true");
-    /* --log alone leaves load errors on stderr: name the file for errors too */
-    ARG("--log");
-    ARG(def->log_file ? def->log_file : "/dev/null");
-    ARG("--error-log");
-    ARG(def->log_file ? def->log_file : "/dev/null");
-    if (remote_port > 0) {
-        ARG("--remote-port");
-        NUM("%d", remote_port);
-    }
-#undef NUM
-#undef ARG
-    if (overflow)
-        return fw_fail(err, FW_ERUN, "sumo command line too long");
-    argv[n] = NULL;
-    return FW_OK;
 }
 
 static fw_status check_def(const fw_traffic_def *d, fw_error *err)
@@ -487,9 +342,9 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
     /* one range query serves all the queries */
     t->query_radius = def->radius;
     if (def->area_radius > 0.0)
-        t->query_radius = fmax(def->radius, def->area_radius + kHalfLengthMax);
+        t->query_radius = fmax(def->radius, def->area_radius + FW_TRAFFIC_HALF_LENGTH_MAX);
     if (def->near_radius > 0.0)
-        t->query_radius = fmax(t->query_radius, def->near_radius + kHalfLengthMax);
+        t->query_radius = fmax(t->query_radius, def->near_radius + FW_TRAFFIC_HALF_LENGTH_MAX);
     t->ctx_step = -1;
     if ((st = t->be->add_own(t->own_id, def->own_length, def->own_width, def->own_edge,
                              t->query_radius, err))) {
@@ -500,7 +355,7 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
     return FW_OK;
 }
 
-static fw_status alive(const fw_traffic *t, fw_error *err)
+fw_status fw_traffic_alive(const fw_traffic *t, fw_error *err)
 {
     if (t->dead)
         return fw_fail(err, FW_ERUN, "SUMO is no longer usable after an earlier error");
@@ -512,7 +367,7 @@ fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, do
 {
     /* SUMO derives the own ship's speed from the distance moved; the given
      * speed is kept for fw_traffic_area only */
-    if (alive(t, err))
+    if (fw_traffic_alive(t, err))
         return FW_ERUN;
     if (!isfinite(x) || !isfinite(y) || !isfinite(heading))
         return fw_fail(err, FW_ERUN, "own ship state is not finite (%g, %g, %g)", x, y, heading);
@@ -533,7 +388,7 @@ fw_status fw_traffic_place(fw_traffic *t, double x, double y, double heading, do
 
 fw_status fw_traffic_set_speed(fw_traffic *t, const char *id, double speed, fw_error *err)
 {
-    if (alive(t, err))
+    if (fw_traffic_alive(t, err))
         return FW_ERUN;
     if (strcmp(id, t->own_id) == 0)
         return fw_fail(err, FW_ERUN, "the own ship's speed is fairway's, not SUMO's");
@@ -541,12 +396,10 @@ fw_status fw_traffic_set_speed(fw_traffic *t, const char *id, double speed, fw_e
     return t->be->set_speed(id, isfinite(speed) ? speed : -1.0, err);
 }
 
-static fw_status context(fw_traffic *t, fw_error *err);
-
 fw_status fw_traffic_add_placed(fw_traffic *t, const char *id, double length, double width,
                                 fw_error *err)
 {
-    if (alive(t, err))
+    if (fw_traffic_alive(t, err))
         return FW_ERUN;
     if (strcmp(id, t->own_id) == 0 || !(length > 0) || !(width > 0))
         return fw_fail(err, FW_ERUN, "ship '%s': not the own ship's id, a size > 0", id);
@@ -556,7 +409,7 @@ fw_status fw_traffic_add_placed(fw_traffic *t, const char *id, double length, do
 fw_status fw_traffic_move(fw_traffic *t, const char *id, double x, double y, double heading,
                           double length, fw_error *err)
 {
-    if (alive(t, err))
+    if (fw_traffic_alive(t, err))
         return FW_ERUN;
     double fx, fy, a;
     fw_traffic_to_sumo(x, y, heading, length, &fx, &fy, &a);
@@ -566,7 +419,7 @@ fw_status fw_traffic_move(fw_traffic *t, const char *id, double x, double y, dou
 
 fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err)
 {
-    if (alive(t, err) || context(t, err))
+    if (fw_traffic_alive(t, err) || fw_traffic_context(t, err))
         return FW_ERUN;
     if (strcmp(id, t->own_id) == 0)
         return fw_fail(err, FW_ERUN, "the own ship cannot be removed");
@@ -586,7 +439,7 @@ fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err)
 
 fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
 {
-    if (alive(t, err))
+    if (fw_traffic_alive(t, err))
         return FW_ERUN;
     if (!t->placed)
         return fw_fail(err, FW_ERUN, "own ship not placed before the first step");
@@ -609,213 +462,3 @@ fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
 }
 
 double fw_traffic_time(const fw_traffic *t) { return t->time; }
-
-/* Raw SUMO values to fairway's frame: the one place this happens. */
-static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_target *s)
-{
-    memcpy(s->id, r->id, sizeof s->id);
-    memcpy(s->type, r->type, sizeof s->type);
-    fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->east, &s->north, &s->course);
-    s->speed = r->speed;
-    s->length = r->length;
-    s->breadth = r->width;
-    s->own = strcmp(r->id, own_id) == 0;
-    s->pred = NULL;
-}
-
-static fw_status room(fw_target **v, int *cap, int n, fw_error *err)
-{
-    if (n <= *cap)
-        return FW_OK;
-    if (!fw_resize((void **)v, sizeof **v, 2 * (size_t)n))
-        return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
-    *cap = 2 * n;
-    return FW_OK;
-}
-
-static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
-{
-    fw_status st = room(&t->ships, &t->ships_cap, t->raw.n, err);
-    if (st)
-        return st;
-    for (int i = 0; i < t->raw.n; i++)
-        convert_one(&t->raw.v[i], t->own_id, &t->ships[i]);
-    *ships = t->ships;
-    *n = t->raw.n;
-    return FW_OK;
-}
-
-/* The context results of the last step, asked of SUMO once per step. */
-/* SUMO's angle is its lane's: a ship changing lanes moves across it (at up
- * to the lane width over lane_change_s) with its angle unchanged.  Such a
- * ship gets the direction and speed of its hull centre's motion since the
- * last step instead, so its heading follows its lateral motion and a
- * constant-velocity prediction points where it goes.  Its hull centre stays
- * where SUMO's own geometry puts it (behind the bumper along the lane): a
- * hull turned about its bow would jump sideways.  Ships on their lane's line
- * move along it exactly and keep SUMO's values (kMinLateral: far below any
- * lane change, far above rounding). */
-static const double kMinLateral = 0.05; /* m/s */
-
-static fw_status follow_motion(fw_traffic *t, int k, fw_error *err)
-{
-    fw_target *c = &t->conv[k];
-    int i;
-    if (fw_idmap_intern(&t->ids, c->id, &i))
-        return fw_fail(err, FW_ERUN, "out of memory for ship ids");
-    if (i >= t->last_cap) {
-        int cap = fw_grown_cap(t->last_cap, i + 1);
-        if (!fw_resize_each((size_t)cap, 3, (void **)&t->last_e, sizeof *t->last_e,
-                            (void **)&t->last_n, sizeof *t->last_n,
-                            (void **)&t->last_step, sizeof *t->last_step))
-            return fw_fail(err, FW_ERUN, "out of memory for ship ids");
-        for (int j = t->last_cap; j < cap; j++)
-            t->last_step[j] = -2;
-        t->last_cap = cap;
-    }
-    if (t->last_step[i] == t->steps - 1 && !c->own) {
-        double dx = c->east - t->last_e[i], dy = c->north - t->last_n[i];
-        double lat = fabs(dx * cos(c->course) - dy * sin(c->course)) / t->def.step;
-        if (lat > kMinLateral) {
-            c->course = fw_wrap_2pi(atan2(dx, dy));
-            c->speed = hypot(dx, dy) / t->def.step;
-        }
-    }
-    t->last_e[i] = c->east, t->last_n[i] = c->north, t->last_step[i] = t->steps;
-    return FW_OK;
-}
-
-static fw_status context(fw_traffic *t, fw_error *err)
-{
-    if (t->ctx_step == t->steps)
-        return FW_OK;
-    fw_status st = t->be->context(&t->ctx, err);
-    if (!st)
-        st = room(&t->conv, &t->conv_cap, t->ctx.n, err);
-    /* converted once per step, for both queries */
-    for (int k = 0; !st && k < t->ctx.n; k++) {
-        convert_one(&t->ctx.v[k], t->own_id, &t->conv[k]);
-        st = follow_motion(t, k, err);
-    }
-    if (!st)
-        t->ctx_step = t->steps;
-    return st;
-}
-
-fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
-{
-    *n = 0;
-    if (alive(t, err))
-        return FW_ERUN;
-    fw_status st = context(t, err);
-    if (!st)
-        st = room(&t->ships, &t->ships_cap, t->ctx.n, err);
-    if (st)
-        return st;
-    /* a range query widened for the area holds more than SUMO's range test
-     * would give: apply that test (front bumper within radius) here */
-    bool filter = t->query_radius > t->def.radius;
-    int m = 0;
-    for (int i = 0; i < t->ctx.n; i++) {
-        const fw_sumo_raw *r = &t->ctx.v[i];
-        if (filter && hypot(r->x - t->own_x, r->y - t->own_y) > t->def.radius)
-            continue;
-        t->ships[m++] = t->conv[i];
-    }
-    *ships = t->ships;
-    *n = m;
-    return FW_OK;
-}
-
-static int cmp_id(const void *a, const void *b)
-{
-    return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
-}
-
-/* The background ships of this step's context results whose hull centres
- * are within radius of the own ship's, into *buf (room for one more: the
- * area adds the own ship); their count, or -1 with *err set (what: the
- * query's name, for a def without its radius). */
-static int within(fw_traffic *t, const char *what, double radius, fw_target **buf, int *cap,
-                  fw_error *err)
-{
-    if (alive(t, err))
-        return -1;
-    if (!(radius > 0.0)) {
-        fw_fail(err, FW_ERUN, "no %s query: the traffic def has no %s radius", what, what);
-        return -1;
-    }
-    if (!t->placed) {
-        fw_fail(err, FW_ERUN, "no %s query before the own ship is placed", what);
-        return -1;
-    }
-    fw_status st = context(t, err);
-    if (!st)
-        st = room(buf, cap, t->ctx.n + 1, err);
-    if (st)
-        return -1;
-    int m = 0;
-    for (int i = 0; i < t->ctx.n; i++) {
-        const fw_target *s = &t->conv[i];
-        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= radius)
-            (*buf)[m++] = *s;
-    }
-    return m;
-}
-
-fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
-{
-    *n = 0;
-    int m = within(t, "area", t->def.area_radius, &t->area, &t->area_cap, err);
-    if (m < 0)
-        return err->status;
-    /* the own ship as placed: SUMO may not list a vehicle moved off its lanes */
-    fw_target *o = &t->area[m++];
-    memset(o, 0, sizeof *o);
-    snprintf(o->id, sizeof o->id, "%s", t->own_id);
-    snprintf(o->type, sizeof o->type, "%s", FW_TRAFFIC_OWN_TYPE);
-    o->east = t->own_x;
-    o->north = t->own_y;
-    o->course = t->own_heading;
-    o->speed = t->own_speed;
-    o->length = t->def.own_length;
-    o->breadth = t->def.own_width;
-    o->own = true;
-    qsort(t->area, (size_t)m, sizeof *t->area, cmp_id);
-    *ships = t->area;
-    *n = m;
-    return FW_OK;
-}
-
-fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
-{
-    *n = 0;
-    int m = within(t, "nearby", t->def.near_radius, &t->near, &t->near_cap, err);
-    if (m < 0)
-        return err->status;
-    qsort(t->near, (size_t)m, sizeof *t->near, cmp_id);
-    *ships = t->near;
-    *n = m;
-    return FW_OK;
-}
-
-fw_status fw_traffic_all(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
-{
-    *n = 0;
-    if (alive(t, err))
-        return FW_ERUN;
-    fw_status st = t->be->all(&t->raw, err);
-    return st ? st : convert(t, ships, n, err);
-}
-
-fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_target *ship, fw_error *err)
-{
-    if (alive(t, err))
-        return FW_ERUN;
-    fw_sumo_raw r;
-    fw_status st = t->be->get(id, &r, err);
-    if (st)
-        return st;
-    convert_one(&r, t->own_id, ship);
-    return FW_OK;
-}

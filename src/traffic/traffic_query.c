@@ -1,0 +1,221 @@
+/* traffic_query.c - the ships SUMO has, in fairway's terms (traffic.h): the
+ * range query read once per step, a lane-changing ship's heading from its
+ * motion, the area and nearby lists, and the getters' reads for checks. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/mem.h"
+#include "core/units.h"
+#include "traffic/traffic_internal.h"
+
+/* Raw SUMO values to fairway's frame: the one place this happens. */
+static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_target *s)
+{
+    memcpy(s->id, r->id, sizeof s->id);
+    memcpy(s->type, r->type, sizeof s->type);
+    fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->east, &s->north, &s->course);
+    s->speed = r->speed;
+    s->length = r->length;
+    s->breadth = r->width;
+    s->own = strcmp(r->id, own_id) == 0;
+    s->pred = NULL;
+}
+
+static fw_status room(fw_target **v, int *cap, int n, fw_error *err)
+{
+    if (n <= *cap)
+        return FW_OK;
+    if (!fw_resize((void **)v, sizeof **v, 2 * (size_t)n))
+        return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
+    *cap = 2 * n;
+    return FW_OK;
+}
+
+static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
+{
+    fw_status st = room(&t->ships, &t->ships_cap, t->raw.n, err);
+    if (st)
+        return st;
+    for (int i = 0; i < t->raw.n; i++)
+        convert_one(&t->raw.v[i], t->own_id, &t->ships[i]);
+    *ships = t->ships;
+    *n = t->raw.n;
+    return FW_OK;
+}
+
+/* The context results of the last step, asked of SUMO once per step. */
+/* SUMO's angle is its lane's: a ship changing lanes moves across it (at up
+ * to the lane width over lane_change_s) with its angle unchanged.  Such a
+ * ship gets the direction and speed of its hull centre's motion since the
+ * last step instead, so its heading follows its lateral motion and a
+ * constant-velocity prediction points where it goes.  Its hull centre stays
+ * where SUMO's own geometry puts it (behind the bumper along the lane): a
+ * hull turned about its bow would jump sideways.  Ships on their lane's line
+ * move along it exactly and keep SUMO's values (kMinLateral: far below any
+ * lane change, far above rounding). */
+static const double kMinLateral = 0.05; /* m/s */
+
+static fw_status follow_motion(fw_traffic *t, int k, fw_error *err)
+{
+    fw_target *c = &t->conv[k];
+    int i;
+    if (fw_idmap_intern(&t->ids, c->id, &i))
+        return fw_fail(err, FW_ERUN, "out of memory for ship ids");
+    if (i >= t->last_cap) {
+        int cap = fw_grown_cap(t->last_cap, i + 1);
+        if (!fw_resize_each((size_t)cap, 3, (void **)&t->last_e, sizeof *t->last_e,
+                            (void **)&t->last_n, sizeof *t->last_n,
+                            (void **)&t->last_step, sizeof *t->last_step))
+            return fw_fail(err, FW_ERUN, "out of memory for ship ids");
+        for (int j = t->last_cap; j < cap; j++)
+            t->last_step[j] = -2;
+        t->last_cap = cap;
+    }
+    if (t->last_step[i] == t->steps - 1 && !c->own) {
+        double dx = c->east - t->last_e[i], dy = c->north - t->last_n[i];
+        double lat = fabs(dx * cos(c->course) - dy * sin(c->course)) / t->def.step;
+        if (lat > kMinLateral) {
+            c->course = fw_wrap_2pi(atan2(dx, dy));
+            c->speed = hypot(dx, dy) / t->def.step;
+        }
+    }
+    t->last_e[i] = c->east, t->last_n[i] = c->north, t->last_step[i] = t->steps;
+    return FW_OK;
+}
+
+fw_status fw_traffic_context(fw_traffic *t, fw_error *err)
+{
+    if (t->ctx_step == t->steps)
+        return FW_OK;
+    fw_status st = t->be->context(&t->ctx, err);
+    if (!st)
+        st = room(&t->conv, &t->conv_cap, t->ctx.n, err);
+    /* converted once per step, for both queries */
+    for (int k = 0; !st && k < t->ctx.n; k++) {
+        convert_one(&t->ctx.v[k], t->own_id, &t->conv[k]);
+        st = follow_motion(t, k, err);
+    }
+    if (!st)
+        t->ctx_step = t->steps;
+    return st;
+}
+
+fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    if (fw_traffic_alive(t, err))
+        return FW_ERUN;
+    fw_status st = fw_traffic_context(t, err);
+    if (!st)
+        st = room(&t->ships, &t->ships_cap, t->ctx.n, err);
+    if (st)
+        return st;
+    /* a range query widened for the area holds more than SUMO's range test
+     * would give: apply that test (front bumper within radius) here */
+    bool filter = t->query_radius > t->def.radius;
+    int m = 0;
+    for (int i = 0; i < t->ctx.n; i++) {
+        const fw_sumo_raw *r = &t->ctx.v[i];
+        if (filter && hypot(r->x - t->own_x, r->y - t->own_y) > t->def.radius)
+            continue;
+        t->ships[m++] = t->conv[i];
+    }
+    *ships = t->ships;
+    *n = m;
+    return FW_OK;
+}
+
+static int cmp_id(const void *a, const void *b)
+{
+    return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
+}
+
+/* The background ships of this step's context results whose hull centres
+ * are within radius of the own ship's, into *buf (room for one more: the
+ * area adds the own ship); their count, or -1 with *err set (what: the
+ * query's name, for a def without its radius). */
+static int within(fw_traffic *t, const char *what, double radius, fw_target **buf, int *cap,
+                  fw_error *err)
+{
+    if (fw_traffic_alive(t, err))
+        return -1;
+    if (!(radius > 0.0)) {
+        fw_fail(err, FW_ERUN, "no %s query: the traffic def has no %s radius", what, what);
+        return -1;
+    }
+    if (!t->placed) {
+        fw_fail(err, FW_ERUN, "no %s query before the own ship is placed", what);
+        return -1;
+    }
+    fw_status st = fw_traffic_context(t, err);
+    if (!st)
+        st = room(buf, cap, t->ctx.n + 1, err);
+    if (st)
+        return -1;
+    int m = 0;
+    for (int i = 0; i < t->ctx.n; i++) {
+        const fw_target *s = &t->conv[i];
+        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= radius)
+            (*buf)[m++] = *s;
+    }
+    return m;
+}
+
+fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    int m = within(t, "area", t->def.area_radius, &t->area, &t->area_cap, err);
+    if (m < 0)
+        return err->status;
+    /* the own ship as placed: SUMO may not list a vehicle moved off its lanes */
+    fw_target *o = &t->area[m++];
+    memset(o, 0, sizeof *o);
+    snprintf(o->id, sizeof o->id, "%s", t->own_id);
+    snprintf(o->type, sizeof o->type, "%s", FW_TRAFFIC_OWN_TYPE);
+    o->east = t->own_x;
+    o->north = t->own_y;
+    o->course = t->own_heading;
+    o->speed = t->own_speed;
+    o->length = t->def.own_length;
+    o->breadth = t->def.own_width;
+    o->own = true;
+    qsort(t->area, (size_t)m, sizeof *t->area, cmp_id);
+    *ships = t->area;
+    *n = m;
+    return FW_OK;
+}
+
+fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    int m = within(t, "nearby", t->def.near_radius, &t->near, &t->near_cap, err);
+    if (m < 0)
+        return err->status;
+    qsort(t->near, (size_t)m, sizeof *t->near, cmp_id);
+    *ships = t->near;
+    *n = m;
+    return FW_OK;
+}
+
+fw_status fw_traffic_all(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
+{
+    *n = 0;
+    if (fw_traffic_alive(t, err))
+        return FW_ERUN;
+    fw_status st = t->be->all(&t->raw, err);
+    return st ? st : convert(t, ships, n, err);
+}
+
+fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_target *ship, fw_error *err)
+{
+    if (fw_traffic_alive(t, err))
+        return FW_ERUN;
+    fw_sumo_raw r;
+    fw_status st = t->be->get(id, &r, err);
+    if (st)
+        return st;
+    convert_one(&r, t->own_id, ship);
+    return FW_OK;
+}
