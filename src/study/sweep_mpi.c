@@ -109,7 +109,8 @@ static void worker(const fw_sweep_def *def, const char *work, const char *why)
  * commits first).  Measured on the default study (80 runs of about 0.5 s,
  * 2 cores shared with other work, 3 interleaved pairs of -np 3 against
  * --jobs 2, wall): 0.80 (0.48-0.91) of --jobs 2's throughput with one run
- * queued, 0.86 (0.82-1.06) with two; the load made both noisy. */
+ * queued, 0.86 (0.82-1.06) with two; the load made both noisy.  Idle
+ * machine, two queued: 0.94 (0.83-1.04). */
 enum { QUEUE_DEPTH = 2 };
 
 /* Rank 0: hand out the pending runs, commit what comes back. */
