@@ -1,5 +1,7 @@
 /* netcache.c - built networks kept by their inputs' content (see netcache.h). */
+#include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,6 +9,7 @@
 
 #include "core/files.h"
 #include "core/hash.h"
+#include "core/mem.h"
 #include "traffic/netcache.h"
 
 /* Bumped when what a cached file holds changes for the same inputs (say, the
@@ -111,6 +114,8 @@ bool fw_netcache_get(const fw_netcache_key *k, const char *const *dest)
         same = !fw_file_write(dest[i], data, len, NULL);
         free(data);
     }
+    if (same) /* recently used: the last the pruning takes */
+        utimensat(AT_FDCWD, k->dir, NULL, 0);
     return same;
 }
 
@@ -125,6 +130,61 @@ static bool copy_in(const char *dir, const char *name, const char *src)
     bool ok = !fw_file_write(path, data, len, NULL);
     free(data);
     return ok;
+}
+
+/* Entries kept at most: FAIRWAY_NETCACHE_MAX, default 512 (entries are 2-20
+ * kB: a few MB at most); beyond it the least recently used go, so a study
+ * that builds a network per run cannot fill the disk. */
+static int max_entries(void)
+{
+    const char *m = getenv("FAIRWAY_NETCACHE_MAX");
+    long v = m ? strtol(m, NULL, 10) : 0;
+    return v > 0 && v <= 1000000 ? (int)v : 512;
+}
+
+typedef struct entry {
+    char name[256];
+    struct timespec used; /* the directory's modification time: set at each hit */
+} entry;
+
+static int by_use(const void *a, const void *b)
+{
+    const struct timespec *x = &((const entry *)a)->used, *y = &((const entry *)b)->used;
+    return x->tv_sec != y->tv_sec ? (x->tv_sec < y->tv_sec ? -1 : 1)
+                                  : (x->tv_nsec > y->tv_nsec) - (x->tv_nsec < y->tv_nsec);
+}
+
+/* The least recently used entries of root beyond max_entries() removed (not
+ * the temporaries of runs storing theirs: their names begin with a dot).  A
+ * run reading an entry removed under it misses, and builds. */
+static void prune(const char *root)
+{
+    DIR *d = opendir(root);
+    if (!d)
+        return;
+    entry *v = NULL;
+    int n = 0, cap = 0;
+    char p[1600];
+    for (struct dirent *e; (e = readdir(d));) {
+        struct stat sb;
+        if (e->d_name[0] == '.' || strlen(e->d_name) >= sizeof v->name ||
+            fw_path(p, sizeof p, NULL, "%s/%s", root, e->d_name) || stat(p, &sb) != 0 ||
+            !S_ISDIR(sb.st_mode))
+            continue;
+        if (!fw_reserve((void **)&v, sizeof *v, &cap, n + 1))
+            break;
+        snprintf(v[n].name, sizeof v[n].name, "%s", e->d_name);
+        v[n++].used = sb.st_mtim;
+    }
+    closedir(d);
+    int max = max_entries();
+    if (n > max) {
+        qsort(v, (size_t)n, sizeof *v, by_use);
+        for (int i = 0; i < n - max; i++)
+            if (!fw_path(p, sizeof p, NULL, "%s/%s", root, v[i].name))
+                fw_remove_tree(p);
+    }
+    free(v);
 }
 
 void fw_netcache_put(const fw_netcache_key *k, const char *const *src)
@@ -142,8 +202,13 @@ void fw_netcache_put(const fw_netcache_key *k, const char *const *src)
     for (int i = 0; ok && i < k->n_files; i++)
         ok = copy_in(tmp, k->names[i], src[i]);
     /* an entry there already (a parallel run stored it first) is kept */
-    if (!ok || rename(tmp, k->dir) != 0)
+    if (!ok || rename(tmp, k->dir) != 0) {
         fw_remove_tree(tmp);
+        return;
+    }
+    char root[1300];
+    snprintf(root, sizeof root, "%.*s", (int)(slash - k->dir), k->dir);
+    prune(root);
 }
 
 void fw_netcache_key_free(fw_netcache_key *k)

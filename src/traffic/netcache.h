@@ -16,7 +16,8 @@
  * of two runs storing the same entry at once, the second throws its copy away.
  * The cache never makes a run fail: any failure of its own (no home directory,
  * a full disk, a damaged entry) just means netconvert runs.
- * FAIRWAY_NETCACHE=off turns it off.
+ * FAIRWAY_NETCACHE=off turns it off.  It keeps at most FAIRWAY_NETCACHE_MAX
+ * entries (512), the least recently used going first.
  */
 #ifndef FW_NETCACHE_H
 #define FW_NETCACHE_H

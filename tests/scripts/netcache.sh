@@ -62,4 +62,19 @@ for k in 1 2 3 4; do same ref3 "par$k" paper-3-crossing; done
 [ "$(entries)" -eq 1 ] || { echo "parallel runs: $(entries) entries, not 1"; exit 1; }
 left=$(find "$net" -name '.tmp*' | wc -l)
 [ "$left" -eq 0 ] || { echo "parallel runs left $left temporary files"; exit 1; }
+# at most FAIRWAY_NETCACHE_MAX entries, the least recently used going first
+rm -rf "$XDG_CACHE_HOME"
+run lru1 "$p/1-head-on.yaml"
+sleep 0.05
+run lru2 "$p/2-overtaking.yaml"
+sleep 0.05
+run lru3 "$p/1-head-on.yaml"       # a hit: 1-head-on is now the most recently used
+sleep 0.05
+FAIRWAY_NETCACHE_MAX=2 run lru4 "$p/3-crossing.yaml"
+[ "$(entries)" -eq 2 ] || { echo "FAIRWAY_NETCACHE_MAX=2: $(entries) entries, not 2"; exit 1; }
+run lru5 "$p/1-head-on.yaml"       # kept: a hit adds nothing
+[ "$(entries)" -eq 2 ] || { echo "1-head-on was pruned: $(entries) entries after it"; exit 1; }
+run lru6 "$p/2-overtaking.yaml"    # the least recently used, pruned: a miss stores it again
+[ "$(entries)" -eq 3 ] || { echo "2-overtaking was kept: $(entries) entries after it"; exit 1; }
+same lru2 lru6 paper-2-overtaking
 echo "ok: networks reused byte for byte"
