@@ -19,6 +19,7 @@ fw_policy_def fw_default_policy_def(void)
                            .steady_margin = 1.2,
                            .min_alteration = fw_deg_to_rad(30.0),
                            .blocked_time = 120.0,
+                           .return_retry = 30.0,
                            .min_avoid_time = 30.0,
                            .reopen_step = fw_deg_to_rad(30.0),
                            .ap_kp = 1.0,
@@ -85,6 +86,7 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->primary_id[0] = '\0';
     p->t_mode = 0.0;
     p->t_blocked = -1.0;
+    p->t_given_up = -INFINITY;
     p->course_set = false;
     p->track_set = false;
     p->track_e = p->track_n = 0.0;
@@ -246,6 +248,7 @@ static fw_status check_return(fw_policy *p, const fw_policy_input *in, fw_decisi
         if (p->t_blocked < 0.0)
             p->t_blocked = in->t;
         set_mode(p, FW_MODE_STEADY, in->t);
+        p->t_given_up = in->t;
         d->reason = "the rest of the return would let a target in: steadying";
     }
     return FW_OK;
@@ -353,14 +356,16 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
      * prediction */
     if ((st = steer(p, in->ctx, in->targets, in->n, home(p, own), 1, &ret, err)))
         return st;
-    if (ret >= p->def.steady_margin) {
+    if (ret >= p->def.steady_margin && in->t - p->t_given_up >= p->def.return_retry) {
         d->reason = p->def.ret == FW_RETURN_TRACK ? "the return is clear: back to the track"
                                                   : "the return is clear: back to the course";
         p->helm = autopilot(p, own, home(p, own));
         start_return(p, in->t);
         return FW_OK;
     }
-    d->reason = "steady: returning now would let a target in";
+    d->reason = ret >= p->def.steady_margin ? "steady: a return given up just now is not "
+                                               "started again yet"
+                                             : "steady: returning now would let a target in";
     if (p->t_blocked < 0.0)
         p->t_blocked = in->t;
     return reopen(p, in, d, err);

@@ -85,6 +85,12 @@ typedef struct fw_policy_def {
                                   (rule 8(b); Woerner's "readily apparent") or the
                                   target has passed */
     double min_avoid_time;     /* s, 30: AVOID lasts at least this long */
+    double return_retry;       /* s, 30: a return given up is not started again sooner: the
+                                  start's prediction (from steady running) and the
+                                  check's once under way (from the turning ship) can
+                                  disagree, and the return would start and stop every
+                                  2-5 s, the helm swinging 20 deg (measured in the
+                                  default study) */
     double blocked_time;       /* s, 120: a return blocked this long in STEADY ... */
     double reopen_step;        /* rad, 30 deg: ... alters this much further away */
     /* heading autopilot: helm = -kp * error - kd * r, limited to ap_max_helm.
@@ -122,6 +128,7 @@ typedef struct fw_policy {
     int primary;
     double t_mode;    /* s, when the present mode began */
     double t_blocked; /* s, since when the return has been blocked (< 0: it is not) */
+    double t_given_up; /* s, when a return was last given up (-INFINITY: never) */
     bool course_set;  /* returned once: STANDBY keeps psi_ref by the autopilot */
     bool track_set;   /* the planned track: through (track_e, track_n) on psi_ref */
     double track_e, track_n; /* m */
