@@ -31,18 +31,22 @@ fw_status fw_fcd_open(const char *path, fw_fcd **out, fw_error *err)
     return FW_OK;
 }
 
+void fw_xml_putc(int c, FILE *f)
+{
+    switch (c) {
+    case '&': fputs("&amp;", f); break;
+    case '<': fputs("&lt;", f); break;
+    case '"': fputs("&quot;", f); break;
+    default: fputc(c, f);
+    }
+}
+
 /* Ids and types are SUMO's: letters, digits and a few marks, but a user's
  * network may name them with anything XML must escape. */
 static void put_text(FILE *f, const char *s)
 {
-    for (; *s; s++) {
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default: fputc(*s, f);
-        }
-    }
+    for (; *s; s++)
+        fw_xml_putc(*s, f);
 }
 
 fw_status fw_fcd_step(fw_fcd *d, double time, const fw_sumo_raw *v, int n, fw_error *err)

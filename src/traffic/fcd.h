@@ -16,11 +16,16 @@
 #define FW_TRAFFIC_FCD_H
 
 #include <stdbool.h>
+#include <stdio.h>
 
 #include "core/error.h"
 #include "traffic/backend.h"
 
 typedef struct fw_fcd fw_fcd;
+
+/* One character into an XML attribute value, escaped (& < "): the FCD's and
+ * run.sumocfg's (sumofiles.c). */
+void fw_xml_putc(int c, FILE *f);
 
 /* Starts path (under a temporary name until fw_fcd_close). */
 fw_status fw_fcd_open(const char *path, fw_fcd **out, fw_error *err);

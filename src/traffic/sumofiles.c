@@ -9,6 +9,7 @@
 
 #include "core/files.h"
 #include "traffic/backend.h"
+#include "traffic/fcd.h"
 
 /* The run's sumo/ directory: the log file's. */
 static void sumo_dir(const fw_traffic_def *d, char *dir, size_t n)
@@ -59,16 +60,6 @@ static void put_relative(FILE *f, const char *arg, bool paths, const char *dir,
 
 static void put_sh(int c, FILE *f) { c == '\'' ? fputs("'\\''", f) : fputc(c, f); }
 
-static void put_xml(int c, FILE *f)
-{
-    switch (c) {
-    case '&': fputs("&amp;", f); break;
-    case '<': fputs("&lt;", f); break;
-    case '"': fputs("&quot;", f); break;
-    default: fputc(c, f);
-    }
-}
-
 fw_status fw_traffic_write_remote_command(const fw_traffic_def *d, fw_error *err)
 {
     if (!d->log_file)
@@ -112,7 +103,7 @@ static bool run_only(const char *opt)
 static void put_option(FILE *f, const char *opt, const char *value, const char *dir)
 {
     fprintf(f, "    <%s value=\"", opt + 2);
-    put_relative(f, value, is_file_option(opt), dir, put_xml);
+    put_relative(f, value, is_file_option(opt), dir, fw_xml_putc);
     fputs("\"/>\n", f);
 }
 
