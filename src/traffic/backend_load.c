@@ -6,6 +6,7 @@
 #include <dlfcn.h>
 #include <pthread.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/files.h"
@@ -15,13 +16,69 @@ static const char *const kModule[2] = {"fairway-libsumo.so", "fairway-libtraci.s
 static const fw_sumo_backend *g_table[2];
 static pthread_mutex_t g_lock = PTHREAD_MUTEX_INITIALIZER;
 
+enum { MAX_STUBS = 64 };
+static void *g_stub[MAX_STUBS];
+static int g_nstub;
+
+static void close_stubs(void)
+{
+    while (g_nstub > 0)
+        dlclose(g_stub[--g_nstub]);
+}
+
+/* The stand-ins for libsumocpp's GUI libraries (scripts/sumo_gui_stubs.py:
+ * GDAL, FFmpeg, OpenSceneGraph, gl2ps and the 200 libraries behind them,
+ * which only sumo-gui's code calls), opened before the libsumo module: the
+ * loader then takes them for libsumocpp's dependencies of the same SONAME
+ * and maps none of the real ones, which cost 0.1 s of linking per process.
+ * None if FAIRWAY_SUMO_GUI_LIBS=load or none were built (stubs.txt absent). */
+static void open_stubs(void)
+{
+    const char *env = getenv("FAIRWAY_SUMO_GUI_LIBS");
+    if (env && strcmp(env, "load") == 0)
+        return;
+    char dir[4096], list[4096], line[512];
+    fw_error e = {0};
+    if (fw_path(dir, sizeof dir, &e, "%s/gui-stubs", fw_module_dir()) ||
+        fw_path(list, sizeof list, &e, "%s/stubs.txt", dir))
+        return;
+    FILE *f = fopen(list, "r");
+    if (!f)
+        return;
+    while (g_nstub < MAX_STUBS && fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\r\n")] = 0;
+        char path[4608];
+        if (!line[0] || snprintf(path, sizeof path, "%s/%s", dir, line) >= (int)sizeof path)
+            continue;
+        void *h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+        if (!h) {
+            /* a partial set would still map the real ones behind it */
+            close_stubs();
+            break;
+        }
+        g_stub[g_nstub++] = h;
+    }
+    fclose(f);
+}
+
 static fw_status open_module(int k, fw_error *err)
 {
     char path[4096];
     fw_status st = fw_path(path, sizeof path, err, "%s/%s", fw_module_dir(), kModule[k]);
     if (st)
         return st;
+    if (k == 0)
+        open_stubs();
     void *h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!h && g_nstub > 0) {
+        /* libsumocpp changed since the build made the stand-ins (a symbol
+         * they lack): the real libraries, slower to load, and a word why */
+        fprintf(stderr, "fairway: the stand-ins for SUMO's GUI libraries do not fit "
+                        "libsumocpp (%s); loading the real ones (a rebuild makes new stand-ins)\n",
+                dlerror());
+        close_stubs();
+        h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    }
     if (!h) {
         /* the loader's message mostly starts with the path again */
         const char *why = dlerror();
