@@ -3,6 +3,7 @@
  * link different SUMO libraries; neither is seen by the other.  RTLD_NOW:
  * SUMO's libraries bind immediately anyway (they are linked BIND_NOW), and a
  * missing symbol is better found at the load than in the middle of a run. */
+#define _GNU_SOURCE /* RTLD_DEEPBIND */
 #include <dlfcn.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -61,6 +62,30 @@ static void open_stubs(void)
     fclose(f);
 }
 
+/* RTLD_DEEPBIND for the libsumo module: libsumocpp's 55,000 symbol
+ * references are looked up in its own libraries first, not after the 53 the
+ * program has (MPI, PROJ, SUNDIALS and theirs), which halves its load (0.028-
+ * 0.042 s to 0.014-0.022 s CPU, measured).  Only where nothing interposes on
+ * the program's side: under the sanitizers (whose malloc the module must share)
+ * or with an LD_PRELOAD (a profiler's or another allocator) the usual order. */
+static int bind_flag(int k)
+{
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    (void)k;
+    return 0;
+#else
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+    __has_feature(memory_sanitizer)
+    (void)k;
+    return 0;
+#endif
+#endif
+    const char *pre = getenv("LD_PRELOAD");
+    return k == 0 && !(pre && pre[0]) ? RTLD_DEEPBIND : 0;
+#endif
+}
+
 static fw_status open_module(int k, fw_error *err)
 {
     char path[4096];
@@ -69,7 +94,8 @@ static fw_status open_module(int k, fw_error *err)
         return st;
     if (k == 0)
         open_stubs();
-    void *h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    const int flags = RTLD_NOW | RTLD_LOCAL | bind_flag(k);
+    void *h = dlopen(path, flags);
     if (!h && g_nstub > 0) {
         /* libsumocpp changed since the build made the stand-ins (a symbol
          * they lack): the real libraries, slower to load, and a word why */
@@ -77,7 +103,7 @@ static fw_status open_module(int k, fw_error *err)
                         "libsumocpp (%s); loading the real ones (a rebuild makes new stand-ins)\n",
                 dlerror());
         close_stubs();
-        h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+        h = dlopen(path, flags);
     }
     if (!h) {
         /* the loader's message mostly starts with the path again */
