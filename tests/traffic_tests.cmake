@@ -34,6 +34,10 @@ set_tests_properties(traffic_bad_inputs PROPERTIES ENVIRONMENT "${fw_lsan}")
 fw_script_test(sumo_loading 0 "ok: SUMO loaded only to simulate, once" sumo_loading.sh)
 set_tests_properties(sumo_loading PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
 
+# The libsumo range query spares reads and stays SUMO's range test exactly.
+fw_script_test(range_read 0 "ok: range read exact, an understated bound caught" range_read.sh)
+set_tests_properties(range_read PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 300)
+
 # Networks built at run time are kept by their inputs' content (netcache.h).
 fw_script_test(netcache 0 "ok: networks reused byte for byte" netcache.sh)
 set_tests_properties(netcache PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 300)

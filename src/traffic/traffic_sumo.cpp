@@ -14,6 +14,7 @@ namespace S = libtraci;
 #define FW_BACKEND_NAME "libtraci"
 #else
 #include <libsumo/libsumo.h>
+#include "traffic/range_read.h"
 namespace S = libsumo;
 #define FW_BACKEND_TABLE fw_backend_libsumo
 #define FW_BACKEND_NAME "libsumo"
@@ -26,7 +27,6 @@ namespace S = libsumo;
 #include <cstring>
 #include <exception>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 extern "C" {
@@ -47,25 +47,6 @@ bool g_subscribed = false; // the range query is set up (the own ship added)
 // g_cy), the own ship's hull centre as last placed.
 double g_radius = 0.0, g_cx = 0.0, g_cy = 0.0;
 
-#ifndef FW_LIBTRACI
-// What never changes for a ship, asked of SUMO once: its type, length and
-// width.  Forgotten when the ship leaves (arrives or is removed), so an id
-// used again is asked again.
-struct Static {
-    std::string type;
-    double length, width;
-};
-std::unordered_map<std::string, Static> g_static;
-
-const Static &static_of(const std::string &id)
-{
-    auto it = g_static.find(id);
-    if (it != g_static.end())
-        return it->second;
-    Static s{S::Vehicle::getTypeID(id), S::Vehicle::getLength(id), S::Vehicle::getWidth(id)};
-    return g_static.emplace(id, s).first->second;
-}
-#endif
 // Only a started simulation or an open connection may be closed: libtraci's
 // close after a failed init follows a dangling connection.
 bool g_open = false;
@@ -171,6 +152,7 @@ fw_status be_start(const char *const *argv, fw_error *err)
     return guarded("cannot load the simulation", err, [&] {
         S::Simulation::start(cmd);
         g_open = true;
+        fw_range::start();
     });
 #endif
 }
@@ -233,7 +215,7 @@ fw_status be_add_own(const char *id, double length, double width, const char *ed
                                  {libsumo::VAR_POSITION, libsumo::VAR_ANGLE, libsumo::VAR_SPEED,
                                   libsumo::VAR_LENGTH, libsumo::VAR_WIDTH, libsumo::VAR_TYPE});
 #else
-        g_static.clear();
+        fw_range::set_radius(radius);
 #endif
         g_subscribed = true;
     });
@@ -269,6 +251,9 @@ fw_status be_place(const char *id, double fx, double fy, double angle_deg, doubl
         S::POI::setPosition(kRangePoi, cx, cy);
         g_cx = cx;
         g_cy = cy;
+#ifndef FW_LIBTRACI
+        fw_range::place(cx, cy);
+#endif
     });
 }
 
@@ -284,6 +269,9 @@ fw_status be_add_placed(const char *id, double length, double width, fw_error *e
         S::VehicleType::setWidth(type, width);
         S::VehicleType::setColor(type, libsumo::TraCIColor(40, 110, 220, 255));
         S::Vehicle::add(id, kOwnRoute, type, "now");
+#ifndef FW_LIBTRACI
+        fw_range::placed_anywhere(id);
+#endif
     });
 }
 
@@ -301,7 +289,7 @@ fw_status be_remove(const char *id, fw_error *err)
     return guarded("cannot remove a ship", err, [&] {
         S::Vehicle::remove(id);
 #ifndef FW_LIBTRACI
-        g_static.erase(id);
+        fw_range::forget(id);
 #endif
     });
 }
@@ -312,8 +300,7 @@ fw_status be_step(double *time, fw_error *err)
         S::Simulation::step();
         *time = S::Simulation::getTime();
 #ifndef FW_LIBTRACI
-        for (const std::string &id : S::Simulation::getArrivedIDList())
-            g_static.erase(id);
+        fw_range::stepped();
 #endif
     });
 }
@@ -349,38 +336,16 @@ void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
     }
 }
 #else
-// In-process, every ship's position by getter and the range test here cost
-// less than SUMO evaluating a context subscription each step (measured,
-// bench/results/traffic_read.txt).  The test is SUMO's own for a context
-// (libsumo Helper: distance2D(centre, position) <= range, the square root of
-// the summed squares), the order the subscription's (a map by id), so the
-// ships and their order are the subscription's exactly.
+// In-process, getters cost less than SUMO evaluating a context subscription
+// each step (measured, bench/results/traffic_read.txt), and range_read.h
+// spares the ships that cannot be in range the getters too.
 void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
 {
-    const std::vector<std::string> ids = S::Vehicle::getIDList();
-    if ((*st = reserve(out, (int)ids.size(), err)) != FW_OK)
+    const std::vector<fw_sumo_raw> &found = fw_range::read(g_own);
+    if ((*st = reserve(out, (int)found.size(), err)) != FW_OK)
         return;
-    for (const std::string &id : ids) {
-        if (id == g_own)
-            continue;
-        const libsumo::TraCIPosition p = S::Vehicle::getPosition(id);
-        const double dx = p.x - g_cx, dy = p.y - g_cy;
-        if (std::sqrt(dx * dx + dy * dy) > g_radius)
-            continue;
-        fw_sumo_raw *r = &out->v[out->n++];
-        copy_id(r->id, sizeof r->id, id);
-        r->x = p.x;
-        r->y = p.y;
-        r->angle_deg = S::Vehicle::getAngle(id);
-        r->speed = S::Vehicle::getSpeed(id);
-        const Static &c = static_of(id);
-        r->length = c.length;
-        r->width = c.width;
-        copy_id(r->type, sizeof r->type, c.type);
-    }
-    std::sort(out->v, out->v + out->n, [](const fw_sumo_raw &a, const fw_sumo_raw &b) {
-        return std::strcmp(a.id, b.id) < 0;
-    });
+    std::copy(found.begin(), found.end(), out->v);
+    out->n = (int)found.size();
 }
 #endif
 
@@ -467,6 +432,9 @@ void be_close(void)
     if (!g_open)
         return;
     g_open = false;
+#ifndef FW_LIBTRACI
+    fw_range::close();
+#endif
     try {
         S::Simulation::close();
     } catch (...) {
