@@ -1,5 +1,6 @@
 // range_read.cpp - the libsumo back end's range query (range_read.h).
 #include "traffic/range_read.h"
+#include "traffic/sumo_text.h"
 
 #include <libsumo/libsumo.h>
 
@@ -114,8 +115,8 @@ bool surely_outside(const Ship &s)
 
 void fill(fw_sumo_raw *r, const Ship &s, double x, double y)
 {
-    std::snprintf(r->id, sizeof r->id, "%s", s.id.c_str());
-    std::snprintf(r->type, sizeof r->type, "%s", s.type.c_str());
+    fw_copy_text(r->id, sizeof r->id, s.id);
+    fw_copy_text(r->type, sizeof r->type, s.type);
     r->x = x;
     r->y = y;
     r->angle_deg = S::Vehicle::getAngle(s.id);

@@ -29,6 +29,8 @@ namespace S = libsumo;
 #include <string>
 #include <vector>
 
+#include "traffic/sumo_text.h"
+
 extern "C" {
 #include "traffic/backend.h"
 #include "traffic/traffic.h"
@@ -90,11 +92,6 @@ template <typename F> fw_status guarded(const char *what, fw_error *err, F body)
     }
 }
 
-void copy_id(char *dst, size_t n, const std::string &s)
-{
-    std::snprintf(dst, n, "%s", s.c_str());
-}
-
 fw_status reserve(fw_sumo_list *out, int n, fw_error *err)
 {
     if (n <= out->cap)
@@ -113,8 +110,8 @@ fw_status reserve(fw_sumo_list *out, int n, fw_error *err)
 void read_vehicle(const std::string &id, fw_sumo_raw *r)
 {
     const libsumo::TraCIPosition p = S::Vehicle::getPosition(id);
-    copy_id(r->id, sizeof r->id, id);
-    copy_id(r->type, sizeof r->type, S::Vehicle::getTypeID(id));
+    fw_copy_text(r->id, sizeof r->id, id);
+    fw_copy_text(r->type, sizeof r->type, S::Vehicle::getTypeID(id));
     r->x = p.x;
     r->y = p.y;
     r->angle_deg = S::Vehicle::getAngle(id);
@@ -317,7 +314,7 @@ void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
             continue;
         fw_sumo_raw *r = &out->v[out->n++];
         const libsumo::TraCIResults &v = kv.second;
-        copy_id(r->id, sizeof r->id, kv.first);
+        fw_copy_text(r->id, sizeof r->id, kv.first);
         auto pit = v.find(libsumo::VAR_POSITION);
         auto *pos = pit == v.end() ? nullptr
                     : dynamic_cast<const libsumo::TraCIPosition *>(pit->second.get());
@@ -332,7 +329,7 @@ void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
         auto tit = v.find(libsumo::VAR_TYPE);
         r->type[0] = '\0';
         if (tit != v.end())
-            copy_id(r->type, sizeof r->type, tit->second->getString());
+            fw_copy_text(r->type, sizeof r->type, tit->second->getString());
     }
 }
 #else
