@@ -34,7 +34,10 @@ fw_cli_test(cli_run_bad_host 2 "--sumo remote:no-such-host.invalid:8813: cannot 
 fw_cli_test(cli_sweep_bad_host 2 "cannot resolve host 'no-such-host.invalid'"
             sweep ${CMAKE_SOURCE_DIR}/tests/data/study/small.yaml --db ${CMAKE_CURRENT_BINARY_DIR}/bad-host.db
             --sumo remote:no-such-host.invalid:8813)
-foreach(t cli_run_interrupt cli_run_bad_host cli_sweep_bad_host)
+# --profile: where a run's time went, adding up, results unchanged
+fw_script_test(cli_run_profile 0 "ok: --profile says where the time went, results unchanged"
+               run_profile.sh)
+foreach(t cli_run_interrupt cli_run_bad_host cli_sweep_bad_host cli_run_profile)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}" TIMEOUT 120)
 endforeach()
 

@@ -29,7 +29,7 @@
 
 static void help(void)
 {
-    printf("usage: fairway run SCENARIO... [--out DIR] [--sumo MODE] [--json]\n"
+    printf("usage: fairway run SCENARIO... [--out DIR] [--sumo MODE] [--json] [--profile]\n"
            "\n"
            "Runs each scenario file (YAML, see scenarios/README.md): SUMO moves the\n"
            "targets and background traffic (or recorded tracks and AIS reports are\n"
@@ -49,6 +49,9 @@ static void help(void)
            "                writes, DIR/NAME/sumo/remote-command.txt: a run with no sumo\n"
            "                there fails and keeps it; a sumo on another network is refused)\n"
            "  --json        print the summaries as a JSON array instead of the table\n"
+           "  --profile     where each run's wall time went (set-up, SUMO's steps, the\n"
+           "                reads, the decisions, the reactions, the own dynamics, the\n"
+           "                records), a line in run.log and on stderr\n"
            "\n"
            "Watching a run in sumo-gui (--sumo gui; needs a display, e.g. xvfb-run):\n"
            "  --gui-delay MS     wall-clock ms per step at least (default 30)\n"
@@ -148,7 +151,7 @@ static int parse_options(int argc, char **argv, run_opts *o, fw_error *err)
     bool seen[7] = {0};
     const fw_opt opts[] = {
         FW_OPT("--out", FW_OPT_TEXT, &o->out), FW_OPT("--sumo", FW_OPT_TEXT, &o->mode),
-        FW_OPT("--json", FW_OPT_FLAG, &o->json),
+        FW_OPT("--json", FW_OPT_FLAG, &o->json), FW_OPT("--profile", FW_OPT_FLAG, &o->def.profile),
         FW_OPT_SEEN("--gui-delay", FW_OPT_DOUBLE, &g->delay_ms, &seen[0]),
         FW_OPT_SEEN("--realtime", FW_OPT_DOUBLE, &g->realtime, &seen[1]),
         FW_OPT_SEEN("--gui-size", FW_OPT_TEXT, &g->size, &seen[2]),

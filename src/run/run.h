@@ -137,6 +137,9 @@ typedef struct fw_run_def {
      * also after a failure part way (the records up to then). */
     fw_survey_record **survey_out;
     int *n_survey_out;
+    /* run.log (and stderr) get where the run's wall time went: set-up, the
+     * world's phases (world.h fw_world_timing), the records, the finish */
+    bool profile;
 } fw_run_def;
 
 fw_run_def fw_default_run_def(void);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/clock.h"
 #include "world/vessel_internal.h"
 
 enum { MAX_VESSELS = 64 };
@@ -17,7 +18,16 @@ struct fw_world {
     long steps;
     bool started, broken;
     fw_reactions *react;
+    fw_world_timing timing;
 };
+
+/* Adds the time since *t to *acc and moves *t to now. */
+static void lap(double *acc, double *t)
+{
+    double now = fw_clock_s();
+    *acc += now - *t;
+    *t = now;
+}
 
 fw_world_def fw_default_world_def(void)
 {
@@ -151,12 +161,16 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
     const fw_target *src = NULL;
     int n_src = 0;
     fw_status st = FW_OK;
+    fw_world_timing *tm = &w->timing;
+    double t = fw_clock_s();
     if (w->source && w->nv > 0)
         st = fw_source_around(w->source, &src, &n_src, err);
+    lap(&tm->read, &t);
     for (int i = 0; !st && i < w->nv; i++)
         st = sense(w, i, src, n_src, err);
     for (int i = 0; !st && i < w->nv; i++)
         st = decide(w, i, err);
+    lap(&tm->decide, &t);
     /* the reactive traffic watches its own, wider circle (traffic/source.h) */
     if (!st && w->source && fw_reactions_active(w->react)) {
         if (w->nv > 0)
@@ -165,6 +179,7 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
             st = fw_reactions_step(w->react, fw_world_time(w),
                                    w->nv > 0 ? &w->v[0]->record : NULL, src, n_src, w->source,
                                    err);
+        lap(&tm->reactions, &t);
     }
     return st;
 }
@@ -191,13 +206,18 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err)
     if (fabs(dt - w->def.step) > 1e-9 * w->def.step)
         return fw_fail(err, FW_EINPUT, "step %g s: this world steps %g s", dt, w->def.step);
     fw_status st = FW_OK;
+    fw_world_timing *tm = &w->timing;
+    double t = fw_clock_s();
     for (int i = 0; !st && i < w->nv; i++)
         st = fw_vessel_advance(w->v[i], w->def.step, err);
+    lap(&tm->dynamics, &t);
     if (!st && w->source) {
         if (w->nv > 0)
             st = fw_source_place(w->source, &w->v[0]->record, err);
+        lap(&tm->place, &t);
         if (!st)
             st = fw_source_advance(w->source, err);
+        lap(&tm->traffic, &t);
     }
     if (!st) {
         w->steps++;
@@ -207,6 +227,7 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err)
     return st;
 }
 
+const fw_world_timing *fw_world_timing_of(const fw_world *w) { return &w->timing; }
 double fw_world_time(const fw_world *w) { return (double)w->steps * w->def.step; }
 long fw_world_steps(const fw_world *w) { return w->steps; }
 int fw_world_vessel_count(const fw_world *w) { return w->nv; }

@@ -70,6 +70,19 @@ fw_status fw_world_start(fw_world *w, fw_error *err);
  * steps at a fixed length).  On failure the world is not usable further. */
 fw_status fw_world_step(fw_world *w, double dt, fw_error *err);
 
+/* Where the world's steps spent their time so far: wall seconds
+ * (CLOCK_MONOTONIC, core/clock.h), always kept (seven clock reads a step);
+ * for `fairway run --profile`, never in anything a run's results depend on. */
+typedef struct fw_world_timing {
+    double dynamics;  /* the vessels' own motion (MMG or Nomoto, integrated) */
+    double place;     /* the own ship put into the traffic (SUMO: moveToXY) */
+    double traffic;   /* the traffic's own step (SUMO's) */
+    double read;      /* the ships around the own ship read and converted */
+    double decide;    /* sensing and the controllers (the avoidance policy) */
+    double reactions; /* the traffic's reactions (its nearby read, give-way) */
+} fw_world_timing;
+const fw_world_timing *fw_world_timing_of(const fw_world *w);
+
 double fw_world_time(const fw_world *w);  /* s */
 long fw_world_steps(const fw_world *w);
 
