@@ -78,6 +78,38 @@ static void read_split(const char *file, double split[4])
     fclose(f);
 }
 
+/* A's phases, from its --profile line (src/run/run.c log_profile): wall s. */
+enum { NPHASE = 9 };
+static const char *const kPhase[NPHASE] = {
+    "set-up", "traffic's step", "own ship placed", "ships read", "decisions",
+    "traffic's reactions", "own dynamics", "records and monitors", "finish"};
+
+static void read_profile(const char *file, double ph[NPHASE])
+{
+    char line[1024] = "";
+    FILE *f = fopen(file, "r");
+    while (f && fgets(line, sizeof line, f) && strncmp(line, "profile: ", 9) != 0)
+        ;
+    if (f)
+        fclose(f);
+    for (int j = 0; j < NPHASE; j++) {
+        const char *at = strstr(line, kPhase[j]);
+        if (!at || sscanf(at + strlen(kPhase[j]), "%lf", &ph[j]) != 1) {
+            fprintf(stderr, "bench_sumo_alone: no '%s' in the profile line of %s\n", kPhase[j],
+                    file);
+            exit(1);
+        }
+    }
+}
+
+static void print_profile(double ph[NPHASE][RUNS])
+{
+    printf("  fairway run, wall by phase (medians, its --profile line):");
+    for (int j = 0; j < NPHASE; j++)
+        printf("%s %s %.3f", j % 3 ? "," : "\n   ", kPhase[j], bench_median(ph[j], RUNS));
+    printf("\n");
+}
+
 /* Median of the n ratios a[k] / b[k], and their range. */
 static double ratio_median(const double *a, const double *b, int n, double *lo, double *hi)
 {
@@ -107,10 +139,11 @@ static void print_median(const char *what, const double *cpu, const double *wall
 /* The medians and ratios of A (ac, aw), A0 (oc, ow; oc NULL: none), B and L. */
 static void report(const double *ac, const double *aw, const double *oc, const double *ow,
                    const double *bc, const double *bw, const double *lc, const double *lw,
-                   double split[4][RUNS])
+                   double split[4][RUNS], double ph[NPHASE][RUNS])
 {
     printf("%-22s %10s %10s\n", "", "cpu_s", "wall_s");
     print_median("fairway run", ac, aw);
+    print_profile(ph);
     if (oc)
         print_median("baseline run", oc, ow);
     print_median("sumo alone", bc, bw);
@@ -155,7 +188,7 @@ int main(int argc, char **argv)
                           "--no-step-log", "true", "--duration-log.disable", "true", "--end",
                           "3600", "--log", "/dev/null", NULL};
     /* L's argv: this program, the mode, then sumo's own */
-    char self[PATH_MAX], split_file[128];
+    char self[PATH_MAX], split_file[128], prof_file[128];
     ssize_t sn = readlink("/proc/self/exe", self, sizeof self - 1);
     if (sn <= 0) {
         perror("bench_sumo_alone: /proc/self/exe");
@@ -166,19 +199,23 @@ int main(int argc, char **argv)
     for (int i = 0; sumo[i]; i++)
         lib[2 + i] = sumo[i];
     snprintf(split_file, sizeof split_file, "%s/split.txt", dir);
+    snprintf(prof_file, sizeof prof_file, "%s/profile.txt", dir);
     double ac[RUNS], aw[RUNS], oc[RUNS], ow[RUNS], bc[RUNS], bw[RUNS], lc[RUNS], lw[RUNS];
-    double split[4][RUNS];
+    double split[4][RUNS], ph[NPHASE][RUNS];
     if (csv)
         fprintf(csv, "round,program,cpu_s,wall_s\n");
     for (int k = 0; k <= RUNS; k++) {
         /* round 0 is the warm-up, and writes the route file sumo replays */
         snprintf(out, sizeof out, "%s/r%d", dir, k);
-        const char *run[] = {fairway, "run", scn, "--out", out, NULL};
-        double c, w;
-        bench_proc_run(run, NULL, &c, &w);
+        const char *run[] = {fairway, "run", scn, "--out", out, "--profile", NULL};
+        double c, w, p[NPHASE];
+        bench_proc_run(run, prof_file, &c, &w);
         if (k == 0)
             continue;
         ac[k - 1] = c, aw[k - 1] = w;
+        read_profile(prof_file, p);
+        for (int j = 0; j < NPHASE; j++)
+            ph[j][k - 1] = p[j];
         if (base) {
             snprintf(out, sizeof out, "%s/b%d", dir, k);
             const char *run0[] = {base, "run", scn, "--out", out, NULL};
@@ -198,7 +235,7 @@ int main(int argc, char **argv)
             fprintf(csv, "%d,libsumo,%.4f,%.4f\n", k, lc[k - 1], lw[k - 1]);
         }
     }
-    report(ac, aw, base ? oc : NULL, ow, bc, bw, lc, lw, split);
+    report(ac, aw, base ? oc : NULL, ow, bc, bw, lc, lw, split, ph);
     if (csv && fclose(csv) != 0)
         perror(argv[1]);
     char cmd[128];

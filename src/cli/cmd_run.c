@@ -49,7 +49,7 @@ static void help(void)
            "                writes, DIR/NAME/sumo/remote-command.txt: a run with no sumo\n"
            "                there fails and keeps it; a sumo on another network is refused)\n"
            "  --json        print the summaries as a JSON array instead of the table\n"
-           "  --profile     where each run's wall time went (set-up, SUMO's steps, the\n"
+           "  --profile     where each run's CPU time went (set-up, SUMO's steps, the\n"
            "                reads, the decisions, the reactions, the own dynamics, the\n"
            "                records), a line in run.log and on stderr\n"
            "\n"

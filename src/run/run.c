@@ -172,6 +172,7 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     wd.step = s->step;
     wd.source = src;
     wd.reactions = s->reactions;
+    wd.timing = def->profile;
     if ((st = fw_world_create(&wd, w, err)))
         return st;
     fw_policy_controller_def pd = {.ship = &s->ship, .helm = s->helm, .policy = s->policy};
@@ -202,8 +203,12 @@ typedef struct run_state {
     double helm_prev, e_prev, n_prev;
     int reactions_seen;      /* the world's reactions already in run.log */
     bool kb_outside;         /* the own speed was outside the knowledge base's at the last step */
-    double t_setup, t_observe, t_loop; /* wall s (--profile) */
+    bool profile;
+    double t_setup, t_observe, t_loop; /* CPU s (--profile) */
 } run_state;
+
+/* The CPU clock with --profile, else 0 (no system calls). */
+static double tick(const run_state *R) { return R->profile ? fw_cpu_s() : 0.0; }
 
 /* The survey's step: every ship in the area, the own ship included. */
 static fw_status survey_step(run_state *R, double t, fw_error *err)
@@ -373,12 +378,12 @@ static fw_status loop(run_state *R, fw_run_summary *sum, fw_error *err)
     R->e_prev = s->east;
     R->n_prev = s->north;
     R->mode_prev = FW_MODE_STANDBY;
-    double t0 = fw_clock_s();
+    double t0 = tick(R);
     fw_status st = fw_world_start(R->w, err);
     for (long k = 0; !st; k++) {
-        double t1 = fw_clock_s();
+        double t1 = tick(R);
         st = observe(R, k, sum, err);
-        R->t_observe += fw_clock_s() - t1;
+        R->t_observe += tick(R) - t1;
         if (st || k >= n_steps)
             break;
         if ((st = fw_world_step(R->w, s->step, err)))
@@ -397,25 +402,24 @@ static fw_status loop(run_state *R, fw_run_summary *sum, fw_error *err)
     sum->heading_error = fw_wrap_pi(x->psi - s->course);
     sum->path_lengthening = sum->path_length - sum->along_track;
     sum->time_lost = sum->t_end - sum->along_track / s->speed;
-    R->t_loop = fw_clock_s() - t0;
+    R->t_loop = tick(R) - t0;
     return st;
 }
 
-/* --profile: where the run's wall time went, into run.log and onto stderr
- * (a single process on an idle core: close to its CPU time). */
-static void log_profile(const run_state *R, double t_finish, double wall)
+/* --profile: where the run's CPU time went, into run.log and onto stderr. */
+static void log_profile(const run_state *R, double t_finish, double run_cpu)
 {
     const fw_world_timing *tm = fw_world_timing_of(R->w);
     double world = tm->dynamics + tm->place + tm->traffic + tm->read + tm->decide + tm->reactions;
     char line[640];
     snprintf(line, sizeof line,
-             "profile: %s, %ld steps, wall %.3f s: set-up %.3f (records, SUMO loaded and "
-             "started, the world); steps %.3f: traffic's step %.3f, own ship placed %.3f, "
-             "ships read %.3f, decisions %.3f, traffic's reactions %.3f, own dynamics %.3f, "
-             "records and monitors %.3f, the rest %.3f; finish %.3f\n",
-             R->s->name, fw_world_steps(R->w), wall, R->t_setup, R->t_loop, tm->traffic,
-             tm->place, tm->read, tm->decide, tm->reactions, tm->dynamics, R->t_observe,
-             R->t_loop - world - R->t_observe, t_finish);
+             "profile: %s, %ld steps, CPU %.3f s (the process so far %.3f): set-up %.3f "
+             "(records, SUMO loaded and started, the world); steps %.3f: traffic's step %.3f, "
+             "own ship placed %.3f, ships read %.3f, decisions %.3f, traffic's reactions %.3f, "
+             "own dynamics %.3f, records and monitors %.3f, the rest %.3f; finish %.3f\n",
+             R->s->name, fw_world_steps(R->w), run_cpu, fw_cpu_s(), R->t_setup, R->t_loop,
+             tm->traffic, tm->place, tm->read, tm->decide, tm->reactions, tm->dynamics,
+             R->t_observe, R->t_loop - world - R->t_observe, t_finish);
     fputs(line, fw_records_log(R->rec));
     fputs(line, stderr);
 }
@@ -514,7 +518,8 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
     const fw_scenario *s = def->scenario;
     double wall0 = fw_clock_s();
     init_summary(def, sum, enc, n_enc);
-    run_state R = {.s = s};
+    run_state R = {.s = s, .profile = def->profile};
+    double cpu0 = tick(&R);
     fw_status st;
     fw_monitor_def md = fw_default_monitor_def();
     if ((st = fw_records_open(&R.rec, s, def->dir, err)) ||
@@ -523,16 +528,16 @@ fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encount
         (st = make_world(def, &R.w, &R.own, err)))
         goto out;
     log_start(&R);
-    R.t_setup = fw_clock_s() - wall0;
+    R.t_setup = tick(&R) - cpu0;
     st = loop(&R, sum, err);
     if (st)
         fprintf(fw_records_log(R.rec), "run failed: %s\n", err ? err->msg : "");
     else
         sum->status = FW_RUN_OK;
-    double t_finish = fw_clock_s();
+    double t_finish = tick(&R);
     st = finish(&R, def, sum, enc, n_enc, st, err);
     if (def->profile)
-        log_profile(&R, fw_clock_s() - t_finish, fw_clock_s() - wall0);
+        log_profile(&R, tick(&R) - t_finish, tick(&R) - cpu0);
 out:
     sum->sumo_s = fw_sumo_source_step_wall(R.w ? fw_world_source(R.w) : NULL);
     fw_world_destroy(R.w);

@@ -21,10 +21,13 @@ struct fw_world {
     fw_world_timing timing;
 };
 
+/* The CPU clock when the def keeps timings, else 0 (no system calls). */
+static double tick(const fw_world *w) { return w->def.timing ? fw_cpu_s() : 0.0; }
+
 /* Adds the time since *t to *acc and moves *t to now. */
-static void lap(double *acc, double *t)
+static void lap(const fw_world *w, double *acc, double *t)
 {
-    double now = fw_clock_s();
+    double now = tick(w);
     *acc += now - *t;
     *t = now;
 }
@@ -162,15 +165,15 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
     int n_src = 0;
     fw_status st = FW_OK;
     fw_world_timing *tm = &w->timing;
-    double t = fw_clock_s();
+    double t = tick(w);
     if (w->source && w->nv > 0)
         st = fw_source_around(w->source, &src, &n_src, err);
-    lap(&tm->read, &t);
+    lap(w, &tm->read, &t);
     for (int i = 0; !st && i < w->nv; i++)
         st = sense(w, i, src, n_src, err);
     for (int i = 0; !st && i < w->nv; i++)
         st = decide(w, i, err);
-    lap(&tm->decide, &t);
+    lap(w, &tm->decide, &t);
     /* the reactive traffic watches its own, wider circle (traffic/source.h) */
     if (!st && w->source && fw_reactions_active(w->react)) {
         if (w->nv > 0)
@@ -179,7 +182,7 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
             st = fw_reactions_step(w->react, fw_world_time(w),
                                    w->nv > 0 ? &w->v[0]->record : NULL, src, n_src, w->source,
                                    err);
-        lap(&tm->reactions, &t);
+        lap(w, &tm->reactions, &t);
     }
     return st;
 }
@@ -207,17 +210,17 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err)
         return fw_fail(err, FW_EINPUT, "step %g s: this world steps %g s", dt, w->def.step);
     fw_status st = FW_OK;
     fw_world_timing *tm = &w->timing;
-    double t = fw_clock_s();
+    double t = tick(w);
     for (int i = 0; !st && i < w->nv; i++)
         st = fw_vessel_advance(w->v[i], w->def.step, err);
-    lap(&tm->dynamics, &t);
+    lap(w, &tm->dynamics, &t);
     if (!st && w->source) {
         if (w->nv > 0)
             st = fw_source_place(w->source, &w->v[0]->record, err);
-        lap(&tm->place, &t);
+        lap(w, &tm->place, &t);
         if (!st)
             st = fw_source_advance(w->source, err);
-        lap(&tm->traffic, &t);
+        lap(w, &tm->traffic, &t);
     }
     if (!st) {
         w->steps++;

@@ -46,6 +46,9 @@ typedef struct fw_world_def {
     /* how the source's ships treat the others (world/reactions.h): colregs,
      * or blind (they keep course and speed whatever happens) */
     fw_reactions_def reactions;
+    /* keep fw_world_timing (CPU seconds by phase; seven clock reads a
+     * step, each a system call): off by default */
+    bool timing;
 } fw_world_def;
 
 /* step 1 s, no source, blind traffic (a world built by hand has the traffic
@@ -70,9 +73,9 @@ fw_status fw_world_start(fw_world *w, fw_error *err);
  * steps at a fixed length).  On failure the world is not usable further. */
 fw_status fw_world_step(fw_world *w, double dt, fw_error *err);
 
-/* Where the world's steps spent their time so far: wall seconds
- * (CLOCK_MONOTONIC, core/clock.h), always kept (seven clock reads a step);
- * for `fairway run --profile`, never in anything a run's results depend on. */
+/* Where the world's steps spent their time so far: CPU seconds (core/clock.h
+ * fw_cpu_s), kept when the def asks (all 0 otherwise); for `fairway run
+ * --profile`, never in anything a run's results depend on. */
 typedef struct fw_world_timing {
     double dynamics;  /* the vessels' own motion (MMG or Nomoto, integrated) */
     double place;     /* the own ship put into the traffic (SUMO: moveToXY) */
