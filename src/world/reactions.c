@@ -34,6 +34,7 @@ struct fw_reactions {
     int *list;       /* scratch: the ships one ship gives way to */
     int list_cap;
     int *nb;         /* scratch: the ships within range of the one deciding */
+    fw_target *all_buf; /* scratch: the ships and the own ship (list_cap of them) */
     int nnb;
     /* this step's ships (the own ship last) and the sines and cosines of
      * their courses, computed once: the pair loops' trigonometry */
@@ -84,7 +85,7 @@ void fw_reactions_destroy(fw_reactions *r)
     if (!r)
         return;
     fw_idmap_free(&r->ids);
-    fw_free_each(7, r->s, r->list, r->nb, r->sn, r->cs, r->log, r);
+    fw_free_each(8, r->s, r->list, r->nb, r->all_buf, r->sn, r->cs, r->log, r);
 }
 
 bool fw_reactions_active(const fw_reactions *r)
@@ -397,10 +398,10 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
                            &best);
     fw_reaction x = {.t = t, .situation = FW_SIT_STAND_ON, .dcpa_before = now, .dcpa_after = best,
                      .enough = best >= r->def.last_cpa};
-    snprintf(x.ship, sizeof x.ship, "%s", a->id);
     if (j < 0 || v >= st->v0) {
         if (!st->holding)
             return FW_OK;
+        snprintf(x.ship, sizeof x.ship, "%s", a->id);
         x.kind = FW_REACT_RESUME, x.speed_from = st->hold, x.speed_to = st->v0;
         st->holding = st->rule17 = false;
         fw_status s2 = fw_source_set_speed(src, a->id, -1.0, err);
@@ -408,6 +409,7 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
     }
     if (st->holding && fabs(v - st->hold) < 0.05 * st->v0)
         return FW_OK;
+    snprintf(x.ship, sizeof x.ship, "%s", a->id);
     snprintf(x.other, sizeof x.other, "%s", all[j].id);
     x.kind = FW_REACT_SLOW, x.speed_from = st->holding ? st->hold : st->v0, x.speed_to = v;
     st->holding = st->rule17 = true;
@@ -464,8 +466,9 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
                         : m;
     if (!st->holding && m > 0)
         nearest_of(r, self, all, r->list, m, v0, &nearest, &sit, &dcpa);
+    /* x.ship is filled only where a reaction is recorded: this runs for every
+     * ship every step */
     fw_reaction x = {.t = t, .situation = sit, .dcpa_before = dcpa};
-    snprintf(x.ship, sizeof x.ship, "%s", a->id);
     if (k == 0 && (!st->holding || st->rule17))
         return stand_on(r, t, self, all, st, src, err);
     st->rule17 = false;
@@ -477,6 +480,7 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
                 hypot(all[j].east - a->east, all[j].north - a->north) < r->def.cpa)
                 return FW_OK;
         /* clear at its own speed again: given back */
+        snprintf(x.ship, sizeof x.ship, "%s", a->id);
         x.kind = FW_REACT_RESUME;
         x.speed_from = st->hold;
         x.speed_to = st->v0;
@@ -493,6 +497,7 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     double v = yielding_speed(r, self, all, r->list, m, v0, vh, &x.enough, &after);
     if (st->holding && fabs(v - st->hold) < 0.05 * v0)
         return FW_OK; /* the best there is, already ordered */
+    snprintf(x.ship, sizeof x.ship, "%s", a->id);
     snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
     x.kind = FW_REACT_SLOW;
     x.speed_from = st->holding ? st->hold : v0;
@@ -531,28 +536,23 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
     if (r->def.behaviour == FW_BEHAVIOUR_BLIND || n == 0)
         return FW_OK;
     /* the own ship joins the list (last) as a ship to give way to */
-    fw_target *all = malloc(sizeof *all * (size_t)(n + 1));
-    if (!all)
-        return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
-    memcpy(all, ships, sizeof *all * (size_t)n);
     if (n + 1 > r->list_cap) {
-        if (!fw_resize_each((size_t)(n + 1), 2, (void **)&r->list, sizeof *r->list,
-                            (void **)&r->nb, sizeof *r->nb)) {
-            free(all);
+        if (!fw_resize_each((size_t)(n + 1), 3, (void **)&r->list, sizeof *r->list,
+                            (void **)&r->nb, sizeof *r->nb, (void **)&r->all_buf,
+                            sizeof *r->all_buf))
             return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
-        }
         r->list_cap = n + 1;
     }
+    fw_target *all = r->all_buf;
+    memcpy(all, ships, sizeof *all * (size_t)n);
     int m = n;
     if (own) {
         all[m] = *own;
         all[m++].own = true;
     }
     if (!fw_resize_each((size_t)m, 2, (void **)&r->sn, sizeof *r->sn,
-                        (void **)&r->cs, sizeof *r->cs)) {
-        free(all);
+                        (void **)&r->cs, sizeof *r->cs))
         return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
-    }
     for (int i = 0; i < m; i++) {
         r->sn[i] = sin(all[i].course);
         r->cs[i] = cos(all[i].course);
@@ -563,7 +563,6 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
         react_state *s = state_of(r, ships[i].id, err);
         st = s ? react(r, t, i, all, m, s, src, err) : err->status;
     }
-    free(all);
     r->all = NULL;
     return st;
 }
