@@ -1,7 +1,10 @@
 /* test_traffic - the SUMO coupling, one case per process (libsumo allows one
  * simulation per process):  test_traffic unit|embedded|remote|badnet|noport|dies */
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <signal.h>
 #include <stdlib.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -430,15 +433,23 @@ static void test_no_listener(void)
     fw_traffic_def d = fw_default_traffic_def();
     fw_error err = {0};
     fw_traffic *t = NULL;
-    int port;
-    CHECK(fw_traffic_free_port(&port, &err) == FW_OK);
+    /* a port held bound and not listening for the whole test: a port found
+     * free and let go could be taken meanwhile by a sumo another test starts
+     * (ctest -j), which this connection would then reach */
+    int fd = socket(AF_INET, SOCK_STREAM, 0);
+    struct sockaddr_in a = {.sin_family = AF_INET, .sin_addr.s_addr = htonl(INADDR_LOOPBACK)};
+    socklen_t len = sizeof a;
+    CHECK(fd >= 0 && bind(fd, (struct sockaddr *)&a, sizeof a) == 0 &&
+          getsockname(fd, (struct sockaddr *)&a, &len) == 0);
     d.mode.kind = FW_TRAFFIC_REMOTE;
-    snprintf(d.mode.host, sizeof d.mode.host, "localhost");
-    d.mode.port = port;
+    snprintf(d.mode.host, sizeof d.mode.host, "127.0.0.1");
+    d.mode.port = ntohs(a.sin_port);
     d.connect_timeout = 1.0;
     CHECK(fw_traffic_open(&d, &t, &err) == FW_ERUN && t == NULL);
-    CHECK_CONTAINS(err.msg, "no SUMO at localhost:");
+    CHECK_CONTAINS(err.msg, "no SUMO at 127.0.0.1:");
     printf("no listener: %s\n", err.msg);
+    if (fd >= 0)
+        close(fd);
 }
 
 static void test_sumo_dies(void)
