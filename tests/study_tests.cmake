@@ -29,7 +29,10 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
             "behaviour:5: behaviours\\[1\\]: 'polite' is not a behaviour"
             "audit:6: audit.speed_change: give a fraction in \\(0, 1\\]"
             "shape:5: fore_aft_ratios\\[1\\]: 0.1 is outside \\[0.2, 10\\]"
-            "units:5: domains_l: give domains_m or domains_l, not both")
+            "units:5: domains_l: give domains_m or domains_l, not both"
+            "aisbehaviour:6: behaviours: .*replays recorded ships, which do not react"
+            "aisspread:4: replications: 4 over recorded traffic would be 4 copies of one run"
+            "timespread:6: start.time_s: only over recorded traffic")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_script_test(cli_sweep_bad_${name} 0 "ok: no database" sweep_bad.sh
@@ -37,6 +40,9 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
   list(APPEND fw_sweep_tests cli_sweep_bad_${name})
 endforeach()
 fw_script_test(cli_sweep_not_db 0 "ok: refused" sweep_not_db.sh)
+# a study over recorded traffic: domains swept over an AIS replay
+fw_script_test(sweep_ais 0 "ok: AIS study swept, paired, guarded" sweep_ais.sh)
+list(APPEND fw_sweep_tests sweep_ais)
 list(APPEND fw_sweep_tests cli_sweep_help cli_sweep_no_db cli_sweep_jobs cli_sweep_gui
      cli_sweep_dry cli_sweep_not_db)
 foreach(t ${fw_sweep_tests})

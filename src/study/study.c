@@ -188,7 +188,8 @@ static fw_status add_input(fw_study *s, const char *role, const char *path, fw_e
 }
 
 /* Every file a run of the study reads (see src/run/run.c): the study, its
- * scenario and ship, and the network's demand, ship types and plain XML.
+ * scenario and ship, its AIS reports, and the network's demand, ship types
+ * and plain XML.
  * The built net.xml is made from that XML (its header holds a timestamp and
  * the build's paths, so its bytes are not compared); targets' tracks are
  * written by each run, from the scenario. */
@@ -197,7 +198,8 @@ static fw_status collect_inputs(fw_study *s, fw_error *err)
     fw_status st;
     if ((st = add_input(s, "study", s->file, err)) ||
         (st = add_input(s, "scenario", s->scenario_file, err)) ||
-        (st = add_input(s, "ship", s->base.ship.file, err)))
+        (st = add_input(s, "ship", s->base.ship.file, err)) ||
+        (s->base.ais.file[0] && (st = add_input(s, "ais", s->base.ais.file, err))))
         return st;
     const char *net = s->base.network;
     if (!net[0])
@@ -233,9 +235,37 @@ static fw_status load_base(const yt_doc *doc, const yt_node *root, const char *p
         snprintf(msg, sizeof msg, "%s", err ? err->msg : "");
         return fw_fail_at(err, doc->file, line, "scenario", "%s", msg);
     }
-    if (s->base.n_targets == 0 && !s->base.network[0])
+    if (s->base.n_targets == 0 && !s->base.network[0] && !s->base.ais.file[0])
         return fw_fail_at(err, doc->file, line, "scenario",
-                          "%s has no traffic (no network and no targets)", s->scenario_file);
+                          "%s has no traffic (no network, no targets, no AIS reports)",
+                          s->scenario_file);
+    return FW_OK;
+}
+
+/* Recorded traffic (traffic: ais:) is replayed, the same every run: its
+ * ships do not react (no behaviours to sweep; densities are refused with the
+ * network), a replication differs from another only by where and when the
+ * own ship starts, and start.time_s has a meaning there alone. */
+static fw_status check_recorded(const yt_doc *doc, const yt_node *root, const yt_node *start,
+                                const fw_study *s, fw_error *err)
+{
+    bool ais = s->base.ais.file[0] != '\0';
+    if (!ais && s->start_time > 0.0)
+        return fw_fail_at(err, doc->file, yt_key_line(start, "time_s"), "start.time_s",
+                          "only over recorded traffic (traffic: ais:); simulated traffic "
+                          "differs by its seed");
+    if (!ais)
+        return FW_OK;
+    if (s->n_behaviours > 0)
+        return fw_fail_at(err, doc->file, yt_key_line(root, "behaviours"), "behaviours",
+                          "%s replays recorded ships, which do not react: no behaviour to sweep",
+                          s->scenario_file);
+    if (s->replications > 1 && !(s->start_time > 0.0 || s->start_along > 0.0 ||
+                                 s->start_across > 0.0))
+        return fw_fail_at(err, doc->file, yt_key_line(root, "replications"), "replications",
+                          "%d over recorded traffic would be %d copies of one run: give the "
+                          "start a spread (start: time_s, along_m or across_m)",
+                          s->replications, s->replications);
     return FW_OK;
 }
 
@@ -260,6 +290,9 @@ static uint64_t digest(const fw_study *s)
         k += snprintf(text + k, sizeof text - (size_t)k, "f%.17g|", s->ratios[i]);
     for (int i = 0; i < s->n_behaviours && k < (int)sizeof text - 32; i++)
         k += snprintf(text + k, sizeof text - (size_t)k, "b%s|", fw_behaviour_name(s->behaviours[i]));
+    /* only when set: the studies from before it keep their digests */
+    if (s->start_time > 0.0)
+        k += snprintf(text + k, sizeof text - (size_t)k, "t%.17g|", s->start_time);
     uint64_t h = fw_fnv1a(FW_FNV_INIT, text, strlen(text));
     h = file_digest(h, s->scenario_file);
     return file_digest(h, s->base.ship.file);
@@ -303,8 +336,10 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
         goto out;
     }
     if (start) {
-        static const char *const skeys[] = {"along_m", "across_m", NULL};
+        static const char *const skeys[] = {"along_m", "across_m", "time_s", NULL};
         if ((st = yt_check_keys(doc, start, "start", skeys, err)) ||
+            (st = yt_opt_number(doc, start, "start", "time_s", 0.0, 366.0 * 86400.0,
+                                &s->start_time, err)) ||
             (st = yt_opt_number(doc, start, "start", "along_m", 0.0, 1e5, &s->start_along,
                                 err)) ||
             (st = yt_opt_number(doc, start, "start", "across_m", 0.0, 1e5, &s->start_across,
@@ -320,7 +355,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
                         "more than 10 million runs");
         goto out;
     }
-    if ((st = load_base(doc, root, path, scen, s, err)) || (st = read_audit(doc, root, s, err)))
+    if ((st = load_base(doc, root, path, scen, s, err)) || (st = read_audit(doc, root, s, err)) ||
+        (st = check_recorded(doc, root, start, s, err)))
         goto out;
     if (s->n_behaviours == 0) {
         s->n_behaviours = 1;
@@ -379,6 +415,7 @@ fw_study_run fw_study_run_at(const fw_study *s, int run_id)
     r.seed = 1 + (unsigned long)(base % 2147483646ull);
     r.d_along = s->start_along * uniform_pm(mix(base ^ 0xa1a1a1a1ull));
     r.d_across = s->start_across * uniform_pm(mix(base ^ 0xc3c3c3c3ull));
+    r.d_time = s->start_time * 0.5 * (1.0 + uniform_pm(mix(base ^ 0xe5e5e5e5ull)));
     return r;
 }
 
@@ -395,4 +432,17 @@ void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *ou
     double se = sin(out->course), ce = cos(out->course);
     out->east += r->d_along * se + r->d_across * ce;
     out->north += r->d_along * ce - r->d_across * se;
+    if (out->ais.file[0] && r->d_time > 0.0) {
+        /* the window later by d_time: from the first report is from d_time
+         * after it; an end kept where it was is kept later too */
+        fw_scn_ais *a = &out->ais;
+        if (isnan(a->start)) {
+            a->start = r->d_time;
+            a->start_rel = true;
+        } else {
+            a->start += r->d_time;
+        }
+        if (!isnan(a->end))
+            a->end += r->d_time;
+    }
 }

@@ -24,6 +24,10 @@
  *   behaviours: [colregs, blind] # optional: the scenario's traffic.behaviour
  *   duration_s: 3600             # optional: the scenario's duration
  *   start: {along_m: 1000, across_m: 300}  # optional: own-ship start spread
+ *   # over recorded traffic (a scenario with traffic: ais:) also in time: each
+ *   # replication's AIS window starts 0 to time_s later (its ships do not react:
+ *   # no behaviours or densities; replications need some spread to differ)
+ *   start: {time_s: 43200, along_m: 1000}
  *   encounter_m: 1852            # optional: a target passing closer is an encounter
  *   near_miss_m: 185.2           # optional: closer is a near miss
  *   audit: {risk_dcpa_m: 926, risk_tcpa_s: 1200, course_change_deg: 30,
@@ -72,6 +76,7 @@ typedef struct fw_study {
     double duration;         /* s */
     double start_along;      /* m, uniform spread of the start along the course */
     double start_across;     /* m, and across it */
+    double start_time;       /* s, spread of the AIS window's start (0..start_time) */
     double encounter_range;  /* m */
     double near_miss;        /* m */
     uint64_t digest;         /* of the settings and the scenario file: resume guard */
@@ -89,6 +94,7 @@ typedef struct fw_study_run {
     fw_behaviour behaviour;  /* of the background ships */
     unsigned long seed;
     double d_along, d_across; /* m, start offset of this replication */
+    double d_time;            /* s, its AIS window's later start (recorded traffic) */
 } fw_study_run;
 
 /* Loads and checks path (and the scenario it names).  s is large: callers
