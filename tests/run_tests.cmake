@@ -46,6 +46,8 @@ endforeach()
 fw_test(test_geo test_geo.c)
 target_link_libraries(test_geo PRIVATE fairway_run)
 fw_script_test(geo_twin_run 0 "twin runs agree" geo_twin_run.sh)
+fw_script_test(geo_targets 0 "geo targets ok" geo_targets.sh)
+set_tests_properties(geo_targets PROPERTIES ENVIRONMENT "${fw_lsan}")
 # the runs reach SUMO, whose own allocations the LeakSanitizer suppressions cover
 set_tests_properties(geo_twin_run PROPERTIES ENVIRONMENT "${fw_lsan}")
 fw_script_test(geojson_export 0 "geojson export ok" geojson_export.sh)

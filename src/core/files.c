@@ -255,11 +255,29 @@ static void locate(void)
     snprintf(g_mod, sizeof g_mod, "%.*s/lib/fairway", PATH_MAX - 16, prefix);
 }
 
+/* FAIRWAY_DATA made absolute: the paths under it are handed to programs
+ * that run in other directories (netconvert in the run's, sumo-gui reading
+ * run.sumocfg), where a relative one would name nothing.  Resolved again only
+ * when the variable changes. */
+static const char *absolute_env(const char *env)
+{
+    static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    static char seen[PATH_MAX], resolved[PATH_MAX];
+    pthread_mutex_lock(&lock);
+    if (strcmp(seen, env) != 0) {
+        snprintf(seen, sizeof seen, "%s", env);
+        if (env[0] == '/' || !realpath(env, resolved))
+            snprintf(resolved, sizeof resolved, "%s", env); /* as given: its errors name it */
+    }
+    pthread_mutex_unlock(&lock);
+    return resolved;
+}
+
 const char *fw_data_root(void)
 {
     const char *env = getenv("FAIRWAY_DATA");
     if (env && env[0])
-        return env;
+        return absolute_env(env);
     pthread_once(&g_located, locate);
     return g_root;
 }

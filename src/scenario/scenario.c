@@ -180,12 +180,6 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
             return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",
                               "%s", nerr.msg);
     }
-    /* explicit targets get edges of their own, built with the network's
-     * sources at run time; a geo-referenced network's are in degrees */
-    if (seq && s->plane[0])
-        return fw_fail_at(err, doc->file, seq->line, "traffic.targets",
-                          "explicit targets on the geo-referenced network '%s' are not "
-                          "supported: its sources are in degrees", s->network);
     if (seq) {
         if (seq->n > FW_SCN_MAX_TARGETS)
             return fw_fail_at(err, doc->file, seq->line, "traffic.targets",

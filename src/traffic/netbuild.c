@@ -31,7 +31,7 @@ static fw_status strip_date(const char *path, fw_error *err)
 }
 
 fw_status fw_netconvert(const char *dir, const char *nodes, const char *edges, const char *types,
-                        const char *out, const char *log, fw_error *err)
+                        const char *proj, const char *out, const char *log, fw_error *err)
 {
     const char *argv[20];
     int k = 0;
@@ -43,6 +43,10 @@ fw_status fw_netconvert(const char *dir, const char *nodes, const char *edges, c
     if (types) {
         argv[k++] = "--type-files";
         argv[k++] = types;
+    }
+    if (proj) {
+        argv[k++] = "--proj";
+        argv[k++] = proj;
     }
     argv[k++] = "--offset.disable-normalization";
     argv[k++] = "true";

@@ -15,9 +15,11 @@
 /* netconvert run in directory dir (relative names are relative to it, and
  * are what the net.xml's header records, so a run directory's network does not
  * depend on where the directory is): node and edge files (comma-separated
- * lists allowed), an optional type file (NULL) -> out.  netconvert's messages
- * go to log (NULL: discarded).  FW_ERUN with the log's name when it fails. */
+ * lists allowed), an optional type file (NULL) -> out; proj (NULL: none) a
+ * PROJ string for nodes given in degrees (--proj, as the build gives a
+ * geo-referenced network's).  netconvert's messages go to log (NULL:
+ * discarded).  FW_ERUN with the log's name when it fails. */
 fw_status fw_netconvert(const char *dir, const char *nodes, const char *edges, const char *types,
-                        const char *out, const char *log, fw_error *err);
+                        const char *proj, const char *out, const char *log, fw_error *err);
 
 #endif

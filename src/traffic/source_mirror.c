@@ -168,8 +168,8 @@ static fw_status build_net(const fw_mirror_def *d, char *net, size_t n, fw_error
             fmax(o->breadth, 10.0));
     if ((fclose(nf) | fclose(ef)) != 0)
         return fw_fail(err, FW_ERUN, "cannot write SUMO's network in %s", d->dir);
-    return fw_netconvert(d->dir, "mirror.nod.xml", "mirror.edg.xml", NULL, "mirror.net.xml", log,
-                         err);
+    return fw_netconvert(d->dir, "mirror.nod.xml", "mirror.edg.xml", NULL, NULL, "mirror.net.xml",
+                         log, err);
 }
 
 fw_status fw_mirror_source_create(fw_source *inner, const fw_mirror_def *def, fw_source **out,

@@ -10,6 +10,7 @@
 #include "core/files.h"
 #include "core/mem.h"
 #include "core/units.h"
+#include "geom/geo.h"
 #include "geom/geom.h"
 #include "traffic/demand.h"
 #include "ship/ship.h"
@@ -45,21 +46,36 @@ fw_sumo_source_def fw_default_sumo_source_def(void)
                                 .clear_cpa = 0.25 * 1852.0, .clear_tcpa = 600.0};
 }
 
-static void node(FILE *f, const char *id, double e, double n)
+/* A node at (e, n) in the plane; in degrees (x longitude, y latitude, 1e-9
+ * deg: 0.1 mm) when the network is geo-referenced (geo: its plane). */
+static fw_status node(FILE *f, const fw_geo *geo, const char *id, double e, double n,
+                      fw_error *err)
 {
-    fprintf(f, "    <node id=\"%s\" x=\"%.3f\" y=\"%.3f\" type=\"unregulated\"/>\n", id, e, n);
+    double lat, lon;
+    if (!geo) {
+        fprintf(f, "    <node id=\"%s\" x=\"%.3f\" y=\"%.3f\" type=\"unregulated\"/>\n", id, e, n);
+        return FW_OK;
+    }
+    fw_status st = fw_geo_to_latlon(geo, e, n, &lat, &lon, err);
+    if (!st)
+        fprintf(f, "    <node id=\"%s\" x=\"%.9f\" y=\"%.9f\" type=\"unregulated\"/>\n", id, lon,
+                lat);
+    return st;
 }
 
 /* One explicit target: its track's nodes and edge, its vType and vehicle. */
-static void write_target(FILE *nf, FILE *ef, FILE *rf, const fw_target *t, double duration)
+static fw_status write_target(FILE *nf, FILE *ef, FILE *rf, const fw_geo *geo,
+                              const fw_target *t, double duration, fw_error *err)
 {
     double te = sin(t->course), tn = cos(t->course);
     double tl = t->speed * duration + kBeyond;
     char a[96], b[96], v[32];
     snprintf(a, sizeof a, "fw_t_%s_a", t->id);
     snprintf(b, sizeof b, "fw_t_%s_b", t->id);
-    node(nf, a, t->east - kBehind * te, t->north - kBehind * tn);
-    node(nf, b, t->east + tl * te, t->north + tl * tn);
+    fw_status st;
+    if ((st = node(nf, geo, a, t->east - kBehind * te, t->north - kBehind * tn, err)) ||
+        (st = node(nf, geo, b, t->east + tl * te, t->north + tl * tn, err)))
+        return st;
     fprintf(ef, "    <edge id=\"fw_t_%s\" from=\"%s\" to=\"%s\" numLanes=\"1\" speed=\"30\" "
                 "width=\"%.1f\" allow=\"custom1\" spreadType=\"center\"/>\n",
             t->id, a, b, fmax(t->breadth, 10.0));
@@ -75,6 +91,7 @@ static void write_target(FILE *nf, FILE *ef, FILE *rf, const fw_target *t, doubl
                 "departLane=\"0\" departPos=\"%.3f\" departSpeed=\"%s\">\n"
                 "        <route edges=\"fw_t_%s\"/>\n    </vehicle>\n",
             t->id, t->id, kBehind + 0.5 * t->length, v, t->id);
+    return FW_OK;
 }
 
 /* Plain XML for the own ship's leg and every target's track, and the routes
@@ -97,25 +114,34 @@ static fw_status write_tracks(const fw_sumo_source_def *d, fw_error *err)
             fclose(rf);
         return fw_fail(err, FW_ERUN, "cannot write the track network in %s", d->dir);
     }
+    fw_geo *geo = NULL;
+    if (d->proj)
+        st = fw_geo_create_proj(d->proj, d->proj_off_e, d->proj_off_n, &geo, err);
     fprintf(nf, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- written by fairway run: "
-                "straight tracks of the own ship and the explicit targets -->\n<nodes>\n");
+                "straight tracks of the own ship and the explicit targets%s -->\n<nodes>\n",
+            geo ? " (x longitude, y latitude: the network's plane projects them)" : "");
     fprintf(ef, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<edges>\n");
     fprintf(rf, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<routes>\n");
     const fw_target *o = &d->own;
     double se = sin(o->course), ce = cos(o->course);
     double len = fmax(d->own_leg, o->speed * d->duration) + kBeyond;
-    node(nf, "fw_own_a", o->east - kBehind * se, o->north - kBehind * ce);
-    node(nf, "fw_own_b", o->east + len * se, o->north + len * ce);
+    if (!st)
+        st = node(nf, geo, "fw_own_a", o->east - kBehind * se, o->north - kBehind * ce, err);
+    if (!st)
+        st = node(nf, geo, "fw_own_b", o->east + len * se, o->north + len * ce, err);
     fprintf(ef, "    <edge id=\"fw_own\" from=\"fw_own_a\" to=\"fw_own_b\" numLanes=\"1\" "
                 "speed=\"30\" width=\"%.1f\" allow=\"ship\" spreadType=\"center\"/>\n",
             fmax(o->breadth, 10.0));
-    for (int i = 0; i < d->n_targets; i++)
-        write_target(nf, ef, rf, &d->targets[i], d->duration);
+    for (int i = 0; !st && i < d->n_targets; i++)
+        st = write_target(nf, ef, rf, geo, &d->targets[i], d->duration, err);
+    fw_geo_destroy(geo);
     fprintf(nf, "</nodes>\n");
     fprintf(ef, "</edges>\n");
     fprintf(rf, "</routes>\n");
     int bad = fclose(nf) | fclose(ef) | fclose(rf);
-    return bad ? fw_fail(err, FW_ERUN, "cannot write the track network in %s", d->dir) : FW_OK;
+    if (!st && bad)
+        st = fw_fail(err, FW_ERUN, "cannot write the track network in %s", d->dir);
+    return st;
 }
 
 /* The files SUMO loads, written and built into d->dir. */
@@ -186,7 +212,7 @@ static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *e
     if ((st = fw_path(f->net, sizeof f->net, err, "%s/run.net.xml", d->dir)) ||
         (st = fw_path(nlog, sizeof nlog, err, "%s/netconvert.log", d->dir)))
         return st;
-    return fw_netconvert(d->dir, nodes, edges, types, "run.net.xml", nlog, err);
+    return fw_netconvert(d->dir, nodes, edges, types, d->proj, "run.net.xml", nlog, err);
 }
 
 static double ss_time(const fw_source *s)

@@ -45,6 +45,11 @@ typedef struct fw_sumo_source_def {
     double step;                /* s */
     bool fcd;                   /* SUMO's FCD of every ship into dir/fcd.xml ... */
     double fcd_period;          /* s, ... every this (0: every step) */
+    /* the network's plane when it is geo-referenced (scenario.h plane: a PROJ
+     * string and netOffset; NULL: none): the tracks' nodes are then written in
+     * degrees for netconvert to project as the build projected the network */
+    const char *proj;
+    double proj_off_e, proj_off_n;
     const fw_target *targets;   /* explicit ships at t = 0 (constant velocity) */
     int n_targets;
     fw_target own;              /* id, position, course, speed, length, breadth at t = 0 */
