@@ -191,10 +191,13 @@ void place(double cx, double cy)
 void stepped()
 {
     g_step++;
-    for (const std::string &id : S::Simulation::getArrivedIDList())
+    const std::vector<std::string> arrived = S::Simulation::getArrivedIDList();
+    for (const std::string &id : arrived)
         forget(id);
+    // a ship that departed and arrived within the step is gone already
     for (const std::string &id : S::Simulation::getDepartedIDList())
-        add(id);
+        if (std::find(arrived.begin(), arrived.end(), id) == arrived.end())
+            add(id);
 }
 
 void forget(const std::string &id)
