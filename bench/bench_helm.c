@@ -17,7 +17,7 @@
  *
  * usage: bench_helm [--targets N] [--ship NAME] [--reps R] [--csv FILE] [--decisions-only]
  * (--targets and --ship restrict the run, --decisions-only times fw_policy_step
- * alone: for profiling). */
+ * alone, without the track baselines: for profiling). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -284,7 +284,8 @@ static int run_ship(const char *name, bool turning, int only_n, FILE *csv)
     }
     printf("# ship %s at 10 kn, %s, %d scenes x %d repetitions, median per call\n", name,
            turning ? "turning at 0.01 deg/s (rudder 0.5 deg)" : "straight", SCENES, reps);
-    baselines(&b);
+    if (!decisions_only)
+        baselines(&b);
     static const int counts[] = {1, 10, 30, 50, 200};
     int bad = 0;
     for (int mode = 0; mode < 2 && !bad; mode++) {

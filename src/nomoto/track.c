@@ -189,14 +189,32 @@ static void piece_enter(fw_track_gen *g)
     g->in_piece = true;
 }
 
-/* Samples g->k .. kmax-1 within the present piece.  The state is worked on in
- * a local copy: the stores into the track may alias it otherwise. */
+/* Positions of samples k0..k1-1 (k0 >= 1) from the headings, yaw rates and
+ * the position at k0 - 1 already there: kin_step sample by sample, as a loop
+ * of its own (its speed chain, with a division, bounds the time per sample;
+ * apart from the heading's recurrence the CPU overlaps it better). */
+static void kin_run(kin *kp, fw_track *out, int k0, int k1, double dt)
+{
+    kin kn = *kp;
+    const double *sp = out->sin_psi, *cp = out->cos_psi, *rr = out->r;
+    for (int k = k0; k < k1; k++) {
+        kin_step(&kn, sp[k - 1], cp[k - 1], sp[k], cp[k], rr[k], dt);
+        out->east[k] = kn.east;
+        out->north[k] = kn.north;
+    }
+    *kp = kn;
+}
+
+/* Samples g->k .. kmax-1 within the present piece: the heading first, then
+ * the positions (kin_run).  The state is worked on in a local copy: the
+ * stores into the track may alias it otherwise. */
 static void piece_run(fw_track_gen *gp, fw_track *out, int kmax)
 {
     fw_track_gen g = *gp;
     fw_track_piece q = gp->q;
     const fw_nomoto_piece pc = q.pc;
     const double dt = g.dt, dl0 = g.piece_delta0[g.p], rh = g.piece_rho[g.p];
+    int k0 = g.k;
     for (; g.k < kmax && g.k * dt < q.t_end; g.k++, q.tau += dt) {
         double tau = q.tau;
         double h = pc.h0 * q.e2 + q.A * q.ph;
@@ -217,15 +235,10 @@ static void piece_run(fw_track_gen *gp, fw_track *out, int kmax)
             r = rd = 0.0;
             dl = 0.0;
         }
-        if (g.k > 0) {
-            double ps = g.sn, pcs = g.cs;
+        if (g.k > 0)
             rotate(&g.sn, &g.cs, turn - g.prev_turn);
-            kin_step(&g.kn, ps, pcs, g.sn, g.cs, r, dt);
-        }
         g.prev_turn = turn;
         int k = g.k;
-        out->east[k] = g.kn.east;
-        out->north[k] = g.kn.north;
         out->psi[k] = g.psi0 + turn;
         out->r[k] = r;
         out->rdot[k] = rd;
@@ -236,6 +249,11 @@ static void piece_run(fw_track_gen *gp, fw_track *out, int kmax)
         q.e2 *= q.E2;
         q.ph = ph_next;
     }
+    if (k0 == 0 && g.k > 0) {
+        out->east[0] = g.kn.east;
+        out->north[0] = g.kn.north;
+    }
+    kin_run(&g.kn, out, k0 > 1 ? k0 : 1, g.k, dt);
     g.q = q;
     *gp = g;
 }
