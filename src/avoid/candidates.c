@@ -3,6 +3,9 @@
 
 #include <math.h>
 #include <string.h>
+#ifdef FW_DEBUG_FALLBACK
+#include <stdio.h>
+#endif
 
 /* Samples [0, kk) of a slot, mirrored from its source's or predicted. */
 static void cand_grow(fw_helm_ctx *c, int slot, int kk)
@@ -240,9 +243,21 @@ fw_status fw_cand_best_available(fw_helm_ctx *c, int allowed, int *pick, int *si
         scan_on(c, top, second);
         heap_down(c, pos, heap, m, 0);
     }
+#ifdef FW_DEBUG_FALLBACK
+    for (int q = 0; q < m; q++) {
+        int sl = ord[q];
+        fprintf(stderr, "FB1 %d fail %d next %d ready %d ub %.4f M %.4f\n", sl, c->fail[sl], c->next[sl], c->ready[sl], sqrt(c->ub2[sl]), M);
+    }
+#endif
     replay(c, ord, m, M - 1e-7, pick);
     if (*pick < 0)
         replay(c, ord, m, 0.0, pick);
+#ifdef FW_DEBUG_FALLBACK
+    for (int q = 0; q < m; q++) {
+        int sl = ord[q];
+        fprintf(stderr, "FB2 %d fail %d next %d ready %d ub %.4f M %.4f pick %d\n", sl, c->fail[sl], c->next[sl], c->ready[sl], sqrt(c->ub2[sl]), M, *pick);
+    }
+#endif
     *side = *pick >= c->nh;
     *pick -= *side * c->nh;
     return FW_OK;

@@ -90,6 +90,67 @@ void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
         fw_track_box(tr, cb, j);
 }
 
+/* The bounding box of the target's path over chunk j of a track of nseg
+ * segments, grown by its reach (as fw_prep_target.box). */
+static void grown_box(double dt, const fw_prep_target *g, int j, int nseg, double t[4])
+{
+    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
+    double r = g->reach, e0, e1, n0, n1;
+    if (g->path) {
+        const double *e = g->path, *n = g->path + g->ns;
+        e0 = e[k0], e1 = e0, n0 = n[k0], n1 = n0;
+        for (int k = k0 + 1; k <= k1; k++) {
+            e0 = mn(e0, e[k]);
+            e1 = mx(e1, e[k]);
+            n0 = mn(n0, n[k]);
+            n1 = mx(n1, n[k]);
+        }
+    } else {
+        double ta = k0 * dt, tb = k1 * dt;
+        double ea = g->east + g->ve * ta, eb = g->east + g->ve * tb;
+        double na = g->north + g->vn * ta, nb = g->north + g->vn * tb;
+        e0 = mn(ea, eb), e1 = mx(ea, eb), n0 = mn(na, nb), n1 = mx(na, nb);
+    }
+    t[0] = e0 - r, t[1] = e1 + r, t[2] = n0 - r, t[3] = n1 + r;
+}
+
+static inline bool box_misses(const double t[4], const double b[4])
+{
+    return t[0] > b[1] || t[1] < b[0] || t[2] > b[3] || t[3] < b[2];
+}
+
+/* Inlined in the scans: the prepared box when there is one. */
+static inline bool chunk_misses(double dt, const fw_prep_target *g, int j, int nseg,
+                                const double b[4])
+{
+    if (g->box && j < g->nbox && nseg == g->box_nseg)
+        return box_misses(g->box + 4 * j, b);
+    double t[4];
+    grown_box(dt, g, j, nseg, t);
+    return box_misses(t, b);
+}
+
+bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4])
+{
+    return chunk_misses(dt, g, j, nseg, b);
+}
+
+static int box_chunks(int nseg)
+{
+    int nch = (nseg + FW_CHUNK - 1) / FW_CHUNK;
+    return nch < FW_MAX_CHUNKS ? nch : FW_MAX_CHUNKS;
+}
+
+int fw_prep_box_len(int nseg) { return 4 * box_chunks(nseg); }
+
+void fw_prep_boxes(double dt, fw_prep_target *g, int nseg, double *room)
+{
+    int nch = box_chunks(nseg);
+    for (int j = 0; j < nch; j++)
+        grown_box(dt, g, j, nseg, room + 4 * j);
+    g->box = room, g->nbox = nch, g->box_nseg = nseg;
+}
+
 void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
                      double umax, int *lo, int *hi)
 {
@@ -106,7 +167,7 @@ void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, do
          * covers the rounding of the positions summed step by step */
         double R = umax * (k1 * dt) * (1.0 + 1e-9) + 1e-6;
         double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
-        if (!fw_chunk_misses(dt, g, j, nseg, env)) {
+        if (!chunk_misses(dt, g, j, nseg, env)) {
             if (*lo < 0)
                 *lo = j;
             *hi = j + 1;
@@ -129,34 +190,6 @@ void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb)
         u->b[j][2] = mn(u->b[j][2], cb->b[j][2]);
         u->b[j][3] = mx(u->b[j][3], cb->b[j][3]);
     }
-}
-
-/* The bounding box of a predicted path (east e, north n) over samples
- * k0..k1, grown by r. */
-static bool path_misses(const double *e, const double *n, int k0, int k1, double r,
-                        const double b[4])
-{
-    double e0 = e[k0], e1 = e0, n0 = n[k0], n1 = n0;
-    for (int k = k0 + 1; k <= k1; k++) {
-        e0 = mn(e0, e[k]);
-        e1 = mx(e1, e[k]);
-        n0 = mn(n0, n[k]);
-        n1 = mx(n1, n[k]);
-    }
-    return e0 - r > b[1] || e1 + r < b[0] || n0 - r > b[3] || n1 + r < b[2];
-}
-
-bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4])
-{
-    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
-    if (g->path)
-        return path_misses(g->path, g->path + g->ns, k0, k1, g->reach, b);
-    double ta = k0 * dt, tb = k1 * dt;
-    double ea = g->east + g->ve * ta, eb = g->east + g->ve * tb;
-    double na = g->north + g->vn * ta, nb = g->north + g->vn * tb;
-    double r = g->reach;
-    return mn(ea, eb) - r > b[1] || mx(ea, eb) + r < b[0] || mn(na, nb) - r > b[3] ||
-           mx(na, nb) + r < b[2];
 }
 
 /* Smallest lambda^2 = (x/a)^2 + (y/b)^2 on the segment from (x0, y0) to (x1, y1). */
@@ -218,7 +251,7 @@ double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw
     double x[FW_CHUNK + 1], y[FW_CHUNK + 1], gs[FW_CHUNK + 1], gc[FW_CHUNK + 1];
     for (int j = j0; j < j1 && j * FW_CHUNK < cb->nseg; j++) {
         int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
-        if (j < cb->nch && fw_chunk_misses(tr->dt, g, j, cb->nseg, cb->b[j]))
+        if (j < cb->nch && chunk_misses(tr->dt, g, j, cb->nseg, cb->b[j]))
             continue;
         chunk_offsets(dom, tr, g, k0, k1, x, y, gs, gc);
         double pa = 0, pb = 0; /* axes of the segment's first sample, when made */

@@ -30,6 +30,11 @@ typedef struct fw_prep_target {
      * north, sin and cos of the course */
     const double *path;
     int ns;
+    /* NULL, or for chunks j < nbox of tracks of box_nseg segments the box of
+     * the path over chunk j grown by reach (east min, max, north min, max):
+     * what fw_chunk_misses compares, made once per decision (fw_prep_boxes) */
+    const double *box;
+    int nbox, box_nseg;
 } fw_prep_target;
 
 /* Doubles of path room one predicted target needs for tracks of def. */
@@ -67,6 +72,11 @@ static inline void fw_prep_at(const fw_prep_target *g, int k, double tk, double 
 
 /* Does the target's path over chunk j, grown by its reach, miss box b? */
 bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4]);
+/* Doubles of box room fw_prep_boxes needs per target for tracks of nseg segments. */
+int fw_prep_box_len(int nseg);
+/* g's grown path boxes for tracks of nseg segments into room (fw_prep_box_len
+ * doubles), so that fw_chunk_misses compares them (the same values). */
+void fw_prep_boxes(double dt, fw_prep_target *g, int nseg, double *room);
 
 /* The chunks [*lo, *hi) of a track of nseg segments in which target g may
  * come within its reach of an own ship that starts at (e0, n0) and goes no

@@ -49,6 +49,7 @@ struct fw_helm_ctx {
     int prep_n;
     double *paths;         /* the predicted targets' paths (clearance.h) */
     size_t paths_cap;      /* doubles */
+    double *pbox;          /* [cap][fw_prep_box_len] the targets' grown chunk boxes */
 };
 
 /* Starts candidate (side, i) if this decision has not; *slot gets its slot. */

@@ -33,9 +33,9 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     if (c->tracks)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
-    fw_free_each(20, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
+    fw_free_each(21, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
                  c->next, c->nextp, c->ord, c->boxes, c->idx,
-                 c->jlo, c->jhi, c->act, c->nact, c->prep, c->paths, c);
+                 c->jlo, c->jhi, c->act, c->nact, c->prep, c->paths, c->pbox, c);
 }
 
 fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_helm_ctx **out,
@@ -289,7 +289,9 @@ static fw_status ensure_scratch(fw_helm_ctx *c, const fw_target *t, int n, fw_er
         if (!fw_resize_each((size_t)n, 4, (void **)&c->idx, sizeof *c->idx, (void **)&c->jlo,
                             sizeof *c->jlo, (void **)&c->jhi, sizeof *c->jhi, (void **)&c->prep,
                             sizeof *c->prep) ||
-            !fw_resize((void **)&c->act, sizeof *c->act, (size_t)n * (size_t)c->nchunks))
+            !fw_resize((void **)&c->act, sizeof *c->act, (size_t)n * (size_t)c->nchunks) ||
+            !fw_resize((void **)&c->pbox, sizeof *c->pbox,
+                       (size_t)n * (size_t)fw_prep_box_len(fw_track_samples(&c->def.track) - 1)))
             return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
         c->cap = n;
     }
@@ -316,7 +318,9 @@ static void keep_check(fw_helm_ctx *c, const fw_track *keep, const fw_target *t,
     double kbest = INFINITY;
     int nthreat = 0, *threat = c->act; /* scratch: the lists are made after */
     res->limiting = -1;
+    size_t blen = (size_t)fw_prep_box_len(kb->nseg);
     for (int i = 0; i < n; i++) {
+        fw_prep_boxes(c->def.track.dt, &c->prep[i], kb->nseg, c->pbox + (size_t)i * blen);
         fw_reach_window(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
                         c->umax, &c->jlo[i], &c->jhi[i]);
         /* what matters: below 1 (a threat) and below the smallest yet */
