@@ -156,6 +156,7 @@ fw_status fw_track_start(const fw_ship *ship, const fw_track_def *def, const fw_
     g->k = 0;
     g->p = 0;
     g->in_piece = false;
+    g->have_E = false;
     g->r0 = s->r, g->v0 = s->rdot, g->turned0 = 0.0;
     g->sn = sin(s->psi), g->cs = cos(s->psi);
     g->prev_turn = 0.0;
@@ -179,9 +180,17 @@ static void piece_enter(fw_track_gen *g)
         const fw_nomoto_indices *ix = &g->ix;
         double dt = g->dt;
         q->tau = g->k * dt - g->piece_start[p];
-        q->E1 = exp(-dt / ix->T1), q->E2 = exp(-dt / ix->T2);
-        q->phidt = fw_nomoto_phi(ix->T1, ix->T2, dt);
-        q->e2 = exp(-q->tau / ix->T2), q->ph = fw_nomoto_phi(ix->T1, ix->T2, q->tau);
+        if (!g->have_E) { /* the same for every piece of the track */
+            q->E1 = exp(-dt / ix->T1), q->E2 = exp(-dt / ix->T2);
+            q->phidt = fw_nomoto_phi(ix->T1, ix->T2, dt);
+            g->have_E = true;
+        }
+        if (q->tau == 0.0 && !signbit(q->tau)) {
+            /* what exp(-0 / T2) and phi(+0) give (the ramp from the start) */
+            q->e2 = 1.0, q->ph = 0.0;
+        } else {
+            q->e2 = exp(-q->tau / ix->T2), q->ph = fw_nomoto_phi(ix->T1, ix->T2, q->tau);
+        }
         q->A = ix->T1 * (ix->T2 * q->pc.h1 + q->pc.h0);
         q->B = ix->T1 * (ix->T2 * q->pc.h2 + q->pc.h1);
         q->TT = ix->T1 * ix->T2, q->TS = ix->T1 + ix->T2;

@@ -93,6 +93,7 @@ typedef struct fw_track_gen { /* the predictor's state between extensions */
     double dt, max_turn, psi0;
     int n, k, p;              /* samples in all, computed; rudder piece */
     bool in_piece, steadied;
+    bool have_E;              /* q's one-step factors made (the same in every piece) */
     double r0, v0, turned0;   /* at the start of piece p */
     double sn, cs, prev_turn; /* heading at sample k - 1 */
 } fw_track_gen;
