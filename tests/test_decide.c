@@ -153,6 +153,32 @@ static void steer_and_later(fw_helm_ctx *ctx, const fw_helm_def *hdef, const fw_
     tl->later += later;
 }
 
+/* The keep track and a candidate as the search made them (lazily, from the
+ * decision's track origin) are fw_track_predict's to the bit; the candidate
+ * only when the own ship is turning (from a symmetric start one side may be
+ * the other's mirror image, which rounds differently). */
+static void same_track(fw_helm_ctx *ctx, const fw_helm_def *hdef, const fw_own_state *own,
+                       int scene)
+{
+    int side = scene % 2 ? FW_SIDE_PORT : FW_SIDE_STARBOARD, i = scene % fw_helm_count(ctx);
+    bool symmetric = own->r == 0.0 && own->rdot == 0.0 && own->delta == 0.0 && own->beta == 0.0;
+    const fw_track *got[2];
+    CHECK(fw_helm_track(ctx, side, i, &got[0], NULL) == FW_OK);
+    CHECK(fw_helm_keep_track(ctx, &got[1], NULL) == FW_OK);
+    double helm[2] = {fw_helm_value(ctx, side, i), 0.0};
+    for (int q = symmetric; q < 2; q++) {
+        CHECK(fw_track_predict(ctx_ship, &hdef->track, own, helm[q], &tr, NULL) == FW_OK);
+        size_t len = sizeof(double) * (size_t)tr.n;
+        CHECK_MSG(got[q]->n == tr.n && memcmp(got[q]->east, tr.east, len) == 0 &&
+                      memcmp(got[q]->north, tr.north, len) == 0 &&
+                      memcmp(got[q]->sin_psi, tr.sin_psi, len) == 0 &&
+                      memcmp(got[q]->cos_psi, tr.cos_psi, len) == 0 &&
+                      memcmp(got[q]->psi, tr.psi, len) == 0 && memcmp(got[q]->r, tr.r, len) == 0,
+                  "scene %d: the search's %s track differs from fw_track_predict's", scene,
+                  q ? "keep" : "candidate");
+    }
+}
+
 static uint64_t run_scene(fw_helm_ctx *ctx, fw_helm_ref *ref, const fw_helm_def *hdef, int n,
                           bool dense, bool turning_now, uint64_t h, tally *tl)
 {
@@ -190,6 +216,7 @@ static uint64_t run_scene(fw_helm_ctx *ctx, fw_helm_ref *ref, const fw_helm_def 
         tl->starboard += rn.side == FW_SIDE_STARBOARD;
     }
     steer_and_later(ctx, hdef, &own, tg, n, tl);
+    same_track(ctx, hdef, &own, tl->scenes);
     int ints[3] = {d.mode, d.acted, d.primary};
     h = mix(h, ints, sizeof ints);
     h = mix(h, &d.helm, sizeof d.helm);

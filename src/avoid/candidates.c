@@ -50,8 +50,9 @@ fw_status fw_cand_open(fw_helm_ctx *c, int side, int i, int *slot, fw_error *err
         c->src[*slot] = other;
         fw_track_mirror_range(&c->tracks[other], &c->own, tr, 0, 0); /* n, dt, helm */
     } else {
-        fw_status st = fw_track_start(c->ship, &c->def.track, &c->own, fw_helm_value(c, side, i),
-                                      tr, &c->gen[*slot], err);
+        fw_status st = fw_track_start_from(c->ship, &c->def.track, &c->own,
+                                           fw_helm_value(c, side, i), tr, &c->gen[*slot],
+                                           c->origin, err);
         if (st)
             return st;
         c->computed++;

@@ -24,6 +24,7 @@ struct fw_helm_ctx {
     bool *have;            /* candidate started this decision */
     bool have_keep;
     fw_track_gen *gen;     /* per slot: the predictor's state */
+    fw_track_origin origin[2]; /* what every track of this decision starts from */
     int *ready;            /* samples there */
     int *nbox;             /* chunks with their box */
     int *src;              /* mirrored from this slot; -1: predicted */

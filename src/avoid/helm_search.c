@@ -118,6 +118,7 @@ void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
     for (int i = 0; i <= 2 * c->nh; i++)
         c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1, c->ub2[i] = INFINITY;
     c->have_keep = false;
+    c->origin[0].valid = c->origin[1].valid = false;
     c->prep_t = NULL;
     c->computed = 0;
     c->samples = 0;
@@ -157,7 +158,8 @@ fw_status fw_helm_keep_track(fw_helm_ctx *c, const fw_track **tr, fw_error *err)
     int slot = 2 * c->nh;
     fw_track *k = &c->tracks[slot];
     if (!c->have_keep) {
-        fw_status st = fw_track_start(c->ship, &c->def.track, &c->own, 0.0, k, &c->gen[slot], err);
+        fw_status st = fw_track_start_from(c->ship, &c->def.track, &c->own, 0.0, k,
+                                           &c->gen[slot], c->origin, err);
         if (st)
             return st;
         fw_track_boxes_init(k, &c->boxes[slot]);

@@ -122,8 +122,33 @@ static inline void kin_step(kin *k, double ps, double pc, double sn, double cs, 
     k->U = U1, k->cse = ce1, k->csn = cn1;
 }
 
+/* The helm-independent start of a track from s: kin_init's and the heading's
+ * unit vector, from the origin when it holds them for this knowledge base
+ * (made there the first time). */
+static void start_state(fw_track_gen *g, const fw_ship *ship, const fw_nomoto_kb *kb,
+                        const fw_own_state *s, double dt, fw_track_origin *origin)
+{
+    fw_track_origin *o = origin ? &origin[kb != &ship->nomoto] : NULL;
+    if (o && o->valid && o->dt == dt) {
+        g->kn = o->kn;
+        g->sn = o->sn, g->cs = o->cs;
+        return;
+    }
+    kin_init(&g->kn, ship, kb, s, dt);
+    g->sn = sin(s->psi), g->cs = cos(s->psi);
+    if (o)
+        *o = (fw_track_origin){.valid = true, .dt = dt, .kn = g->kn, .sn = g->sn, .cs = g->cs};
+}
+
 fw_status fw_track_start(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
                          double helm, fw_track *out, fw_track_gen *g, fw_error *err)
+{
+    return fw_track_start_from(ship, def, s, helm, out, g, NULL, err);
+}
+
+fw_status fw_track_start_from(const fw_ship *ship, const fw_track_def *def,
+                              const fw_own_state *s, double helm, fw_track *out,
+                              fw_track_gen *g, fw_track_origin origin[2], fw_error *err)
 {
     int n = fw_track_samples(def);
     if (n > out->cap)
@@ -158,10 +183,9 @@ fw_status fw_track_start(const fw_ship *ship, const fw_track_def *def, const fw_
     g->in_piece = false;
     g->have_E = false;
     g->r0 = s->r, g->v0 = s->rdot, g->turned0 = 0.0;
-    g->sn = sin(s->psi), g->cs = cos(s->psi);
     g->prev_turn = 0.0;
     g->steadied = false;
-    kin_init(&g->kn, ship, kb, s, def->dt);
+    start_state(g, ship, kb, s, def->dt, origin);
     return FW_OK;
 }
 
