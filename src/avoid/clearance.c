@@ -265,9 +265,10 @@ static inline void axes_at(const fw_domain_def *dom, const fw_track *tr, const f
  * offsets at its samples and M the frame's reflection there; that is M0 D(s)
  * + s (M1 - M0) D1 with D(s) in the difference of the two boxes, so its
  * length is at least the boxes' distance less |u1 - u0| (the frame's unit
- * vector's step, w) times their largest distance, and lambda^2 at least that
- * squared over the largest axes.  The margins (1e-6 relative, 1e-6 m) cover
- * the rounding of the offsets and of the unit vectors' lengths (1e-10). */
+ * vector's step, w) times their largest distance (here its L1 norm, which
+ * is more), and lambda^2 at least that squared over the largest axes.  The
+ * margins (1e-6 relative, 1e-6 m) cover the rounding of the offsets and of
+ * the unit vectors' lengths (1e-10). */
 static inline bool chunk_above(const fw_domain_def *dom, const fw_prep_target *g,
                                const fw_chunk_boxes *cb, int j, double cap)
 {
@@ -277,8 +278,9 @@ static inline bool chunk_above(const fw_domain_def *dom, const fw_prep_target *g
     if (!(d2 * m * (1.0 - 1e-6) > cap))
         return false; /* not even without the frame's turn */
     double w = dom->reading == FW_DOMAIN_TRANSVERSE ? t[4] : cb->w[j];
+    /* the largest distance over by its L1 norm (no second root) */
     double hx = mx(t[1] - b[0], b[1] - t[0]), hy = mx(t[3] - b[2], b[3] - t[2]);
-    double d = sqrt(d2) * (1.0 - 1e-6) - w * (1.0 + 1e-6) * sqrt(hx * hx + hy * hy) - 1e-6;
+    double d = sqrt(d2) * (1.0 - 1e-6) - w * (1.0 + 1e-6) * (hx + hy) - 1e-6;
     return d > 0.0 && d * d * m * (1.0 - 1e-6) - 1e-12 > cap;
 }
 
