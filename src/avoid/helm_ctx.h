@@ -30,6 +30,7 @@ struct fw_helm_ctx {
     int *src;              /* mirrored from this slot; -1: predicted */
     int *fail;             /* chunk where the clearing check found a target inside */
     double *ub2;           /* a value of lambda^2 met along the candidate: >= its minimum */
+    int *lim;              /* the target ub2 was met for (the lowest index of those that meet it) */
     int *next, *nextp;     /* the fallback's next chunk to scan, and target in its list */
     int *ord;              /* [3][2 nh] the fallback's order of the candidates, its heap,
                               and each slot's place in the order */

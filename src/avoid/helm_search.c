@@ -33,9 +33,9 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     if (c->tracks)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
-    fw_free_each(21, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
-                 c->next, c->nextp, c->ord, c->boxes, c->idx,
-                 c->jlo, c->jhi, c->act, c->nact, c->prep, c->paths, c->pbox, c);
+    fw_free_each(22, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
+                 c->lim, c->next, c->nextp, c->ord, c->boxes, c->idx, c->jlo, c->jhi, c->act,
+                 c->nact, c->prep, c->paths, c->pbox, c);
 }
 
 fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_helm_ctx **out,
@@ -72,12 +72,13 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     c->src = calloc((size_t)ntr, sizeof *c->src);
     c->fail = calloc((size_t)ntr, sizeof *c->fail);
     c->ub2 = calloc((size_t)ntr, sizeof *c->ub2);
+    c->lim = calloc((size_t)ntr, sizeof *c->lim);
     c->next = calloc((size_t)ntr, sizeof *c->next);
     c->nextp = calloc((size_t)ntr, sizeof *c->nextp);
     c->ord = calloc((size_t)(6 * c->nh), sizeof *c->ord);
     c->nact = calloc((size_t)c->nchunks, sizeof *c->nact);
     if (!c->tracks || !c->have || !c->boxes || !c->gen || !c->ready || !c->nbox || !c->src ||
-        !c->fail || !c->ub2 || !c->next || !c->nextp || !c->ord || !c->nact) {
+        !c->fail || !c->ub2 || !c->lim || !c->next || !c->nextp || !c->ord || !c->nact) {
         fw_helm_ctx_destroy(c);
         return fw_fail(err, FW_ERUN, "out of memory");
     }
@@ -424,6 +425,14 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
     res->helm = fw_helm_value(c, res->side, pick);
     if ((st = fw_cand_open(c, res->side, pick, &slot, err)))
         return st;
+    if (!res->feasible && c->next[slot] >= c->nchunks) {
+        /* the fallback scanned the pick to the end: its bound is the
+         * smallest value of all, met first (by index) for lim */
+        fw_cand_chunk(c, slot, c->nchunks - 1);
+        res->clearance = sqrt(c->ub2[slot]);
+        res->limiting = c->lim[slot];
+        return FW_OK;
+    }
     res->clearance = chosen_clearance(c, slot, n, &res->limiting);
     return FW_OK;
 }
