@@ -100,11 +100,13 @@ double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chu
 /* The same where only values below cap2 matter: a segment whose cheap lower
  * bound (each body-frame coordinate's least magnitude on it over the largest
  * axes) is above cap2, or above the smallest value found so far, gets no exact
- * test, nor does a chunk whose bound is (with g's boxes: the distance of the
- * two boxes, less what the frame's turn within a step can take off it).  The result is the same to the bit when below cap2, and >= cap2
- * otherwise.  The bound is exact arithmetic's less a relative 1e-6 and 1e-12
- * absolute, far more than the rounding of either side (a few 1e-16
- * relative; the offsets are below 1e5 m). */
+ * test, nor does a chunk whose bound is (with g's boxes, below 1: the
+ * distance of the two boxes, less what the frame's turn within a step can
+ * take off it).  The result is the same to the bit when below cap2, and >=
+ * cap2 otherwise; it is always a value of some segment's exact test (or
+ * infinity), so a value equal to the cap is seen.  The bounds are exact
+ * arithmetic's less a relative 1e-6 and 1e-12 absolute, far more than the
+ * rounding of either side (a few 1e-16 relative; the offsets are below 1e5 m). */
 double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
                           const fw_prep_target *g, int j0, int j1, double stop2, double cap2);
 
