@@ -15,9 +15,10 @@
  * the search falls back to scoring every candidate track.  A fixed-seed
  * generator per scene set keeps the scenes identical between runs and ships.
  *
- * usage: bench_helm [--targets N] [--ship NAME] [--reps R] [--csv FILE] [--decisions-only]
- * (--targets and --ship restrict the run, --decisions-only times fw_policy_step
- * alone: for profiling). */
+ * usage: bench_helm [--targets N] [--ship NAME] [--scenes mixed|dense] [--reps R] [--csv FILE]
+ *                   [--decisions-only]
+ * (--targets, --ship and --scenes restrict the run, --decisions-only times fw_policy_step
+ * alone, without the track baselines: for profiling). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,6 +39,7 @@ static double uniform(void)
 enum { SCENES = 200 };
 static int reps = 5;
 static bool decisions_only; /* --decisions-only: no search timings (profiling) */
+static int only_mode = -1;  /* --scenes: 0 mixed, 1 dense; -1 both */
 
 /* The search as first written (before the target ordering and pruning in
  * helm_search.c), through the public API. */
@@ -284,10 +286,13 @@ static int run_ship(const char *name, bool turning, int only_n, FILE *csv)
     }
     printf("# ship %s at 10 kn, %s, %d scenes x %d repetitions, median per call\n", name,
            turning ? "turning at 0.01 deg/s (rudder 0.5 deg)" : "straight", SCENES, reps);
-    baselines(&b);
+    if (!decisions_only)
+        baselines(&b);
     static const int counts[] = {1, 10, 30, 50, 200};
     int bad = 0;
     for (int mode = 0; mode < 2 && !bad; mode++) {
+        if (only_mode >= 0 && mode != only_mode)
+            continue;
         printf("# %s\n", mode ? "dense: every target aimed within 800 m of the own track (stress)"
                               : "mixed: 1 in 10 targets aimed, the rest anywhere within 3 nm");
         printf("%8s %11s %9s %7s %7s %9s %9s %10s %8s %7s %8s %7s\n", "targets", "decision_us",
@@ -314,13 +319,16 @@ int main(int argc, char **argv)
             only_ship = argv[++i];
         else if (val && strcmp(argv[i], "--reps") == 0)
             reps = atoi(argv[++i]);
+        else if (val && strcmp(argv[i], "--scenes") == 0 &&
+                 (strcmp(argv[i + 1], "mixed") == 0 || strcmp(argv[i + 1], "dense") == 0))
+            only_mode = strcmp(argv[++i], "dense") == 0;
         else if (strcmp(argv[i], "--decisions-only") == 0)
             decisions_only = true;
         else if (val && strcmp(argv[i], "--csv") == 0)
             csv_path = argv[++i];
         else {
-            fprintf(stderr, "usage: bench_helm [--targets N] [--ship NAME] [--reps R] [--csv FILE] "
-                            "[--decisions-only]\n");
+            fprintf(stderr, "usage: bench_helm [--targets N] [--ship NAME] [--scenes mixed|dense] "
+                            "[--reps R] [--csv FILE] [--decisions-only]\n");
             return 2;
         }
     }

@@ -13,12 +13,14 @@
  * search, action check) is hashed too and compared with
  * tests/data/digests/decisions.txt, made before the change (the odd groups'
  * after it: theirs only lock them): that also checks the predicted tracks,
- * which both searches share.
+ * which both searches share.  The scans' chunk bound (clearance.c) is also
+ * checked chunk by chunk against the same scans without it.
  * FAIRWAY_WRITE_DIGESTS=FILE writes the digests found instead. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "avoid/clearance.h"
 #include "avoid/policy.h"
 #include "core/files.h"
 #include "core/units.h"
@@ -151,6 +153,32 @@ static void steer_and_later(fw_helm_ctx *ctx, const fw_helm_def *hdef, const fw_
     tl->later += later;
 }
 
+/* The keep track and a candidate as the search made them (lazily, from the
+ * decision's track origin) are fw_track_predict's to the bit; the candidate
+ * only when the own ship is turning (from a symmetric start one side may be
+ * the other's mirror image, which rounds differently). */
+static void same_track(fw_helm_ctx *ctx, const fw_helm_def *hdef, const fw_own_state *own,
+                       int scene)
+{
+    int side = scene % 2 ? FW_SIDE_PORT : FW_SIDE_STARBOARD, i = scene % fw_helm_count(ctx);
+    bool symmetric = own->r == 0.0 && own->rdot == 0.0 && own->delta == 0.0 && own->beta == 0.0;
+    const fw_track *got[2];
+    CHECK(fw_helm_track(ctx, side, i, &got[0], NULL) == FW_OK);
+    CHECK(fw_helm_keep_track(ctx, &got[1], NULL) == FW_OK);
+    double helm[2] = {fw_helm_value(ctx, side, i), 0.0};
+    for (int q = symmetric; q < 2; q++) {
+        CHECK(fw_track_predict(ctx_ship, &hdef->track, own, helm[q], &tr, NULL) == FW_OK);
+        size_t len = sizeof(double) * (size_t)tr.n;
+        CHECK_MSG(got[q]->n == tr.n && memcmp(got[q]->east, tr.east, len) == 0 &&
+                      memcmp(got[q]->north, tr.north, len) == 0 &&
+                      memcmp(got[q]->sin_psi, tr.sin_psi, len) == 0 &&
+                      memcmp(got[q]->cos_psi, tr.cos_psi, len) == 0 &&
+                      memcmp(got[q]->psi, tr.psi, len) == 0 && memcmp(got[q]->r, tr.r, len) == 0,
+                  "scene %d: the search's %s track differs from fw_track_predict's", scene,
+                  q ? "keep" : "candidate");
+    }
+}
+
 static uint64_t run_scene(fw_helm_ctx *ctx, fw_helm_ref *ref, const fw_helm_def *hdef, int n,
                           bool dense, bool turning_now, uint64_t h, tally *tl)
 {
@@ -188,6 +216,7 @@ static uint64_t run_scene(fw_helm_ctx *ctx, fw_helm_ref *ref, const fw_helm_def 
         tl->starboard += rn.side == FW_SIDE_STARBOARD;
     }
     steer_and_later(ctx, hdef, &own, tg, n, tl);
+    same_track(ctx, hdef, &own, tl->scenes);
     int ints[3] = {d.mode, d.acted, d.primary};
     h = mix(h, ints, sizeof ints);
     h = mix(h, &d.helm, sizeof d.helm);
@@ -292,11 +321,75 @@ static void test_decisions_unchanged(void)
     run_group("c3", FW_DOMAIN_TRANSVERSE, false, true);
 }
 
+/* fw_target_min2_cap with the targets' prepared boxes (which bound a chunk
+ * before its offsets) against the same without them, chunk by chunk, at caps
+ * below 1 (where that bound is used): the same to the bit wherever either is
+ * below the cap, both at or above it otherwise.  Own ships turning hard (the
+ * frame's turn in a step is part of the bound), both readings, targets on
+ * predicted turning paths too. */
+static void test_chunk_bound(void)
+{
+    static const double caps[] = {0.005, 0.03, 0.1, 0.3, 0.6, 0.95};
+    enum { NT = 20 };
+    fw_ship ship;
+    CHECK(fw_ship_load("c3-mmg", &ship, NULL) == FW_OK);
+    fw_helm_def hdef = fw_default_helm_def();
+    int ns = fw_track_samples(&hdef.track), plen = fw_prep_path_len(&hdef.track);
+    fw_track t;
+    CHECK(fw_track_alloc(&t, ns, NULL) == FW_OK);
+    static fw_target tg[NT];
+    static fw_prep_target plain[NT], boxed[NT];
+    double *paths = malloc(sizeof(double) * (size_t)(NT * plen));
+    double *room = malloc(sizeof(double) * (size_t)(NT * fw_prep_box_len(ns - 1)));
+    CHECK(paths && room);
+    long below = 0, tests = 0;
+    rng = 0x9e3779b97f4a7c15ULL;
+    for (int s = 0; s < 160 && paths && room; s++) {
+        hdef.domain.reading = s % 2 ? FW_DOMAIN_TRANSVERSE : FW_DOMAIN_ELLIPSE;
+        hdef.domain.own_half_length = s % 4 < 2 ? 0.0 : 0.5 * ship.Loa;
+        fw_own_state own = make_own(s % 3 != 0);
+        double helm = fw_deg_to_rad(10 + 25 * uniform()) * (s % 5 < 2 ? -1.0 : 1.0);
+        CHECK(fw_track_predict(&ship, &hdef.track, &own, helm, &t, NULL) == FW_OK);
+        fw_chunk_boxes cb;
+        fw_track_boxes(&t, &cb);
+        make_scene(&own, s % 2 == 0, tg, NT);
+        fw_prep_targets(&hdef.domain, &hdef.track, tg, NT, plain, paths);
+        for (int i = 0; i < NT; i++) {
+            boxed[i] = plain[i];
+            fw_prep_boxes(t.dt, &boxed[i], cb.nseg, room + (size_t)i * fw_prep_box_len(cb.nseg));
+        }
+        for (int i = 0; i < NT; i++)
+            for (int j = 0; j < cb.nch; j++)
+                for (size_t c = 0; c < sizeof caps / sizeof caps[0]; c++) {
+                    double a = fw_target_min2_cap(&hdef.domain, &t, &cb, &plain[i], j, j + 1,
+                                                  0.0, caps[c]);
+                    double b = fw_target_min2_cap(&hdef.domain, &t, &cb, &boxed[i], j, j + 1,
+                                                  0.0, caps[c]);
+                    tests++;
+                    if (a < caps[c] || b < caps[c]) {
+                        below++;
+                        CHECK_MSG(memcmp(&a, &b, sizeof a) == 0,
+                                  "scene %d target %d chunk %d cap %g: %.17g with boxes, %.17g "
+                                  "without",
+                                  s, i, j, caps[c], b, a);
+                    } else {
+                        CHECK(a >= caps[c] && b >= caps[c]);
+                    }
+                }
+    }
+    printf("  chunk bound: %ld chunk tests, %ld below the cap\n", tests, below);
+    CHECK(below > 2000); /* the comparison is not vacuous */
+    free(paths);
+    free(room);
+    fw_track_free(&t);
+}
+
 int main(void)
 {
     const char *wd = getenv("FAIRWAY_WRITE_DIGESTS");
     if (wd && *wd && !(digest_out = fopen(wd, "w")))
         return 1;
+    TEST_RUN(test_chunk_bound);
     TEST_RUN(test_decisions_unchanged);
     fw_track_free(&tr);
     if (digest_out)

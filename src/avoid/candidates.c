@@ -47,8 +47,9 @@ fw_status fw_cand_open(fw_helm_ctx *c, int side, int i, int *slot, fw_error *err
         c->src[*slot] = other;
         fw_track_mirror_range(&c->tracks[other], &c->own, tr, 0, 0); /* n, dt, helm */
     } else {
-        fw_status st = fw_track_start(c->ship, &c->def.track, &c->own, fw_helm_value(c, side, i),
-                                      tr, &c->gen[*slot], err);
+        fw_status st = fw_track_start_from(c->ship, &c->def.track, &c->own,
+                                           fw_helm_value(c, side, i), tr, &c->gen[*slot],
+                                           c->origin, err);
         if (st)
             return st;
         c->computed++;
@@ -56,6 +57,16 @@ fw_status fw_cand_open(fw_helm_ctx *c, int side, int i, int *slot, fw_error *err
     fw_track_boxes_init(tr, &c->boxes[*slot]);
     c->have[*slot] = true;
     return FW_OK;
+}
+
+/* A value v met for target i lowers the smallest so far (*best, met for
+ * *lim): as chosen_clearance in helm_search.c finds it, the lowest index of
+ * the targets that meet it (a value equal to the cap is tested exactly, so a
+ * tie is seen). */
+static inline void lower_to(double *best, int *lim, double v, int i)
+{
+    if (v < *best || (v == *best && i < *lim))
+        *best = v, *lim = i;
 }
 
 /* Does some target come inside the domain (lambda^2 < stop2) along
@@ -80,19 +91,20 @@ double fw_cand_fails(fw_helm_ctx *c, int slot, double stop2)
             double m2 = fw_target_min2_cap(&c->def.domain, tr, cb, &c->prep[a[p]], j, j + 1,
                                            stop2, stop2);
             if (m2 < stop2) {
-                int i = a[p];
+                int i = a[p], lim = i;
                 /* the rest of the chunk too, for the fallback: its bound is
                  * then the chunk's smallest value (the targets before gave
                  * none below stop2), and it goes on from the next chunk */
                 for (int q = p + 1; q < na; q++) {
                     double v = fw_target_min2_cap(&c->def.domain, tr, cb, &c->prep[a[q]], j,
                                                   j + 1, 0.0, m2);
-                    m2 = v < m2 ? v : m2;
+                    lower_to(&m2, &lim, v, a[q]);
                 }
                 memmove(a + 1, a, sizeof *a * (size_t)p);
                 a[0] = i;
                 c->fail[slot] = j;
                 c->ub2[slot] = m2;
+                c->lim[slot] = lim;
                 return m2;
             }
         }
@@ -109,7 +121,7 @@ double fw_cand_fails(fw_helm_ctx *c, int slot, double stop2)
 static void scan_on(fw_helm_ctx *c, int slot, double below)
 {
     double best = c->ub2[slot];
-    int j = c->next[slot], p = c->nextp[slot];
+    int j = c->next[slot], p = c->nextp[slot], lim = c->lim[slot];
     while (j < c->nchunks && !(best < below)) {
         int na = c->nact[j];
         const int *a = c->act + (size_t)j * (size_t)c->cap;
@@ -118,13 +130,13 @@ static void scan_on(fw_helm_ctx *c, int slot, double below)
         for (; p < na && !(best < below); p++) {
             double m2 = fw_target_min2_cap(&c->def.domain, &c->tracks[slot], &c->boxes[slot],
                                            &c->prep[a[p]], j, j + 1, 0.0, best);
-            if (m2 < best)
-                best = m2;
+            lower_to(&best, &lim, m2, a[p]);
         }
         if (p >= na)
             j++, p = 0;
     }
     c->ub2[slot] = best;
+    c->lim[slot] = lim;
     c->next[slot] = j;
     c->nextp[slot] = p;
 }

@@ -62,6 +62,17 @@ void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const f
     }
 }
 
+/* The most the unit vector (s, c) moves in a step over samples k0..k1. */
+static double unit_step(const double *s, const double *c, int k0, int k1)
+{
+    double w2 = 0.0;
+    for (int k = k0 + 1; k <= k1; k++) {
+        double ds = s[k] - s[k - 1], dc = c[k] - c[k - 1];
+        w2 = mx(w2, ds * ds + dc * dc);
+    }
+    return sqrt(w2);
+}
+
 void fw_track_boxes_init(const fw_track *tr, fw_chunk_boxes *cb)
 {
     cb->nseg = tr->n - 1;
@@ -81,6 +92,7 @@ void fw_track_box(const fw_track *tr, fw_chunk_boxes *cb, int j)
         n1 = mx(n1, tr->north[k]);
     }
     cb->b[j][0] = e0, cb->b[j][1] = e1, cb->b[j][2] = n0, cb->b[j][3] = n1;
+    cb->w[j] = unit_step(tr->sin_psi, tr->cos_psi, k0, k1);
 }
 
 void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
@@ -88,6 +100,70 @@ void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
     fw_track_boxes_init(tr, cb);
     for (int j = 0; j < cb->nch; j++)
         fw_track_box(tr, cb, j);
+}
+
+/* The bounding box of the target's path over chunk j of a track of nseg
+ * segments (as fw_prep_target.box, without the heading's step). */
+static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double t[4])
+{
+    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
+    if (g->path) {
+        const double *e = g->path, *n = g->path + g->ns;
+        t[0] = e[k0], t[1] = t[0], t[2] = n[k0], t[3] = t[2];
+        for (int k = k0 + 1; k <= k1; k++) {
+            t[0] = mn(t[0], e[k]);
+            t[1] = mx(t[1], e[k]);
+            t[2] = mn(t[2], n[k]);
+            t[3] = mx(t[3], n[k]);
+        }
+    } else {
+        double ta = k0 * dt, tb = k1 * dt;
+        double ea = g->east + g->ve * ta, eb = g->east + g->ve * tb;
+        double na = g->north + g->vn * ta, nb = g->north + g->vn * tb;
+        t[0] = mn(ea, eb), t[1] = mx(ea, eb), t[2] = mn(na, nb), t[3] = mx(na, nb);
+    }
+}
+
+/* Box t grown by r misses box b. */
+static inline bool box_misses(const double t[4], double r, const double b[4])
+{
+    return t[0] - r > b[1] || t[1] + r < b[0] || t[2] - r > b[3] || t[3] + r < b[2];
+}
+
+/* Inlined in the scans: the prepared box when there is one. */
+static inline bool chunk_misses(double dt, const fw_prep_target *g, int j, int nseg,
+                                const double b[4])
+{
+    if (g->box && j < g->nbox && nseg == g->box_nseg)
+        return box_misses(g->box + FW_PBOX * j, g->reach, b);
+    double t[4];
+    path_box(dt, g, j, nseg, t);
+    return box_misses(t, g->reach, b);
+}
+
+bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4])
+{
+    return chunk_misses(dt, g, j, nseg, b);
+}
+
+static int box_chunks(int nseg)
+{
+    int nch = (nseg + FW_CHUNK - 1) / FW_CHUNK;
+    return nch < FW_MAX_CHUNKS ? nch : FW_MAX_CHUNKS;
+}
+
+int fw_prep_box_len(int nseg) { return FW_PBOX * box_chunks(nseg); }
+
+void fw_prep_boxes(double dt, fw_prep_target *g, int nseg, double *room)
+{
+    int nch = box_chunks(nseg);
+    for (int j = 0; j < nch; j++) {
+        double *t = room + FW_PBOX * j;
+        path_box(dt, g, j, nseg, t);
+        int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
+        t[4] = g->path ? unit_step(g->path + 2 * g->ns, g->path + 3 * g->ns, k0, k1) : 0.0;
+    }
+    g->box = room, g->nbox = nch, g->box_nseg = nseg;
 }
 
 void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
@@ -106,7 +182,7 @@ void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, do
          * covers the rounding of the positions summed step by step */
         double R = umax * (k1 * dt) * (1.0 + 1e-9) + 1e-6;
         double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
-        if (!fw_chunk_misses(dt, g, j, nseg, env)) {
+        if (!chunk_misses(dt, g, j, nseg, env)) {
             if (*lo < 0)
                 *lo = j;
             *hi = j + 1;
@@ -128,35 +204,8 @@ void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb)
         u->b[j][1] = mx(u->b[j][1], cb->b[j][1]);
         u->b[j][2] = mn(u->b[j][2], cb->b[j][2]);
         u->b[j][3] = mx(u->b[j][3], cb->b[j][3]);
+        u->w[j] = mx(u->w[j], cb->w[j]);
     }
-}
-
-/* The bounding box of a predicted path (east e, north n) over samples
- * k0..k1, grown by r. */
-static bool path_misses(const double *e, const double *n, int k0, int k1, double r,
-                        const double b[4])
-{
-    double e0 = e[k0], e1 = e0, n0 = n[k0], n1 = n0;
-    for (int k = k0 + 1; k <= k1; k++) {
-        e0 = mn(e0, e[k]);
-        e1 = mx(e1, e[k]);
-        n0 = mn(n0, n[k]);
-        n1 = mx(n1, n[k]);
-    }
-    return e0 - r > b[1] || e1 + r < b[0] || n0 - r > b[3] || n1 + r < b[2];
-}
-
-bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4])
-{
-    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
-    if (g->path)
-        return path_misses(g->path, g->path + g->ns, k0, k1, g->reach, b);
-    double ta = k0 * dt, tb = k1 * dt;
-    double ea = g->east + g->ve * ta, eb = g->east + g->ve * tb;
-    double na = g->north + g->vn * ta, nb = g->north + g->vn * tb;
-    double r = g->reach;
-    return mn(ea, eb) - r > b[1] || mx(ea, eb) + r < b[0] || mn(na, nb) - r > b[3] ||
-           mx(na, nb) + r < b[2];
 }
 
 /* Smallest lambda^2 = (x/a)^2 + (y/b)^2 on the segment from (x0, y0) to (x1, y1). */
@@ -211,6 +260,30 @@ static inline void axes_at(const fw_domain_def *dom, const fw_track *tr, const f
     fw_domain_grown(dom, g->hl, g->hb, gc * c + gs * s, gs * c - gc * s, a, b);
 }
 
+/* Is every value the exact tests of chunk j (g's prepared box) could give
+ * above cap?  A segment's point is (1 - s) M0 D0 + s M1 D1, D the world
+ * offsets at its samples and M the frame's reflection there; that is M0 D(s)
+ * + s (M1 - M0) D1 with D(s) in the difference of the two boxes, so its
+ * length is at least the boxes' distance less |u1 - u0| (the frame's unit
+ * vector's step, w) times their largest distance (here its L1 norm, which
+ * is more), and lambda^2 at least that squared over the largest axes.  The
+ * margins (1e-6 relative, 1e-6 m) cover the rounding of the offsets and of
+ * the unit vectors' lengths (1e-10). */
+static inline bool chunk_above(const fw_domain_def *dom, const fw_prep_target *g,
+                               const fw_chunk_boxes *cb, int j, double cap)
+{
+    const double *t = g->box + FW_PBOX * j, *b = cb->b[j];
+    double gx = mx(0.0, mx(t[0] - b[1], b[0] - t[1])), gy = mx(0.0, mx(t[2] - b[3], b[2] - t[3]));
+    double m = mn(g->ia_min, g->ib_min), d2 = gx * gx + gy * gy;
+    if (!(d2 * m * (1.0 - 1e-6) > cap))
+        return false; /* not even without the frame's turn */
+    double w = dom->reading == FW_DOMAIN_TRANSVERSE ? t[4] : cb->w[j];
+    /* the largest distance over by its L1 norm (no second root) */
+    double hx = mx(t[1] - b[0], b[1] - t[0]), hy = mx(t[3] - b[2], b[3] - t[2]);
+    double d = sqrt(d2) * (1.0 - 1e-6) - w * (1.0 + 1e-6) * (hx + hy) - 1e-6;
+    return d > 0.0 && d * d * m * (1.0 - 1e-6) - 1e-12 > cap;
+}
+
 double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
                           const fw_prep_target *g, int j0, int j1, double stop2, double cap2)
 {
@@ -218,7 +291,12 @@ double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw
     double x[FW_CHUNK + 1], y[FW_CHUNK + 1], gs[FW_CHUNK + 1], gc[FW_CHUNK + 1];
     for (int j = j0; j < j1 && j * FW_CHUNK < cb->nseg; j++) {
         int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < cb->nseg ? k0 + FW_CHUNK : cb->nseg;
-        if (j < cb->nch && fw_chunk_misses(tr->dt, g, j, cb->nseg, cb->b[j]))
+        if (j < cb->nch && chunk_misses(tr->dt, g, j, cb->nseg, cb->b[j]))
+            continue;
+        /* (below 1 only: the box test has culled what lies farther out) */
+        double cap = tmin2 < cap2 ? tmin2 : cap2;
+        if (cap < 1.0 && j < cb->nch && g->box && j < g->nbox && cb->nseg == g->box_nseg &&
+            chunk_above(dom, g, cb, j, cap))
             continue;
         chunk_offsets(dom, tr, g, k0, k1, x, y, gs, gc);
         double pa = 0, pb = 0; /* axes of the segment's first sample, when made */

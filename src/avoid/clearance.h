@@ -17,6 +17,7 @@
 #include "nomoto/track.h"
 
 enum { FW_CHUNK = 8,      /* segments per culling box: 40 s at the default dt */
+       FW_PBOX = 5,       /* doubles per chunk of fw_prep_target.box */
        FW_MAX_CHUNKS = 64 /* chunks beyond these are checked without culling */ };
 
 typedef struct fw_prep_target {
@@ -30,6 +31,13 @@ typedef struct fw_prep_target {
      * north, sin and cos of the course */
     const double *path;
     int ns;
+    /* NULL, or for chunks j < nbox of tracks of box_nseg segments, FW_PBOX
+     * doubles each: the box of the path over chunk j (east min, max, north
+     * min, max; fw_chunk_misses grows it by reach) and the most its heading's
+     * unit vector moves in one step there (the transverse reading's frame),
+     * made once per decision (fw_prep_boxes) */
+    const double *box;
+    int nbox, box_nseg;
 } fw_prep_target;
 
 /* Doubles of path room one predicted target needs for tracks of def. */
@@ -38,6 +46,7 @@ int fw_prep_path_len(const fw_track_def *def);
 typedef struct fw_chunk_boxes {
     int nseg, nch;                  /* segments; chunks with a box */
     double b[FW_MAX_CHUNKS][4];     /* east min, max, north min, max */
+    double w[FW_MAX_CHUNKS];        /* the most the heading's unit vector moves in a step */
 } fw_chunk_boxes;
 
 /* Prepares t[0..n-1]; a target with a predictor gets its path in paths (room
@@ -67,6 +76,12 @@ static inline void fw_prep_at(const fw_prep_target *g, int k, double tk, double 
 
 /* Does the target's path over chunk j, grown by its reach, miss box b? */
 bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4]);
+/* Doubles of box room fw_prep_boxes needs per target for tracks of nseg segments. */
+int fw_prep_box_len(int nseg);
+/* g's path boxes for tracks of nseg segments into room (fw_prep_box_len
+ * doubles), so that fw_chunk_misses compares them (the same values) and the
+ * scans can bound a chunk before its offsets (fw_target_min2_cap). */
+void fw_prep_boxes(double dt, fw_prep_target *g, int nseg, double *room);
 
 /* The chunks [*lo, *hi) of a track of nseg segments in which target g may
  * come within its reach of an own ship that starts at (e0, n0) and goes no
@@ -85,10 +100,13 @@ double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chu
 /* The same where only values below cap2 matter: a segment whose cheap lower
  * bound (each body-frame coordinate's least magnitude on it over the largest
  * axes) is above cap2, or above the smallest value found so far, gets no exact
- * test.  The result is the same to the bit when below cap2, and >= cap2
- * otherwise.  The bound is exact arithmetic's less a relative 1e-6 and 1e-12
- * absolute, far more than the rounding of either side (a few 1e-16
- * relative; the offsets are below 1e5 m). */
+ * test, nor does a chunk whose bound is (with g's boxes, below 1: the
+ * distance of the two boxes, less what the frame's turn within a step can
+ * take off it).  The result is the same to the bit when below cap2, and >=
+ * cap2 otherwise; it is always a value of some segment's exact test (or
+ * infinity), so a value equal to the cap is seen.  The bounds are exact
+ * arithmetic's less a relative 1e-6 and 1e-12 absolute, far more than the
+ * rounding of either side (a few 1e-16 relative; the offsets are below 1e5 m). */
 double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,
                           const fw_prep_target *g, int j0, int j1, double stop2, double cap2);
 

@@ -25,20 +25,19 @@ const char *fw_situation_name(fw_situation s)
 }
 
 /* Relative bearing in degrees [0, 360) of point (e, n) seen from (e0, n0) on heading h. */
-static double rel_bearing_deg(double e0, double n0, double h, double e, double n)
-{
-    double b = atan2(e - e0, n - n0) - h;
-    return fw_rad_to_deg(fw_wrap_2pi(b));
-}
+/* Relative bearing (deg) of a point whose true bearing is a (atan2 of the
+ * east and north offsets) from a ship heading h. */
+static double rel_bearing_deg(double a, double h) { return fw_rad_to_deg(fw_wrap_2pi(a - h)); }
 
 /* Angular distance in degrees of bearing b from dead ahead. */
 static double off_bow(double b) { return b <= 180.0 ? b : 360.0 - b; }
 
-fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
-                         const fw_target *t)
+/* fw_classify with the target's true bearing from the own ship, a. */
+static fw_situation classify(const fw_colregs_def *def, const fw_own_state *own,
+                             const fw_target *t, double a)
 {
-    double beta = rel_bearing_deg(own->east, own->north, own->psi, t->east, t->north);
-    double alpha = rel_bearing_deg(t->east, t->north, t->course, own->east, own->north);
+    double beta = rel_bearing_deg(a, own->psi);
+    double alpha = rel_bearing_deg(atan2(own->east - t->east, own->north - t->north), t->course);
     double course_diff = fw_rad_to_deg(fabs(fw_wrap_pi(t->course - own->psi)));
     if (off_bow(beta) <= def->head_on_bearing_deg && off_bow(alpha) <= def->head_on_bearing_deg &&
         course_diff >= 180.0 - def->head_on_course_tol_deg)
@@ -50,6 +49,12 @@ fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
         return FW_SIT_OVERTAKEN;
     /* dead ahead counts as starboard: a crossing ship on the bow is given way to */
     return beta < 180.0 ? FW_SIT_GIVE_WAY : FW_SIT_STAND_ON;
+}
+
+fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
+                         const fw_target *t)
+{
+    return classify(def, own, t, atan2(t->east - own->east, t->north - own->north));
 }
 
 static bool more_dangerous(const fw_assessment *p, int i, const fw_assessment *q, int j)
@@ -156,15 +161,17 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
     double so = sin(own->psi), co = cos(own->psi);
     for (int i = 0; i < n; i++) {
         fw_assessment *as = &out[i];
-        double dx = t[i].east - own->east, dy = t[i].north - own->north, ve, vn;
-        fw_velocity(t[i].speed, t[i].course, &ve, &vn);
-        double vx = ve - own->U * so, vy = vn - own->U * co;
+        double dx = t[i].east - own->east, dy = t[i].north - own->north;
+        /* the course's sine and cosine once (fw_velocity's, the frame's) */
+        double sc = sin(t[i].course), cc = cos(t[i].course);
+        double ve = t[i].speed * sc, vn = t[i].speed * cc;
+        double vx = ve - own->U * so, vy = vn - own->U * co, brg = atan2(dx, dy);
         as->range = hypot(dx, dy);
-        as->bearing = fw_wrap_2pi(atan2(dx, dy));
+        as->bearing = fw_wrap_2pi(brg);
         as->rel_bearing = fw_wrap_2pi(as->bearing - own->psi);
         fw_cpa(dx, dy, vx, vy, &as->tcpa, &as->dcpa);
         as->t_range = time_to_range(dx, dy, vx, vy, cdef->rank_range_m);
-        as->situation = fw_classify(cdef, own, &t[i]);
+        as->situation = classify(cdef, own, &t[i], brg);
         as->rank = 0;
         if (t[i].pred) {
             assess_path(dom, horizon, own, &t[i], as);
@@ -177,7 +184,7 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
         double a, b, fs, fc;
         double rel = t[i].course - own->psi;
         fw_domain_axes(dom, &t[i], cos(rel), sin(rel), &a, &b);
-        fw_domain_frame(dom, so, co, sin(t[i].course), cos(t[i].course), &fs, &fc);
+        fw_domain_frame(dom, so, co, sc, cc, &fs, &fc);
         double x, y, ux, uy;
         fw_to_body(dx, dy, fs, fc, &x, &y);
         fw_to_body(vx, vy, fs, fc, &ux, &uy);

@@ -24,11 +24,13 @@ struct fw_helm_ctx {
     bool *have;            /* candidate started this decision */
     bool have_keep;
     fw_track_gen *gen;     /* per slot: the predictor's state */
+    fw_track_origin origin[2]; /* what every track of this decision starts from */
     int *ready;            /* samples there */
     int *nbox;             /* chunks with their box */
     int *src;              /* mirrored from this slot; -1: predicted */
     int *fail;             /* chunk where the clearing check found a target inside */
     double *ub2;           /* a value of lambda^2 met along the candidate: >= its minimum */
+    int *lim;              /* the target ub2 was met for (the lowest index of those that meet it) */
     int *next, *nextp;     /* the fallback's next chunk to scan, and target in its list */
     int *ord;              /* [3][2 nh] the fallback's order of the candidates, its heap,
                               and each slot's place in the order */
@@ -49,6 +51,7 @@ struct fw_helm_ctx {
     int prep_n;
     double *paths;         /* the predicted targets' paths (clearance.h) */
     size_t paths_cap;      /* doubles */
+    double *pbox;          /* [cap][fw_prep_box_len] the targets' grown chunk boxes */
 };
 
 /* Starts candidate (side, i) if this decision has not; *slot gets its slot. */

@@ -33,9 +33,9 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     if (c->tracks)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
-    fw_free_each(20, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
-                 c->next, c->nextp, c->ord, c->boxes, c->idx,
-                 c->jlo, c->jhi, c->act, c->nact, c->prep, c->paths, c);
+    fw_free_each(22, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
+                 c->lim, c->next, c->nextp, c->ord, c->boxes, c->idx, c->jlo, c->jhi, c->act,
+                 c->nact, c->prep, c->paths, c->pbox, c);
 }
 
 fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_helm_ctx **out,
@@ -72,12 +72,13 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     c->src = calloc((size_t)ntr, sizeof *c->src);
     c->fail = calloc((size_t)ntr, sizeof *c->fail);
     c->ub2 = calloc((size_t)ntr, sizeof *c->ub2);
+    c->lim = calloc((size_t)ntr, sizeof *c->lim);
     c->next = calloc((size_t)ntr, sizeof *c->next);
     c->nextp = calloc((size_t)ntr, sizeof *c->nextp);
     c->ord = calloc((size_t)(6 * c->nh), sizeof *c->ord);
     c->nact = calloc((size_t)c->nchunks, sizeof *c->nact);
     if (!c->tracks || !c->have || !c->boxes || !c->gen || !c->ready || !c->nbox || !c->src ||
-        !c->fail || !c->ub2 || !c->next || !c->nextp || !c->ord || !c->nact) {
+        !c->fail || !c->ub2 || !c->lim || !c->next || !c->nextp || !c->ord || !c->nact) {
         fw_helm_ctx_destroy(c);
         return fw_fail(err, FW_ERUN, "out of memory");
     }
@@ -118,6 +119,7 @@ void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
     for (int i = 0; i <= 2 * c->nh; i++)
         c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1, c->ub2[i] = INFINITY;
     c->have_keep = false;
+    c->origin[0].valid = c->origin[1].valid = false;
     c->prep_t = NULL;
     c->computed = 0;
     c->samples = 0;
@@ -157,7 +159,8 @@ fw_status fw_helm_keep_track(fw_helm_ctx *c, const fw_track **tr, fw_error *err)
     int slot = 2 * c->nh;
     fw_track *k = &c->tracks[slot];
     if (!c->have_keep) {
-        fw_status st = fw_track_start(c->ship, &c->def.track, &c->own, 0.0, k, &c->gen[slot], err);
+        fw_status st = fw_track_start_from(c->ship, &c->def.track, &c->own, 0.0, k,
+                                           &c->gen[slot], c->origin, err);
         if (st)
             return st;
         fw_track_boxes_init(k, &c->boxes[slot]);
@@ -289,7 +292,9 @@ static fw_status ensure_scratch(fw_helm_ctx *c, const fw_target *t, int n, fw_er
         if (!fw_resize_each((size_t)n, 4, (void **)&c->idx, sizeof *c->idx, (void **)&c->jlo,
                             sizeof *c->jlo, (void **)&c->jhi, sizeof *c->jhi, (void **)&c->prep,
                             sizeof *c->prep) ||
-            !fw_resize((void **)&c->act, sizeof *c->act, (size_t)n * (size_t)c->nchunks))
+            !fw_resize((void **)&c->act, sizeof *c->act, (size_t)n * (size_t)c->nchunks) ||
+            !fw_resize((void **)&c->pbox, sizeof *c->pbox,
+                       (size_t)n * (size_t)fw_prep_box_len(fw_track_samples(&c->def.track) - 1)))
             return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
         c->cap = n;
     }
@@ -316,7 +321,9 @@ static void keep_check(fw_helm_ctx *c, const fw_track *keep, const fw_target *t,
     double kbest = INFINITY;
     int nthreat = 0, *threat = c->act; /* scratch: the lists are made after */
     res->limiting = -1;
+    size_t blen = (size_t)fw_prep_box_len(kb->nseg);
     for (int i = 0; i < n; i++) {
+        fw_prep_boxes(c->def.track.dt, &c->prep[i], kb->nseg, c->pbox + (size_t)i * blen);
         fw_reach_window(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
                         c->umax, &c->jlo[i], &c->jhi[i]);
         /* what matters: below 1 (a threat) and below the smallest yet */
@@ -418,6 +425,14 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
     res->helm = fw_helm_value(c, res->side, pick);
     if ((st = fw_cand_open(c, res->side, pick, &slot, err)))
         return st;
+    if (!res->feasible && c->next[slot] >= c->nchunks) {
+        /* the fallback scanned the pick to the end: its bound is the
+         * smallest value of all, met first (by index) for lim */
+        fw_cand_chunk(c, slot, c->nchunks - 1);
+        res->clearance = sqrt(c->ub2[slot]);
+        res->limiting = c->lim[slot];
+        return FW_OK;
+    }
     res->clearance = chosen_clearance(c, slot, n, &res->limiting);
     return FW_OK;
 }

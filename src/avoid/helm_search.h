@@ -9,8 +9,10 @@
  * predicted up to that point only), and mirrors the port tracks from the
  * starboard ones when the start is symmetric.  Checks go chunk by chunk in
  * time, culled with bounding boxes in space and time and with each target's
- * reach window (how far the own ship can have gone), then segment by segment
- * with a cheap lower bound before the exact ellipse test.  The results are
+ * reach window (how far the own ship can have gone), below a cap under 1 by a
+ * chunk's own lower bound, then segment by segment with a cheap lower bound
+ * before the exact ellipse test; all the tracks of one decision start from
+ * one fw_track_origin.  The results are
  * those of the plain search to the bit (tests/test_decide.c compares them with
  * tests/helm_reference.c, the search before these shortcuts).
  */

@@ -122,8 +122,33 @@ static inline void kin_step(kin *k, double ps, double pc, double sn, double cs, 
     k->U = U1, k->cse = ce1, k->csn = cn1;
 }
 
+/* The helm-independent start of a track from s: kin_init's and the heading's
+ * unit vector, from the origin when it holds them for this knowledge base
+ * (made there the first time). */
+static void start_state(fw_track_gen *g, const fw_ship *ship, const fw_nomoto_kb *kb,
+                        const fw_own_state *s, double dt, fw_track_origin *origin)
+{
+    fw_track_origin *o = origin ? &origin[kb != &ship->nomoto] : NULL;
+    if (o && o->valid && o->dt == dt) {
+        g->kn = o->kn;
+        g->sn = o->sn, g->cs = o->cs;
+        return;
+    }
+    kin_init(&g->kn, ship, kb, s, dt);
+    g->sn = sin(s->psi), g->cs = cos(s->psi);
+    if (o)
+        *o = (fw_track_origin){.valid = true, .dt = dt, .kn = g->kn, .sn = g->sn, .cs = g->cs};
+}
+
 fw_status fw_track_start(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
                          double helm, fw_track *out, fw_track_gen *g, fw_error *err)
+{
+    return fw_track_start_from(ship, def, s, helm, out, g, NULL, err);
+}
+
+fw_status fw_track_start_from(const fw_ship *ship, const fw_track_def *def,
+                              const fw_own_state *s, double helm, fw_track *out,
+                              fw_track_gen *g, fw_track_origin origin[2], fw_error *err)
 {
     int n = fw_track_samples(def);
     if (n > out->cap)
@@ -156,11 +181,11 @@ fw_status fw_track_start(const fw_ship *ship, const fw_track_def *def, const fw_
     g->k = 0;
     g->p = 0;
     g->in_piece = false;
+    g->have_E = false;
     g->r0 = s->r, g->v0 = s->rdot, g->turned0 = 0.0;
-    g->sn = sin(s->psi), g->cs = cos(s->psi);
     g->prev_turn = 0.0;
     g->steadied = false;
-    kin_init(&g->kn, ship, kb, s, def->dt);
+    start_state(g, ship, kb, s, def->dt, origin);
     return FW_OK;
 }
 
@@ -179,9 +204,17 @@ static void piece_enter(fw_track_gen *g)
         const fw_nomoto_indices *ix = &g->ix;
         double dt = g->dt;
         q->tau = g->k * dt - g->piece_start[p];
-        q->E1 = exp(-dt / ix->T1), q->E2 = exp(-dt / ix->T2);
-        q->phidt = fw_nomoto_phi(ix->T1, ix->T2, dt);
-        q->e2 = exp(-q->tau / ix->T2), q->ph = fw_nomoto_phi(ix->T1, ix->T2, q->tau);
+        if (!g->have_E) { /* the same for every piece of the track */
+            q->E1 = exp(-dt / ix->T1), q->E2 = exp(-dt / ix->T2);
+            q->phidt = fw_nomoto_phi(ix->T1, ix->T2, dt);
+            g->have_E = true;
+        }
+        if (q->tau == 0.0 && !signbit(q->tau)) {
+            /* what exp(-0 / T2) and phi(+0) give (the ramp from the start) */
+            q->e2 = 1.0, q->ph = 0.0;
+        } else {
+            q->e2 = exp(-q->tau / ix->T2), q->ph = fw_nomoto_phi(ix->T1, ix->T2, q->tau);
+        }
         q->A = ix->T1 * (ix->T2 * q->pc.h1 + q->pc.h0);
         q->B = ix->T1 * (ix->T2 * q->pc.h2 + q->pc.h1);
         q->TT = ix->T1 * ix->T2, q->TS = ix->T1 + ix->T2;
@@ -189,58 +222,80 @@ static void piece_enter(fw_track_gen *g)
     g->in_piece = true;
 }
 
-/* Samples g->k .. kmax-1 within the present piece.  The state is worked on in
- * a local copy: the stores into the track may alias it otherwise. */
+/* Positions of samples k0..k1-1 (k0 >= 1) from the headings, yaw rates and
+ * the position at k0 - 1 already there: kin_step sample by sample, as a loop
+ * of its own (its speed chain, with a division, bounds the time per sample;
+ * apart from the heading's recurrence the CPU overlaps it better). */
+static void kin_run(kin *kp, fw_track *out, int k0, int k1, double dt)
+{
+    kin kn = *kp;
+    const double *sp = out->sin_psi, *cp = out->cos_psi, *rr = out->r;
+    for (int k = k0; k < k1; k++) {
+        kin_step(&kn, sp[k - 1], cp[k - 1], sp[k], cp[k], rr[k], dt);
+        out->east[k] = kn.east;
+        out->north[k] = kn.north;
+    }
+    *kp = kn;
+}
+
+/* Headings, yaw rates and rudder angles of samples g->k .. kmax-1 within the
+ * present piece (their positions: kin_run).  The state it carries from sample
+ * to sample is worked on in locals (the stores into the track may alias the
+ * generator otherwise), and only that is written back: the candidates are
+ * extended a chunk at a time, and copying the whole generator in and out
+ * cost more than a chunk's headings. */
 static void piece_run(fw_track_gen *gp, fw_track *out, int kmax)
 {
-    fw_track_gen g = *gp;
-    fw_track_piece q = gp->q;
-    const fw_nomoto_piece pc = q.pc;
-    const double dt = g.dt, dl0 = g.piece_delta0[g.p], rh = g.piece_rho[g.p];
-    for (; g.k < kmax && g.k * dt < q.t_end; g.k++, q.tau += dt) {
-        double tau = q.tau;
-        double h = pc.h0 * q.e2 + q.A * q.ph;
-        double hd = pc.h1 * q.e2 + q.B * q.ph;
-        double H = -q.TT * (hd - pc.h1) - q.TS * (h - pc.h0);
+    const fw_track_piece *qp = &gp->q;
+    const fw_nomoto_piece pc = qp->pc;
+    const double dt = gp->dt, dl0 = gp->piece_delta0[gp->p], rh = gp->piece_rho[gp->p];
+    const double t_end = qp->t_end, A = qp->A, B = qp->B, TT = qp->TT, TS = qp->TS;
+    const double E1 = qp->E1, E2 = qp->E2, phidt = qp->phidt;
+    const double turned0 = gp->turned0, max_turn = gp->max_turn, psi0 = gp->psi0;
+    double tau = qp->tau, e2 = qp->e2, ph = qp->ph;
+    double sn = gp->sn, cs = gp->cs, prev_turn = gp->prev_turn;
+    bool steadied = gp->steadied;
+    int k = gp->k;
+    for (; k < kmax && k * dt < t_end; k++, tau += dt) {
+        double h = pc.h0 * e2 + A * ph;
+        double hd = pc.h1 * e2 + B * ph;
+        double H = -TT * (hd - pc.h1) - TS * (h - pc.h0);
         double r = pc.c0 + pc.b * tau + h, rd = pc.b + hd;
-        double turn = g.turned0 + pc.c0 * tau + 0.5 * pc.b * tau * tau + H;
+        double turn = turned0 + pc.c0 * tau + 0.5 * pc.b * tau * tau + H;
         double dl = dl0 + rh * tau;
-        if (g.steadied) {
-            turn = g.prev_turn;
+        if (steadied) {
+            turn = prev_turn;
             r = rd = 0.0;
             dl = 0.0;
-        } else if (g.max_turn > 0.0 && fabs(turn) >= g.max_turn) {
+        } else if (max_turn > 0.0 && fabs(turn) >= max_turn) {
             /* clamped at the sample: the steadying is instantaneous in
              * the prediction, an error of at most r dt in heading */
-            g.steadied = true;
-            turn = copysign(g.max_turn, turn);
+            steadied = true;
+            turn = copysign(max_turn, turn);
             r = rd = 0.0;
             dl = 0.0;
         }
-        if (g.k > 0) {
-            double ps = g.sn, pcs = g.cs;
-            rotate(&g.sn, &g.cs, turn - g.prev_turn);
-            kin_step(&g.kn, ps, pcs, g.sn, g.cs, r, dt);
-        }
-        g.prev_turn = turn;
-        int k = g.k;
-        out->east[k] = g.kn.east;
-        out->north[k] = g.kn.north;
-        out->psi[k] = g.psi0 + turn;
+        if (k > 0)
+            rotate(&sn, &cs, turn - prev_turn);
+        prev_turn = turn;
+        out->psi[k] = psi0 + turn;
         out->r[k] = r;
         out->rdot[k] = rd;
         out->delta[k] = dl;
-        out->sin_psi[k] = g.sn;
-        out->cos_psi[k] = g.cs;
-        double ph_next = q.E1 * q.ph + q.e2 * q.phidt;
-        q.e2 *= q.E2;
-        q.ph = ph_next;
+        out->sin_psi[k] = sn;
+        out->cos_psi[k] = cs;
+        double ph_next = E1 * ph + e2 * phidt;
+        e2 *= E2;
+        ph = ph_next;
     }
-    g.q = q;
-    *gp = g;
+    gp->k = k;
+    gp->q.tau = tau, gp->q.e2 = e2, gp->q.ph = ph;
+    gp->sn = sn, gp->cs = cs, gp->prev_turn = prev_turn;
+    gp->steadied = steadied;
 }
 
-void fw_track_extend(fw_track_gen *g, fw_track *out, int kmax)
+/* Headings of samples g->k .. kmax-1, piece by piece. */
+static void headings(fw_track_gen *g, fw_track *out, int kmax)
 {
     if (kmax > g->n)
         kmax = g->n;
@@ -258,6 +313,23 @@ void fw_track_extend(fw_track_gen *g, fw_track *out, int kmax)
         g->p++;
         g->in_piece = false;
     }
+}
+
+/* The first sample of positions to make (sample 0 is the start). */
+static int kin_from(fw_track_gen *g, fw_track *out, int k0)
+{
+    if (k0 == 0 && g->k > 0) {
+        out->east[0] = g->kn.east;
+        out->north[0] = g->kn.north;
+    }
+    return k0 > 1 ? k0 : 1;
+}
+
+void fw_track_extend(fw_track_gen *g, fw_track *out, int kmax)
+{
+    int k0 = g->k;
+    headings(g, out, kmax);
+    kin_run(&g->kn, out, kin_from(g, out, k0), g->k, g->dt);
 }
 
 fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,

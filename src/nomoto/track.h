@@ -93,12 +93,31 @@ typedef struct fw_track_gen { /* the predictor's state between extensions */
     double dt, max_turn, psi0;
     int n, k, p;              /* samples in all, computed; rudder piece */
     bool in_piece, steadied;
+    bool have_E;              /* q's one-step factors made (the same in every piece) */
     double r0, v0, turned0;   /* at the start of piece p */
     double sn, cs, prev_turn; /* heading at sample k - 1 */
 } fw_track_gen;
 
 fw_status fw_track_start(const fw_ship *ship, const fw_track_def *def, const fw_own_state *s,
                          double helm, fw_track *out, fw_track_gen *g, fw_error *err);
+
+/* What starting a track from an own state computes whatever the helm (the
+ * speed and drift state, the heading's unit vector: sines, cosines and
+ * exponentials), kept for a knowledge base so that the candidates of one
+ * decision start from it: fw_track_start_from with origin[2] (one per
+ * knowledge base, ship.h; valid = false before the first) fills it the first
+ * time and copies it after.  The tracks are fw_track_start's to the bit; the
+ * origin holds for the own state it was made from only. */
+typedef struct fw_track_origin {
+    bool valid;
+    double dt;
+    fw_track_kin kn;
+    double sn, cs;
+} fw_track_origin;
+
+fw_status fw_track_start_from(const fw_ship *ship, const fw_track_def *def,
+                              const fw_own_state *s, double helm, fw_track *out,
+                              fw_track_gen *g, fw_track_origin origin[2], fw_error *err);
 void fw_track_extend(fw_track_gen *g, fw_track *out, int kmax);
 
 /* A heading autopilot: helm = -kp (psi - psi_ref) - kd r, within +-max_helm. */
