@@ -33,7 +33,9 @@ import sys
 
 
 def run(*cmd):
-    return subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    # the tools' output parsed as the C locale writes it
+    env = dict(os.environ, LC_ALL="C")
+    return subprocess.run(cmd, check=True, capture_output=True, text=True, env=env).stdout
 
 
 def needed(lib):
