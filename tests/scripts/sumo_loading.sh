@@ -35,21 +35,33 @@ report nosuch.db
 run --help
 LIST
 echo "non-simulating commands: no libsumocpp"
+# netconvert runs too (the network cache off: always), and it links GDAL: the
+# checks below are of the process that loaded the libsumo module
+export FAIRWAY_NETCACHE=off
 n=$(loads run "$FAIRWAY_DATA/scenarios/paper/1-head-on.yaml" --out runs)
 grep -q "ok$" out || { echo "the run failed:"; cat out; exit 1; }
 [ "$n" -eq 1 ] || { echo "a simulating run loaded libsumocpp $n times, not once"; exit 1; }
+# the lines of the process that loaded the libsumo module
+own_lines() {
+  local pid
+  pid=$(grep 'file=[^ ]*/fairway-libsumo\.so' loader.txt | head -1 | cut -d: -f1 | tr -d ' ')
+  grep "^ *$pid:" loader.txt
+}
+own_lines > module.txt
 # the GUI libraries: the stand-ins, by SONAME, and no real one
-stubs=$(dirname "$(grep -o 'file=[^ ]*/fairway-libsumo\.so' loader.txt | head -1 | cut -d= -f2)")/gui-stubs
+stubs=$(dirname "$(grep -o 'file=[^ ]*/fairway-libsumo\.so' module.txt | head -1 | cut -d= -f2)")/gui-stubs
 [ -s "$stubs/stubs.txt" ] || { echo "no stand-ins listed in $stubs/stubs.txt"; exit 1; }
 while IFS= read -r so; do
-  grep -q "file=$stubs/$so .*dynamically loaded" loader.txt || { echo "stand-in $so not opened"; exit 1; }
-  if grep -E "file=$so \[0\];  needed by" loader.txt | grep -q .; then
-    echo "the real $so was looked for: $(grep -m1 "file=$so" loader.txt)"; exit 1
+  grep -q "file=$stubs/$so .*dynamically loaded" module.txt || { echo "stand-in $so not opened"; exit 1; }
+  if grep -E "file=$so \[0\];  needed by" module.txt | grep -q .; then
+    echo "the real $so was looked for: $(grep -m1 "file=$so" module.txt)"; exit 1
   fi
 done < "$stubs/stubs.txt"
-grep -q 'file=libgdal\.so' loader.txt && { echo "GDAL mapped: $(grep -m1 'file=libgdal' loader.txt)"; exit 1; }
+grep -q 'file=libgdal\.so' module.txt && { echo "GDAL mapped: $(grep -m1 'file=libgdal' module.txt)"; exit 1; }
+grep -q 'needed by [^ ]*netconvert' loader.txt || { echo "netconvert did not run (cache off)"; exit 1; }
 real=$(FAIRWAY_SUMO_GUI_LIBS=load loads run "$FAIRWAY_DATA/scenarios/paper/1-head-on.yaml" --out real)
-grep -q 'file=libgdal\.so.*needed by' loader.txt || { echo "FAIRWAY_SUMO_GUI_LIBS=load did not map GDAL"; exit 1; }
+own_lines > module.txt
+grep -q 'file=libgdal\.so.*needed by' module.txt || { echo "FAIRWAY_SUMO_GUI_LIBS=load did not map GDAL"; exit 1; }
 [ "$real" -eq 1 ] || { echo "with the real GUI libraries libsumocpp was mapped $real times"; exit 1; }
 for f in own.csv encounters.csv summary.json; do
   cmp "runs/paper-1-head-on/$f" "real/paper-1-head-on/$f" || { echo "$f differs with the real GUI libraries"; exit 1; }
