@@ -46,7 +46,6 @@ int fw_prep_path_len(const fw_track_def *def);
 typedef struct fw_chunk_boxes {
     int nseg, nch;                  /* segments; chunks with a box */
     double b[FW_MAX_CHUNKS][4];     /* east min, max, north min, max */
-    double w[FW_MAX_CHUNKS];        /* the most the heading's unit vector moves in a step */
 } fw_chunk_boxes;
 
 /* Prepares t[0..n-1]; a target with a predictor gets its path in paths (room
