@@ -123,21 +123,15 @@ static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double
     }
 }
 
-/* Box t grown by r misses box b. */
-static inline bool box_misses(const double t[4], double r, const double b[4])
-{
-    return t[0] - r > b[1] || t[1] + r < b[0] || t[2] - r > b[3] || t[3] + r < b[2];
-}
-
 /* Inlined in the scans: the prepared box when there is one. */
 static inline bool chunk_misses(double dt, const fw_prep_target *g, int j, int nseg,
                                 const double b[4])
 {
     if (g->box && j < g->nbox && nseg == g->box_nseg)
-        return box_misses(g->box + FW_PBOX * j, g->reach, b);
+        return fw_box_misses(g->box + FW_PBOX * j, g->reach, b);
     double t[4];
     path_box(dt, g, j, nseg, t);
-    return box_misses(t, g->reach, b);
+    return fw_box_misses(t, g->reach, b);
 }
 
 bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4])
