@@ -59,6 +59,19 @@ fw_status fw_cand_open(fw_helm_ctx *c, int side, int i, int *slot, fw_error *err
     return FW_OK;
 }
 
+/* fw_target_min2_cap of target i over chunk j of slot, that is INFINITY
+ * when the box test misses: made here first, inlined. */
+static inline double chunk_min2(fw_helm_ctx *c, int slot, int i, int j, double stop2,
+                                double cap2)
+{
+    const fw_chunk_boxes *cb = &c->boxes[slot];
+    const fw_prep_target *g = &c->prep[i];
+    if (j < cb->nch && j * FW_CHUNK < cb->nseg &&
+        fw_chunk_misses_in(c->def.track.dt, g, j, cb->nseg, cb->b[j]))
+        return INFINITY;
+    return fw_target_min2_cap(&c->def.domain, &c->tracks[slot], cb, g, j, j + 1, stop2, cap2);
+}
+
 /* A value v met for target i lowers the smallest so far (*best, met for
  * *lim): as chosen_clearance in helm_search.c finds it, the lowest index of
  * the targets that meet it (a value equal to the cap is tested exactly, so a
@@ -79,8 +92,6 @@ static inline void lower_to(double *best, int *lim, double v, int i)
  * Returns that value, or (none below stop2) some value >= stop2. */
 double fw_cand_fails(fw_helm_ctx *c, int slot, double stop2)
 {
-    const fw_track *tr = &c->tracks[slot];
-    const fw_chunk_boxes *cb = &c->boxes[slot];
     for (int j = 0; j < c->nchunks; j++) {
         int na = c->nact[j], *a = c->act + (size_t)j * (size_t)c->cap;
         if (na == 0)
@@ -88,16 +99,14 @@ double fw_cand_fails(fw_helm_ctx *c, int slot, double stop2)
         fw_cand_chunk(c, slot, j);
         for (int p = 0; p < na; p++) {
             /* values above stop2 do not matter */
-            double m2 = fw_target_min2_cap(&c->def.domain, tr, cb, &c->prep[a[p]], j, j + 1,
-                                           stop2, stop2);
+            double m2 = chunk_min2(c, slot, a[p], j, stop2, stop2);
             if (m2 < stop2) {
                 int i = a[p], lim = i;
                 /* the rest of the chunk too, for the fallback: its bound is
                  * then the chunk's smallest value (the targets before gave
                  * none below stop2), and it goes on from the next chunk */
                 for (int q = p + 1; q < na; q++) {
-                    double v = fw_target_min2_cap(&c->def.domain, tr, cb, &c->prep[a[q]], j,
-                                                  j + 1, 0.0, m2);
+                    double v = chunk_min2(c, slot, a[q], j, 0.0, m2);
                     lower_to(&m2, &lim, v, a[q]);
                 }
                 memmove(a + 1, a, sizeof *a * (size_t)p);
@@ -128,8 +137,7 @@ static void scan_on(fw_helm_ctx *c, int slot, double below)
         if (p < na)
             fw_cand_chunk(c, slot, j);
         for (; p < na && !(best < below); p++) {
-            double m2 = fw_target_min2_cap(&c->def.domain, &c->tracks[slot], &c->boxes[slot],
-                                           &c->prep[a[p]], j, j + 1, 0.0, best);
+            double m2 = chunk_min2(c, slot, a[p], j, 0.0, best);
             lower_to(&best, &lim, m2, a[p]);
         }
         if (p >= na)

@@ -92,7 +92,6 @@ void fw_track_box(const fw_track *tr, fw_chunk_boxes *cb, int j)
         n1 = mx(n1, tr->north[k]);
     }
     cb->b[j][0] = e0, cb->b[j][1] = e1, cb->b[j][2] = n0, cb->b[j][3] = n1;
-    cb->w[j] = unit_step(tr->sin_psi, tr->cos_psi, k0, k1);
 }
 
 void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
@@ -124,21 +123,15 @@ static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double
     }
 }
 
-/* Box t grown by r misses box b. */
-static inline bool box_misses(const double t[4], double r, const double b[4])
-{
-    return t[0] - r > b[1] || t[1] + r < b[0] || t[2] - r > b[3] || t[3] + r < b[2];
-}
-
 /* Inlined in the scans: the prepared box when there is one. */
 static inline bool chunk_misses(double dt, const fw_prep_target *g, int j, int nseg,
                                 const double b[4])
 {
     if (g->box && j < g->nbox && nseg == g->box_nseg)
-        return box_misses(g->box + FW_PBOX * j, g->reach, b);
+        return fw_box_misses(g->box + FW_PBOX * j, g->reach, b);
     double t[4];
     path_box(dt, g, j, nseg, t);
-    return box_misses(t, g->reach, b);
+    return fw_box_misses(t, g->reach, b);
 }
 
 bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4])
@@ -204,7 +197,6 @@ void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb)
         u->b[j][1] = mx(u->b[j][1], cb->b[j][1]);
         u->b[j][2] = mn(u->b[j][2], cb->b[j][2]);
         u->b[j][3] = mx(u->b[j][3], cb->b[j][3]);
-        u->w[j] = mx(u->w[j], cb->w[j]);
     }
 }
 
@@ -269,15 +261,19 @@ static inline void axes_at(const fw_domain_def *dom, const fw_track *tr, const f
  * is more), and lambda^2 at least that squared over the largest axes.  The
  * margins (1e-6 relative, 1e-6 m) cover the rounding of the offsets and of
  * the unit vectors' lengths (1e-10). */
-static inline bool chunk_above(const fw_domain_def *dom, const fw_prep_target *g,
-                               const fw_chunk_boxes *cb, int j, double cap)
+static inline bool chunk_above(const fw_domain_def *dom, const fw_track *tr,
+                               const fw_prep_target *g, const fw_chunk_boxes *cb, int j, int k0,
+                               int k1, double cap)
 {
     const double *t = g->box + FW_PBOX * j, *b = cb->b[j];
     double gx = mx(0.0, mx(t[0] - b[1], b[0] - t[1])), gy = mx(0.0, mx(t[2] - b[3], b[2] - t[3]));
     double m = mn(g->ia_min, g->ib_min), d2 = gx * gx + gy * gy;
     if (!(d2 * m * (1.0 - 1e-6) > cap))
         return false; /* not even without the frame's turn */
-    double w = dom->reading == FW_DOMAIN_TRANSVERSE ? t[4] : cb->w[j];
+    /* the own heading's step made here, where it is needed (a chunk in six
+     * of those boxed gets this far) */
+    double w = dom->reading == FW_DOMAIN_TRANSVERSE ? t[4]
+                                                    : unit_step(tr->sin_psi, tr->cos_psi, k0, k1);
     /* the largest distance over by its L1 norm (no second root) */
     double hx = mx(t[1] - b[0], b[1] - t[0]), hy = mx(t[3] - b[2], b[3] - t[2]);
     double d = sqrt(d2) * (1.0 - 1e-6) - w * (1.0 + 1e-6) * (hx + hy) - 1e-6;
@@ -296,7 +292,7 @@ double fw_target_min2_cap(const fw_domain_def *dom, const fw_track *tr, const fw
         /* (below 1 only: the box test has culled what lies farther out) */
         double cap = tmin2 < cap2 ? tmin2 : cap2;
         if (cap < 1.0 && j < cb->nch && g->box && j < g->nbox && cb->nseg == g->box_nseg &&
-            chunk_above(dom, g, cb, j, cap))
+            chunk_above(dom, tr, g, cb, j, k0, k1, cap))
             continue;
         chunk_offsets(dom, tr, g, k0, k1, x, y, gs, gc);
         double pa = 0, pb = 0; /* axes of the segment's first sample, when made */

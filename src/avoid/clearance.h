@@ -46,7 +46,6 @@ int fw_prep_path_len(const fw_track_def *def);
 typedef struct fw_chunk_boxes {
     int nseg, nch;                  /* segments; chunks with a box */
     double b[FW_MAX_CHUNKS][4];     /* east min, max, north min, max */
-    double w[FW_MAX_CHUNKS];        /* the most the heading's unit vector moves in a step */
 } fw_chunk_boxes;
 
 /* Prepares t[0..n-1]; a target with a predictor gets its path in paths (room
@@ -76,6 +75,23 @@ static inline void fw_prep_at(const fw_prep_target *g, int k, double tk, double 
 
 /* Does the target's path over chunk j, grown by its reach, miss box b? */
 bool fw_chunk_misses(double dt, const fw_prep_target *g, int j, int nseg, const double b[4]);
+
+/* Box t grown by r misses box b (both east min, max, north min, max). */
+static inline bool fw_box_misses(const double t[4], double r, const double b[4])
+{
+    return t[0] - r > b[1] || t[1] + r < b[0] || t[2] - r > b[3] || t[3] + r < b[2];
+}
+
+/* fw_chunk_misses, inlined where g has its prepared box: the scans test
+ * each target's chunk before they call fw_target_min2_cap for it (most
+ * miss, and the call cost more than the test). */
+static inline bool fw_chunk_misses_in(double dt, const fw_prep_target *g, int j, int nseg,
+                                      const double b[4])
+{
+    if (g->box && j < g->nbox && nseg == g->box_nseg)
+        return fw_box_misses(g->box + FW_PBOX * j, g->reach, b);
+    return fw_chunk_misses(dt, g, j, nseg, b);
+}
 /* Doubles of box room fw_prep_boxes needs per target for tracks of nseg segments. */
 int fw_prep_box_len(int nseg);
 /* g's path boxes for tracks of nseg segments into room (fw_prep_box_len

@@ -189,6 +189,20 @@ fw_status fw_track_start_from(const fw_ship *ship, const fw_track_def *def,
     return FW_OK;
 }
 
+/* fw_nomoto_phi(T1, T2, t) from e2 = exp(-t / T2) made already (and
+ * *e1 = exp(-t / T1) if e1 is not NULL): its operations on the same values,
+ * so the same bits, without making the exponentials again. */
+static double phi_from(double T1, double T2, double t, const double *e1, double e2)
+{
+    double dT = T1 - T2;
+    double x = t * dT / (T1 * T2);
+    if (fabs(x) < 1e-3) {
+        double s = 1.0 + x * (0.5 + x * (1.0 / 6.0 + x / 24.0));
+        return e2 * t / (T1 * T2) * s;
+    }
+    return ((e1 ? *e1 : exp(-t / T1)) - e2) / dT;
+}
+
 /* Enters piece g->p at sample g->k: its response from the state reached, and
  * the recurrences' factors if a sample falls in it. */
 static void piece_enter(fw_track_gen *g)
@@ -206,14 +220,15 @@ static void piece_enter(fw_track_gen *g)
         q->tau = g->k * dt - g->piece_start[p];
         if (!g->have_E) { /* the same for every piece of the track */
             q->E1 = exp(-dt / ix->T1), q->E2 = exp(-dt / ix->T2);
-            q->phidt = fw_nomoto_phi(ix->T1, ix->T2, dt);
+            q->phidt = phi_from(ix->T1, ix->T2, dt, &q->E1, q->E2);
             g->have_E = true;
         }
         if (q->tau == 0.0 && !signbit(q->tau)) {
             /* what exp(-0 / T2) and phi(+0) give (the ramp from the start) */
             q->e2 = 1.0, q->ph = 0.0;
         } else {
-            q->e2 = exp(-q->tau / ix->T2), q->ph = fw_nomoto_phi(ix->T1, ix->T2, q->tau);
+            q->e2 = exp(-q->tau / ix->T2);
+            q->ph = phi_from(ix->T1, ix->T2, q->tau, NULL, q->e2);
         }
         q->A = ix->T1 * (ix->T2 * q->pc.h1 + q->pc.h0);
         q->B = ix->T1 * (ix->T2 * q->pc.h2 + q->pc.h1);
