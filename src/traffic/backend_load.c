@@ -28,7 +28,7 @@ static void close_stubs(void)
 }
 
 /* The stand-ins for libsumocpp's GUI libraries (scripts/sumo_gui_stubs.py:
- * GDAL, FFmpeg, OpenSceneGraph, gl2ps and the 200 libraries behind them,
+ * GDAL, FFmpeg, OpenSceneGraph, gl2ps and some 150 libraries behind them,
  * which only sumo-gui's code calls), opened before the libsumo module: the
  * loader then takes them for libsumocpp's dependencies of the same SONAME
  * and maps none of the real ones, which cost 0.1 s of linking per process.
