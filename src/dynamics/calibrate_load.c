@@ -82,7 +82,7 @@ static fw_status load_turn(const yt_doc *doc, const yt_node *m, const char *path
                               &t->sim_tactical_diameter, &t->sim_steady_rate, err)))
             return st;
     }
-    double kn, deg, sign;
+    double kn = 0.0, deg = 0.0, sign = 0.0; /* each read before use; -O3 cannot tell */
     t->weight = 1.0;
     if ((st = read_side(doc, m, path, &sign, err)) ||
         (st = yt_req_number(doc, m, path, "speed_kn", 0.5, 40.0, &kn, err)) ||

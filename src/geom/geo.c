@@ -133,7 +133,9 @@ fw_status fw_geo_convergence(const fw_geo *g, double lat_deg, double lon_deg, do
 {
     /* from the plane itself: the grid direction of a short step due north */
     const double d = 1e-4; /* deg, about 11 m */
-    double e0, n0, e1, n1;
+    /* set though every path that reads them writes them first: gcc -O3
+     * cannot see through trans() and would stop a Release build */
+    double e0 = 0.0, n0 = 0.0, e1 = 0.0, n1 = 0.0;
     fw_status st = fw_geo_to_plane(g, lat_deg - d, lon_deg, &e0, &n0, err);
     if (!st)
         st = fw_geo_to_plane(g, lat_deg + d, lon_deg, &e1, &n1, err);
