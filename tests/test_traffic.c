@@ -101,7 +101,7 @@ static void test_sumo_args(void)
     }
     CHECK_CONTAINS(line, "sumo --net-file n.net.xml --route-files r.rou.xml ");
     CHECK_CONTAINS(line, "--step-length 0.5 --seed 42 --time-to-teleport -1 ");
-    CHECK_CONTAINS(line, "--collision.action warn ");
+    CHECK_CONTAINS(line, "--collision.action none ");
     CHECK_CONTAINS(line, "--log run.log ");
     CHECK_CONTAINS(line, "--remote-port 9999 ");
     CHECK(strstr(line, "--additional-files") == NULL);

@@ -86,11 +86,16 @@ fw_status fw_traffic_sumo_args(const fw_traffic_def *def, const char *program, i
     NUM("%.17g", def->step);
     ARG("--seed");
     NUM("%lu", def->seed);
-    /* ships are never teleported; collisions are fairway's to judge */
+    /* Ships are never teleported, and collisions are fairway's to judge: its
+     * monitors test the hulls of every pair (survey/monitor.h) and its records the own
+     * ship's.  SUMO's own check ("warn" only logs) moves no ship, and on the
+     * strait's lanes it cost a third of SUMO's step (0.30 s against 0.18 s of
+     * CPU for the base hour, same ship positions to the byte in its FCD), so
+     * SUMO is told not to look at all. */
     ARG("--time-to-teleport");
     ARG("-1");
     ARG("--collision.action");
-    ARG("warn");
+    ARG("none");
     /* lane changes as ship manoeuvres, not jumps (traffic.h) */
     if (def->lane_change_s > 0.0) {
         ARG("--lanechange.duration");
