@@ -3,10 +3,16 @@
  * (scenarios/traffic/dover-crossing.yaml: one simulated hour, colregs
  * traffic) against the `sumo` binary stepping the same network and the same
  * demand (the route file that run wrote) for the same hour, with nothing of
- * ours in it: no own ship, no subscription, no reactions.
+ * ours in it: no own ship, no subscription, no reactions, and the options
+ * fairway gives SUMO (src/traffic/sumoargs.c), so that the floor is the
+ * cheapest SUMO that moves these ships as fairway's does.  W, "sumo, collision
+ * check on", is the same sumo with SUMO's own collision check ("warn"), as
+ * fairway ran it until 2026-12-02 and as the issue first measured it: it moves
+ * every ship the same (its FCD output is the same bytes) and costs a third
+ * more; A/W is printed beside A/B, never instead of it.
  *
  * Whole processes, start-up included (that is what a study pays per run):
- * RUNS rounds, each running A, (A0,) B in turn, CPU (user + system, the
+ * RUNS rounds, each running A, (A0,) B, W, L in turn, CPU (user + system, the
  * kernel's accounting of the reaped child) and wall.  Printed: the medians,
  * the median of the pairwise ratios and their range (the spread).  A0, if
  * given, is a baseline fairway (say the build of the commit before a change)
@@ -126,14 +132,14 @@ static void print_ratio(const char *what, const double *ac, const double *bc, co
 {
     double lo, hi, wlo, whi;
     double c = ratio_median(ac, bc, RUNS, &lo, &hi), w = ratio_median(aw, bw, RUNS, &wlo, &whi);
-    printf("%-22s %10.2f %10.2f   cpu range %.2f-%.2f\n", what, c, w, lo, hi);
+    printf("%-26s %10.2f %10.2f   cpu range %.2f-%.2f\n", what, c, w, lo, hi);
 }
 
 static void print_median(const char *what, const double *cpu, const double *wall)
 {
     double t[RUNS], u[RUNS];
     memcpy(t, cpu, sizeof t), memcpy(u, wall, sizeof u);
-    printf("%-22s %10.3f %10.3f\n", what, bench_median(t, RUNS), bench_median(u, RUNS));
+    printf("%-26s %10.3f %10.3f\n", what, bench_median(t, RUNS), bench_median(u, RUNS));
 }
 
 /* The medians and ratios of A (ac, aw), A0 (oc, ow; oc NULL: none), B and L. */
@@ -141,7 +147,7 @@ static void report(const double *ac, const double *aw, const double *oc, const d
                    const double *bc, const double *bw, const double *lc, const double *lw,
                    double split[4][RUNS], double ph[NPHASE][RUNS])
 {
-    printf("%-22s %10s %10s\n", "", "cpu_s", "wall_s");
+    printf("%-26s %10s %10s\n", "", "cpu_s", "wall_s");
     print_median("fairway run", ac, aw);
     print_profile(ph);
     if (oc)
@@ -184,9 +190,15 @@ int main(int argc, char **argv)
     snprintf(rou, sizeof rou, "%s/r0/dover-crossing/sumo/demand.rou.xml", dir);
     const char *sumo[] = {"sumo", "--net-file", net, "--route-files", rou, "--additional-files",
                           types, "--step-length", "1", "--seed", "1", "--time-to-teleport", "-1",
-                          "--collision.action", "warn", "--lanechange.duration", "2800",
+                          "--collision.action", "none", "--lanechange.duration", "2800",
                           "--no-step-log", "true", "--duration-log.disable", "true", "--end",
                           "3600", "--log", "/dev/null", NULL};
+    /* W: the same with SUMO's collision check on */
+    const char *sumo_warn[sizeof sumo / sizeof *sumo];
+    memcpy(sumo_warn, sumo, sizeof sumo);
+    for (int i = 0; sumo_warn[i]; i++)
+        if (strcmp(sumo_warn[i], "--collision.action") == 0)
+            sumo_warn[i + 1] = "warn";
     /* L's argv: this program, the mode, then sumo's own */
     char self[PATH_MAX], split_file[128], prof_file[128];
     ssize_t sn = readlink("/proc/self/exe", self, sizeof self - 1);
@@ -201,6 +213,7 @@ int main(int argc, char **argv)
     snprintf(split_file, sizeof split_file, "%s/split.txt", dir);
     snprintf(prof_file, sizeof prof_file, "%s/profile.txt", dir);
     double ac[RUNS], aw[RUNS], oc[RUNS], ow[RUNS], bc[RUNS], bw[RUNS], lc[RUNS], lw[RUNS];
+    double wc[RUNS], ww[RUNS];
     double split[4][RUNS], ph[NPHASE][RUNS];
     if (csv)
         fprintf(csv, "round,program,cpu_s,wall_s\n");
@@ -222,6 +235,7 @@ int main(int argc, char **argv)
             bench_proc_run(run0, NULL, &oc[k - 1], &ow[k - 1]);
         }
         bench_proc_run(sumo, NULL, &bc[k - 1], &bw[k - 1]);
+        bench_proc_run(sumo_warn, NULL, &wc[k - 1], &ww[k - 1]);
         bench_proc_run(lib, split_file, &lc[k - 1], &lw[k - 1]);
         double sp[4];
         read_split(split_file, sp);
@@ -232,10 +246,14 @@ int main(int argc, char **argv)
             if (base)
                 fprintf(csv, "%d,baseline,%.4f,%.4f\n", k, oc[k - 1], ow[k - 1]);
             fprintf(csv, "%d,sumo,%.4f,%.4f\n", k, bc[k - 1], bw[k - 1]);
+            fprintf(csv, "%d,sumo_collision_check,%.4f,%.4f\n", k, wc[k - 1], ww[k - 1]);
             fprintf(csv, "%d,libsumo,%.4f,%.4f\n", k, lc[k - 1], lw[k - 1]);
         }
     }
     report(ac, aw, base ? oc : NULL, ow, bc, bw, lc, lw, split, ph);
+    print_median("sumo, collision check on", wc, ww);
+    print_ratio("ratio fairway/that", ac, wc, aw, ww);
+    print_ratio("ratio that/sumo", wc, bc, ww, bw);
     if (csv && fclose(csv) != 0)
         perror(argv[1]);
     char cmd[128];
