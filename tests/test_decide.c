@@ -14,7 +14,8 @@
  * tests/data/digests/decisions.txt, made before the change (the odd groups'
  * after it: theirs only lock them): that also checks the predicted tracks,
  * which both searches share.  The scans' chunk bound (clearance.c) is also
- * checked chunk by chunk against the same scans without it.
+ * checked chunk by chunk against the same scans without it, and the reach
+ * window's shortcut for targets out of reach against every chunk's test.
  * FAIRWAY_WRITE_DIGESTS=FILE writes the digests found instead. */
 #include <stdint.h>
 #include <stdlib.h>
@@ -384,12 +385,56 @@ static void test_chunk_bound(void)
     fw_track_free(&t);
 }
 
+/* fw_prep_reach's one test for a target out of reach over the whole horizon
+ * gives the window that every chunk's test gives (fw_prep_boxes and then
+ * fw_reach_window), in mixed and dense scenes, with and without a predictor,
+ * at the own ship's speed and at speeds from 0 to twice it. */
+static void test_reach_window(void)
+{
+    enum { NT = 40 };
+    fw_helm_def hdef = fw_default_helm_def();
+    int ns = fw_track_samples(&hdef.track), plen = fw_prep_path_len(&hdef.track);
+    int blen = fw_prep_box_len(ns - 1);
+    static fw_target tg[NT];
+    static fw_prep_target g[NT];
+    double *paths = malloc(sizeof(double) * (size_t)(NT * plen));
+    double *room = malloc(sizeof(double) * (size_t)(2 * blen));
+    CHECK(paths && room);
+    long targets = 0, culled = 0, empty = 0;
+    rng = 0x2545f4914f6cdd1dULL;
+    for (int s = 0; s < 200 && paths && room; s++) {
+        fw_own_state own = make_own(s % 3 != 0);
+        make_scene(&own, s % 4 == 0, tg, NT);
+        fw_prep_targets(&hdef.domain, &hdef.track, tg, NT, g, paths);
+        double umax = own.U * (s % 5 == 0 ? 2.0 * uniform() : 1.0);
+        for (int i = 0; i < NT; i++) {
+            fw_prep_target a = g[i], b = g[i];
+            int lo, hi, lo2, hi2;
+            fw_prep_boxes(hdef.track.dt, &a, ns - 1, room);
+            fw_reach_window(hdef.track.dt, &a, ns - 1, own.east, own.north, umax, &lo, &hi);
+            fw_prep_reach(hdef.track.dt, &b, ns - 1, own.east, own.north, umax, room + blen,
+                          &lo2, &hi2);
+            CHECK_MSG(lo == lo2 && hi == hi2, "scene %d target %d: window [%d, %d) vs [%d, %d)",
+                      s, i, lo, hi, lo2, hi2);
+            targets++;
+            empty += lo >= hi;
+            culled += b.nbox == 0;
+        }
+    }
+    printf("  reach windows: %ld targets, %ld out of reach, %ld of them by one test\n", targets,
+           empty, culled);
+    CHECK(culled > targets / 10 && culled <= empty); /* the shortcut is taken, and only then */
+    free(paths);
+    free(room);
+}
+
 int main(void)
 {
     const char *wd = getenv("FAIRWAY_WRITE_DIGESTS");
     if (wd && *wd && !(digest_out = fopen(wd, "w")))
         return 1;
     TEST_RUN(test_chunk_bound);
+    TEST_RUN(test_reach_window);
     TEST_RUN(test_decisions_unchanged);
     fw_track_free(&tr);
     if (digest_out)

@@ -101,11 +101,9 @@ void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
         fw_track_box(tr, cb, j);
 }
 
-/* The bounding box of the target's path over chunk j of a track of nseg
- * segments (as fw_prep_target.box, without the heading's step). */
-static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double t[4])
+/* The bounding box of the target's path over samples k0..k1. */
+static void path_box_over(double dt, const fw_prep_target *g, int k0, int k1, double t[4])
 {
-    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
     if (g->path) {
         const double *e = g->path, *n = g->path + g->ns;
         t[0] = e[k0], t[1] = t[0], t[2] = n[k0], t[3] = t[2];
@@ -121,6 +119,14 @@ static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double
         double na = g->north + g->vn * ta, nb = g->north + g->vn * tb;
         t[0] = mn(ea, eb), t[1] = mx(ea, eb), t[2] = mn(na, nb), t[3] = mx(na, nb);
     }
+}
+
+/* The bounding box of the target's path over chunk j of a track of nseg
+ * segments (as fw_prep_target.box, without the heading's step). */
+static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double t[4])
+{
+    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
+    path_box_over(dt, g, k0, k1, t);
 }
 
 /* Inlined in the scans: the prepared box when there is one. */
@@ -159,6 +165,13 @@ void fw_prep_boxes(double dt, fw_prep_target *g, int nseg, double *room)
     g->box = room, g->nbox = nch, g->box_nseg = nseg;
 }
 
+/* Every sample of a track's chunk ending at sample k1 is within R of the
+ * start; the margin covers the rounding of the positions summed step by step. */
+static inline double reach_radius(double dt, double umax, int k1)
+{
+    return umax * (k1 * dt) * (1.0 + 1e-9) + 1e-6;
+}
+
 void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
                      double umax, int *lo, int *hi)
 {
@@ -171,9 +184,7 @@ void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, do
     *lo = -1, *hi = 0;
     for (int j = 0; j < nch; j++) {
         int k1 = j * FW_CHUNK + FW_CHUNK < nseg ? j * FW_CHUNK + FW_CHUNK : nseg;
-        /* every sample of the chunk is within R of the start; the margin
-         * covers the rounding of the positions summed step by step */
-        double R = umax * (k1 * dt) * (1.0 + 1e-9) + 1e-6;
+        double R = reach_radius(dt, umax, k1);
         double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
         if (!chunk_misses(dt, g, j, nseg, env)) {
             if (*lo < 0)
@@ -188,6 +199,38 @@ void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, do
     }
     if (*lo < 0)
         *lo = 0;
+}
+
+/* Does the box of g's whole path over a track of nseg segments, grown by its
+ * reach, miss the square of the last chunk's radius about (e0, n0)?  Then
+ * every chunk's test in fw_reach_window misses too, on the same side: each
+ * chunk's box lies within the whole one (its samples are among the whole
+ * path's, or its ends east + ve t at times between 0 and nseg dt, and that
+ * rounds monotonically in t), each chunk's radius is at most the last one's,
+ * and the roundings of the grown box and of the square are monotonic. */
+static bool out_of_reach(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
+                         double umax)
+{
+    double t[4];
+    path_box_over(dt, g, 0, nseg, t);
+    double R = reach_radius(dt, umax, nseg);
+    double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
+    return fw_box_misses(t, g->reach, env);
+}
+
+void fw_prep_reach(double dt, fw_prep_target *g, int nseg, double e0, double n0, double umax,
+                   double *room, int *lo, int *hi)
+{
+    int nchunks = (nseg + FW_CHUNK - 1) / FW_CHUNK;
+    if (umax >= 0.0 && nchunks <= FW_MAX_CHUNKS && out_of_reach(dt, g, nseg, e0, n0, umax)) {
+        /* no chunk in the window: no box is ever looked at (none made;
+         * fw_chunk_misses_in would make one) */
+        g->box = room, g->nbox = 0, g->box_nseg = nseg;
+        *lo = 0, *hi = 0;
+        return;
+    }
+    fw_prep_boxes(dt, g, nseg, room);
+    fw_reach_window(dt, g, nseg, e0, n0, umax, lo, hi);
 }
 
 void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb)

@@ -109,6 +109,12 @@ void fw_prep_boxes(double dt, fw_prep_target *g, int nseg, double *room);
 void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
                      double umax, int *lo, int *hi);
 
+/* fw_prep_boxes and then fw_reach_window, the same window; a target whose
+ * whole path is out of reach (most of those in sight in a run) gets its
+ * window from one box test, and no boxes (nbox = 0: none is looked at). */
+void fw_prep_reach(double dt, fw_prep_target *g, int nseg, double e0, double n0, double umax,
+                   double *room, int *lo, int *hi);
+
 /* Smallest lambda^2 (normalised domain radius squared) of one target along
  * the track over chunks [j0, j1); returns early once below stop2. */
 double fw_target_min2(const fw_domain_def *dom, const fw_track *tr, const fw_chunk_boxes *cb,

@@ -323,9 +323,8 @@ static void keep_check(fw_helm_ctx *c, const fw_track *keep, const fw_target *t,
     res->limiting = -1;
     size_t blen = (size_t)fw_prep_box_len(kb->nseg);
     for (int i = 0; i < n; i++) {
-        fw_prep_boxes(c->def.track.dt, &c->prep[i], kb->nseg, c->pbox + (size_t)i * blen);
-        fw_reach_window(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
-                        c->umax, &c->jlo[i], &c->jhi[i]);
+        fw_prep_reach(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
+                      c->umax, c->pbox + (size_t)i * blen, &c->jlo[i], &c->jhi[i]);
         /* what matters: below 1 (a threat) and below the smallest yet */
         double m2 = fw_target_min2_cap(&c->def.domain, keep, kb, &c->prep[i], c->jlo[i],
                                        c->jhi[i], 0.0, kbest > 1.0 ? kbest : 1.0);
