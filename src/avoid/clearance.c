@@ -1,6 +1,7 @@
 #include "avoid/clearance.h"
 
 #include <math.h>
+#include <string.h>
 
 /* fmin/fmax are library calls at -O2 (they must handle NaN); these are
  * inlined, and the track and target data here are finite. */
@@ -41,18 +42,35 @@ static void axes_bound(const fw_domain_def *dom, fw_prep_target *g)
     g->ib_min = (1.0 - 1e-9) / (b * b);
 }
 
-void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const fw_target *t,
-                     int n, fw_prep_target *out, double *paths)
+/* Is m made from g's course, length and breadth (bit for bit)?  If not it is
+ * made now: what fw_prep_targets computes from them alone. */
+static void memo_fill(const fw_domain_def *dom, const fw_target *g, fw_prep_memo *m)
+{
+    if (m->valid && memcmp(&m->course, &g->course, sizeof m->course) == 0 &&
+        memcmp(&m->length, &g->length, sizeof m->length) == 0 &&
+        memcmp(&m->breadth, &g->breadth, sizeof m->breadth) == 0)
+        return;
+    fw_prep_target q = {.hl = 0.5 * g->length, .hb = 0.5 * g->breadth};
+    axes_bound(dom, &q);
+    *m = (fw_prep_memo){.valid = true, .course = g->course, .length = g->length,
+                        .breadth = g->breadth, .sc = sin(g->course), .cc = cos(g->course),
+                        .reach = fw_domain_reach(dom, g), .ia_min = q.ia_min,
+                        .ib_min = q.ib_min};
+}
+
+void fw_prep_targets_memo(const fw_domain_def *dom, const fw_track_def *tdef,
+                          const fw_target *t, int n, fw_prep_target *out, double *paths,
+                          fw_prep_memo *memo)
 {
     int len = fw_prep_path_len(tdef);
     for (int i = 0; i < n; i++) {
         const fw_target *g = &t[i];
-        double s = sin(g->course), c = cos(g->course);
+        fw_prep_memo here = {.valid = false}, *m = memo ? &memo[i] : &here;
+        memo_fill(dom, g, m);
         out[i] = (fw_prep_target){.east = g->east, .north = g->north,
-                                  .ve = g->speed * s, .vn = g->speed * c, .sc = s, .cc = c,
-                                  .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
-                                  .reach = fw_domain_reach(dom, g)};
-        axes_bound(dom, &out[i]);
+                                  .ve = g->speed * m->sc, .vn = g->speed * m->cc, .sc = m->sc,
+                                  .cc = m->cc, .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
+                                  .reach = m->reach, .ia_min = m->ia_min, .ib_min = m->ib_min};
         if (g->pred && paths) {
             out[i].ns = len / 4;
             fill_path(g, tdef, out[i].ns, paths);
@@ -60,6 +78,12 @@ void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const f
             paths += len;
         }
     }
+}
+
+void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const fw_target *t,
+                     int n, fw_prep_target *out, double *paths)
+{
+    fw_prep_targets_memo(dom, tdef, t, n, out, paths, NULL);
 }
 
 /* The most the unit vector (s, c) moves in a step over samples k0..k1. */
