@@ -5,8 +5,9 @@
  * a chunk whose box is farther than the target's reach from the target's
  * straight path over the same time is skipped, the others get the exact
  * per-segment ellipse test.  Targets are prepared once per decision (their
- * velocity, heading and hull terms, or the path their predictor gives), boxes
- * once per track.
+ * velocity, heading and hull terms, or the path their predictor gives; what
+ * comes of the course and hull alone kept from one decision to the next
+ * while they stay the same), boxes once per track.
  */
 #ifndef FW_CLEARANCE_H
 #define FW_CLEARANCE_H
