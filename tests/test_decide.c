@@ -14,7 +14,10 @@
  * tests/data/digests/decisions.txt, made before the change (the odd groups'
  * after it: theirs only lock them): that also checks the predicted tracks,
  * which both searches share.  The scans' chunk bound (clearance.c) is also
- * checked chunk by chunk against the same scans without it.
+ * checked chunk by chunk against the same scans without it, and the reach
+ * window's shortcut for targets out of reach against every chunk's test,
+ * and the targets' preparation kept from decision to decision against the
+ * preparation made afresh.
  * FAIRWAY_WRITE_DIGESTS=FILE writes the digests found instead. */
 #include <stdint.h>
 #include <stdlib.h>
@@ -384,12 +387,114 @@ static void test_chunk_bound(void)
     fw_track_free(&t);
 }
 
+/* fw_prep_reach's one test for a target out of reach over the whole horizon
+ * gives the window that every chunk's test gives (fw_prep_boxes and then
+ * fw_reach_window), in mixed and dense scenes, with and without a predictor,
+ * at the own ship's speed and at speeds from 0 to twice it. */
+static void test_reach_window(void)
+{
+    enum { NT = 40 };
+    fw_helm_def hdef = fw_default_helm_def();
+    int ns = fw_track_samples(&hdef.track), plen = fw_prep_path_len(&hdef.track);
+    int blen = fw_prep_box_len(ns - 1);
+    static fw_target tg[NT];
+    static fw_prep_target g[NT];
+    double *paths = malloc(sizeof(double) * (size_t)(NT * plen));
+    double *room = malloc(sizeof(double) * (size_t)(2 * blen));
+    CHECK(paths && room);
+    long targets = 0, culled = 0, empty = 0;
+    rng = 0x2545f4914f6cdd1dULL;
+    for (int s = 0; s < 200 && paths && room; s++) {
+        fw_own_state own = make_own(s % 3 != 0);
+        make_scene(&own, s % 4 == 0, tg, NT);
+        fw_prep_targets(&hdef.domain, &hdef.track, tg, NT, g, paths);
+        double umax = own.U * (s % 5 == 0 ? 2.0 * uniform() : 1.0);
+        for (int i = 0; i < NT; i++) {
+            fw_prep_target a = g[i], b = g[i];
+            int lo, hi, lo2, hi2;
+            fw_prep_boxes(hdef.track.dt, &a, ns - 1, room);
+            fw_reach_window(hdef.track.dt, &a, ns - 1, own.east, own.north, umax, &lo, &hi);
+            fw_prep_reach(hdef.track.dt, &b, ns - 1, own.east, own.north, umax, room + blen,
+                          &lo2, &hi2);
+            CHECK_MSG(lo == lo2 && hi == hi2, "scene %d target %d: window [%d, %d) vs [%d, %d)",
+                      s, i, lo, hi, lo2, hi2);
+            targets++;
+            empty += lo >= hi;
+            culled += b.nbox == 0;
+        }
+    }
+    printf("  reach windows: %ld targets, %ld out of reach, %ld of them by one test\n", targets,
+           empty, culled);
+    CHECK(culled > targets / 10 && culled <= empty); /* the shortcut is taken, and only then */
+    free(paths);
+    free(room);
+}
+
+/* Two prepared targets alike to the bit (their paths' values, not where they are). */
+static bool same_prep(const fw_prep_target *a, const fw_prep_target *b, int plen)
+{
+    double va[] = {a->east, a->north, a->ve, a->vn, a->sc, a->cc, a->hl, a->hb, a->reach,
+                   a->ia_min, a->ib_min};
+    double vb[] = {b->east, b->north, b->ve, b->vn, b->sc, b->cc, b->hl, b->hb, b->reach,
+                   b->ia_min, b->ib_min};
+    if (memcmp(va, vb, sizeof va) != 0 || !a->path != !b->path || a->ns != b->ns)
+        return false;
+    return !a->path || memcmp(a->path, b->path, sizeof(double) * (size_t)plen) == 0;
+}
+
+/* fw_prep_targets_memo over a run of decisions whose targets keep, or change
+ * by an ulp, their course and hull: what fw_prep_targets makes, to the bit. */
+static void test_prep_memo(void)
+{
+    enum { NT = 30 };
+    fw_helm_def hdef = fw_default_helm_def();
+    int plen = fw_prep_path_len(&hdef.track);
+    static fw_target tg[NT];
+    static fw_prep_target plain[NT], kept[NT];
+    static fw_prep_memo memo[NT];
+    double *pa = malloc(sizeof(double) * (size_t)(NT * plen));
+    double *pb = malloc(sizeof(double) * (size_t)(NT * plen));
+    CHECK(pa && pb);
+    long changed = 0, same = 0;
+    rng = 0x6a09e667f3bcc908ULL;
+    fw_own_state own = make_own(false);
+    make_scene(&own, false, tg, NT);
+    for (int s = 0; s < 120 && pa && pb; s++) {
+        hdef.domain.reading = s < 60 ? FW_DOMAIN_ELLIPSE : FW_DOMAIN_TRANSVERSE;
+        if (s == 60)
+            for (int i = 0; i < NT; i++)
+                memo[i].valid = false; /* a memo holds for one domain definition */
+        for (int i = 0; i < NT; i++) {
+            double u = uniform();
+            tg[i].east += 10.0 * (uniform() - 0.5), tg[i].north += 10.0 * (uniform() - 0.5);
+            if (u < 0.1)
+                tg[i].course = nextafter(tg[i].course, 10.0);
+            else if (u < 0.15)
+                tg[i].length = nextafter(tg[i].length, 0.0);
+            else if (u < 0.2)
+                tg[i].breadth = nextafter(tg[i].breadth, 1e3);
+            changed += u < 0.2, same += u >= 0.2;
+        }
+        tg[0].course = s % 2 ? -0.0 : 0.0; /* equal, but not alike: sin gives -0 and +0 */
+        fw_prep_targets(&hdef.domain, &hdef.track, tg, NT, plain, pa);
+        fw_prep_targets_memo(&hdef.domain, &hdef.track, tg, NT, kept, pb, memo);
+        for (int i = 0; i < NT; i++)
+            CHECK_MSG(same_prep(&plain[i], &kept[i], plen), "decision %d target %d differs", s, i);
+    }
+    printf("  prep memo: %ld targets kept their course and hull, %ld changed\n", same, changed);
+    CHECK(changed > 500 && same > 2000);
+    free(pa);
+    free(pb);
+}
+
 int main(void)
 {
     const char *wd = getenv("FAIRWAY_WRITE_DIGESTS");
     if (wd && *wd && !(digest_out = fopen(wd, "w")))
         return 1;
     TEST_RUN(test_chunk_bound);
+    TEST_RUN(test_reach_window);
+    TEST_RUN(test_prep_memo);
     TEST_RUN(test_decisions_unchanged);
     fw_track_free(&tr);
     if (digest_out)

@@ -1,6 +1,7 @@
 #include "avoid/clearance.h"
 
 #include <math.h>
+#include <string.h>
 
 /* fmin/fmax are library calls at -O2 (they must handle NaN); these are
  * inlined, and the track and target data here are finite. */
@@ -41,18 +42,35 @@ static void axes_bound(const fw_domain_def *dom, fw_prep_target *g)
     g->ib_min = (1.0 - 1e-9) / (b * b);
 }
 
-void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const fw_target *t,
-                     int n, fw_prep_target *out, double *paths)
+/* Is m made from g's course, length and breadth (bit for bit)?  If not it is
+ * made now: what fw_prep_targets computes from them alone. */
+static void memo_fill(const fw_domain_def *dom, const fw_target *g, fw_prep_memo *m)
+{
+    if (m->valid && memcmp(&m->course, &g->course, sizeof m->course) == 0 &&
+        memcmp(&m->length, &g->length, sizeof m->length) == 0 &&
+        memcmp(&m->breadth, &g->breadth, sizeof m->breadth) == 0)
+        return;
+    fw_prep_target q = {.hl = 0.5 * g->length, .hb = 0.5 * g->breadth};
+    axes_bound(dom, &q);
+    *m = (fw_prep_memo){.valid = true, .course = g->course, .length = g->length,
+                        .breadth = g->breadth, .sc = sin(g->course), .cc = cos(g->course),
+                        .reach = fw_domain_reach(dom, g), .ia_min = q.ia_min,
+                        .ib_min = q.ib_min};
+}
+
+void fw_prep_targets_memo(const fw_domain_def *dom, const fw_track_def *tdef,
+                          const fw_target *t, int n, fw_prep_target *out, double *paths,
+                          fw_prep_memo *memo)
 {
     int len = fw_prep_path_len(tdef);
     for (int i = 0; i < n; i++) {
         const fw_target *g = &t[i];
-        double s = sin(g->course), c = cos(g->course);
+        fw_prep_memo here = {.valid = false}, *m = memo ? &memo[i] : &here;
+        memo_fill(dom, g, m);
         out[i] = (fw_prep_target){.east = g->east, .north = g->north,
-                                  .ve = g->speed * s, .vn = g->speed * c, .sc = s, .cc = c,
-                                  .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
-                                  .reach = fw_domain_reach(dom, g)};
-        axes_bound(dom, &out[i]);
+                                  .ve = g->speed * m->sc, .vn = g->speed * m->cc, .sc = m->sc,
+                                  .cc = m->cc, .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
+                                  .reach = m->reach, .ia_min = m->ia_min, .ib_min = m->ib_min};
         if (g->pred && paths) {
             out[i].ns = len / 4;
             fill_path(g, tdef, out[i].ns, paths);
@@ -60,6 +78,12 @@ void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const f
             paths += len;
         }
     }
+}
+
+void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const fw_target *t,
+                     int n, fw_prep_target *out, double *paths)
+{
+    fw_prep_targets_memo(dom, tdef, t, n, out, paths, NULL);
 }
 
 /* The most the unit vector (s, c) moves in a step over samples k0..k1. */
@@ -101,11 +125,9 @@ void fw_track_boxes(const fw_track *tr, fw_chunk_boxes *cb)
         fw_track_box(tr, cb, j);
 }
 
-/* The bounding box of the target's path over chunk j of a track of nseg
- * segments (as fw_prep_target.box, without the heading's step). */
-static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double t[4])
+/* The bounding box of the target's path over samples k0..k1. */
+static void path_box_over(double dt, const fw_prep_target *g, int k0, int k1, double t[4])
 {
-    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
     if (g->path) {
         const double *e = g->path, *n = g->path + g->ns;
         t[0] = e[k0], t[1] = t[0], t[2] = n[k0], t[3] = t[2];
@@ -121,6 +143,14 @@ static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double
         double na = g->north + g->vn * ta, nb = g->north + g->vn * tb;
         t[0] = mn(ea, eb), t[1] = mx(ea, eb), t[2] = mn(na, nb), t[3] = mx(na, nb);
     }
+}
+
+/* The bounding box of the target's path over chunk j of a track of nseg
+ * segments (as fw_prep_target.box, without the heading's step). */
+static void path_box(double dt, const fw_prep_target *g, int j, int nseg, double t[4])
+{
+    int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
+    path_box_over(dt, g, k0, k1, t);
 }
 
 /* Inlined in the scans: the prepared box when there is one. */
@@ -159,6 +189,13 @@ void fw_prep_boxes(double dt, fw_prep_target *g, int nseg, double *room)
     g->box = room, g->nbox = nch, g->box_nseg = nseg;
 }
 
+/* Every sample of a track's chunk ending at sample k1 is within R of the
+ * start; the margin covers the rounding of the positions summed step by step. */
+static inline double reach_radius(double dt, double umax, int k1)
+{
+    return umax * (k1 * dt) * (1.0 + 1e-9) + 1e-6;
+}
+
 void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
                      double umax, int *lo, int *hi)
 {
@@ -171,9 +208,7 @@ void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, do
     *lo = -1, *hi = 0;
     for (int j = 0; j < nch; j++) {
         int k1 = j * FW_CHUNK + FW_CHUNK < nseg ? j * FW_CHUNK + FW_CHUNK : nseg;
-        /* every sample of the chunk is within R of the start; the margin
-         * covers the rounding of the positions summed step by step */
-        double R = umax * (k1 * dt) * (1.0 + 1e-9) + 1e-6;
+        double R = reach_radius(dt, umax, k1);
         double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
         if (!chunk_misses(dt, g, j, nseg, env)) {
             if (*lo < 0)
@@ -188,6 +223,38 @@ void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, do
     }
     if (*lo < 0)
         *lo = 0;
+}
+
+/* Does the box of g's whole path over a track of nseg segments, grown by its
+ * reach, miss the square of the last chunk's radius about (e0, n0)?  Then
+ * every chunk's test in fw_reach_window misses too, on the same side: each
+ * chunk's box lies within the whole one (its samples are among the whole
+ * path's, or its ends east + ve t at times between 0 and nseg dt, and that
+ * rounds monotonically in t), each chunk's radius is at most the last one's,
+ * and the roundings of the grown box and of the square are monotonic. */
+static bool out_of_reach(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
+                         double umax)
+{
+    double t[4];
+    path_box_over(dt, g, 0, nseg, t);
+    double R = reach_radius(dt, umax, nseg);
+    double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
+    return fw_box_misses(t, g->reach, env);
+}
+
+void fw_prep_reach(double dt, fw_prep_target *g, int nseg, double e0, double n0, double umax,
+                   double *room, int *lo, int *hi)
+{
+    int nchunks = (nseg + FW_CHUNK - 1) / FW_CHUNK;
+    if (umax >= 0.0 && nchunks <= FW_MAX_CHUNKS && out_of_reach(dt, g, nseg, e0, n0, umax)) {
+        /* no chunk in the window: no box is ever looked at (none made;
+         * fw_chunk_misses_in would make one) */
+        g->box = room, g->nbox = 0, g->box_nseg = nseg;
+        *lo = 0, *hi = 0;
+        return;
+    }
+    fw_prep_boxes(dt, g, nseg, room);
+    fw_reach_window(dt, g, nseg, e0, n0, umax, lo, hi);
 }
 
 void fw_boxes_union(fw_chunk_boxes *u, const fw_chunk_boxes *cb)

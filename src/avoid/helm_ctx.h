@@ -47,6 +47,7 @@ struct fw_helm_ctx {
     int *jlo, *jhi;
     int *act, *nact;       /* act[j cap + p], p < nact[j] */
     fw_prep_target *prep;
+    fw_prep_memo *memo;    /* per target slot, kept from decision to decision */
     const fw_target *prep_t; /* prep holds these n targets (this decision's search) */
     int prep_n;
     double *paths;         /* the predicted targets' paths (clearance.h) */

@@ -33,9 +33,9 @@ void fw_helm_ctx_destroy(fw_helm_ctx *c)
     if (c->tracks)
         for (int i = 0; i < 2 * c->nh + 2; i++)
             fw_track_free(&c->tracks[i]);
-    fw_free_each(22, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
+    fw_free_each(23, c->tracks, c->have, c->gen, c->ready, c->nbox, c->src, c->fail, c->ub2,
                  c->lim, c->next, c->nextp, c->ord, c->boxes, c->idx, c->jlo, c->jhi, c->act,
-                 c->nact, c->prep, c->paths, c->pbox, c);
+                 c->nact, c->prep, c->memo, c->paths, c->pbox, c);
 }
 
 fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_helm_ctx **out,
@@ -289,13 +289,15 @@ int fw_permitted_sides(const fw_helm_def *def, const fw_assessment *as, int n)
 static fw_status ensure_scratch(fw_helm_ctx *c, const fw_target *t, int n, fw_error *err)
 {
     if (n > c->cap) {
-        if (!fw_resize_each((size_t)n, 4, (void **)&c->idx, sizeof *c->idx, (void **)&c->jlo,
+        if (!fw_resize_each((size_t)n, 5, (void **)&c->idx, sizeof *c->idx, (void **)&c->jlo,
                             sizeof *c->jlo, (void **)&c->jhi, sizeof *c->jhi, (void **)&c->prep,
-                            sizeof *c->prep) ||
+                            sizeof *c->prep, (void **)&c->memo, sizeof *c->memo) ||
             !fw_resize((void **)&c->act, sizeof *c->act, (size_t)n * (size_t)c->nchunks) ||
             !fw_resize((void **)&c->pbox, sizeof *c->pbox,
                        (size_t)n * (size_t)fw_prep_box_len(fw_track_samples(&c->def.track) - 1)))
             return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
+        for (int i = c->cap; i < n; i++)
+            c->memo[i].valid = false; /* the new slots (the old ones are kept) */
         c->cap = n;
     }
     size_t npred = 0, len = (size_t)fw_prep_path_len(&c->def.track);
@@ -316,16 +318,15 @@ static fw_status ensure_scratch(fw_helm_ctx *c, const fw_target *t, int n, fw_er
 static void keep_check(fw_helm_ctx *c, const fw_track *keep, const fw_target *t, int n,
                        fw_helm_result *res)
 {
-    fw_prep_targets(&c->def.domain, &c->def.track, t, n, c->prep, c->paths);
+    fw_prep_targets_memo(&c->def.domain, &c->def.track, t, n, c->prep, c->paths, c->memo);
     const fw_chunk_boxes *kb = &c->boxes[2 * c->nh];
     double kbest = INFINITY;
     int nthreat = 0, *threat = c->act; /* scratch: the lists are made after */
     res->limiting = -1;
     size_t blen = (size_t)fw_prep_box_len(kb->nseg);
     for (int i = 0; i < n; i++) {
-        fw_prep_boxes(c->def.track.dt, &c->prep[i], kb->nseg, c->pbox + (size_t)i * blen);
-        fw_reach_window(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
-                        c->umax, &c->jlo[i], &c->jhi[i]);
+        fw_prep_reach(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
+                      c->umax, c->pbox + (size_t)i * blen, &c->jlo[i], &c->jhi[i]);
         /* what matters: below 1 (a threat) and below the smallest yet */
         double m2 = fw_target_min2_cap(&c->def.domain, keep, kb, &c->prep[i], c->jlo[i],
                                        c->jhi[i], 0.0, kbest > 1.0 ? kbest : 1.0);

@@ -9,7 +9,8 @@
  * predicted up to that point only), and mirrors the port tracks from the
  * starboard ones when the start is symmetric.  Checks go chunk by chunk in
  * time, culled with bounding boxes in space and time and with each target's
- * reach window (how far the own ship can have gone), below a cap under 1 by a
+ * reach window (how far the own ship can have gone; one test for a target out
+ * of reach over the whole horizon), below a cap under 1 by a
  * chunk's own lower bound, then segment by segment with a cheap lower bound
  * before the exact ellipse test; all the tracks of one decision start from
  * one fw_track_origin.  The results are
