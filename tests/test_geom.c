@@ -1,4 +1,7 @@
 /* test_geom.c - the plane geometry of ships (geom/geom.h) against worked answers. */
+#include <float.h>
+#include <stdbool.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "core/units.h"
@@ -184,9 +187,58 @@ static void test_hull_cpa(void)
     CHECK(t == 0.0);
 }
 
+/* The angle wraps: in range, and the same bits as the plain fmod formulas
+ * they skip fmod in (units.h), at the edges and over many turns. */
+static double wrap_pi_ref(double a)
+{
+    a = fmod(a + FW_PI, 2.0 * FW_PI);
+    if (a <= 0.0)
+        a += 2.0 * FW_PI;
+    return a - FW_PI;
+}
+
+static double wrap_2pi_ref(double a)
+{
+    a = fmod(a, 2.0 * FW_PI);
+    if (a < 0.0)
+        a += 2.0 * FW_PI;
+    return a;
+}
+
+static bool same_bits(double a, double b)
+{
+    return (isnan(a) && isnan(b)) || memcmp(&a, &b, sizeof a) == 0;
+}
+
+static void test_wraps(void)
+{
+    const double tp = 2.0 * FW_PI;
+    const double edge[] = {0.0, -0.0, FW_PI, -FW_PI, tp, -tp, nextafter(tp, 0.0),
+                           nextafter(-tp, 0.0), nextafter(tp, 10.0), nextafter(-tp, -10.0),
+                           nextafter(FW_PI, 0.0), nextafter(-FW_PI, 0.0), nextafter(FW_PI, 10.0),
+                           nextafter(-FW_PI, -10.0), 3.0 * FW_PI, -3.0 * FW_PI, DBL_MIN, -DBL_MIN,
+                           1e300, -1e300, INFINITY, -INFINITY, NAN};
+    int n = (int)(sizeof edge / sizeof *edge), bad = 0;
+    for (int i = 0; i < n; i++)
+        bad += !same_bits(fw_wrap_pi(edge[i]), wrap_pi_ref(edge[i])) +
+               !same_bits(fw_wrap_2pi(edge[i]), wrap_2pi_ref(edge[i]));
+    uint64_t x = 88172645463325252u; /* xorshift64: fixed angles over +-20 turns */
+    for (int i = 0; i < 200000; i++) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        double a = ((double)(x >> 11) / 9007199254740992.0 - 0.5) * 80.0 * FW_PI;
+        double p = fw_wrap_pi(a), q = fw_wrap_2pi(a);
+        bad += !same_bits(p, wrap_pi_ref(a)) + !same_bits(q, wrap_2pi_ref(a));
+        bad += !(p > -FW_PI && p <= FW_PI) + !(q >= 0.0 && q < tp);
+    }
+    CHECK(bad == 0);
+    CHECK(fw_wrap_pi(-FW_PI) == FW_PI); /* (-pi, pi]: -pi is pi */
+    CHECK_NEAR(fw_wrap_2pi(-0.5), tp - 0.5, 1e-15);
+}
+
 int main(void)
 {
     TEST_RUN(test_body_frame_and_cpa);
+    TEST_RUN(test_wraps);
     TEST_RUN(test_hull_distance);
     TEST_RUN(test_hull_cpa);
     TEST_RUN(test_domain);
