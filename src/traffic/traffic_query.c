@@ -132,6 +132,34 @@ static int cmp_id(const void *a, const void *b)
     return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
+/* v[0..n-1] sorted by id, v[n - 1] the one perhaps out of place.  The range
+ * query's ships come sorted by id (a map by id, range_read.h), so the lists
+ * cut from them are too and only the own ship the area appends needs its
+ * place: found by bisection, in O(n) where qsort took O(n log n) compares.
+ * Any other order gets qsort; ids are unique, so every sort gives the same
+ * list. */
+static void sort_by_id(fw_target *v, int n)
+{
+    for (int i = 1; i + 1 < n; i++)
+        if (strcmp(v[i - 1].id, v[i].id) > 0) {
+            qsort(v, (size_t)n, sizeof *v, cmp_id);
+            return;
+        }
+    if (n < 2 || strcmp(v[n - 2].id, v[n - 1].id) < 0)
+        return;
+    int lo = 0, hi = n - 1; /* the first of v[0..n-2] after v[n - 1] */
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (strcmp(v[mid].id, v[n - 1].id) > 0)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    fw_target last = v[n - 1];
+    memmove(&v[lo + 1], &v[lo], sizeof *v * (size_t)(n - 1 - lo));
+    v[lo] = last;
+}
+
 /* The background ships of this step's context results whose hull centres
  * are within radius of the own ship's, into *buf (room for one more: the
  * area adds the own ship); their count, or -1 with *err set (what: the
@@ -172,8 +200,9 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
     /* the own ship as placed: SUMO may not list a vehicle moved off its lanes */
     fw_target *o = &t->area[m++];
     memset(o, 0, sizeof *o);
-    snprintf(o->id, sizeof o->id, "%s", t->own_id);
-    snprintf(o->type, sizeof o->type, "%s", FW_TRAFFIC_OWN_TYPE);
+    /* own_id is as long as an id may be: copied whole, NUL included */
+    memcpy(o->id, t->own_id, strlen(t->own_id) + 1);
+    memcpy(o->type, FW_TRAFFIC_OWN_TYPE, sizeof FW_TRAFFIC_OWN_TYPE);
     o->east = t->own_x;
     o->north = t->own_y;
     o->course = t->own_heading;
@@ -181,7 +210,7 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
     o->length = t->def.own_length;
     o->breadth = t->def.own_width;
     o->own = true;
-    qsort(t->area, (size_t)m, sizeof *t->area, cmp_id);
+    sort_by_id(t->area, m);
     *ships = t->area;
     *n = m;
     return FW_OK;
@@ -193,7 +222,7 @@ fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_e
     int m = within(t, "nearby", t->def.near_radius, &t->near, &t->near_cap, err);
     if (m < 0)
         return err->status;
-    qsort(t->near, (size_t)m, sizeof *t->near, cmp_id);
+    sort_by_id(t->near, m);
     *ships = t->near;
     *n = m;
     return FW_OK;
