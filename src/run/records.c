@@ -132,9 +132,9 @@ void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm,
  * this close (a near miss is 0.1 nm) */
 static const double kHullWatch = 1852.0;
 
-static fw_encounter *find(fw_records *r, const char *id)
+static fw_encounter *find(fw_records *r, const fw_target *ts)
 {
-    int i = fw_idmap_find(&r->ids, id);
+    int i = fw_idmap_find_keyed(&r->ids, ts->key, ts->id);
     return i >= 0 ? &r->e[i] : NULL;
 }
 
@@ -149,7 +149,7 @@ static fw_status add(fw_records *r, double t, const fw_target *ts, const fw_asse
         r->cap = cap;
     }
     int i;
-    if (fw_idmap_intern(&r->ids, ts->id, &i))
+    if (fw_idmap_intern_keyed(&r->ids, ts->key, ts->id, &i))
         return fw_fail(err, FW_ERUN, "out of memory for the encounter book (%d ships)", r->n);
     /* the map numbers ids as the book adds them: i == r->n */
     fw_encounter *e = &r->e[r->n++];
@@ -197,7 +197,7 @@ static double candidate_miss(const fw_records *r, const fw_mmg_state *own, const
 fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mmg_state *own,
                             const fw_assessment *as, bool record_row, fw_error *err)
 {
-    fw_encounter *e = find(r, ts->id);
+    fw_encounter *e = find(r, ts);
     fw_status st = FW_OK;
     if (!e && !(st = add(r, t, ts, as, &e, err)))
         e->cand_miss = candidate_miss(r, own, ts);
@@ -247,7 +247,7 @@ void fw_records_action(fw_records *r, double t, int side, double helm, const cha
     for (int i = 0; i < n; i++) {
         if (!as[i].enters_domain)
             continue;
-        fw_encounter *e = find(r, tg[i].id);
+        fw_encounter *e = find(r, &tg[i]);
         if (!e || e->acted)
             continue;
         e->acted = true;

@@ -207,7 +207,7 @@ fw_status fw_monitor_step(fw_monitor *m, double t, const fw_target *own, const f
         m->cur[k] = -1;
         if (a->own)
             continue; /* an area list holds the own ship too */
-        if (fw_idmap_intern(&m->ids, a->id, &i) || !reserve(m, n))
+        if (fw_idmap_intern_keyed(&m->ids, a->key, a->id, &i) || !reserve(m, n))
             return fw_fail(err, FW_ERUN, "monitor: out of memory for ship ids");
         ship_state *p = &m->s[i];
         m->cur[k] = i;

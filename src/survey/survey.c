@@ -278,7 +278,7 @@ fw_status fw_survey_step(fw_survey *sv, double t, const fw_target *ships, int n,
         return fw_fail(err, FW_ERUN, "survey: out of memory for %d ships", n);
     for (int k = 0; k < n; k++) {
         int id;
-        if (fw_idmap_intern(&sv->ids, ships[k].id, &id))
+        if (fw_idmap_intern_keyed(&sv->ids, ships[k].key, ships[k].id, &id))
             return fw_fail(err, FW_ERUN, "survey: out of memory for ship ids");
         if (sv->ids.n > sv->seen_cap) {
             int cap = 2 * sv->ids.n;

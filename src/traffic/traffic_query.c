@@ -63,6 +63,7 @@ static fw_status follow_motion(fw_traffic *t, int k, fw_error *err)
     int i;
     if (fw_idmap_intern(&t->ids, c->id, &i))
         return fw_fail(err, FW_ERUN, "out of memory for ship ids");
+    c->key = i + 1; /* the ship's key for the run (geom/target.h) */
     if (i >= t->last_cap) {
         int cap = fw_grown_cap(t->last_cap, i + 1);
         if (!fw_resize_each((size_t)cap, 3, (void **)&t->last_e, sizeof *t->last_e,

@@ -510,11 +510,11 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     return s2 ? s2 : record(r, &x, err);
 }
 
-/* The state of ship id (interned, the array grown to hold it). */
-static react_state *state_of(fw_reactions *r, const char *id, fw_error *err)
+/* The state of ship a (its id interned, the array grown to hold it). */
+static react_state *state_of(fw_reactions *r, const fw_target *a, fw_error *err)
 {
     int k;
-    if (fw_idmap_intern(&r->ids, id, &k)) {
+    if (fw_idmap_intern_keyed(&r->ids, a->key, a->id, &k)) {
         fw_fail(err, FW_ERUN, "out of memory for ship ids");
         return NULL;
     }
@@ -560,7 +560,7 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
     r->all = all;
     fw_status st = FW_OK;
     for (int i = 0; i < n && !st; i++) {
-        react_state *s = state_of(r, ships[i].id, err);
+        react_state *s = state_of(r, &ships[i], err);
         st = s ? react(r, t, i, all, m, s, src, err) : err->status;
     }
     r->all = NULL;
