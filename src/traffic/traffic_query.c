@@ -61,7 +61,7 @@ static fw_status follow_motion(fw_traffic *t, int k, fw_error *err)
 {
     fw_target *c = &t->conv[k];
     int i;
-    if (fw_idmap_intern(&t->ids, c->id, &i))
+    if (fw_idmap_intern_keyed(&t->ids, t->ctx.v[k].key, c->id, &i))
         return fw_fail(err, FW_ERUN, "out of memory for ship ids");
     c->key = i + 1; /* the ship's key for the run (geom/target.h) */
     if (i >= t->last_cap) {
