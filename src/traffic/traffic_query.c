@@ -10,17 +10,27 @@
 #include "core/units.h"
 #include "traffic/traffic_internal.h"
 
-/* Raw SUMO values to fairway's frame: the one place this happens. */
-static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_target *s)
+/* Raw SUMO values to fairway's frame: the one place this happens; sh, ch
+ * the sine and cosine of SUMO's angle in radians. */
+static void convert_sc(const fw_sumo_raw *r, const char *own_id, double sh, double ch,
+                       fw_target *s)
 {
     memcpy(s->id, r->id, sizeof s->id);
     memcpy(s->type, r->type, sizeof s->type);
-    fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->east, &s->north, &s->course);
+    fw_traffic_from_sumo_sc(r->x, r->y, r->angle_deg, sh, ch, r->length, &s->east, &s->north,
+                            &s->course);
     s->speed = r->speed;
     s->length = r->length;
     s->breadth = r->width;
     s->own = strcmp(r->id, own_id) == 0;
     s->pred = NULL;
+    s->key = 0;
+}
+
+static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_target *s)
+{
+    double h = fw_deg_to_rad(r->angle_deg);
+    convert_sc(r, own_id, sin(h), cos(h), s);
 }
 
 static fw_status room(fw_target **v, int *cap, int n, fw_error *err)
@@ -57,33 +67,62 @@ static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_erro
  * lane change, far above rounding). */
 static const double kMinLateral = 0.05; /* m/s */
 
-static fw_status follow_motion(fw_traffic *t, int k, fw_error *err)
+/* The index of the ship of context result r, its arrays grown to hold it. */
+static fw_status ship_index(fw_traffic *t, const fw_sumo_raw *r, int *out, fw_error *err)
 {
-    fw_target *c = &t->conv[k];
     int i;
-    if (fw_idmap_intern_keyed(&t->ids, t->ctx.v[k].key, c->id, &i))
+    if (fw_idmap_intern_keyed(&t->ids, r->key, r->id, &i))
         return fw_fail(err, FW_ERUN, "out of memory for ship ids");
-    c->key = i + 1; /* the ship's key for the run (geom/target.h) */
     if (i >= t->last_cap) {
         int cap = fw_grown_cap(t->last_cap, i + 1);
-        if (!fw_resize_each((size_t)cap, 3, (void **)&t->last_e, sizeof *t->last_e,
+        if (!fw_resize_each((size_t)cap, 6, (void **)&t->last_e, sizeof *t->last_e,
                             (void **)&t->last_n, sizeof *t->last_n,
-                            (void **)&t->last_step, sizeof *t->last_step))
+                            (void **)&t->last_step, sizeof *t->last_step,
+                            (void **)&t->last_angle, sizeof *t->last_angle,
+                            (void **)&t->last_sin, sizeof *t->last_sin,
+                            (void **)&t->last_cos, sizeof *t->last_cos))
             return fw_fail(err, FW_ERUN, "out of memory for ship ids");
-        for (int j = t->last_cap; j < cap; j++)
+        for (int j = t->last_cap; j < cap; j++) {
             t->last_step[j] = -2;
+            t->last_angle[j] = NAN;
+        }
         t->last_cap = cap;
     }
+    *out = i;
+    return FW_OK;
+}
+
+/* Context result k converted into conv[k] as ship i, SUMO's angle's sine
+ * and cosine computed only when it changed. */
+static void convert_ship(fw_traffic *t, int k, int i)
+{
+    const fw_sumo_raw *r = &t->ctx.v[k];
+    if (!(r->angle_deg == t->last_angle[i])) {
+        double h = fw_deg_to_rad(r->angle_deg);
+        t->last_angle[i] = r->angle_deg;
+        t->last_sin[i] = sin(h);
+        t->last_cos[i] = cos(h);
+    }
+    convert_sc(r, t->own_id, t->last_sin[i], t->last_cos[i], &t->conv[k]);
+    t->conv[k].key = i + 1; /* the ship's key for the run (geom/target.h) */
+}
+
+static void follow_motion(fw_traffic *t, int k, int i)
+{
+    fw_target *c = &t->conv[k];
     if (t->last_step[i] == t->steps - 1 && !c->own) {
         double dx = c->east - t->last_e[i], dy = c->north - t->last_n[i];
-        double lat = fabs(dx * cos(c->course) - dy * sin(c->course)) / t->def.step;
+        /* the heading is SUMO's angle unless wrapped into [0, 2 pi) */
+        double h = fw_deg_to_rad(t->ctx.v[k].angle_deg);
+        double sc = c->course == h ? t->last_sin[i] : sin(c->course);
+        double cc = c->course == h ? t->last_cos[i] : cos(c->course);
+        double lat = fabs(dx * cc - dy * sc) / t->def.step;
         if (lat > kMinLateral) {
             c->course = fw_wrap_2pi(atan2(dx, dy));
             c->speed = hypot(dx, dy) / t->def.step;
         }
     }
     t->last_e[i] = c->east, t->last_n[i] = c->north, t->last_step[i] = t->steps;
-    return FW_OK;
 }
 
 fw_status fw_traffic_context(fw_traffic *t, fw_error *err)
@@ -95,8 +134,11 @@ fw_status fw_traffic_context(fw_traffic *t, fw_error *err)
         st = room(&t->conv, &t->conv_cap, t->ctx.n, err);
     /* converted once per step, for both queries */
     for (int k = 0; !st && k < t->ctx.n; k++) {
-        convert_one(&t->ctx.v[k], t->own_id, &t->conv[k]);
-        st = follow_motion(t, k, err);
+        int i = -1;
+        if ((st = ship_index(t, &t->ctx.v[k], &i, err)))
+            break;
+        convert_ship(t, k, i);
+        follow_motion(t, k, i);
     }
     if (!st)
         t->ctx_step = t->steps;
