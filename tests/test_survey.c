@@ -631,6 +631,40 @@ static void test_grid_pairs(void)
     CHECK(compare_pairs(x, y, 1, r) == 0);
 }
 
+/* Ids looked up by their keys (core/idmap.h) get the indices their names
+ * have, whether the name or the key came first; key 0 or a key not seen yet
+ * looks the name up; large keys grow the table. */
+static void test_idmap_keys(void)
+{
+    enum { N = 2000 };
+    fw_idmap byname = {0}, keyed = {0};
+    char id[32];
+    rng_state = 99;
+    for (int k = 0; k < 3 * N; k++) {
+        int s = (int)(urand() * N); /* ships seen again and again, in any order */
+        snprintf(id, sizeof id, "east.%d", s);
+        int a, b, key = s % 5 == 0 ? 0 : 3 * s + 1; /* some ships without a key */
+        CHECK(fw_idmap_intern(&byname, id, &a) == 0);
+        CHECK(fw_idmap_intern_keyed(&keyed, key, id, &b) == 0);
+        CHECK_MSG(a == b, "%s (key %d): index %d by name, %d by key", id, key, a, b);
+        CHECK(fw_idmap_find_keyed(&keyed, key, id) == b);
+        CHECK(fw_idmap_find(&keyed, id) == b);
+    }
+    CHECK(keyed.n == byname.n);
+    CHECK(keyed.n > N / 2);
+    CHECK(fw_idmap_find_keyed(&keyed, 0, "west.1") == -1);
+    CHECK(fw_idmap_find_keyed(&keyed, 7 * N, "west.1") == -1);
+    /* an id interned by name first, its key given later: the same index */
+    int a, b;
+    CHECK(fw_idmap_intern(&keyed, "west.1", &a) == 0);
+    CHECK(fw_idmap_intern_keyed(&keyed, 9 * N, "west.1", &b) == 0);
+    CHECK(a == b && keyed.key_cap >= 9 * N);
+    CHECK(fw_idmap_find_keyed(&keyed, 9 * N, "west.1") == a);
+    fw_idmap_free(&byname);
+    fw_idmap_free(&keyed);
+    CHECK(keyed.n == 0 && keyed.key_cap == 0 && !keyed.by_key);
+}
+
 int main(void)
 {
     TEST_RUN(test_head_on);
@@ -643,5 +677,6 @@ int main(void)
     TEST_RUN(test_grid_pairs);
     TEST_RUN(test_grid_matches_all_pairs);
     TEST_RUN(test_input_order);
+    TEST_RUN(test_idmap_keys);
     return TEST_EXIT();
 }

@@ -1,6 +1,7 @@
 /* idmap.c - see idmap.h. */
 #include "core/idmap.h"
 
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -80,8 +81,47 @@ int fw_idmap_intern(fw_idmap *t, const char *id, int *out)
     return 0;
 }
 
+/* The index key stands for, -1 if not seen (or key 0). */
+static int by_key(const fw_idmap *t, int key, const char *id)
+{
+    if (key <= 0 || key > t->key_cap || !t->by_key[key - 1])
+        return -1;
+    int i = t->by_key[key - 1] - 1;
+    assert(strcmp(t->name[i], id) == 0); /* one key, one id */
+    (void)id;
+    return i;
+}
+
+int fw_idmap_find_keyed(const fw_idmap *t, int key, const char *id)
+{
+    int i = by_key(t, key, id);
+    return i >= 0 ? i : fw_idmap_find(t, id);
+}
+
+int fw_idmap_intern_keyed(fw_idmap *t, int key, const char *id, int *out)
+{
+    int i = by_key(t, key, id);
+    if (i >= 0) {
+        *out = i;
+        return 0;
+    }
+    /* room first: out of memory leaves the map as it was */
+    int had = t->key_cap;
+    if (key > 0 && !fw_reserve((void **)&t->by_key, sizeof *t->by_key, &t->key_cap, key))
+        return -1;
+    if (t->key_cap > had)
+        memset(t->by_key + had, 0, sizeof *t->by_key * (size_t)(t->key_cap - had));
+    if (fw_idmap_intern(t, id, &i))
+        return -1;
+    if (key > 0)
+        t->by_key[key - 1] = i + 1;
+    *out = i;
+    return 0;
+}
+
 void fw_idmap_free(fw_idmap *t)
 {
+    free(t->by_key);
     for (int i = 0; i < t->n; i++)
         free(t->name[i]);
     free(t->name);

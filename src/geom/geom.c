@@ -120,6 +120,7 @@ void fw_target_path(const fw_target *t, double dt, int n, double *east, double *
 fw_target fw_target_named(const char *id, fw_target t)
 {
     snprintf(t.id, sizeof t.id, "%s", id);
+    t.key = 0; /* another id: the key was the old one's */
     return t;
 }
 

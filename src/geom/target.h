@@ -41,6 +41,11 @@ typedef struct fw_target {
     double breadth;              /* m */
     bool own;                    /* the own ship (listed only in area queries) */
     const fw_predictor *pred;    /* NULL: constant velocity */
+    /* A number the traffic source gives the id, 1, 2, ..., the same for the
+     * whole run and one id's only, so that the modules that key their data
+     * by ship (core/idmap.h) find it without hashing the id; 0 = none (the
+     * id is looked up).  Whoever renames a record resets it. */
+    int key;
 } fw_target;
 
 /* Where a ship will be: positions and headings at t = k dt, k = 0..n-1, from

@@ -10,6 +10,7 @@
 #include "core/files.h"
 #include "core/json.h"
 #include "avoid/helm_search.h"
+#include "core/fmt.h"
 #include "core/idmap.h"
 #include "core/mem.h"
 #include "core/units.h"
@@ -106,14 +107,25 @@ void fw_records_close(fw_records *r)
     free(r);
 }
 
+/* ",v[0],v[1],..." onto f, v[k] with dec[k] decimals (as "%.Nf"; fmt.h:
+ * printf's exact conversion was most of the time of a row). */
+static void put_nums(FILE *f, const double *v, const int *dec, int n)
+{
+    for (int k = 0; k < n; k++) {
+        fputc(',', f);
+        fw_put_fixed(f, v[k], dec[k]);
+    }
+}
+
 /* ",LAT,LON\n" for a run with an origin, else "\n": the end of a CSV row
  * (7 decimals of a degree: about 1 cm). */
 static void end_row(const fw_records *r, FILE *f, double east, double north)
 {
     double lat, lon;
-    if (r->geo && !fw_geo_to_latlon(r->geo, east, north, &lat, &lon, NULL))
-        fprintf(f, ",%.7f,%.7f\n", lat, lon);
-    else
+    if (r->geo && !fw_geo_to_latlon(r->geo, east, north, &lat, &lon, NULL)) {
+        put_nums(f, (const double[]){lat, lon}, (const int[]){7, 7}, 2);
+        fputc('\n', f);
+    } else
         fputs(r->geo ? ",,\n" : "\n", f);
 }
 
@@ -122,9 +134,16 @@ FILE *fw_records_log(fw_records *r) { return r->log; }
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
                     const char *mode)
 {
-    fprintf(r->own, "%.1f,%.2f,%.2f,%.3f,%.3f,%.4f,%.4f,%.5f,%.3f,%.3f,%.4f,%s", t, x->east,
-            x->north, fw_heading_deg(x->psi), fw_ms_to_kn(hypot(x->u, x->vm)), x->u, x->vm,
-            fw_rad_to_deg(x->r), fw_rad_to_deg(x->delta), fw_rad_to_deg(helm), n, mode);
+    /* t_s,east_m,north_m,heading_deg,speed_kn,u_mps,v_mps,r_degps,rudder_deg,helm_deg,
+     * propeller_rps,mode */
+    fw_put_fixed(r->own, t, 1);
+    put_nums(r->own,
+             (const double[]){x->east, x->north, fw_heading_deg(x->psi),
+                              fw_ms_to_kn(hypot(x->u, x->vm)), x->u, x->vm, fw_rad_to_deg(x->r),
+                              fw_rad_to_deg(x->delta), fw_rad_to_deg(helm), n},
+             (const int[]){2, 2, 3, 3, 4, 4, 5, 3, 3, 4}, 10);
+    fputc(',', r->own);
+    fputs(mode, r->own);
     end_row(r, r->own, x->east, x->north);
 }
 
@@ -132,9 +151,9 @@ void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm,
  * this close (a near miss is 0.1 nm) */
 static const double kHullWatch = 1852.0;
 
-static fw_encounter *find(fw_records *r, const char *id)
+static fw_encounter *find(fw_records *r, const fw_target *ts)
 {
-    int i = fw_idmap_find(&r->ids, id);
+    int i = fw_idmap_find_keyed(&r->ids, ts->key, ts->id);
     return i >= 0 ? &r->e[i] : NULL;
 }
 
@@ -149,7 +168,7 @@ static fw_status add(fw_records *r, double t, const fw_target *ts, const fw_asse
         r->cap = cap;
     }
     int i;
-    if (fw_idmap_intern(&r->ids, ts->id, &i))
+    if (fw_idmap_intern_keyed(&r->ids, ts->key, ts->id, &i))
         return fw_fail(err, FW_ERUN, "out of memory for the encounter book (%d ships)", r->n);
     /* the map numbers ids as the book adds them: i == r->n */
     fw_encounter *e = &r->e[r->n++];
@@ -197,7 +216,7 @@ static double candidate_miss(const fw_records *r, const fw_mmg_state *own, const
 fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const fw_mmg_state *own,
                             const fw_assessment *as, bool record_row, fw_error *err)
 {
-    fw_encounter *e = find(r, ts->id);
+    fw_encounter *e = find(r, ts);
     fw_status st = FW_OK;
     if (!e && !(st = add(r, t, ts, as, &e, err)))
         e->cand_miss = candidate_miss(r, own, ts);
@@ -232,10 +251,18 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
             e->collision = true;
     }
     if (record_row && r->tgt) {
-        fprintf(r->tgt, "%.1f,%s,%.2f,%.2f,%.3f,%.3f,%.2f,%.3f,%.2f,%.2f,%s", t, ts->id, ts->east,
-                ts->north, fw_heading_deg(ts->course), fw_ms_to_kn(ts->speed), d,
-                fw_heading_deg(as->bearing), as->dcpa, as->tcpa,
-                fw_situation_name(as->situation));
+        /* t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,bearing_deg,dcpa_m,tcpa_s,
+         * situation */
+        fw_put_fixed(r->tgt, t, 1);
+        fputc(',', r->tgt);
+        fputs(ts->id, r->tgt);
+        put_nums(r->tgt,
+                 (const double[]){ts->east, ts->north, fw_heading_deg(ts->course),
+                                  fw_ms_to_kn(ts->speed), d, fw_heading_deg(as->bearing),
+                                  as->dcpa, as->tcpa},
+                 (const int[]){2, 2, 3, 3, 2, 3, 2, 2}, 8);
+        fputc(',', r->tgt);
+        fputs(fw_situation_name(as->situation), r->tgt);
         end_row(r, r->tgt, ts->east, ts->north);
     }
     return FW_OK;
@@ -247,7 +274,7 @@ void fw_records_action(fw_records *r, double t, int side, double helm, const cha
     for (int i = 0; i < n; i++) {
         if (!as[i].enters_domain)
             continue;
-        fw_encounter *e = find(r, tg[i].id);
+        fw_encounter *e = find(r, &tg[i]);
         if (!e || e->acted)
             continue;
         e->acted = true;

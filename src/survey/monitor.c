@@ -19,6 +19,11 @@ typedef struct ship_state {
     bool sideways;      /* in a sideways episode */
     double slow_since;  /* s, since when slower than stop_speed; < 0: not slow */
     bool stopped;       /* counted for this episode */
+    /* the last step's mean heading (moved): its two headings and its sine and
+     * cosine, reused while the headings stay (a ship on a straight lane);
+     * mean_ok false: none yet */
+    double mean_from, mean_to, mean_sin, mean_cos;
+    bool mean_ok;
 } ship_state;
 
 struct fw_monitor {
@@ -118,9 +123,16 @@ static void moved(fw_monitor *m, double t, ship_state *p, const fw_target *a)
     double de = a->east - p->east, dn = a->north - p->north;
     /* across the mean of the two headings: a ship turning at a lane vertex
      * moves along its track, not across it */
-    double h = atan2(sin(p->course) + sin(a->course), cos(p->course) + cos(a->course));
+    if (!(p->mean_ok && p->mean_from == p->course && p->mean_to == a->course)) {
+        double h = atan2(sin(p->course) + sin(a->course), cos(p->course) + cos(a->course));
+        p->mean_from = p->course;
+        p->mean_to = a->course;
+        p->mean_sin = sin(h);
+        p->mean_cos = cos(h);
+        p->mean_ok = true;
+    }
     double x, y;
-    fw_to_body(de, dn, sin(h), cos(h), &x, &y);
+    fw_to_body(de, dn, p->mean_sin, p->mean_cos, &x, &y);
     double lat = fabs(y) / dt, step = hypot(de, dn);
     double reach = m->def.jump_factor * fmax(p->speed, a->speed) * dt + m->def.jump_slack;
     char d[96];
@@ -207,7 +219,7 @@ fw_status fw_monitor_step(fw_monitor *m, double t, const fw_target *own, const f
         m->cur[k] = -1;
         if (a->own)
             continue; /* an area list holds the own ship too */
-        if (fw_idmap_intern(&m->ids, a->id, &i) || !reserve(m, n))
+        if (fw_idmap_intern_keyed(&m->ids, a->key, a->id, &i) || !reserve(m, n))
             return fw_fail(err, FW_ERUN, "monitor: out of memory for ship ids");
         ship_state *p = &m->s[i];
         m->cur[k] = i;
@@ -227,7 +239,9 @@ fw_status fw_monitor_step(fw_monitor *m, double t, const fw_target *own, const f
         *p = (ship_state){.seen = m->stamp, .t = t, .east = a->east, .north = a->north,
                           .course = a->course, .speed = a->speed, .close = close,
                           .sideways = p->sideways, .slow_since = p->slow_since,
-                          .stopped = p->stopped};
+                          .stopped = p->stopped, .mean_from = p->mean_from,
+                          .mean_to = p->mean_to, .mean_sin = p->mean_sin,
+                          .mean_cos = p->mean_cos, .mean_ok = p->mean_ok};
     }
     /* the ships of the last step that are gone */
     for (int k = 0; k < m->nprev; k++) {

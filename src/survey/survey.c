@@ -245,6 +245,13 @@ static void on_pair(void *ctx, int i, int j, double d2)
     sv->active[sv->nactive++] = r;
 }
 
+/* Ships up to which a step tests all pairs: the grid's set-up (cells over
+ * the area, a counting sort) costs more below (measured on points in a 6 nm
+ * circle, range 2500 m: 4 ships 110 ns by the grid, 19 ns all pairs; 19
+ * ships 600 against 430 ns; the two meet some way above, where the grid's
+ * linear growth starts to pay). */
+enum { kAllPairsUpTo = 24 };
+
 static fw_status check_ship(const fw_target *s, int k, fw_error *err)
 {
     size_t len = strnlen(s->id, sizeof s->id);
@@ -278,7 +285,7 @@ fw_status fw_survey_step(fw_survey *sv, double t, const fw_target *ships, int n,
         return fw_fail(err, FW_ERUN, "survey: out of memory for %d ships", n);
     for (int k = 0; k < n; k++) {
         int id;
-        if (fw_idmap_intern(&sv->ids, ships[k].id, &id))
+        if (fw_idmap_intern_keyed(&sv->ids, ships[k].key, ships[k].id, &id))
             return fw_fail(err, FW_ERUN, "survey: out of memory for ship ids");
         if (sv->ids.n > sv->seen_cap) {
             int cap = 2 * sv->ids.n;
@@ -304,7 +311,10 @@ fw_status fw_survey_step(fw_survey *sv, double t, const fw_target *ships, int n,
     sv->in = ships;
     sv->t = t;
     sv->oom = false;
-    if (sv->def.brute_force)
+    /* a handful of ships (the usual area about one own ship): all pairs
+     * cost less than building the grid; the records are the same either
+     * way (the pair order is lost in the final sort, test_survey) */
+    if (sv->def.brute_force || n <= kAllPairsUpTo)
         sv_brute_pairs(sv->x, sv->y, n, sv->release, on_pair, sv);
     else if (sv_grid_pairs(&sv->grid, sv->x, sv->y, n, sv->release, on_pair, sv))
         sv->oom = true;

@@ -24,6 +24,9 @@ typedef struct fw_sumo_raw {
     double x, y;      /* front bumper, SUMO coordinates */
     double angle_deg; /* SUMO angle: navigational degrees */
     double speed, length, width;
+    /* The back end's number for this ship, 1, 2, ..., one ship's only for
+     * the simulation (ids are interned by it, core/idmap.h); 0 = none. */
+    int key;
 } fw_sumo_raw;
 
 /* A growable array the back end fills. */

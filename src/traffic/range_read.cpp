@@ -32,6 +32,7 @@ struct Ship {
     double outside;  // m beyond the radius at the last read; < 0: read it
     long read_step;  // the step of that read
     double read_path; // the centre's path length then
+    int key;          // fw_sumo_raw.key: numbered as added, from 1
 };
 
 std::vector<Ship> g_ships; // sorted by id
@@ -47,6 +48,7 @@ double g_geometry = 1.0, g_lateral = kInf;
 bool g_check = false;
 double g_understate = 1.0;
 long g_skipped = 0, g_made = 0;
+int g_keys = 0; // keys given so far
 
 bool by_id(const Ship &s, const std::string &id) { return s.id < id; }
 
@@ -97,7 +99,7 @@ void add(const std::string &id)
     if (it != g_ships.end() && it->id == id)
         return;
     Ship s{id, S::Vehicle::getTypeID(id), S::Vehicle::getLength(id), S::Vehicle::getWidth(id),
-           kInf, -1.0, 0, 0.0};
+           kInf, -1.0, 0, 0.0, ++g_keys};
     if (!g_anywhere.count(id))
         s.reach = (S::Vehicle::getMaxSpeed(id) * g_dt * g_geometry + g_lateral) * g_understate;
     g_ships.insert(it, std::move(s));
@@ -123,6 +125,7 @@ void fill(fw_sumo_raw *r, const Ship &s, double x, double y)
     r->speed = S::Vehicle::getSpeed(s.id);
     r->length = s.length;
     r->width = s.width;
+    r->key = s.key;
 }
 
 // FAIRWAY_RANGE_CHECK: SUMO's own range test over every ship it has, against
@@ -161,6 +164,7 @@ void start()
     g_path = 0.0;
     g_step = 0;
     g_skipped = g_made = 0;
+    g_keys = 0;
     g_dt = S::Simulation::getDeltaT();
     const char *c = std::getenv("FAIRWAY_RANGE_CHECK");
     g_check = c && (std::strcmp(c, "1") == 0 || std::strcmp(c, "understate") == 0);

@@ -56,9 +56,15 @@ void fw_traffic_from_sumo(double fx, double fy, double angle_deg, double length,
                           double *y, double *heading)
 {
     double h = fw_deg_to_rad(angle_deg);
-    *x = fx - 0.5 * length * sin(h);
-    *y = fy - 0.5 * length * cos(h);
-    *heading = fw_wrap_2pi(h);
+    fw_traffic_from_sumo_sc(fx, fy, angle_deg, sin(h), cos(h), length, x, y, heading);
+}
+
+void fw_traffic_from_sumo_sc(double fx, double fy, double angle_deg, double sh, double ch,
+                             double length, double *x, double *y, double *heading)
+{
+    *x = fx - 0.5 * length * sh;
+    *y = fy - 0.5 * length * ch;
+    *heading = fw_wrap_2pi(fw_deg_to_rad(angle_deg));
 }
 
 static fw_status check_def(const fw_traffic_def *d, fw_error *err)
@@ -287,7 +293,8 @@ void fw_traffic_close(fw_traffic *t)
         fprintf(stderr, "fairway: warning: %s\n", ferr.msg);
     fw_free_each(5, t->raw.v, t->ctx.v, t->ships, t->area, t->near);
     fw_idmap_free(&t->ids);
-    fw_free_each(5, t->conv, t->last_e, t->last_n, t->last_step, t);
+    fw_free_each(8, t->conv, t->last_e, t->last_n, t->last_step, t->last_angle, t->last_sin,
+                 t->last_cos, t);
 }
 
 fw_status fw_traffic_load(fw_traffic_kind kind, fw_error *err)

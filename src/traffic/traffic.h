@@ -108,6 +108,10 @@ void fw_traffic_to_sumo(double x, double y, double heading, double length, doubl
                         double *fy, double *angle_deg);
 void fw_traffic_from_sumo(double fx, double fy, double angle_deg, double length, double *x,
                           double *y, double *heading);
+/* The same with the sine sh and cosine ch of the angle in radians known
+ * (computed once for a ship whose angle stays). */
+void fw_traffic_from_sumo_sc(double fx, double fy, double angle_deg, double sh, double ch,
+                             double length, double *x, double *y, double *heading);
 
 typedef struct fw_traffic fw_traffic;
 

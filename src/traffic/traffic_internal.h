@@ -48,6 +48,9 @@ struct fw_traffic {
     fw_idmap ids;
     double *last_e, *last_n;
     long *last_step;
+    /* and SUMO's angle then (NAN: none yet) with its sine and cosine, reused
+     * while the angle stays (a ship on a straight lane) */
+    double *last_angle, *last_sin, *last_cos;
     int last_cap;
 };
 

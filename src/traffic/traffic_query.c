@@ -10,17 +10,27 @@
 #include "core/units.h"
 #include "traffic/traffic_internal.h"
 
-/* Raw SUMO values to fairway's frame: the one place this happens. */
-static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_target *s)
+/* Raw SUMO values to fairway's frame: the one place this happens; sh, ch
+ * the sine and cosine of SUMO's angle in radians. */
+static void convert_sc(const fw_sumo_raw *r, const char *own_id, double sh, double ch,
+                       fw_target *s)
 {
     memcpy(s->id, r->id, sizeof s->id);
     memcpy(s->type, r->type, sizeof s->type);
-    fw_traffic_from_sumo(r->x, r->y, r->angle_deg, r->length, &s->east, &s->north, &s->course);
+    fw_traffic_from_sumo_sc(r->x, r->y, r->angle_deg, sh, ch, r->length, &s->east, &s->north,
+                            &s->course);
     s->speed = r->speed;
     s->length = r->length;
     s->breadth = r->width;
     s->own = strcmp(r->id, own_id) == 0;
     s->pred = NULL;
+    s->key = 0;
+}
+
+static void convert_one(const fw_sumo_raw *r, const char *own_id, fw_target *s)
+{
+    double h = fw_deg_to_rad(r->angle_deg);
+    convert_sc(r, own_id, sin(h), cos(h), s);
 }
 
 static fw_status room(fw_target **v, int *cap, int n, fw_error *err)
@@ -57,32 +67,62 @@ static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_erro
  * lane change, far above rounding). */
 static const double kMinLateral = 0.05; /* m/s */
 
-static fw_status follow_motion(fw_traffic *t, int k, fw_error *err)
+/* The index of the ship of context result r, its arrays grown to hold it. */
+static fw_status ship_index(fw_traffic *t, const fw_sumo_raw *r, int *out, fw_error *err)
 {
-    fw_target *c = &t->conv[k];
     int i;
-    if (fw_idmap_intern(&t->ids, c->id, &i))
+    if (fw_idmap_intern_keyed(&t->ids, r->key, r->id, &i))
         return fw_fail(err, FW_ERUN, "out of memory for ship ids");
     if (i >= t->last_cap) {
         int cap = fw_grown_cap(t->last_cap, i + 1);
-        if (!fw_resize_each((size_t)cap, 3, (void **)&t->last_e, sizeof *t->last_e,
+        if (!fw_resize_each((size_t)cap, 6, (void **)&t->last_e, sizeof *t->last_e,
                             (void **)&t->last_n, sizeof *t->last_n,
-                            (void **)&t->last_step, sizeof *t->last_step))
+                            (void **)&t->last_step, sizeof *t->last_step,
+                            (void **)&t->last_angle, sizeof *t->last_angle,
+                            (void **)&t->last_sin, sizeof *t->last_sin,
+                            (void **)&t->last_cos, sizeof *t->last_cos))
             return fw_fail(err, FW_ERUN, "out of memory for ship ids");
-        for (int j = t->last_cap; j < cap; j++)
+        for (int j = t->last_cap; j < cap; j++) {
             t->last_step[j] = -2;
+            t->last_angle[j] = NAN;
+        }
         t->last_cap = cap;
     }
+    *out = i;
+    return FW_OK;
+}
+
+/* Context result k converted into conv[k] as ship i, SUMO's angle's sine
+ * and cosine computed only when it changed. */
+static void convert_ship(fw_traffic *t, int k, int i)
+{
+    const fw_sumo_raw *r = &t->ctx.v[k];
+    if (!(r->angle_deg == t->last_angle[i])) {
+        double h = fw_deg_to_rad(r->angle_deg);
+        t->last_angle[i] = r->angle_deg;
+        t->last_sin[i] = sin(h);
+        t->last_cos[i] = cos(h);
+    }
+    convert_sc(r, t->own_id, t->last_sin[i], t->last_cos[i], &t->conv[k]);
+    t->conv[k].key = i + 1; /* the ship's key for the run (geom/target.h) */
+}
+
+static void follow_motion(fw_traffic *t, int k, int i)
+{
+    fw_target *c = &t->conv[k];
     if (t->last_step[i] == t->steps - 1 && !c->own) {
         double dx = c->east - t->last_e[i], dy = c->north - t->last_n[i];
-        double lat = fabs(dx * cos(c->course) - dy * sin(c->course)) / t->def.step;
+        /* the heading is SUMO's angle unless wrapped into [0, 2 pi) */
+        double h = fw_deg_to_rad(t->ctx.v[k].angle_deg);
+        double sc = c->course == h ? t->last_sin[i] : sin(c->course);
+        double cc = c->course == h ? t->last_cos[i] : cos(c->course);
+        double lat = fabs(dx * cc - dy * sc) / t->def.step;
         if (lat > kMinLateral) {
             c->course = fw_wrap_2pi(atan2(dx, dy));
             c->speed = hypot(dx, dy) / t->def.step;
         }
     }
     t->last_e[i] = c->east, t->last_n[i] = c->north, t->last_step[i] = t->steps;
-    return FW_OK;
 }
 
 fw_status fw_traffic_context(fw_traffic *t, fw_error *err)
@@ -94,8 +134,11 @@ fw_status fw_traffic_context(fw_traffic *t, fw_error *err)
         st = room(&t->conv, &t->conv_cap, t->ctx.n, err);
     /* converted once per step, for both queries */
     for (int k = 0; !st && k < t->ctx.n; k++) {
-        convert_one(&t->ctx.v[k], t->own_id, &t->conv[k]);
-        st = follow_motion(t, k, err);
+        int i = -1;
+        if ((st = ship_index(t, &t->ctx.v[k], &i, err)))
+            break;
+        convert_ship(t, k, i);
+        follow_motion(t, k, i);
     }
     if (!st)
         t->ctx_step = t->steps;
@@ -130,6 +173,34 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n, fw_e
 static int cmp_id(const void *a, const void *b)
 {
     return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
+}
+
+/* v[0..n-1] sorted by id, v[n - 1] the one perhaps out of place.  The range
+ * query's ships come sorted by id (a map by id, range_read.h), so the lists
+ * cut from them are too and only the own ship the area appends needs its
+ * place: found by bisection, in O(n) where qsort took O(n log n) compares.
+ * Any other order gets qsort; ids are unique, so every sort gives the same
+ * list. */
+static void sort_by_id(fw_target *v, int n)
+{
+    for (int i = 1; i + 1 < n; i++)
+        if (strcmp(v[i - 1].id, v[i].id) > 0) {
+            qsort(v, (size_t)n, sizeof *v, cmp_id);
+            return;
+        }
+    if (n < 2 || strcmp(v[n - 2].id, v[n - 1].id) < 0)
+        return;
+    int lo = 0, hi = n - 1; /* the first of v[0..n-2] after v[n - 1] */
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (strcmp(v[mid].id, v[n - 1].id) > 0)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    fw_target last = v[n - 1];
+    memmove(&v[lo + 1], &v[lo], sizeof *v * (size_t)(n - 1 - lo));
+    v[lo] = last;
 }
 
 /* The background ships of this step's context results whose hull centres
@@ -172,8 +243,9 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
     /* the own ship as placed: SUMO may not list a vehicle moved off its lanes */
     fw_target *o = &t->area[m++];
     memset(o, 0, sizeof *o);
-    snprintf(o->id, sizeof o->id, "%s", t->own_id);
-    snprintf(o->type, sizeof o->type, "%s", FW_TRAFFIC_OWN_TYPE);
+    /* own_id is as long as an id may be: copied whole, NUL included */
+    memcpy(o->id, t->own_id, strlen(t->own_id) + 1);
+    memcpy(o->type, FW_TRAFFIC_OWN_TYPE, sizeof FW_TRAFFIC_OWN_TYPE);
     o->east = t->own_x;
     o->north = t->own_y;
     o->course = t->own_heading;
@@ -181,7 +253,7 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
     o->length = t->def.own_length;
     o->breadth = t->def.own_width;
     o->own = true;
-    qsort(t->area, (size_t)m, sizeof *t->area, cmp_id);
+    sort_by_id(t->area, m);
     *ships = t->area;
     *n = m;
     return FW_OK;
@@ -193,7 +265,7 @@ fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_e
     int m = within(t, "nearby", t->def.near_radius, &t->near, &t->near_cap, err);
     if (m < 0)
         return err->status;
-    qsort(t->near, (size_t)m, sizeof *t->near, cmp_id);
+    sort_by_id(t->near, m);
     *ships = t->near;
     *n = m;
     return FW_OK;

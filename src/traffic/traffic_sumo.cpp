@@ -118,6 +118,7 @@ void read_vehicle(const std::string &id, fw_sumo_raw *r)
     r->speed = S::Vehicle::getSpeed(id);
     r->length = S::Vehicle::getLength(id);
     r->width = S::Vehicle::getWidth(id);
+    r->key = 0;
 }
 
 // The first normal edge whose first lane lets ships through.
@@ -326,6 +327,7 @@ void read_context(fw_sumo_list *out, fw_status *st, fw_error *err)
         r->speed = as_double(v, libsumo::VAR_SPEED);
         r->length = as_double(v, libsumo::VAR_LENGTH);
         r->width = as_double(v, libsumo::VAR_WIDTH);
+        r->key = 0;
         auto tit = v.find(libsumo::VAR_TYPE);
         r->type[0] = '\0';
         if (tit != v.end())

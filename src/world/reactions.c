@@ -22,6 +22,10 @@ typedef struct react_state {
     char other[FW_TARGET_ID_MAX]; /* the ship it last gave way to */
     bool rule17;     /* holding as a stand-on ship's last action (rule 17(b)) */
     double t_next;   /* s, when it looks round again (every interval s) */
+    /* its course when last seen with that course's sine and cosine, reused
+     * while the course stays; trig_ok false: none yet */
+    double course, sin_c, cos_c;
+    bool trig_ok;
 } react_state;
 
 struct fw_reactions {
@@ -35,6 +39,7 @@ struct fw_reactions {
     int list_cap;
     int *nb;         /* scratch: the ships within range of the one deciding */
     fw_target *all_buf; /* scratch: the ships and the own ship (list_cap of them) */
+    int *idx;        /* scratch: this step's ships' states (indices into s) */
     int nnb;
     /* this step's ships (the own ship last) and the sines and cosines of
      * their courses, computed once: the pair loops' trigonometry */
@@ -85,7 +90,7 @@ void fw_reactions_destroy(fw_reactions *r)
     if (!r)
         return;
     fw_idmap_free(&r->ids);
-    fw_free_each(8, r->s, r->list, r->nb, r->all_buf, r->sn, r->cs, r->log, r);
+    fw_free_each(9, r->s, r->list, r->nb, r->all_buf, r->idx, r->sn, r->cs, r->log, r);
 }
 
 bool fw_reactions_active(const fw_reactions *r)
@@ -510,24 +515,46 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     return s2 ? s2 : record(r, &x, err);
 }
 
-/* The state of ship id (interned, the array grown to hold it). */
-static react_state *state_of(fw_reactions *r, const char *id, fw_error *err)
+/* The index of ship a's state (its id interned, the array grown to hold
+ * it), -1 with *err set when out of memory. */
+static int state_of(fw_reactions *r, const fw_target *a, fw_error *err)
 {
     int k;
-    if (fw_idmap_intern(&r->ids, id, &k)) {
+    if (fw_idmap_intern_keyed(&r->ids, a->key, a->id, &k)) {
         fw_fail(err, FW_ERUN, "out of memory for ship ids");
-        return NULL;
+        return -1;
     }
     if (k >= r->cap) {
         int cap = fw_grown_cap(r->cap, k + 1);
         if (!fw_resize((void **)&r->s, sizeof *r->s, (size_t)cap)) {
             fw_fail(err, FW_ERUN, "out of memory for ship ids");
-            return NULL;
+            return -1;
         }
         memset(r->s + r->cap, 0, sizeof *r->s * (size_t)(cap - r->cap));
         r->cap = cap;
     }
-    return &r->s[k];
+    return k;
+}
+
+/* sn[i], cs[i]: the sine and cosine of ship i's course, from its state
+ * while its course stays (the own ship, last, has none). */
+static void course_trig(fw_reactions *r, const fw_target *all, int n, int m)
+{
+    for (int i = 0; i < n; i++) {
+        react_state *s = &r->s[r->idx[i]];
+        if (!(s->trig_ok && s->course == all[i].course)) {
+            s->course = all[i].course;
+            s->sin_c = sin(s->course);
+            s->cos_c = cos(s->course);
+            s->trig_ok = true;
+        }
+        r->sn[i] = s->sin_c;
+        r->cs[i] = s->cos_c;
+    }
+    for (int i = n; i < m; i++) {
+        r->sn[i] = sin(all[i].course);
+        r->cs[i] = cos(all[i].course);
+    }
 }
 
 fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
@@ -537,9 +564,10 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
         return FW_OK;
     /* the own ship joins the list (last) as a ship to give way to */
     if (n + 1 > r->list_cap) {
-        if (!fw_resize_each((size_t)(n + 1), 3, (void **)&r->list, sizeof *r->list,
+        if (!fw_resize_each((size_t)(n + 1), 6, (void **)&r->list, sizeof *r->list,
                             (void **)&r->nb, sizeof *r->nb, (void **)&r->all_buf,
-                            sizeof *r->all_buf))
+                            sizeof *r->all_buf, (void **)&r->idx, sizeof *r->idx,
+                            (void **)&r->sn, sizeof *r->sn, (void **)&r->cs, sizeof *r->cs))
             return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
         r->list_cap = n + 1;
     }
@@ -550,19 +578,15 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
         all[m] = *own;
         all[m++].own = true;
     }
-    if (!fw_resize_each((size_t)m, 2, (void **)&r->sn, sizeof *r->sn,
-                        (void **)&r->cs, sizeof *r->cs))
-        return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
-    for (int i = 0; i < m; i++) {
-        r->sn[i] = sin(all[i].course);
-        r->cs[i] = cos(all[i].course);
-    }
+    /* every state found first: a new one may move the array */
+    for (int i = 0; i < n; i++)
+        if ((r->idx[i] = state_of(r, &ships[i], err)) < 0)
+            return err->status;
+    course_trig(r, all, n, m);
     r->all = all;
     fw_status st = FW_OK;
-    for (int i = 0; i < n && !st; i++) {
-        react_state *s = state_of(r, ships[i].id, err);
-        st = s ? react(r, t, i, all, m, s, src, err) : err->status;
-    }
+    for (int i = 0; i < n && !st; i++)
+        st = react(r, t, i, all, m, &r->s[r->idx[i]], src, err);
     r->all = NULL;
     return st;
 }
