@@ -192,7 +192,7 @@ fw_status fw_track_start_from(const fw_ship *ship, const fw_track_def *def,
 /* fw_nomoto_phi(T1, T2, t) from e2 = exp(-t / T2) made already (and
  * *e1 = exp(-t / T1) if e1 is not NULL): its operations on the same values,
  * so the same bits, without making the exponentials again. */
-static double phi_from(double T1, double T2, double t, const double *e1, double e2)
+static inline double phi_from(double T1, double T2, double t, const double *e1, double e2)
 {
     double dT = T1 - T2;
     double x = t * dT / (T1 * T2);
@@ -384,6 +384,26 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
     return st;
 }
 
+/* fmax(-hmax, fmin(hmax, order)), inlined (libm's are calls): as glibc's
+ * minsd and maxsd a tie gives the second argument, a NaN order hmax (and
+ * the sign of a zero order, which only hmax = 0 could meet, changes nothing
+ * downstream: order < 0, order > delta and |order - delta| read it alike). */
+static inline double clamp_order(double order, double hmax)
+{
+    double o = hmax < order || order != order ? hmax : order;
+    return -hmax > o ? -hmax : o;
+}
+
+/* (int)fmin(most, round(x)) for x >= 0 or NaN, inlined: below `most` the
+ * fraction x - trunc(x) is exact, and round gives trunc + 1 from one half on. */
+static inline int whole_degrees(double x, int most)
+{
+    if (!(x < most))
+        return most;
+    int d = (int)x;
+    return d + (x - d >= 0.5);
+}
+
 fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
                                  const fw_own_state *s, const fw_steer_def *ap, fw_track *out,
                                  fw_error *err)
@@ -414,9 +434,9 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
     for (int k = 0; k < n; k++) {
         if (k > 0)
             for (int j = 0; j < sub; j++) {
-                double order = -ap->kp * fw_wrap_pi(psi - ap->psi_ref) - ap->kd * r;
-                order = fmax(-hmax, fmin(hmax, order));
-                int deg = (int)fmin(NDEG - 1, round(fw_rad_to_deg(fabs(order))));
+                double order = clamp_order(-ap->kp * fw_wrap_pi(psi - ap->psi_ref) - ap->kd * r,
+                                           hmax);
+                int deg = whole_degrees(fw_rad_to_deg(fabs(order)), NDEG - 1);
                 int side = order < 0.0 && ship->nomoto_port.present;
                 if (!have[side][deg]) {
                     fw_status st = fw_nomoto_indices_at(fw_ship_kb(ship, order), U_kn, deg,
