@@ -20,7 +20,8 @@
  * both made plainly chunk by chunk), the targets' preparation kept from
  * decision to decision against the preparation made afresh, and the
  * autopilot's track (whose pieces track.c evaluates inlined) against its
- * headings made with the library's piece evaluation.
+ * headings made with the library's piece evaluation, and the assessment's
+ * danger order against the ranking rule.
  * FAIRWAY_WRITE_DIGESTS=FILE writes the digests found instead. */
 #include <stdint.h>
 #include <stdlib.h>
@@ -619,6 +620,74 @@ static void test_steer_plain(void)
     fw_track_free(&want);
 }
 
+/* encounter.h's ranking rule, restated: is target i (as p) ranked before j? */
+static bool ranked_before(const fw_assessment *p, int i, const fw_assessment *q, int j)
+{
+    if (p->enters_domain != q->enters_domain)
+        return p->enters_domain;
+    if (p->enters_domain && p->t_range != q->t_range)
+        return p->t_range < q->t_range;
+    if (p->enters_domain && p->t_enter != q->t_enter)
+        return p->t_enter < q->t_enter;
+    if (p->dcpa != q->dcpa)
+        return p->dcpa < q->dcpa;
+    return p->range != q->range ? p->range < q->range : i < j;
+}
+
+/* Is order[0..n-1] a permutation ranked strictly by the rule (then it is the
+ * one such order: the rule with the index is a strict total order), with
+ * each rank set?  swap >= 0: entries swap, swap + 1 exchanged first. */
+static bool ranked(const fw_assessment *as, int *order, int n, int swap)
+{
+    if (swap >= 0 && swap + 1 < n) {
+        int x = order[swap];
+        order[swap] = order[swap + 1], order[swap + 1] = x;
+    }
+    bool ok = true, seen[200] = {false};
+    for (int k = 0; k < n; k++) {
+        ok = ok && !seen[order[k]] && as[order[k]].rank == (swap < 0 ? k : as[order[k]].rank);
+        seen[order[k]] = true;
+        ok = ok && (k == 0 || ranked_before(&as[order[k - 1]], order[k - 1], &as[order[k]],
+                                            order[k]));
+    }
+    return ok;
+}
+
+/* fw_assess's danger order (by insertion for up to 32 targets, merge sort
+ * above) against the rule, with ties broken by the index (targets repeated
+ * from the scene), on 600 scenes of 1-60 targets; an exchange of two
+ * neighbours must be seen. */
+static void test_danger_order(void)
+{
+    static fw_target tg[200];
+    static fw_assessment as[200];
+    static int order[400];
+    fw_colregs_def cdef = fw_default_colregs_def();
+    fw_domain_def dom = fw_default_domain_def();
+    cdef.rank_range_m = FW_NMILE;
+    long scenes = 0, ties = 0, caught = 0, swaps = 0, big = 0;
+    rng = 0x5851f42d4c957f2dULL;
+    for (int s = 0; s < 600; s++) {
+        fw_own_state own = make_own(s % 2 == 1);
+        int n = 1 + s % 60;
+        make_scene(&own, s % 3 == 0, tg, n);
+        for (int i = n / 2; i < n && s % 4 == 0; i++)
+            tg[i] = tg[i - n / 2], ties++; /* the same keys, another index */
+        cdef.rank_range_m = s % 5 == 0 ? 0.0 : FW_NMILE;
+        fw_assess(&cdef, &dom, 600.0, &own, tg, n, as, order);
+        CHECK_MSG(ranked(as, order, n, -1), "scene %d (%d targets): not in the rule's order", s,
+                  n);
+        if (n > 1) {
+            bool seen = !ranked(as, order, n, s % (n - 1));
+            caught += seen, swaps++;
+        }
+        scenes++, big += n > 32;
+    }
+    printf("  danger order: %ld scenes (%ld of more than 32 targets), %ld repeated targets, "
+           "%ld of %ld exchanges seen\n", scenes, big, ties, caught, swaps);
+    CHECK(big > 100 && ties > 1000 && caught == swaps);
+}
+
 int main(void)
 {
     const char *wd = getenv("FAIRWAY_WRITE_DIGESTS");
@@ -628,6 +697,7 @@ int main(void)
     TEST_RUN(test_reach_window);
     TEST_RUN(test_prep_memo);
     TEST_RUN(test_steer_plain);
+    TEST_RUN(test_danger_order);
     TEST_RUN(test_decisions_unchanged);
     fw_track_free(&tr);
     if (digest_out)
