@@ -327,9 +327,12 @@ static void keep_check(fw_helm_ctx *c, const fw_track *keep, const fw_target *t,
     for (int i = 0; i < n; i++) {
         fw_prep_reach(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
                       c->umax, c->pbox + (size_t)i * blen, &c->jlo[i], &c->jhi[i]);
-        /* what matters: below 1 (a threat) and below the smallest yet */
-        double m2 = fw_target_min2_cap(&c->def.domain, keep, kb, &c->prep[i], c->jlo[i],
-                                       c->jhi[i], 0.0, kbest > 1.0 ? kbest : 1.0);
+        /* what matters: below 1 (a threat) and below the smallest yet; an
+         * empty window (most targets) is the call's INFINITY without it */
+        double m2 = c->jlo[i] >= c->jhi[i]
+                        ? INFINITY
+                        : fw_target_min2_cap(&c->def.domain, keep, kb, &c->prep[i], c->jlo[i],
+                                             c->jhi[i], 0.0, kbest > 1.0 ? kbest : 1.0);
         if (m2 < kbest)
             kbest = m2, res->limiting = i;
         threat[i] = m2 < 1.0;
