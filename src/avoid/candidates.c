@@ -56,6 +56,7 @@ fw_status fw_cand_open(fw_helm_ctx *c, int side, int i, int *slot, fw_error *err
     }
     fw_track_boxes_init(tr, &c->boxes[*slot]);
     c->have[*slot] = true;
+    c->opened = true;
     return FW_OK;
 }
 

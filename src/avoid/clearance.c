@@ -177,14 +177,32 @@ static int box_chunks(int nseg)
 
 int fw_prep_box_len(int nseg) { return FW_PBOX * box_chunks(nseg); }
 
+/* fw_prep_boxes of a constant-velocity target: path_box_over's ends, each
+ * made once (chunk j's last sample is chunk j + 1's first, by the same
+ * expression: the same bits), for the n chunks. */
+static void cv_boxes(double dt, const fw_prep_target *g, int nseg, int n, double *room)
+{
+    int k0 = 0;
+    double ta = k0 * dt, ea = g->east + g->ve * ta, na = g->north + g->vn * ta;
+    for (int j = 0; j < n; j++) {
+        int k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
+        double tb = k1 * dt, eb = g->east + g->ve * tb, nb = g->north + g->vn * tb;
+        double *t = room + FW_PBOX * j;
+        t[0] = mn(ea, eb), t[1] = mx(ea, eb), t[2] = mn(na, nb), t[3] = mx(na, nb), t[4] = 0.0;
+        k0 = k1, ea = eb, na = nb;
+    }
+}
+
 void fw_prep_boxes(double dt, fw_prep_target *g, int nseg, double *room)
 {
     int nch = box_chunks(nseg);
-    for (int j = 0; j < nch; j++) {
+    if (!g->path)
+        cv_boxes(dt, g, nseg, nch, room);
+    for (int j = 0; j < nch && g->path; j++) {
         double *t = room + FW_PBOX * j;
         path_box(dt, g, j, nseg, t);
         int k0 = j * FW_CHUNK, k1 = k0 + FW_CHUNK < nseg ? k0 + FW_CHUNK : nseg;
-        t[4] = g->path ? unit_step(g->path + 2 * g->ns, g->path + 3 * g->ns, k0, k1) : 0.0;
+        t[4] = unit_step(g->path + 2 * g->ns, g->path + 3 * g->ns, k0, k1);
     }
     g->box = room, g->nbox = nch, g->box_nseg = nseg;
 }
@@ -196,6 +214,17 @@ static inline double reach_radius(double dt, double umax, int k1)
     return umax * (k1 * dt) * (1.0 + 1e-9) + 1e-6;
 }
 
+/* Does g's path over chunk j, grown by its reach, meet the square of the
+ * chunk's reach radius about (e0, n0)? */
+static inline bool in_reach(double dt, const fw_prep_target *g, int j, int nseg, double e0,
+                            double n0, double umax)
+{
+    int k1 = j * FW_CHUNK + FW_CHUNK < nseg ? j * FW_CHUNK + FW_CHUNK : nseg;
+    double R = reach_radius(dt, umax, k1);
+    double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
+    return !chunk_misses(dt, g, j, nseg, env);
+}
+
 void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, double n0,
                      double umax, int *lo, int *hi)
 {
@@ -205,17 +234,15 @@ void fw_reach_window(double dt, const fw_prep_target *g, int nseg, double e0, do
         *lo = 0, *hi = nchunks;
         return;
     }
+    /* only the first and the last chunk in reach matter: looked for from
+     * either end (the chunks between are not tested) */
     *lo = -1, *hi = 0;
-    for (int j = 0; j < nch; j++) {
-        int k1 = j * FW_CHUNK + FW_CHUNK < nseg ? j * FW_CHUNK + FW_CHUNK : nseg;
-        double R = reach_radius(dt, umax, k1);
-        double env[4] = {e0 - R, e0 + R, n0 - R, n0 + R};
-        if (!chunk_misses(dt, g, j, nseg, env)) {
-            if (*lo < 0)
-                *lo = j;
+    for (int j = 0; j < nch && *lo < 0; j++)
+        if (in_reach(dt, g, j, nseg, e0, n0, umax))
+            *lo = j;
+    for (int j = nch - 1; *lo >= 0 && j >= *lo && *hi == 0; j--)
+        if (in_reach(dt, g, j, nseg, e0, n0, umax))
             *hi = j + 1;
-        }
-    }
     if (nchunks > nch) { /* chunks without boxes are never culled */
         if (*lo < 0)
             *lo = nch;

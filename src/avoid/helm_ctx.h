@@ -23,6 +23,7 @@ struct fw_helm_ctx {
      * has looked along it (most candidates fail within minutes): */
     bool *have;            /* candidate started this decision */
     bool have_keep;
+    bool opened;           /* some candidate started since fw_helm_begin */
     fw_track_gen *gen;     /* per slot: the predictor's state */
     fw_track_origin origin[2]; /* what every track of this decision starts from */
     int *ready;            /* samples there */

@@ -63,6 +63,7 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     c->nh = (int)floor((def->max_helm_deg - def->min_helm_deg) / def->step_deg + 1e-9) + 1;
     int ntr = 2 * c->nh + 2, ns = fw_track_samples(&def->track);
     c->nchunks = (ns - 1 + FW_CHUNK - 1) / FW_CHUNK;
+    c->opened = true; /* the first fw_helm_begin sets every slot up */
     c->tracks = calloc((size_t)ntr, sizeof *c->tracks);
     c->have = calloc((size_t)(2 * c->nh), sizeof *c->have);
     c->boxes = calloc((size_t)ntr, sizeof *c->boxes);
@@ -114,10 +115,13 @@ void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
     /* a port knowledge base of its own breaks the mirror image */
     c->symmetric = own->r == 0.0 && own->rdot == 0.0 && own->delta == 0.0 && own->beta == 0.0 &&
                    !c->ship->nomoto_port.present;
-    for (int i = 0; i < 2 * c->nh; i++)
+    /* the candidates' slots as new only when some was opened (a decision
+     * with a threat): else only the keep slot has changed */
+    for (int i = 0; i < 2 * c->nh && c->opened; i++)
         c->have[i] = false;
-    for (int i = 0; i <= 2 * c->nh; i++)
+    for (int i = c->opened ? 0 : 2 * c->nh; i <= 2 * c->nh; i++)
         c->ready[i] = c->nbox[i] = c->fail[i] = 0, c->src[i] = -1, c->ub2[i] = INFINITY;
+    c->opened = false;
     c->have_keep = false;
     c->origin[0].valid = c->origin[1].valid = false;
     c->prep_t = NULL;
@@ -327,9 +331,12 @@ static void keep_check(fw_helm_ctx *c, const fw_track *keep, const fw_target *t,
     for (int i = 0; i < n; i++) {
         fw_prep_reach(c->def.track.dt, &c->prep[i], kb->nseg, c->own.east, c->own.north,
                       c->umax, c->pbox + (size_t)i * blen, &c->jlo[i], &c->jhi[i]);
-        /* what matters: below 1 (a threat) and below the smallest yet */
-        double m2 = fw_target_min2_cap(&c->def.domain, keep, kb, &c->prep[i], c->jlo[i],
-                                       c->jhi[i], 0.0, kbest > 1.0 ? kbest : 1.0);
+        /* what matters: below 1 (a threat) and below the smallest yet; an
+         * empty window (most targets) is the call's INFINITY without it */
+        double m2 = c->jlo[i] >= c->jhi[i]
+                        ? INFINITY
+                        : fw_target_min2_cap(&c->def.domain, keep, kb, &c->prep[i], c->jlo[i],
+                                             c->jhi[i], 0.0, kbest > 1.0 ? kbest : 1.0);
         if (m2 < kbest)
             kbest = m2, res->limiting = i;
         threat[i] = m2 < 1.0;

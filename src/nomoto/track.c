@@ -192,7 +192,7 @@ fw_status fw_track_start_from(const fw_ship *ship, const fw_track_def *def,
 /* fw_nomoto_phi(T1, T2, t) from e2 = exp(-t / T2) made already (and
  * *e1 = exp(-t / T1) if e1 is not NULL): its operations on the same values,
  * so the same bits, without making the exponentials again. */
-static double phi_from(double T1, double T2, double t, const double *e1, double e2)
+static inline double phi_from(double T1, double T2, double t, const double *e1, double e2)
 {
     double dT = T1 - T2;
     double x = t * dT / (T1 * T2);
@@ -201,6 +201,34 @@ static double phi_from(double T1, double T2, double t, const double *e1, double 
         return e2 * t / (T1 * T2) * s;
     }
     return ((e1 ? *e1 : exp(-t / T1)) - e2) / dT;
+}
+
+/* The homogeneous part of a piece's response at tau (h, its slope hd, its
+ * integral H) from e2 = exp(-tau / T2) and ph = phi(tau), with A = T1 (T2 h1
+ * + h0), B = T1 (T2 h2 + h1), TT = T1 T2 and TS = T1 + T2: the operations of
+ * fw_nomoto_piece_eval on the same values, so the same bits ((-T1) T2 is
+ * -(T1 T2) exactly). */
+static inline void piece_homog(const fw_nomoto_piece *pc, double A, double B, double TT,
+                               double TS, double e2, double ph, double *h, double *hd, double *H)
+{
+    *h = pc->h0 * e2 + A * ph;
+    *hd = pc->h1 * e2 + B * ph;
+    *H = -TT * (*hd - pc->h1) - TS * (*h - pc->h0);
+}
+
+/* fw_nomoto_piece_eval(pc, t, r, rdot, turned) to the bit, inlined, with
+ * exp(-t / T2) made once for the response and phi (the library's phi makes
+ * it again): the autopilot's track evaluates two pieces a step. */
+static inline void piece_eval(const fw_nomoto_piece *pc, double t, double *r, double *rdot,
+                              double *turned)
+{
+    double T1 = pc->T1, T2 = pc->T2, e2 = exp(-t / T2), ph = phi_from(T1, T2, t, NULL, e2);
+    double h, hd, H;
+    piece_homog(pc, T1 * (T2 * pc->h1 + pc->h0), T1 * (T2 * pc->h2 + pc->h1), T1 * T2, T1 + T2,
+                e2, ph, &h, &hd, &H);
+    *r = pc->c0 + pc->b * t + h;
+    *rdot = pc->b + hd;
+    *turned = pc->c0 * t + 0.5 * pc->b * t * t + H;
 }
 
 /* Enters piece g->p at sample g->k: its response from the state reached, and
@@ -272,9 +300,8 @@ static void piece_run(fw_track_gen *gp, fw_track *out, int kmax)
     bool steadied = gp->steadied;
     int k = gp->k;
     for (; k < kmax && k * dt < t_end; k++, tau += dt) {
-        double h = pc.h0 * e2 + A * ph;
-        double hd = pc.h1 * e2 + B * ph;
-        double H = -TT * (hd - pc.h1) - TS * (h - pc.h0);
+        double h, hd, H;
+        piece_homog(&pc, A, B, TT, TS, e2, ph, &h, &hd, &H);
         double r = pc.c0 + pc.b * tau + h, rd = pc.b + hd;
         double turn = turned0 + pc.c0 * tau + 0.5 * pc.b * tau * tau + H;
         double dl = dl0 + rh * tau;
@@ -322,7 +349,7 @@ static void headings(fw_track_gen *g, fw_track *out, int kmax)
             return; /* paused inside the piece */
         if (g->p < 2) {
             double len = g->piece_start[g->p + 1] - g->piece_start[g->p], turned;
-            fw_nomoto_piece_eval(&g->q.pc, len, &g->r0, &g->v0, &turned);
+            piece_eval(&g->q.pc, len, &g->r0, &g->v0, &turned);
             g->turned0 += turned;
         }
         g->p++;
@@ -357,6 +384,26 @@ fw_status fw_track_predict(const fw_ship *ship, const fw_track_def *def, const f
     return st;
 }
 
+/* fmax(-hmax, fmin(hmax, order)), inlined (libm's are calls): as glibc's
+ * minsd and maxsd a tie gives the second argument, a NaN order hmax (and
+ * the sign of a zero order, which only hmax = 0 could meet, changes nothing
+ * downstream: order < 0, order > delta and |order - delta| read it alike). */
+static inline double clamp_order(double order, double hmax)
+{
+    double o = hmax < order || order != order ? hmax : order;
+    return -hmax > o ? -hmax : o;
+}
+
+/* (int)fmin(most, round(x)) for x >= 0 or NaN, inlined: below `most` the
+ * fraction x - trunc(x) is exact, and round gives trunc + 1 from one half on. */
+static inline int whole_degrees(double x, int most)
+{
+    if (!(x < most))
+        return most;
+    int d = (int)x;
+    return d + (x - d >= 0.5);
+}
+
 fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
                                  const fw_own_state *s, const fw_steer_def *ap, fw_track *out,
                                  fw_error *err)
@@ -387,9 +434,9 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
     for (int k = 0; k < n; k++) {
         if (k > 0)
             for (int j = 0; j < sub; j++) {
-                double order = -ap->kp * fw_wrap_pi(psi - ap->psi_ref) - ap->kd * r;
-                order = fmax(-hmax, fmin(hmax, order));
-                int deg = (int)fmin(NDEG - 1, round(fw_rad_to_deg(fabs(order))));
+                double order = clamp_order(-ap->kp * fw_wrap_pi(psi - ap->psi_ref) - ap->kd * r,
+                                           hmax);
+                int deg = whole_degrees(fw_rad_to_deg(fabs(order)), NDEG - 1);
                 int side = order < 0.0 && ship->nomoto_port.present;
                 if (!have[side][deg]) {
                     fw_status st = fw_nomoto_indices_at(fw_ship_kb(ship, order), U_kn, deg,
@@ -406,13 +453,13 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
                 fw_nomoto_piece pc;
                 if (ramp > 0.0) {
                     fw_nomoto_piece_init(&pc, ix, delta, rho, r, v);
-                    fw_nomoto_piece_eval(&pc, ramp, &r, &v, &turned);
+                    piece_eval(&pc, ramp, &r, &v, &turned);
                     psi += turned;
                     delta += rho * ramp;
                 }
                 if (h - ramp > 0.0) {
                     fw_nomoto_piece_init(&pc, ix, delta, 0.0, r, v);
-                    fw_nomoto_piece_eval(&pc, h - ramp, &r, &v, &turned);
+                    piece_eval(&pc, h - ramp, &r, &v, &turned);
                     psi += turned;
                 }
                 double ps = sn, pcs = cs;
