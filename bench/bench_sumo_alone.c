@@ -8,8 +8,8 @@
  * cheapest SUMO that moves these ships as fairway's does.  W, "sumo, collision
  * check on", is the same sumo with SUMO's own collision check ("warn"), as
  * fairway ran it until 2026-12-02 and as the issue first measured it: it moves
- * every ship the same (its FCD output is the same bytes) and costs a third
- * more; A/W is printed beside A/B, never instead of it.
+ * every ship the same (its FCD output is the same bytes) and costs half as
+ * much again; A/W is printed beside A/B, never instead of it.
  *
  * Whole processes, start-up included (that is what a study pays per run):
  * RUNS rounds, each running A, (A0,) B, W, L in turn, CPU (user + system, the
