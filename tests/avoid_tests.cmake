@@ -43,5 +43,6 @@ fw_cli_test(identify_bad_rudder 2 "--rudders: 50 deg outside" identify --ship c3
 add_library(fw_helm_reference STATIC helm_reference.c)
 target_link_libraries(fw_helm_reference PUBLIC fairway_core)
 target_include_directories(fw_helm_reference PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-fw_test(test_decide test_decide.c)
+fw_test(test_decide test_decide.c decide_scenes.c)
 target_link_libraries(test_decide PRIVATE fw_helm_reference)
+fw_test(test_decide_parts test_decide_parts.c decide_scenes.c)
