@@ -244,7 +244,7 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
     double reach = 0.5 * (hypot(r->s->ship.Loa, r->s->ship.B) + hypot(ts->length, ts->breadth));
     if (d <= reach + kHullWatch) {
         double h = fw_hull_distance(own->east, own->north, own->psi, r->s->ship.Loa, r->s->ship.B,
-                                    ts->east, ts->north, ts->course, ts->length, ts->breadth);
+                                    ts->east, ts->north, ts->heading, ts->length, ts->breadth);
         if (h < e->min_hull)
             e->min_hull = h;
         if (h == 0.0)
@@ -257,7 +257,7 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
         fputc(',', r->tgt);
         fputs(ts->id, r->tgt);
         put_nums(r->tgt,
-                 (const double[]){ts->east, ts->north, fw_heading_deg(ts->course),
+                 (const double[]){ts->east, ts->north, fw_heading_deg(ts->heading),
                                   fw_ms_to_kn(ts->speed), d, fw_heading_deg(as->bearing),
                                   as->dcpa, as->tcpa},
                  (const int[]){2, 2, 3, 3, 2, 3, 2, 2}, 8);

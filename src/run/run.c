@@ -30,7 +30,8 @@ const char *fw_run_status_name(fw_run_status s) { return s == FW_RUN_OK ? "ok" :
 static fw_target own_start(const fw_scenario *s)
 {
     fw_target o = {.east = s->east, .north = s->north, .course = s->course, .speed = s->speed,
-                   .length = s->ship.Loa, .breadth = s->ship.B};
+                   .heading = s->course, .stw = s->speed, .length = s->ship.Loa,
+                   .breadth = s->ship.B};
     snprintf(o.id, sizeof o.id, "fw_own");
     return o;
 }

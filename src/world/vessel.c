@@ -17,9 +17,8 @@ fw_vessel_def fw_default_vessel_def(void)
  * The policy's own state is through the water plus the current at the ship
  * (the track predictor adds it, track.h); the record has the hull's heading
  * and speed through the water, and the course and speed over ground (what
- * the others' CPA needs): in calm water the direction of motion psi - beta
- * (it differs from the heading in a turn, where the hull drifts) at the
- * speed through the water. */
+ * the others' CPA needs): in a current the triangle of velocities, in calm
+ * water the heading at the speed through the water. */
 static void refresh(fw_vessel *v, double dt)
 {
     const fw_mmg_state *x = &v->motion;
@@ -41,7 +40,9 @@ static void refresh(fw_vessel *v, double dt)
     t->heading = x->psi;
     t->stw = stw;
     if (ce == 0.0 && cn == 0.0) {
-        t->course = x->psi - beta;
+        /* calm water: the heading, as before (the drift in a turn is left
+         * out: the course over ground would be psi - beta) */
+        t->course = x->psi;
         t->speed = stw;
     } else {
         double ve = x->u * sin(x->psi) + x->vm * cos(x->psi) + ce;
