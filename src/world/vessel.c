@@ -18,7 +18,8 @@ fw_vessel_def fw_default_vessel_def(void)
  * (the track predictor adds it, track.h); the record has the hull's heading
  * and speed through the water, and the course and speed over ground (what
  * the others' CPA needs): in a current the triangle of velocities, in calm
- * water the heading at the speed through the water. */
+ * water psi - beta (it differs from the heading in a turn, where the hull
+ * drifts outwards) at the speed through the water. */
 static void refresh(fw_vessel *v, double dt)
 {
     const fw_mmg_state *x = &v->motion;
@@ -40,9 +41,10 @@ static void refresh(fw_vessel *v, double dt)
     t->heading = x->psi;
     t->stw = stw;
     if (ce == 0.0 && cn == 0.0) {
-        /* calm water: the heading, as before (the drift in a turn is left
-         * out: the course over ground would be psi - beta) */
-        t->course = x->psi;
+        /* calm water: the direction of motion, the heading less the drift
+         * angle (the same bits as the heading on a straight course, where
+         * beta = -0) */
+        t->course = x->psi - beta;
         t->speed = stw;
     } else {
         double ve = x->u * sin(x->psi) + x->vm * cos(x->psi) + ce;
