@@ -11,14 +11,19 @@
  *   the record of a ship set sideways: heading and stw through the water,
  *     course and speed over ground by the triangle of velocities (atan2)
  *   the Nomoto track prediction in a current is the calm one plus current x t
+ *   the helm search in a current (its speed bound and mirror shortcut
+ *     generalised) decides as the plain reference search does, to the bit
  *   a world refuses a wind (no ship has windage yet) and a bad field
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "avoid/helm_search.h"
 #include "core/units.h"
+#include "decide_scenes.h"
 #include "env/env.h"
+#include "helm_reference.h"
 #include "nomoto/track.h"
 #include "test.h"
 #include "test_ship.h"
@@ -240,6 +245,73 @@ static void test_track_prediction_in_current(void)
     fw_track_free(&b);
 }
 
+/* The helm search's shortcuts in a current: its decisions are the plain
+ * reference search's (which predicts every candidate and checks every target)
+ * bit for bit, on straight and turning own ships in currents up to 2.5 m/s
+ * from any direction. */
+static void test_helm_search_in_current(void)
+{
+    fw_error err = {0};
+    fw_helm_def hdef = fw_default_helm_def();
+    fw_helm_ctx *ctx = NULL;
+    fw_helm_ref *ref = NULL;
+    CHECK(fw_helm_ctx_create(&mmg, &hdef, &ctx, &err) == FW_OK);
+    CHECK(ctx && fw_helm_ref_create(&hdef, fw_helm_count(ctx), &ref, &err) == FW_OK);
+    if (!ctx || !ref) {
+        fw_helm_ctx_destroy(ctx);
+        return;
+    }
+    static fw_target tg[40];
+    decide_seed(0x5eaULL);
+    int scenes = 0, same = 0, threats = 0, sides[2] = {0, 0}, differs_calm = 0, same_tracks = 0;
+    fw_track tr;
+    CHECK(fw_track_alloc(&tr, fw_track_samples(&hdef.track), &err) == FW_OK);
+    for (int s = 0; s < 160; s++, scenes++) {
+        fw_own_state own = decide_own(s % 3 == 0);
+        int n = 1 + s % 40;
+        decide_scene(&own, s % 2 == 1, tg, n);
+        double c = 2.5 * decide_uniform(), set = 2 * FW_PI * decide_uniform();
+        own.cur_e = c * sin(set), own.cur_n = c * cos(set);
+        fw_helm_result rn, rr, calm;
+        fw_helm_begin(ctx, &own);
+        CHECK(fw_helm_search(ctx, tg, n, FW_ALLOW_EITHER, &rn, &err) == FW_OK);
+        fw_helm_begin(ctx, &own);
+        CHECK(fw_helm_search_reference(ref, ctx, tg, n, FW_ALLOW_EITHER, &rr, &err) == FW_OK);
+        same += rn.threat == rr.threat && rn.feasible == rr.feasible && rn.side == rr.side &&
+                memcmp(&rn.helm, &rr.helm, sizeof rn.helm) == 0 &&
+                memcmp(&rn.clearance, &rr.clearance, sizeof rn.clearance) == 0 &&
+                memcmp(&rn.keep_clearance, &rr.keep_clearance, sizeof rn.keep_clearance) == 0;
+        /* a port candidate is predicted, not mirrored from starboard (the
+         * mirror is not the track in a current): fw_track_predict's */
+        const fw_track *got;
+        int i = s % fw_helm_count(ctx);
+        CHECK(fw_helm_track(ctx, FW_SIDE_STARBOARD, i, &got, &err) == FW_OK);
+        CHECK(fw_helm_track(ctx, FW_SIDE_PORT, i, &got, &err) == FW_OK);
+        CHECK(fw_track_predict(&mmg, &hdef.track, &own, fw_helm_value(ctx, FW_SIDE_PORT, i), &tr,
+                               &err) == FW_OK);
+        size_t len = sizeof(double) * (size_t)tr.n;
+        same_tracks += got->n == tr.n && memcmp(got->east, tr.east, len) == 0 &&
+                       memcmp(got->north, tr.north, len) == 0;
+        threats += rn.threat;
+        sides[rn.side == FW_SIDE_PORT] += rn.side != FW_SIDE_NONE;
+        fw_own_state still = own;
+        still.cur_e = still.cur_n = 0.0;
+        fw_helm_begin(ctx, &still);
+        CHECK(fw_helm_search(ctx, tg, n, FW_ALLOW_EITHER, &calm, &err) == FW_OK);
+        differs_calm += memcmp(&calm.keep_clearance, &rn.keep_clearance, sizeof calm.keep_clearance) != 0;
+    }
+    printf("  %d scenes in a current: %d decided as the reference; %d threats, sides %d "
+           "starboard %d port; %d whose keep clearance the current changed\n",
+           scenes, same, threats, sides[0], sides[1], differs_calm);
+    CHECK(same == scenes);
+    CHECK(same_tracks == scenes);
+    fw_track_free(&tr);
+    /* not vacuous: threats, both sides, and the current matters */
+    CHECK(threats > scenes / 3 && sides[0] > 0 && sides[1] > 0 && differs_calm > scenes / 2);
+    fw_helm_ref_destroy(ref);
+    fw_helm_ctx_destroy(ctx);
+}
+
 static void test_refusals(void)
 {
     fw_error err = {0};
@@ -282,6 +354,7 @@ int main(void)
     TEST_RUN(test_zero_current_is_calm);
     TEST_RUN(test_record_heading_and_course);
     TEST_RUN(test_track_prediction_in_current);
+    TEST_RUN(test_helm_search_in_current);
     TEST_RUN(test_refusals);
     return TEST_EXIT();
 }

@@ -1,5 +1,6 @@
 #include "nomoto/track.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -498,6 +499,10 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
 void fw_track_mirror_range(const fw_track *src, const fw_own_state *s, fw_track *dst, int k0,
                            int k1)
 {
+    /* the mirror image of a track carried by a current is carried by the
+     * mirrored current: the other helm's track only when the current is
+     * along the heading (the helm search mirrors in still water only) */
+    assert(s->cur_e == 0.0 && s->cur_n == 0.0 && "mirrored track in a current");
     double ux = sin(s->psi), uy = cos(s->psi); /* along the initial heading */
     double s2 = sin(2.0 * s->psi), c2 = cos(2.0 * s->psi);
     dst->n = src->n;

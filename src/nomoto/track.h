@@ -146,7 +146,8 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
                                  fw_error *err);
 
 /* The mirror image of src about the line of the initial heading: the track
- * for -helm when the start is symmetric (r = rdot = delta = 0). */
+ * for -helm when the start is symmetric (r = rdot = delta = 0, no current:
+ * asserted). */
 void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst);
 /* The same for samples k0..k1-1 of src only. */
 void fw_track_mirror_range(const fw_track *src, const fw_own_state *s, fw_track *dst, int k0,
