@@ -216,6 +216,41 @@ static void test_record_heading_and_course(void)
     fw_world_destroy(w);
 }
 
+/* A Nomoto vessel (the light plant) is carried by the current too: its
+ * track under the script is the calm one plus c t. */
+static void test_nomoto_vessel_in_current(void)
+{
+    fw_error err = {0};
+    fw_vessel *v[2];
+    fw_world *w[2];
+    fw_current cur = fw_current_uniform(1.2, fw_deg_to_rad(250.0));
+    for (int i = 0; i < 2; i++) {
+        fw_world_def wd = fw_default_world_def();
+        if (i)
+            wd.env.current = cur;
+        CHECK(fw_world_create(&wd, &w[i], &err) == FW_OK);
+        fw_vessel_def vd = fw_default_vessel_def();
+        vd.ship = &mmg;
+        vd.dynamics = FW_DYN_NOMOTO;
+        vd.course = 0.3, vd.speed = 6.0;
+        vd.controller = script();
+        CHECK_MSG(fw_world_add_vessel(w[i], &vd, &v[i], &err) == FW_OK, "%s", err.msg);
+        CHECK(fw_world_start(w[i], &err) == FW_OK);
+    }
+    double worst = 0.0, worst_psi = 0.0;
+    for (int k = 1; k <= 3600; k++) {
+        CHECK(fw_world_step(w[0], 1.0, &err) == FW_OK && fw_world_step(w[1], 1.0, &err) == FW_OK);
+        const fw_target *a = fw_vessel_record(v[0]), *b = fw_vessel_record(v[1]);
+        worst = fmax(worst, hypot(b->east - (a->east + cur.east * k), b->north - (a->north + cur.north * k)));
+        worst_psi = fmax(worst_psi, fabs(b->heading - a->heading));
+    }
+    printf("  Nomoto vessel: worst offset from calm + c t %.3g m\n", worst);
+    CHECK_NEAR(worst, 0.0, 1e-6);
+    CHECK(worst_psi == 0.0);
+    for (int i = 0; i < 2; i++)
+        fw_world_destroy(w[i]);
+}
+
 /* The predicted track in a current is the calm one carried by it. */
 static void test_track_prediction_in_current(void)
 {
@@ -353,6 +388,7 @@ int main(void)
     TEST_RUN(test_tidal_current_shifts_track);
     TEST_RUN(test_zero_current_is_calm);
     TEST_RUN(test_record_heading_and_course);
+    TEST_RUN(test_nomoto_vessel_in_current);
     TEST_RUN(test_track_prediction_in_current);
     TEST_RUN(test_helm_search_in_current);
     TEST_RUN(test_refusals);
