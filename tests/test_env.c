@@ -354,6 +354,12 @@ static void test_refusals(void)
     wd.env.wind = (fw_wind){.kind = FW_FIELD_UNIFORM, .speed = 10.0, .from = 0.5};
     fw_world *w;
     CHECK(fw_world_create(&wd, &w, &err) == FW_OK); /* the field alone is fine */
+    double ws, wf;
+    fw_wind_at(&wd.env.wind, 1e4, -3e3, 500.0, &ws, &wf);
+    CHECK(ws == 10.0 && wf == 0.5);
+    fw_env still = fw_default_env();
+    fw_wind_at(&still.wind, 0, 0, 0, &ws, &wf);
+    CHECK(ws == 0.0);
     fw_vessel_def vd = fw_default_vessel_def();
     vd.ship = &mmg;
     fw_vessel *v = NULL;

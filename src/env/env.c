@@ -113,11 +113,6 @@ bool fw_current_is_none(const fw_current *c)
     return false;
 }
 
-bool fw_current_is_steady_uniform(const fw_current *c)
-{
-    return c->kind == FW_FIELD_NONE || c->kind == FW_FIELD_UNIFORM || fw_current_is_none(c);
-}
-
 void fw_wind_at(const fw_wind *w, double east, double north, double t, double *speed,
                 double *from)
 {

@@ -81,9 +81,6 @@ void fw_current_drift(const fw_current *c, double east, double north, double t0,
 
 /* None, or a velocity of exactly zero: the hydrodynamics are those of calm water. */
 bool fw_current_is_none(const fw_current *c);
-/* The same velocity everywhere and always (none included): a track predicted
- * through the water plus current x t is then the exact ground track. */
-bool fw_current_is_steady_uniform(const fw_current *c);
 
 /* Wind at (east, north) at time t: speed (m/s) and direction from (rad). */
 void fw_wind_at(const fw_wind *w, double east, double north, double t, double *speed,
