@@ -27,6 +27,7 @@
 #include "nomoto/track.h"
 #include "test.h"
 #include "test_ship.h"
+#include "world/controllers.h"
 #include "world/world.h"
 
 static fw_ship mmg;
@@ -251,6 +252,90 @@ static void test_nomoto_vessel_in_current(void)
         fw_world_destroy(w[i]);
 }
 
+/* Two MMG ships under the avoidance policy meeting head-on, in calm water
+ * and in a uniform current: in the water's frame the encounter is the same
+ * (both are carried alike, and each sees the other's motion over ground and
+ * knows the current), so each acts at the same step to the same side with
+ * the same helm, and the tracks are the calm ones plus c t until the return
+ * (which steers back to a track fixed over ground, so there the two differ). */
+static void test_avoidance_in_current(void)
+{
+    fw_current cur = fw_current_uniform(1.5, fw_deg_to_rad(300.0));
+    fw_error err = {0};
+    fw_world *w[2];
+    fw_vessel *v[2][2];
+    fw_policy_controller_def pd = {.ship = &mmg, .helm = fw_default_helm_def(),
+                                   .policy = fw_default_policy_def()};
+    for (int e = 0; e < 2; e++) {
+        fw_world_def wd = fw_default_world_def();
+        if (e)
+            wd.env.current = cur;
+        CHECK(fw_world_create(&wd, &w[e], &err) == FW_OK);
+        for (int i = 0; i < 2; i++) {
+            fw_vessel_def vd = fw_default_vessel_def();
+            vd.id = i ? "B" : "A";
+            vd.ship = &mmg;
+            vd.north = i ? 9000.0 : 0.0, vd.east = i ? 200.0 : 0.0;
+            vd.course = i ? FW_PI : 0.0;
+            vd.speed = fw_kn_to_ms(10);
+            CHECK(fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK);
+            CHECK_MSG(fw_world_add_vessel(w[e], &vd, &v[e][i], &err) == FW_OK, "%s", err.msg);
+        }
+        CHECK(fw_world_start(w[e], &err) == FW_OK);
+    }
+    double t_act[2][2] = {{-1, -1}, {-1, -1}}, helm[2][2] = {{0}}, worst = 0.0, dmin = INFINITY;
+    bool returning = false;
+    int same_orders = 0, steps = 0;
+    for (int k = 0; k <= 2400; k++) {
+        for (int e = 0; e < 2 && k > 0; e++)
+            CHECK(fw_world_step(w[e], 1.0, &err) == FW_OK);
+        for (int i = 0; i < 2; i++) {
+            for (int e = 0; e < 2; e++) {
+                const fw_decision *d = fw_vessel_decision(v[e][i]);
+                if (d->acted && t_act[e][i] < 0)
+                    t_act[e][i] = k, helm[e][i] = d->helm;
+                returning = returning || d->mode == FW_MODE_AUTOPILOT || d->mode == FW_MODE_STEADY;
+            }
+            if (returning)
+                continue;
+            const fw_target *a = fw_vessel_record(v[0][i]), *b = fw_vessel_record(v[1][i]);
+            worst = fmax(worst, hypot(b->east - (a->east + cur.east * k),
+                                      b->north - (a->north + cur.north * k)));
+            same_orders += fw_vessel_decision(v[0][i])->helm == fw_vessel_decision(v[1][i])->helm;
+            steps++;
+        }
+        const fw_target *a = fw_vessel_record(v[1][0]), *b = fw_vessel_record(v[1][1]);
+        dmin = fmin(dmin, hypot(a->east - b->east, a->north - b->north));
+    }
+    printf("  avoidance head-on in 1.5 m/s: acted at %.0f/%.0f s (calm %.0f/%.0f s), helm "
+           "%.0f/%.0f deg; until the return (%d vessel-steps) %d orders alike, tracks within "
+           "%.3g m of calm + c t; closest %.0f m\n",
+           t_act[1][0], t_act[1][1], t_act[0][0], t_act[0][1], fw_rad_to_deg(helm[1][0]),
+           fw_rad_to_deg(helm[1][1]), steps, same_orders, worst, dmin);
+    /* after the return, the current's run steers back to its track over
+     * ground (crabbing into the current), the calm one to its own: they
+     * part; both get back onto their tracks */
+    const fw_target *a = fw_vessel_record(v[0][0]), *b = fw_vessel_record(v[1][0]);
+    const fw_policy *pa = fw_policy_controller_policy(fw_vessel_controller(v[1][0]));
+    printf("  at 2400 s A is %.0f m from calm + c t (returning to its track over ground: "
+           "%.0f m off it, mode %s; in calm water %.0f m)\n",
+           hypot(b->east - (a->east + cur.east * 2400), b->north - (a->north + cur.north * 2400)),
+           fw_policy_cross_track(pa, fw_vessel_own_state(v[1][0])),
+           fw_policy_mode_name(fw_vessel_decision(v[1][0])->mode),
+           fw_policy_cross_track(fw_policy_controller_policy(fw_vessel_controller(v[0][0])),
+                                 fw_vessel_own_state(v[0][0])));
+    CHECK(fabs(fw_policy_cross_track(pa, fw_vessel_own_state(v[1][0]))) < 100.0);
+    for (int i = 0; i < 2; i++) {
+        CHECK(t_act[0][i] > 0 && t_act[1][i] == t_act[0][i]);
+        CHECK(helm[1][i] == helm[0][i] && helm[1][i] > 0.0); /* starboard */
+    }
+    CHECK(steps > 400 && same_orders == steps);
+    CHECK_NEAR(worst, 0.0, 0.1);
+    CHECK(dmin > 300.0);
+    for (int e = 0; e < 2; e++)
+        fw_world_destroy(w[e]);
+}
+
 /* The predicted track in a current is the calm one carried by it. */
 static void test_track_prediction_in_current(void)
 {
@@ -397,6 +482,7 @@ int main(void)
     TEST_RUN(test_nomoto_vessel_in_current);
     TEST_RUN(test_track_prediction_in_current);
     TEST_RUN(test_helm_search_in_current);
+    TEST_RUN(test_avoidance_in_current);
     TEST_RUN(test_refusals);
     return TEST_EXIT();
 }
