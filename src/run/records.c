@@ -131,15 +131,15 @@ static void end_row(const fw_records *r, FILE *f, double east, double north)
 
 FILE *fw_records_log(fw_records *r) { return r->log; }
 
-void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
-                    const char *mode)
+void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, const fw_target *rec,
+                    double helm, double n, const char *mode)
 {
     /* t_s,east_m,north_m,heading_deg,speed_kn,u_mps,v_mps,r_degps,rudder_deg,helm_deg,
      * propeller_rps,mode */
     fw_put_fixed(r->own, t, 1);
     put_nums(r->own,
              (const double[]){x->east, x->north, fw_heading_deg(x->psi),
-                              fw_ms_to_kn(hypot(x->u, x->vm)), x->u, x->vm, fw_rad_to_deg(x->r),
+                              fw_ms_to_kn(rec->speed), x->u, x->vm, fw_rad_to_deg(x->r),
                               fw_rad_to_deg(x->delta), fw_rad_to_deg(helm), n},
              (const int[]){2, 2, 3, 3, 4, 4, 5, 3, 3, 4}, 10);
     fputc(',', r->own);

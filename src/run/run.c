@@ -355,8 +355,8 @@ static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *er
         return st;
     bool row = k % lround(s->record_every / s->step) == 0;
     if (row)
-        fw_records_own(R->rec, t, x, d->helm, fw_vessel_propeller(R->own),
-                       fw_policy_mode_name(d->mode));
+        fw_records_own(R->rec, t, x, fw_vessel_record(R->own), d->helm,
+                       fw_vessel_propeller(R->own), fw_policy_mode_name(d->mode));
     for (int i = 0; i < n; i++)
         if ((st = fw_records_target(R->rec, t, &tg[i], x, &as[i], row, err)))
             return st;
