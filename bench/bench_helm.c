@@ -161,7 +161,7 @@ static void make_scene(const fw_own_state *own, int mode, fw_target *tg, int n)
             mn = rr * cos(b) + v * cos(course) * tm;
         }
         tg[i] = (fw_target){.east = me - v * sin(course) * tm, .north = mn - v * cos(course) * tm,
-                            .course = course, .speed = v, .length = 100 + 200 * uniform(),
+                            .course = course, .heading = course, .speed = v, .length = 100 + 200 * uniform(),
                             .breadth = 30};
     }
 }

@@ -100,7 +100,7 @@ static int one_run(int n, int run, bool brute, double out[4])
     for (int k = 0; k < WARMUP + STEPS; k++) {
         for (int i = 0; i < n; i++)
             in[i] = fw_target_named(s[i].id, (fw_target){ .east = s[i].e, .north = s[i].n,
-                                     .course = s[i].h, .speed = s[i].v, .length = 150,
+                                     .course = s[i].h, .heading = s[i].h, .speed = s[i].v, .length = 150,
                                      .breadth = 25, .own = i == 0});
         double dt[2] = {0.0, 0.0};
         for (int j = 0; j < 1 + brute; j++) {

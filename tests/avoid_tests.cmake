@@ -46,3 +46,6 @@ target_include_directories(fw_helm_reference PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 fw_test(test_decide test_decide.c decide_scenes.c)
 target_link_libraries(test_decide PRIVATE fw_helm_reference)
 fw_test(test_decide_parts test_decide_parts.c decide_scenes.c)
+# the environment (src/env) in the world, the dynamics and the helm search
+fw_test(test_env test_env.c decide_scenes.c)
+target_link_libraries(test_env PRIVATE fw_helm_reference)

@@ -52,7 +52,7 @@ void decide_scene(const fw_own_state *own, bool dense, fw_target *tg, int n)
         }
         double u = decide_uniform();
         tg[i] = (fw_target){.east = me - v * sin(course) * tm, .north = mn - v * cos(course) * tm,
-                            .course = course, .speed = v, .length = 100 + 200 * decide_uniform(),
+                            .course = course, .heading = course, .speed = v, .length = 100 + 200 * decide_uniform(),
                             .breadth = 30,
                             .pred = u < 0.07 ? &kTurnPort.base
                                     : u < 0.14 ? &kTurnStbd.base : NULL};

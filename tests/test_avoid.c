@@ -17,7 +17,7 @@ static fw_target target_at(double rel_bearing_deg, double range, double course_d
 {
     double b = fw_deg_to_rad(rel_bearing_deg);
     return (fw_target){.east = range * sin(b), .north = range * cos(b),
-                       .course = fw_deg_to_rad(course_deg), .speed = fw_kn_to_ms(kn)};
+                       .course = fw_deg_to_rad(course_deg), .heading = fw_deg_to_rad(course_deg), .speed = fw_kn_to_ms(kn)};
 }
 
 static void test_classification_table(void)
@@ -58,7 +58,7 @@ static void test_classification_table(void)
     /* own ship overtaking: own in the target's stern sector, own faster; the
      * boundary is the target's 112.5 deg bearing to the own ship */
     fw_target t = {.east = 2000 * sin(fw_deg_to_rad(67.4)), .north = 2000 * cos(fw_deg_to_rad(67.4)),
-                   .course = 0, .speed = fw_kn_to_ms(5)};
+                   .course = 0, .heading = 0, .speed = fw_kn_to_ms(5)};
     CHECK(fw_classify(&def, &own, &t) == FW_SIT_OVERTAKING);
     t.east = 2000 * sin(fw_deg_to_rad(67.6)), t.north = 2000 * cos(fw_deg_to_rad(67.6));
     CHECK(fw_classify(&def, &own, &t) == FW_SIT_GIVE_WAY);
@@ -71,8 +71,8 @@ static void test_assessment_and_ranking(void)
     fw_own_state own = {.U = fw_kn_to_ms(10)};
     fw_target t[3] = {
         target_at(45, 2000, 270, 8),  /* passes well clear */
-        {.east = 0, .north = 3000, .course = FW_PI, .speed = fw_kn_to_ms(8)}, /* head-on */
-        {.east = 0, .north = 1500, .course = FW_PI, .speed = fw_kn_to_ms(8)}, /* head-on, nearer */
+        {.east = 0, .north = 3000, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(8)}, /* head-on */
+        {.east = 0, .north = 1500, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(8)}, /* head-on, nearer */
     };
     t[0].east = 3000; /* crossing far off: DCPA large */
     fw_assessment as[3];
@@ -87,7 +87,7 @@ static void test_assessment_and_ranking(void)
     CHECK(as[2].rank == 0 && as[0].rank == 2);
     /* a target hull grows the domain: 300 m abeam + half its length when it lies
      * across the own ship */
-    fw_target big = {.east = 0, .north = 0, .course = FW_PI / 2, .length = 200, .breadth = 30};
+    fw_target big = {.east = 0, .north = 0, .course = FW_PI / 2, .heading = FW_PI / 2, .length = 200, .breadth = 30};
     double a, b;
     fw_domain_axes(&dom, &big, cos(big.course), sin(big.course), &a, &b);
     CHECK_NEAR(a, 315, 1e-9);
@@ -108,9 +108,9 @@ static void test_more_helm_more_clearance(void)
     fw_helm_ctx *ctx = make_ctx(&def);
     fw_own_state own = {.U = fw_kn_to_ms(10)};
     fw_target cases[3] = {
-        {.east = 0, .north = 1900, .course = FW_PI, .speed = fw_kn_to_ms(10)},
-        {.east = 1300, .north = 1900, .course = 1.5 * FW_PI, .speed = fw_kn_to_ms(10)},
-        {.east = 30, .north = 2500, .course = FW_PI, .speed = fw_kn_to_ms(8), .length = 300, .breadth = 40},
+        {.east = 0, .north = 1900, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(10)},
+        {.east = 1300, .north = 1900, .course = 1.5 * FW_PI, .heading = 1.5 * FW_PI, .speed = fw_kn_to_ms(10)},
+        {.east = 30, .north = 2500, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(8), .length = 300, .breadth = 40},
     };
     fw_helm_begin(ctx, &own);
     for (int c = 0; c < 3; c++) {
@@ -152,8 +152,8 @@ static void test_only_one_side_works(void)
          * meeting 500 m off on one side (no threat on the present course) that
          * blocks a turn that way */
         fw_target t[2] = {
-            {.east = 0, .north = 900, .course = 0, .speed = fw_kn_to_ms(3)},
-            {.east = -500 * sgn, .north = 2200, .course = FW_PI, .speed = fw_kn_to_ms(10)},
+            {.east = 0, .north = 900, .course = 0, .heading = 0, .speed = fw_kn_to_ms(3)},
+            {.east = -500 * sgn, .north = 2200, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(10)},
         };
         fw_assessment as[2];
         int order[4];
@@ -179,8 +179,8 @@ static void test_only_one_side_works(void)
     /* two head-on ships 300 m apart: starboard is required; only a hard turn
      * passes both (the paper's complex head-on case) */
     fw_target two[2] = {
-        {.east = -150, .north = 1850, .course = FW_PI, .speed = fw_kn_to_ms(8)},
-        {.east = 150, .north = 1850, .course = FW_PI, .speed = fw_kn_to_ms(8)},
+        {.east = -150, .north = 1850, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(8)},
+        {.east = 150, .north = 1850, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(8)},
     };
     fw_assessment as[2];
     int order[4];
@@ -276,7 +276,7 @@ static loop_out closed_loop(const fw_target *t0, int n, int seconds)
 /* Closed loop on the Nomoto plant itself: the head-on case from t = 0. */
 static void test_policy_head_on_cycle(void)
 {
-    fw_target t = {.east = 0, .north = 2000, .course = FW_PI, .speed = fw_kn_to_ms(10)};
+    fw_target t = {.east = 0, .north = 2000, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(10)};
     loop_out o = closed_loop(&t, 1, 1500);
     CHECK_MSG(o.t_act >= 0 && o.t_act <= 20, "acted at %.0f s", o.t_act);
     CHECK_MSG(o.min_dist >= 295, "closest approach %.0f m", o.min_dist);
@@ -302,8 +302,8 @@ static void test_policy_follows_target_id(void)
     fw_policy_init(&pol, &pdef);
     fw_own_state own = {.U = fw_kn_to_ms(10)};
     /* B: head-on; A: far off on the port quarter, opening (TCPA < 0 throughout) */
-    fw_target b = {.id = "veh.B", .east = 0, .north = 2000, .course = FW_PI, .speed = fw_kn_to_ms(10)};
-    fw_target a = {.id = "veh.A", .east = -4000, .north = -3000, .course = 1.5 * FW_PI,
+    fw_target b = {.id = "veh.B", .east = 0, .north = 2000, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(10)};
+    fw_target a = {.id = "veh.A", .east = -4000, .north = -3000, .course = 1.5 * FW_PI, .heading = 1.5 * FW_PI,
                    .speed = fw_kn_to_ms(12)};
     fw_track_def one = {.dt = 1.0, .horizon = 1.0};
     fw_track step;
@@ -354,7 +354,7 @@ static void test_policy_follows_target_id(void)
 static void test_policy_stand_on_rule_17(void)
 {
     /* on a collision course: both reach (0, 3000) at t = 583 s */
-    fw_target t = {.id = "T", .east = -3000, .north = 3000, .course = FW_PI / 2,
+    fw_target t = {.id = "T", .east = -3000, .north = 3000, .course = FW_PI / 2, .heading = FW_PI / 2,
                    .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32};
     loop_out o = closed_loop(&t, 1, 2400);
     CHECK(o.first_sit == FW_SIT_STAND_ON);
@@ -373,7 +373,7 @@ static void test_policy_stand_on_rule_17(void)
  * still come back to its course once it is clear. */
 static void test_policy_return_only_when_clear(void)
 {
-    fw_target t = {.id = "P", .east = -2876, .north = 378, .course = fw_deg_to_rad(15),
+    fw_target t = {.id = "P", .east = -2876, .north = 378, .course = fw_deg_to_rad(15), .heading = fw_deg_to_rad(15),
                    .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32};
     loop_out o = closed_loop(&t, 1, 4000);
     CHECK(o.acts >= 1);
@@ -449,7 +449,7 @@ static void test_predictor_is_used(void)
     /* 2 km to starboard on a reciprocal course: passes clear at constant
      * velocity; the predictor turns it west at 146 s, which brings it across
      * the own track just as the own ship gets there (both at 10 kn: at 535 s) */
-    fw_target t = {.id = "T", .east = 2000, .north = 3500, .course = FW_PI,
+    fw_target t = {.id = "T", .east = 2000, .north = 3500, .course = FW_PI, .heading = FW_PI,
                    .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32};
     turn_pred turn = {.base = {turn_path}, .t_turn = 146.0, .new_course = 1.5 * FW_PI};
     fw_assess(&hdef.colregs, &hdef.domain, hdef.track.horizon, &own, &t, 1, a0, NULL);
@@ -468,7 +468,7 @@ static void test_predictor_is_used(void)
     fw_target_path(&t, tr->dt, tr->n, e, n, c);
     for (int k = 0; k < tr->n; k++) {
         fw_target at = t;
-        at.east = e[k], at.north = n[k], at.course = c[k], at.pred = NULL;
+        at.east = e[k], at.north = n[k], at.course = at.heading = c[k], at.pred = NULL;
         worst = fmin(worst, fw_domain_lambda(&hdef.domain, tr->east[k], tr->north[k], tr->psi[k], &at));
     }
     CHECK_MSG(worst >= 0.99, "the chosen track lets the predicted ship in: %.3f", worst);
@@ -508,9 +508,9 @@ static void test_transverse_reading(void)
     tv.domain.reading = FW_DOMAIN_TRANSVERSE;
     fw_own_state own = {.U = fw_kn_to_ms(10)};
     fw_target t[2] = {
-        {.id = "H", .east = 0, .north = 2000, .course = FW_PI, .speed = fw_kn_to_ms(10),
+        {.id = "H", .east = 0, .north = 2000, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(10),
          .length = 200, .breadth = 32},
-        {.id = "C", .east = 2000, .north = 2000, .course = 1.5 * FW_PI,
+        {.id = "C", .east = 2000, .north = 2000, .course = 1.5 * FW_PI, .heading = 1.5 * FW_PI,
          .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32},
     };
     /* the assessment on the straight course against 0.5 s samples */

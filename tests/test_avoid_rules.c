@@ -24,9 +24,9 @@ static void test_best_available_is_the_largest_clearance(void)
 {
     const char *ships[3] = {"c3", "c3-mmg", "c3-paper-mmg"};
     fw_target t[2] = {
-        {.east = -150, .north = 2489.7, .course = FW_PI, .speed = fw_kn_to_ms(8), .length = 200,
+        {.east = -150, .north = 2489.7, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(8), .length = 200,
          .breadth = 32},
-        {.east = 150, .north = 2489.7, .course = FW_PI, .speed = fw_kn_to_ms(8), .length = 200,
+        {.east = 150, .north = 2489.7, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(8), .length = 200,
          .breadth = 32},
     };
     for (int k = 0; k < 3; k++) {
@@ -66,9 +66,9 @@ static void test_ranking_case_5(void)
     fw_domain_def dom = fw_default_domain_def();
     fw_own_state own = {.U = fw_kn_to_ms(10)};
     fw_target t[2] = {
-        {.east = 0, .north = 3000, .course = FW_PI, .speed = fw_kn_to_ms(8), .length = 200,
+        {.east = 0, .north = 3000, .course = FW_PI, .heading = FW_PI, .speed = fw_kn_to_ms(8), .length = 200,
          .breadth = 32},
-        {.east = 1600, .north = 2000, .course = 1.5 * FW_PI, .speed = fw_kn_to_ms(8),
+        {.east = 1600, .north = 2000, .course = 1.5 * FW_PI, .heading = 1.5 * FW_PI, .speed = fw_kn_to_ms(8),
          .length = 200, .breadth = 32},
     };
     fw_assessment as[2];

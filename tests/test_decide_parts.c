@@ -207,15 +207,17 @@ static void test_prep_memo(void)
         for (int i = 0; i < NT; i++) {
             double u = decide_uniform();
             tg[i].east += 10.0 * (decide_uniform() - 0.5), tg[i].north += 10.0 * (decide_uniform() - 0.5);
-            if (u < 0.1)
+            if (u < 0.05) /* the velocity's course alone, or the hull's heading */
                 tg[i].course = nextafter(tg[i].course, 10.0);
+            else if (u < 0.1)
+                tg[i].heading = nextafter(tg[i].heading, 10.0);
             else if (u < 0.15)
                 tg[i].length = nextafter(tg[i].length, 0.0);
             else if (u < 0.2)
                 tg[i].breadth = nextafter(tg[i].breadth, 1e3);
             changed += u < 0.2, same += u >= 0.2;
         }
-        tg[0].course = s % 2 ? -0.0 : 0.0; /* equal, but not alike: sin gives -0 and +0 */
+        tg[0].course = tg[0].heading = s % 2 ? -0.0 : 0.0; /* equal, but not alike: sin gives -0 and +0 */
         fw_prep_targets(&hdef.domain, &hdef.track, tg, NT, plain, pa);
         fw_prep_targets_memo(&hdef.domain, &hdef.track, tg, NT, kept, pb, memo);
         for (int i = 0; i < NT; i++)

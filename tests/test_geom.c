@@ -48,7 +48,7 @@ static void test_hull_distance(void)
 static void test_domain(void)
 {
     fw_domain_def dom = {.size = 300.0, .fore_aft_ratio = 2.0};
-    fw_target t = {.east = 0, .north = 600, .course = 0, .length = 0, .breadth = 0};
+    fw_target t = {.east = 0, .north = 600, .course = 0, .heading = 0, .length = 0, .breadth = 0};
     /* a point target 600 m ahead sits on the 600 m fore-aft semi-axis */
     CHECK_NEAR(fw_domain_lambda(&dom, 0, 0, 0, &t), 1.0, 1e-12);
     /* abeam at 300 m: on the transverse one */
@@ -75,7 +75,7 @@ static void test_domain_transverse(void)
     /* a 200 x 32 m target heading south at the origin; the own ship abeam of
      * it, 316 m east (300 m from its port side): on the boundary whatever the
      * own heading, and 1 m either way inside or out */
-    fw_target t = {.east = 0, .north = 0, .course = FW_PI, .length = 200, .breadth = 32};
+    fw_target t = {.east = 0, .north = 0, .course = FW_PI, .heading = FW_PI, .length = 200, .breadth = 32};
     for (int h = 0; h < 360; h += 15) {
         double psi = fw_deg_to_rad(h);
         CHECK_NEAR(fw_domain_lambda(&tv, 316, 0, psi, &t), 1.0, 1e-12);
@@ -101,7 +101,7 @@ static void test_domain_transverse(void)
         el.own_half_length = tv.own_half_length = hull ? 166.6 : 0.0;
         el.own_half_breadth = tv.own_half_breadth = hull ? 21.4 : 0.0;
         for (int c = 0; c < 2; c++) {
-            t.course = c ? FW_PI : 0.0;
+            t.course = t.heading = c ? FW_PI : 0.0;
             for (double e = -500; e <= 500; e += 125)
                 for (double n = -600; n <= 600; n += 150) {
                     double a = fw_domain_lambda(&el, e, n, 0.0, &t);
@@ -113,7 +113,7 @@ static void test_domain_transverse(void)
      * its side: 600 m beyond the bow with ratio 2 */
     tv.own_half_length = tv.own_half_breadth = 0.0;
     tv.fore_aft_ratio = 2.0;
-    t.course = 0.0;
+    t.course = t.heading = 0.0;
     CHECK_NEAR(fw_domain_lambda(&tv, 0, 700, 1.0, &t), 1.0, 1e-12);
     CHECK_NEAR(fw_domain_lambda(&tv, 316, 0, 1.0, &t), 1.0, 1e-12);
     /* reach bounds it */

@@ -44,7 +44,7 @@ static fw_survey *run_lines(const fw_survey_def *def, const line_ship *ls, int n
             s[m++] = fw_target_named(ls[i].id, (fw_target){
                                       .east = ls[i].e + ls[i].speed * sin(c) * t,
                                       .north = ls[i].n + ls[i].speed * cos(c) * t,
-                                      .course = c, .speed = ls[i].speed, .length = 100 + i,
+                                      .course = c, .heading = c, .speed = ls[i].speed, .length = 100 + i,
                                       .breadth = 20, .own = ls[i].own});
         }
         if (fw_survey_step(sv, t, s, m, &err)) {
@@ -206,8 +206,8 @@ static int shuttle(double north_turn, double h, fw_survey_record out[4])
             n = north_turn - 10.0 * (t - t_turn);
             c = FW_PI;
         }
-        fw_target s[2] = {{.id = "A", .course = 0.0, .speed = 0.0},
-                               {.id = "B", .east = 300.0, .north = n, .course = c, .speed = 10.0}};
+        fw_target s[2] = {{.id = "A", .course = 0.0, .heading = 0.0, .speed = 0.0},
+                               {.id = "B", .east = 300.0, .north = n, .course = c, .heading = c, .speed = 10.0}};
         CHECK(fw_survey_step(sv, t, s, 2, &err) == FW_OK);
     }
     fw_survey_finish(sv, NULL);
@@ -315,7 +315,7 @@ static void test_bad_input(void)
      * steps in between gives the head-on case's record */
     def = fw_default_survey_def();
     CHECK(fw_survey_create(&def, &sv, &err) == FW_OK);
-    fw_target s[2] = {{.id = "A", .speed = 5.0}, {.id = "B", .course = FW_PI, .speed = 5.0}};
+    fw_target s[2] = {{.id = "A", .speed = 5.0}, {.id = "B", .course = FW_PI, .heading = FW_PI, .speed = 5.0}};
     for (int k = 0; k <= 1500; k++) {
         s[0].east = 0.0;
         s[0].north = -3000.0 + 5.0 * k;
@@ -467,7 +467,7 @@ static void feed(fw_survey **sv, int k, int n, int steps, double dt, bool shuffl
     for (int step = 0; step < steps; step++) {
         for (int i = 0; i < tr.n; i++)
             s[i] = fw_target_named(tr.id[i], (fw_target){ .east = tr.e[i], .north = tr.no[i],
-                                    .course = tr.h[i], .speed = tr.v[i], .length = 100,
+                                    .course = tr.h[i], .heading = tr.h[i], .speed = tr.v[i], .length = 100,
                                     .breadth = 20, .own = i == 0});
         for (int j = 0; j < k; j++) {
             const fw_target *in = s;

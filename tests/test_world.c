@@ -27,14 +27,14 @@ static void test_kinematic_source(void)
 {
     fw_error err = {0};
     fw_kin_ship ships[3] = {
-        {.start = {.id = "b", .east = 0, .north = 1000, .course = FW_PI, .speed = 5.0,
+        {.start = {.id = "b", .east = 0, .north = 1000, .course = FW_PI, .heading = FW_PI, .speed = 5.0,
                    .length = 100, .breadth = 20}},
         /* a, east-going, turns north at 100 s and stops at 200 s */
-        {.start = {.id = "a", .east = -500, .north = 0, .course = 0.5 * FW_PI, .speed = 2.0,
+        {.start = {.id = "a", .east = -500, .north = 0, .course = 0.5 * FW_PI, .heading = 0.5 * FW_PI, .speed = 2.0,
                    .length = 50, .breadth = 10},
          .n_legs = 2,
          .legs = {{100.0, 0.0, 3.0}, {200.0, 0.0, 0.0}}},
-        {.start = {.id = "c", .east = 9000, .north = 0, .course = 0.0, .speed = 1.0}}};
+        {.start = {.id = "c", .east = 9000, .north = 0, .course = 0.0, .heading = 0.0, .speed = 1.0}}};
     fw_kinematic_def kd = fw_default_kinematic_def();
     kd.ships = ships;
     kd.n = 3;
@@ -43,7 +43,7 @@ static void test_kinematic_source(void)
     kd.own_id = "me";
     fw_source *src;
     CHECK_MSG(fw_kinematic_source_create(&kd, &src, &err) == FW_OK, "%s", err.msg);
-    fw_target own = {.east = 0, .north = 0, .course = 0, .speed = 4, .length = 200, .breadth = 30};
+    fw_target own = {.east = 0, .north = 0, .course = 0, .heading = 0, .speed = 4, .length = 200, .breadth = 30};
     const fw_target *v;
     int n;
     CHECK(fw_source_around(src, &v, &n, &err) == FW_ERUN); /* not placed yet */
@@ -232,7 +232,7 @@ static react_out react_world(const fw_kin_ship *ships, int n, fw_behaviour b, in
 static void test_reactive_traffic(void)
 {
     double v = fw_kn_to_ms(10), tc = 3000.0 / v; /* both at (0, 3000) at 583 s */
-    fw_kin_ship give = {.start = {.id = "G", .east = -3000.0, .north = 3000.0, .course = 0.5 * FW_PI,
+    fw_kin_ship give = {.start = {.id = "G", .east = -3000.0, .north = 3000.0, .course = 0.5 * FW_PI, .heading = 0.5 * FW_PI,
                                   .speed = v, .length = 200, .breadth = 32}};
     react_out blind = react_world(&give, 1, FW_BEHAVIOUR_BLIND, 900);
     react_out col = react_world(&give, 1, FW_BEHAVIOUR_COLREGS, 900);
@@ -243,7 +243,7 @@ static void test_reactive_traffic(void)
     CHECK_MSG(col.dmin > 0.99 * 926.0, "colregs: closest %.0f m", col.dmin);
     CHECK_MSG(col.resume == 1 && fabs(col.speed_end[0] - v) < 1e-9, "given its speed back: %d, %.2f",
               col.resume, col.speed_end[0]);
-    fw_kin_ship stand = {.start = {.id = "S", .east = 3000.0, .north = 3000.0, .course = 1.5 * FW_PI,
+    fw_kin_ship stand = {.start = {.id = "S", .east = 3000.0, .north = 3000.0, .course = 1.5 * FW_PI, .heading = 1.5 * FW_PI,
                                    .speed = v, .length = 200, .breadth = 32}};
     react_out st = react_world(&stand, 1, FW_BEHAVIOUR_COLREGS, 900);
     /* the own ship here never gives way: the stand-on ship keeps course and
@@ -255,9 +255,9 @@ static void test_reactive_traffic(void)
     /* two background ships far from the own ship crossing at (20000, 3000):
      * A heading east sees B (heading north) on its starboard side: A gives way */
     fw_kin_ship two[2] = {
-        {.start = {.id = "A", .east = 17000.0, .north = 3000.0, .course = 0.5 * FW_PI, .speed = v,
+        {.start = {.id = "A", .east = 17000.0, .north = 3000.0, .course = 0.5 * FW_PI, .heading = 0.5 * FW_PI, .speed = v,
                    .length = 200, .breadth = 32}},
-        {.start = {.id = "B", .east = 20000.0, .north = 0.0, .course = 0.0, .speed = v,
+        {.start = {.id = "B", .east = 20000.0, .north = 0.0, .course = 0.0, .heading = 0.0, .speed = v,
                    .length = 200, .breadth = 32}}};
     react_out pair = react_world(two, 2, FW_BEHAVIOUR_COLREGS, 1200);
     react_out pb = react_world(two, 2, FW_BEHAVIOUR_BLIND, 1200);
@@ -301,7 +301,7 @@ static void test_return_to_track(void)
 {
     double v = fw_kn_to_ms(10), xte[2] = {0, 0}, lam[2] = {INFINITY, INFINITY};
     for (int mode = 0; mode < 2; mode++) {
-        fw_kin_ship sh[1] = {{.start = {.id = "T1", .east = 0, .north = 3000, .course = FW_PI,
+        fw_kin_ship sh[1] = {{.start = {.id = "T1", .east = 0, .north = 3000, .course = FW_PI, .heading = FW_PI,
                                         .speed = v, .length = 200, .breadth = 32}}};
         fw_error err = {0};
         fw_kinematic_def kd = fw_default_kinematic_def();
@@ -346,9 +346,9 @@ static void test_threat_during_return(void)
 {
     double v = fw_kn_to_ms(10);
     fw_kin_ship sh[2] = {
-        {.start = {.id = "T1", .east = 0, .north = 2000, .course = FW_PI, .speed = v,
+        {.start = {.id = "T1", .east = 0, .north = 2000, .course = FW_PI, .heading = FW_PI, .speed = v,
                    .length = 200, .breadth = 32}},
-        {.start = {.id = "T2", .east = -400, .north = 5000, .course = 0.5 * FW_PI, .speed = v,
+        {.start = {.id = "T2", .east = -400, .north = 5000, .course = 0.5 * FW_PI, .heading = 0.5 * FW_PI, .speed = v,
                    .length = 200, .breadth = 32},
          .n_legs = 1,
          .legs = {{300.0, FW_PI, v}}}};

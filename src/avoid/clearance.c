@@ -10,7 +10,7 @@ static inline double mx(double a, double b) { return a > b ? a : b; }
 
 int fw_prep_path_len(const fw_track_def *def) { return 4 * fw_track_samples(def); }
 
-/* The predictor's path (see fw_prep_target.path): the course goes into the
+/* The predictor's path (see fw_prep_target.path): the heading goes into the
  * cosine run and is replaced by its sine and cosine. */
 static void fill_path(const fw_target *g, const fw_track_def *tdef, int ns, double *p)
 {
@@ -42,20 +42,24 @@ static void axes_bound(const fw_domain_def *dom, fw_prep_target *g)
     g->ib_min = (1.0 - 1e-9) / (b * b);
 }
 
-/* Is m made from g's course, length and breadth (bit for bit)?  If not it is
- * made now: what fw_prep_targets computes from them alone. */
+/* Is m made from g's course, heading, length and breadth (bit for bit)?  If
+ * not it is made now: what fw_prep_targets computes from them alone. */
 static void memo_fill(const fw_domain_def *dom, const fw_target *g, fw_prep_memo *m)
 {
     if (m->valid && memcmp(&m->course, &g->course, sizeof m->course) == 0 &&
+        memcmp(&m->heading, &g->heading, sizeof m->heading) == 0 &&
         memcmp(&m->length, &g->length, sizeof m->length) == 0 &&
         memcmp(&m->breadth, &g->breadth, sizeof m->breadth) == 0)
         return;
     fw_prep_target q = {.hl = 0.5 * g->length, .hb = 0.5 * g->breadth};
     axes_bound(dom, &q);
-    *m = (fw_prep_memo){.valid = true, .course = g->course, .length = g->length,
-                        .breadth = g->breadth, .sc = sin(g->course), .cc = cos(g->course),
-                        .reach = fw_domain_reach(dom, g), .ia_min = q.ia_min,
-                        .ib_min = q.ib_min};
+    *m = (fw_prep_memo){.valid = true, .course = g->course, .heading = g->heading,
+                        .length = g->length, .breadth = g->breadth, .sc = sin(g->heading),
+                        .cc = cos(g->heading), .reach = fw_domain_reach(dom, g),
+                        .ia_min = q.ia_min, .ib_min = q.ib_min};
+    bool same = memcmp(&g->course, &g->heading, sizeof g->course) == 0;
+    m->vs = same ? m->sc : sin(g->course);
+    m->vc = same ? m->cc : cos(g->course);
 }
 
 void fw_prep_targets_memo(const fw_domain_def *dom, const fw_track_def *tdef,
@@ -68,7 +72,7 @@ void fw_prep_targets_memo(const fw_domain_def *dom, const fw_track_def *tdef,
         fw_prep_memo here = {.valid = false}, *m = memo ? &memo[i] : &here;
         memo_fill(dom, g, m);
         out[i] = (fw_prep_target){.east = g->east, .north = g->north,
-                                  .ve = g->speed * m->sc, .vn = g->speed * m->cc, .sc = m->sc,
+                                  .ve = g->speed * m->vs, .vn = g->speed * m->vc, .sc = m->sc,
                                   .cc = m->cc, .hl = 0.5 * g->length, .hb = 0.5 * g->breadth,
                                   .reach = m->reach, .ia_min = m->ia_min, .ib_min = m->ib_min};
         if (g->pred && paths) {

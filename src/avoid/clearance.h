@@ -23,7 +23,7 @@ enum { FW_CHUNK = 8,      /* segments per culling box: 40 s at the default dt */
 
 typedef struct fw_prep_target {
     double east, north, ve, vn; /* m, m/s */
-    double sc, cc;              /* sin, cos of the course */
+    double sc, cc;              /* sin, cos of the heading (the hull, the domain) */
     double hl, hb;              /* half length, half breadth */
     double reach;               /* m: beyond this centre distance always outside */
     double ia_min, ib_min;      /* 1/m^2, bounds of 1 / a^2, 1 / b^2 (the grown axes) */
@@ -53,14 +53,17 @@ typedef struct fw_chunk_boxes {
  * for fw_prep_path_len(tdef) doubles per such target; NULL if none has one). */
 void fw_prep_targets(const fw_domain_def *dom, const fw_track_def *tdef, const fw_target *t,
                      int n, fw_prep_target *out, double *paths);
-/* What fw_prep_targets makes of a target's course and hull alone (the
- * course's sine and cosine, the reach, the axes' bounds), kept per target
+/* What fw_prep_targets makes of a target's course, heading and hull alone
+ * (the sines and cosines of the course, for its velocity, and of the
+ * heading, for its hull and domain; the reach, the axes' bounds), kept per target
  * slot from one decision to the next: most targets keep their course and
  * hull from one step to the next (71% of those seen in the base run). */
 typedef struct fw_prep_memo {
     bool valid;
-    double course, length, breadth; /* made from these (compared bit for bit) */
-    double sc, cc, reach, ia_min, ib_min;
+    double course, heading, length, breadth; /* made from these (compared bit for bit) */
+    double sc, cc;                  /* the heading's */
+    double vs, vc;                  /* the course's (the heading's when they are equal) */
+    double reach, ia_min, ib_min;
 } fw_prep_memo;
 /* fw_prep_targets with memo[i] for t[i] (NULL: none), made again where it
  * was made from another course or hull: the same values to the bit.  A

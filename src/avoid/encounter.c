@@ -36,9 +36,10 @@ static double off_bow(double b) { return b <= 180.0 ? b : 360.0 - b; }
 static fw_situation classify(const fw_colregs_def *def, const fw_own_state *own,
                              const fw_target *t, double a)
 {
+    /* bearings and aspect from the hulls' headings (the lights a watch sees) */
     double beta = rel_bearing_deg(a, own->psi);
-    double alpha = rel_bearing_deg(atan2(own->east - t->east, own->north - t->north), t->course);
-    double course_diff = fw_rad_to_deg(fabs(fw_wrap_pi(t->course - own->psi)));
+    double alpha = rel_bearing_deg(atan2(own->east - t->east, own->north - t->north), t->heading);
+    double course_diff = fw_rad_to_deg(fabs(fw_wrap_pi(t->heading - own->psi)));
     if (off_bow(beta) <= def->head_on_bearing_deg && off_bow(alpha) <= def->head_on_bearing_deg &&
         course_diff >= 180.0 - def->head_on_course_tol_deg)
         return FW_SIT_HEAD_ON;
@@ -119,6 +120,17 @@ static void sort_by_danger(int *order, int n, const fw_assessment *as)
  * linearly (the own frame does not turn on a straight course). */
 static const double kPathDt = 5.0;
 
+/* The own ship's velocity over ground as the assessment takes it: its speed
+ * through the water along its heading (so, co: its sine and cosine), plus
+ * the current it knows; in calm water the plain product, to the bit. */
+static inline void own_velocity(const fw_own_state *own, double so, double co, double *ve,
+                                double *vn)
+{
+    *ve = own->U * so, *vn = own->U * co;
+    if (own->cur_e != 0.0 || own->cur_n != 0.0)
+        *ve += own->cur_e, *vn += own->cur_n;
+}
+
 static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_state *own,
                         const fw_target *t, fw_assessment *as)
 {
@@ -129,7 +141,7 @@ static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_s
     double e[MAX_SAMPLES], n[MAX_SAMPLES], c[MAX_SAMPLES];
     fw_target_path(t, kPathDt, ns, e, n, c);
     double so = sin(own->psi), co = cos(own->psi), ve, vn;
-    fw_velocity(own->U, own->psi, &ve, &vn);
+    own_velocity(own, so, co, &ve, &vn);
     double best = INFINITY, px = 0, py = 0, pa = 1, pb = 1;
     as->t_enter = INFINITY;
     for (int k = 0; k < ns; k++) {
@@ -184,10 +196,12 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
     for (int i = 0; i < n; i++) {
         fw_assessment *as = &out[i];
         double dx = t[i].east - own->east, dy = t[i].north - own->north;
-        /* the course's sine and cosine once (fw_velocity's, the frame's) */
-        double sc = sin(t[i].course), cc = cos(t[i].course);
+        /* the course's sine and cosine once (fw_velocity's, and the frame's
+         * when the heading is the course) */
+        double sc = sin(t[i].course), cc = cos(t[i].course), oe, on;
         double ve = t[i].speed * sc, vn = t[i].speed * cc;
-        double vx = ve - own->U * so, vy = vn - own->U * co, brg = atan2(dx, dy);
+        own_velocity(own, so, co, &oe, &on);
+        double vx = ve - oe, vy = vn - on, brg = atan2(dx, dy);
         as->range = hypot(dx, dy);
         as->bearing = fw_wrap_2pi(brg);
         as->rel_bearing = fw_wrap_2pi(as->bearing - own->psi);
@@ -204,8 +218,10 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
          * heading's or the target's, both fixed while both keep course) the
          * target moves on a line, and lambda^2(t) is a quadratic. */
         double a, b, fs, fc;
-        double rel = t[i].course - own->psi;
+        double rel = t[i].heading - own->psi;
         fw_domain_axes(dom, &t[i], cos(rel), sin(rel), &a, &b);
+        if (t[i].heading != t[i].course)
+            sc = sin(t[i].heading), cc = cos(t[i].heading);
         fw_domain_frame(dom, so, co, sc, cc, &fs, &fc);
         double x, y, ux, uy;
         fw_to_body(dx, dy, fs, fc, &x, &y);

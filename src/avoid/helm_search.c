@@ -94,10 +94,12 @@ fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_hel
     return FW_OK;
 }
 
-/* The fastest any candidate track can go (kin_step in track.c): the speed
- * relaxes from U towards U0 (1 - loss), which is at most U0 while the loss
- * terms are not negative; a knowledge base with a negative one (a propeller
- * that gains thrust in the turn) gives no bound. */
+/* The fastest any candidate track can go over ground (kin_step in track.c):
+ * the speed through the water relaxes from U towards U0 (1 - loss), which is
+ * at most U0 while the loss terms are not negative; a knowledge base with a
+ * negative one (a propeller that gains thrust in the turn) gives no bound.
+ * A current the ship knows adds its speed (the track is carried by it,
+ * track.h); in calm water the bound is the calm one to the bit. */
 static double speed_bound(const fw_ship *ship, const fw_own_state *s)
 {
     const fw_nomoto_kb *kb[2] = {&ship->nomoto, &ship->nomoto_port};
@@ -106,15 +108,20 @@ static double speed_bound(const fw_ship *ship, const fw_own_state *s)
             (kb[i]->speed_loss < 0.0 || kb[i]->speed_loss_drift < 0.0))
             return -1.0;
     double U = s->U > 0.0 ? s->U : 0.0, U0 = s->U0 > 0.0 ? s->U0 : U;
-    return U > U0 ? U : U0;
+    double bound = U > U0 ? U : U0;
+    if (s->cur_e != 0.0 || s->cur_n != 0.0)
+        bound += hypot(s->cur_e, s->cur_n);
+    return bound;
 }
 
 void fw_helm_begin(fw_helm_ctx *c, const fw_own_state *own)
 {
     c->own = *own;
-    /* a port knowledge base of its own breaks the mirror image */
+    /* a port knowledge base of its own breaks the mirror image, and so does
+     * a current (its drift is not mirrored with the turn; one along the
+     * heading would keep it, but is not worth a case) */
     c->symmetric = own->r == 0.0 && own->rdot == 0.0 && own->delta == 0.0 && own->beta == 0.0 &&
-                   !c->ship->nomoto_port.present;
+                   own->cur_e == 0.0 && own->cur_n == 0.0 && !c->ship->nomoto_port.present;
     /* the candidates' slots as new only when some was opened (a decision
      * with a threat): else only the keep slot has changed */
     for (int i = 0; i < 2 * c->nh && c->opened; i++)
@@ -505,12 +512,15 @@ static void target_at_end(const fw_helm_ctx *c, const fw_target *t, int k, doubl
 }
 
 /* The closest approach of every target after the track's end, the own ship
- * going on at its straight-course speed on the last heading. */
+ * going on at its straight-course speed on the last heading (carried by the
+ * current it knows). */
 static double beyond_horizon(const fw_helm_ctx *c, const fw_track *tr, const fw_target *t, int n)
 {
     int k = tr->n - 1;
     double U = c->own.U0 > 0.0 ? c->own.U0 : c->own.U, cl = INFINITY;
     double oe = U * tr->sin_psi[k], on = U * tr->cos_psi[k];
+    if (c->own.cur_e != 0.0 || c->own.cur_n != 0.0)
+        oe += c->own.cur_e, on += c->own.cur_n;
     for (int i = 0; i < n; i++) {
         double te, tn, ve, vn;
         target_at_end(c, &t[i], k, &te, &tn, &ve, &vn);

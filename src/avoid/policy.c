@@ -52,14 +52,28 @@ double fw_policy_cross_track(const fw_policy *p, const fw_own_state *own)
     return de * cos(p->psi_ref) - dn * sin(p->psi_ref);
 }
 
+/* The heading that makes good course chi through a current the ship knows:
+ * chi less the crab angle asin(c_across / U) (its speed through the water
+ * U; a current across faster than the ship: the most it can, 90 deg). */
+static double crabbed(const fw_own_state *own, double chi)
+{
+    if ((own->cur_e == 0.0 && own->cur_n == 0.0) || !(own->U > 0.1))
+        return chi;
+    double across = own->cur_e * cos(chi) - own->cur_n * sin(chi); /* to starboard of chi */
+    return chi - asin(fmax(-1.0, fmin(1.0, across / own->U)));
+}
+
 /* The heading to steer home: the original course, less the line-of-sight
- * correction back onto the track (track return). */
+ * correction back onto the track (track return), less the crab angle the
+ * current asks for (without it a line-of-sight return settles where the
+ * correction equals the crab angle: 496 m off the track for 1.3 m/s across
+ * at 10 kn, tests/test_env.c). */
 static double home(const fw_policy *p, const fw_own_state *own)
 {
     double xte = fw_policy_cross_track(p, own);
     double cut = atan(xte / p->def.los_lookahead);
     cut = fmax(-p->def.los_max_angle, fmin(p->def.los_max_angle, cut));
-    return fw_wrap_2pi(p->psi_ref - cut);
+    return fw_wrap_2pi(crabbed(own, p->psi_ref - cut));
 }
 
 const char *fw_policy_mode_name(fw_policy_mode m)

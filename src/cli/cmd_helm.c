@@ -132,8 +132,10 @@ static fw_status opt_target(void *ctx, const char *opt, const char *val, fw_erro
     if (in->n >= MAX_TARGETS)
         return fw_fail(err, FW_EINPUT, "--target: at most %d targets", MAX_TARGETS);
     fw_target *t = &in->tg[in->n];
-    *t = (fw_target){.east = v[0], .north = v[1], .course = fw_deg_to_rad(v[2]),
-                     .speed = fw_kn_to_ms(v[3]), .length = v[4], .breadth = v[5]};
+    *t = fw_target_undrifted((fw_target){.east = v[0], .north = v[1],
+                                         .course = fw_deg_to_rad(v[2]),
+                                         .speed = fw_kn_to_ms(v[3]), .length = v[4],
+                                         .breadth = v[5]});
     snprintf(t->id, sizeof t->id, "%d", in->n + 1); /* numbered as given */
     in->n++;
     return FW_OK;

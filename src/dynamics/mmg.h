@@ -4,7 +4,10 @@
  * ship in calm deep water, and the accelerations they cause.  Frames: earth
  * positions in metres east and north, heading psi navigational (0 north,
  * clockwise); body x forward, y starboard, origin at midship; r > 0 and rudder
- * delta > 0 turn to starboard.  All SI.
+ * delta > 0 turn to starboard.  All SI.  The velocities are those through the
+ * water: in a current (dynamics/stepper.h) the forces are the same functions
+ * of them and fw_mmg_derivs' east and north rates are through the water (the
+ * stepper adds the current).
  */
 #ifndef FW_MMG_H
 #define FW_MMG_H
@@ -13,8 +16,8 @@
 #include "ship/ship.h"
 
 typedef struct fw_mmg_state {
-    double u;      /* m/s, surge */
-    double vm;     /* m/s, sway at midship */
+    double u;      /* m/s, surge through the water */
+    double vm;     /* m/s, sway at midship through the water */
     double r;      /* rad/s, yaw rate */
     double east;   /* m, midship position */
     double north;  /* m */
@@ -35,7 +38,8 @@ void fw_mmg_forces_eval(const fw_ship *ship, const fw_mmg_state *s, double n,
                         fw_mmg_forces *f);
 
 /* Time derivatives of u, vm, r, east, north, psi (6 values) for state s (its
- * delta is the rudder angle used) and propeller speed n. */
+ * delta is the rudder angle used) and propeller speed n; east and north
+ * relative to the water. */
 void fw_mmg_derivs(const fw_ship *ship, const fw_mmg_state *s, double n, double out[6]);
 
 /* Propeller speed (rev/s) that balances surge in straight running at U (m/s):

@@ -41,6 +41,7 @@ struct fw_stepper {
     N_Vector atol;
     void *ark;
     bool started;
+    bool drift;        /* a current moves the water (else the calm right-hand side) */
 
     double t;          /* current time (the state below is at t) */
     fw_mmg_state s;
@@ -63,6 +64,7 @@ fw_stepper_def fw_default_stepper_def(void)
         .atol_vel = 1e-7,
         .atol_pos = 1e-5,
         .max_step = 0.0,
+        .current = {.kind = FW_FIELD_NONE},
     };
     return d;
 }
@@ -82,6 +84,13 @@ static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
                       .psi = v[5], .delta = rudder_at(st, t)};
     double d[NEQ];
     fw_mmg_derivs(st->ship, &s, st->n, d);
+    if (st->drift) {
+        /* over ground: through the water plus the water (stepper.h) */
+        double ce, cn;
+        fw_current_at(&st->def.current, v[3], v[4], t, &ce, &cn);
+        d[3] += ce;
+        d[4] += cn;
+    }
     sunrealtype *out = N_VGetArrayPointer(ydot);
     for (int i = 0; i < NEQ; i++) {
         if (!isfinite(d[i]))
@@ -119,9 +128,15 @@ fw_status fw_stepper_create(const fw_ship *ship, const fw_stepper_def *def, fw_s
         return fw_fail(err, FW_ERUN, "out of memory");
     st->ship = ship;
     st->def = def ? *def : fw_default_stepper_def();
+    st->drift = !fw_current_is_none(&st->def.current);
     if (!(st->def.rtol > 0.0) || !(st->def.atol_vel > 0.0) || !(st->def.atol_pos > 0.0)) {
         free(st);
         return fw_fail(err, FW_EINPUT, "stepper tolerances must be positive");
+    }
+    fw_env env = {.current = st->def.current};
+    if (fw_env_check(&env, err)) {
+        free(st);
+        return FW_EINPUT;
     }
     if (SUNContext_Create(NULL, &st->ctx)) {
         free(st);

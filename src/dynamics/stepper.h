@@ -9,12 +9,34 @@
  * known in advance (the rudder angle is piecewise linear in time), so the
  * integration stops there exactly, with no root finding; in between it keeps
  * its step size across calls.
+ *
+ * In a current (env/env.h, the def's `current`) the state's u and vm are the
+ * velocities through the WATER, and east, north the position over ground:
+ * the hull, propeller and rudder forces depend on the relative velocity only,
+ * so integrating it keeps the calm-water equations of motion unchanged, and
+ * the position advances at the relative velocity turned to earth plus the
+ * current at the ship.  Integrating the ground velocity instead would need
+ * the current's rate of change in body axes, d(nu_c)/dt = [r v_c, -r u_c, 0]
+ * plus R^T dV_c/dt, in the equations: for a uniform current these terms
+ * cancel exactly in the relative form, ground = relative + current.  For a
+ * current that changes in time (a tidal stream) the relative form is exact
+ * too, because the horizontal pressure gradient that accelerates the water
+ * also pushes the hull (the Froude-Krylov force, m dV_c/dt for a floating
+ * hull of mass m = its displacement), so the hull's motion relative to the
+ * water obeys the calm-water equations; Fossen's model (Handbook, 2011,
+ * ch. 10.3), which leaves that force out, would add M_RB R^T dV_c/dt.  So
+ * in any current uniform in space the ground track is the calm-water track
+ * plus the water's drift, exactly (tests/test_env.c, to 0.1 m over an hour).
+ * A field that varies in space adds (V_r . grad) V_c to what the hull sees
+ * and is for the kind that brings it (env.h).  With no current the
+ * right-hand side is the calm one, operation for operation.
  */
 #ifndef FW_STEPPER_H
 #define FW_STEPPER_H
 
 #include "core/error.h"
 #include "dynamics/mmg.h"
+#include "env/env.h"
 #include "ship/ship.h"
 
 typedef struct fw_stepper_def {
@@ -22,6 +44,7 @@ typedef struct fw_stepper_def {
     double atol_vel;  /* m/s and rad/s scaled: absolute tolerance on u, vm, r*L */
     double atol_pos;  /* m: absolute tolerance on east, north, and psi*L */
     double max_step;  /* s, 0 = no limit */
+    fw_current current; /* the water's motion (none: calm water) */
 } fw_stepper_def;
 
 fw_stepper_def fw_default_stepper_def(void);

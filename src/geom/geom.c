@@ -29,9 +29,10 @@ void fw_domain_axes(const fw_domain_def *dom, const fw_target *t, double cos_rel
 double fw_domain_lambda(const fw_domain_def *dom, double east, double north, double psi,
                         const fw_target *t)
 {
-    double rel = t->course - psi, a, b, x, y, fs, fc;
+    /* the domain is the hulls': their headings orient it */
+    double rel = t->heading - psi, a, b, x, y, fs, fc;
     fw_domain_axes(dom, t, cos(rel), sin(rel), &a, &b);
-    fw_domain_frame(dom, sin(psi), cos(psi), sin(t->course), cos(t->course), &fs, &fc);
+    fw_domain_frame(dom, sin(psi), cos(psi), sin(t->heading), cos(t->heading), &fs, &fc);
     fw_to_body(t->east - east, t->north - north, fs, fc, &x, &y);
     return sqrt((x / a) * (x / a) + (y / b) * (y / b));
 }
@@ -101,10 +102,10 @@ double fw_hull_distance(double e1, double n1, double psi1, double l1, double b1,
 }
 
 void fw_target_path(const fw_target *t, double dt, int n, double *east, double *north,
-                    double *course)
+                    double *heading)
 {
     if (t->pred) {
-        t->pred->path(t->pred, t, dt, n, east, north, course);
+        t->pred->path(t->pred, t, dt, n, east, north, heading);
         return;
     }
     double ve, vn;
@@ -113,7 +114,7 @@ void fw_target_path(const fw_target *t, double dt, int n, double *east, double *
         double tk = k * dt;
         east[k] = t->east + ve * tk;
         north[k] = t->north + vn * tk;
-        course[k] = t->course;
+        heading[k] = t->heading;
     }
 }
 
@@ -136,7 +137,7 @@ int fw_target_find(const fw_target *t, int n, const char *id)
 
 fw_hull_track fw_hull_track_of(const fw_target *t)
 {
-    fw_hull_track k = {.east = t->east, .north = t->north, .heading = t->course,
+    fw_hull_track k = {.east = t->east, .north = t->north, .heading = t->heading,
                        .length = t->length, .breadth = t->breadth};
     fw_velocity(t->speed, t->course, &k.ve, &k.vn);
     return k;

@@ -6,10 +6,16 @@
  * bumper, angle in degrees) are converted into it once, inside src/traffic.
  *
  * Frame: metres east/north of the scenario origin, the position the hull
- * centre (midship), headings navigational (0 north, clockwise), SI.  The
- * record carries no drift: `course` is both the direction of motion and the
- * hull's heading (true of SUMO's ships; the own ship is listed with its
- * heading and speed through the water).
+ * centre (midship), headings navigational (0 north, clockwise), SI.
+ *
+ * Motion over ground and the hull apart: `course` and `speed` are the course
+ * and speed over ground, the velocity CPA, TCPA and constant-velocity
+ * prediction use; `heading` is where the hull points (hull outlines, the
+ * domain's orientation, SUMO's placement angle, the sideways check) and
+ * `stw` the speed through the water.  They differ by the drift angle in a
+ * turn (an MMG ship slides outwards, even in calm water) and by the current.
+ * Sources that know no drift and no current (SUMO's ships, the kinematic
+ * script, recorded tracks) give heading = course and stw = speed.
  *
  * How the ship is expected to move is its predictor (`pred`): NULL means at
  * constant velocity, the assumption of the paper's search; a source that knows
@@ -35,8 +41,10 @@ typedef struct fw_target {
     char id[FW_TARGET_ID_MAX];
     char type[FW_TARGET_ID_MAX]; /* a label ("cargo", a SUMO vType): records only */
     double east, north;          /* m, hull centre */
-    double course;               /* rad, navigational, motion and hull */
-    double speed;                /* m/s, >= 0 */
+    double course;               /* rad, navigational, course over ground */
+    double speed;                /* m/s, >= 0, speed over ground */
+    double heading;              /* rad, navigational, the hull's heading */
+    double stw;                  /* m/s, speed through the water */
     double length;               /* m, 0 = a point */
     double breadth;              /* m */
     bool own;                    /* the own ship (listed only in area queries) */
@@ -48,16 +56,27 @@ typedef struct fw_target {
     int key;
 } fw_target;
 
-/* Where a ship will be: positions and headings at t = k dt, k = 0..n-1, from
- * its present record.  Implementations keep their own data behind `self`. */
+/* Where a ship will be: positions and the hull's headings at t = k dt,
+ * k = 0..n-1, from its present record.  Implementations keep their own data
+ * behind `self`. */
 struct fw_predictor {
     void (*path)(const fw_predictor *self, const fw_target *now, double dt, int n,
-                 double *east, double *north, double *course);
+                 double *east, double *north, double *heading);
 };
 
-/* Fills the path of t (its predictor, or constant velocity). */
+/* Fills the path of t (its predictor, or constant velocity: positions along
+ * the ground velocity, the heading held). */
 void fw_target_path(const fw_target *t, double dt, int n, double *east, double *north,
-                    double *course);
+                    double *heading);
+
+/* t with heading = course and stw = speed: a ship that knows no drift and
+ * no current (every traffic source's). */
+static inline fw_target fw_target_undrifted(fw_target t)
+{
+    t.heading = t.course;
+    t.stw = t.speed;
+    return t;
+}
 
 /* t with its id set to id (cut at FW_TARGET_ID_MAX - 1 characters: for
  * tests and benchmarks, whose ids are short). */

@@ -1,5 +1,6 @@
 #include "nomoto/track.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -87,6 +88,21 @@ static void kin_init(kin *k, const fw_ship *ship, const fw_nomoto_kb *kb, const 
      * against lags of a minute and more */
     k->Eb = kb->drift_lag_s > 0.0 ? exp(-dt / kb->drift_lag_s) : 0.0;
     k->Eu = kb->speed_lag_s > 0.0 ? exp(-dt / kb->speed_lag_s) : 0.0;
+    k->cur_e = s->cur_e, k->cur_n = s->cur_n;
+    k->drift = s->cur_e != 0.0 || s->cur_n != 0.0;
+}
+
+/* Samples k0..k1-1 carried by the current (track.h: the positions above are
+ * through the water; a separate pass, so the calm loop is untouched). */
+static void drift_run(const kin *k, fw_track *out, int k0, int k1, double dt)
+{
+    if (!k->drift)
+        return;
+    for (int j = k0; j < k1; j++) {
+        double t = j * dt;
+        out->east[j] += k->cur_e * t;
+        out->north[j] += k->cur_n * t;
+    }
 }
 
 /* One step of dt from heading vector (ps, pc) to (sn, cs), yaw rate r at its end. */
@@ -278,6 +294,7 @@ static void kin_run(kin *kp, fw_track *out, int k0, int k1, double dt)
         out->east[k] = kn.east;
         out->north[k] = kn.north;
     }
+    drift_run(&kn, out, k0, k1, dt);
     *kp = kn;
 }
 
@@ -475,12 +492,17 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
         out->sin_psi[k] = sn;
         out->cos_psi[k] = cs;
     }
+    drift_run(&kn, out, 0, n, def->dt);
     return FW_OK;
 }
 
 void fw_track_mirror_range(const fw_track *src, const fw_own_state *s, fw_track *dst, int k0,
                            int k1)
 {
+    /* the mirror image of a track carried by a current is carried by the
+     * mirrored current: the other helm's track only when the current is
+     * along the heading (the helm search mirrors in still water only) */
+    assert(s->cur_e == 0.0 && s->cur_n == 0.0 && "mirrored track in a current");
     double ux = sin(s->psi), uy = cos(s->psi); /* along the initial heading */
     double s2 = sin(2.0 * s->psi), c2 = cos(2.0 * s->psi);
     dst->n = src->n;

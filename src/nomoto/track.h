@@ -25,12 +25,16 @@
 typedef struct fw_own_state {
     double east, north;  /* m */
     double psi;          /* rad, heading (navigational) */
-    double U;            /* m/s, speed over ground now */
+    double U;            /* m/s, speed through the water now (over ground in calm water) */
     double U0;           /* m/s, speed on a straight course (the propeller's); 0 = U */
-    double beta;         /* rad, drift angle now: course over ground = psi - beta */
+    double beta;         /* rad, drift angle now: course through the water = psi - beta */
     double r;            /* rad/s, yaw rate */
     double rdot;         /* rad/s^2, yaw acceleration; 0 if unknown (steady turn) */
     double delta;        /* rad, actual rudder angle */
+    /* m/s east, north: the current the ship knows (it sets towards); the
+     * predicted track is the track through the water plus current x t, the
+     * exact ground track in a uniform steady current (dynamics/stepper.h) */
+    double cur_e, cur_n;
 } fw_own_state;
 
 typedef struct fw_track_def {
@@ -78,6 +82,8 @@ typedef struct fw_track_kin {  /* position, speed and drift (track.c) */
     double sb, cb;            /* sin, cos of beta, kept by rotation: beta moves slowly */
     double cse, csn;          /* unit vector of the course over ground */
     double Eb, Eu;            /* lag factors over one step */
+    bool drift;               /* a current: positions + (cur_e, cur_n) t */
+    double cur_e, cur_n;      /* m/s */
 } fw_track_kin;
 
 typedef struct fw_track_piece { /* the rudder piece under way and its recurrences */
@@ -140,7 +146,8 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
                                  fw_error *err);
 
 /* The mirror image of src about the line of the initial heading: the track
- * for -helm when the start is symmetric (r = rdot = delta = 0). */
+ * for -helm when the start is symmetric (r = rdot = delta = 0, no current:
+ * asserted). */
 void fw_track_mirror(const fw_track *src, const fw_own_state *s, fw_track *dst);
 /* The same for samples k0..k1-1 of src only. */
 void fw_track_mirror_range(const fw_track *src, const fw_own_state *s, fw_track *dst, int k0,

@@ -131,15 +131,15 @@ static void end_row(const fw_records *r, FILE *f, double east, double north)
 
 FILE *fw_records_log(fw_records *r) { return r->log; }
 
-void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
-                    const char *mode)
+void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, const fw_target *rec,
+                    double helm, double n, const char *mode)
 {
     /* t_s,east_m,north_m,heading_deg,speed_kn,u_mps,v_mps,r_degps,rudder_deg,helm_deg,
      * propeller_rps,mode */
     fw_put_fixed(r->own, t, 1);
     put_nums(r->own,
              (const double[]){x->east, x->north, fw_heading_deg(x->psi),
-                              fw_ms_to_kn(hypot(x->u, x->vm)), x->u, x->vm, fw_rad_to_deg(x->r),
+                              fw_ms_to_kn(rec->speed), x->u, x->vm, fw_rad_to_deg(x->r),
                               fw_rad_to_deg(x->delta), fw_rad_to_deg(helm), n},
              (const int[]){2, 2, 3, 3, 4, 4, 5, 3, 3, 4}, 10);
     fputc(',', r->own);
@@ -244,7 +244,7 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
     double reach = 0.5 * (hypot(r->s->ship.Loa, r->s->ship.B) + hypot(ts->length, ts->breadth));
     if (d <= reach + kHullWatch) {
         double h = fw_hull_distance(own->east, own->north, own->psi, r->s->ship.Loa, r->s->ship.B,
-                                    ts->east, ts->north, ts->course, ts->length, ts->breadth);
+                                    ts->east, ts->north, ts->heading, ts->length, ts->breadth);
         if (h < e->min_hull)
             e->min_hull = h;
         if (h == 0.0)
@@ -257,7 +257,7 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
         fputc(',', r->tgt);
         fputs(ts->id, r->tgt);
         put_nums(r->tgt,
-                 (const double[]){ts->east, ts->north, fw_heading_deg(ts->course),
+                 (const double[]){ts->east, ts->north, fw_heading_deg(ts->heading),
                                   fw_ms_to_kn(ts->speed), d, fw_heading_deg(as->bearing),
                                   as->dcpa, as->tcpa},
                  (const int[]){2, 2, 3, 3, 2, 3, 2, 2}, 8);

@@ -30,7 +30,8 @@ const char *fw_run_status_name(fw_run_status s) { return s == FW_RUN_OK ? "ok" :
 static fw_target own_start(const fw_scenario *s)
 {
     fw_target o = {.east = s->east, .north = s->north, .course = s->course, .speed = s->speed,
-                   .length = s->ship.Loa, .breadth = s->ship.B};
+                   .heading = s->course, .stw = s->speed, .length = s->ship.Loa,
+                   .breadth = s->ship.B};
     snprintf(o.id, sizeof o.id, "fw_own");
     return o;
 }
@@ -354,8 +355,8 @@ static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *er
         return st;
     bool row = k % lround(s->record_every / s->step) == 0;
     if (row)
-        fw_records_own(R->rec, t, x, d->helm, fw_vessel_propeller(R->own),
-                       fw_policy_mode_name(d->mode));
+        fw_records_own(R->rec, t, x, fw_vessel_record(R->own), d->helm,
+                       fw_vessel_propeller(R->own), fw_policy_mode_name(d->mode));
     for (int i = 0; i < n; i++)
         if ((st = fw_records_target(R->rec, t, &tg[i], x, &as[i], row, err)))
             return st;

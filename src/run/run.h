@@ -168,8 +168,10 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
                           fw_error *err);
 void fw_records_close(fw_records *r);
 FILE *fw_records_log(fw_records *r);
-void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
-                    const char *mode);
+/* The own ship's row: x its motion (heading; u, v through the water), rec its
+ * record (speed_kn is the speed over ground, the columns' convention). */
+void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, const fw_target *rec,
+                    double helm, double n, const char *mode);
 /* One target seen at time t, with its assessment (situation, DCPA/TCPA, threat).
  * FW_ERUN when the book cannot grow: a run never goes on missing a ship. */
 fw_status fw_records_target(fw_records *r, double t, const fw_target *ts,

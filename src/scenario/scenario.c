@@ -120,6 +120,8 @@ static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *pa
                            o->breadth, o->length);
     o->course = fw_wrap_2pi(fw_deg_to_rad(c) - gamma);
     o->speed = fw_kn_to_ms(v);
+    /* a scenario's ship at t = 0 knows no drift and no current */
+    o->heading = o->course, o->stw = o->speed;
     return FW_OK;
 }
 
@@ -196,7 +198,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
                                       "id '%s' used twice", o->id);
             /* a target inside the own hull (or touching it) is no encounter */
             if (fw_hulls_overlap(s->east, s->north, s->course, s->ship.Loa, s->ship.B, o->east,
-                                 o->north, o->course, o->length, o->breadth))
+                                 o->north, o->heading, o->length, o->breadth))
                 return fw_fail_at(err, doc->file, seq->items[i]->line, path,
                                   "target '%s' starts overlapping the own ship's hull", o->id);
             s->n_targets++;

@@ -14,7 +14,7 @@
 /* What the monitors remember of a ship, by its interned id. */
 typedef struct ship_state {
     long seen;          /* stamp of the step it was last seen, 0 = never */
-    double t, east, north, course, speed;
+    double t, east, north, heading, speed;
     bool close;         /* within close_range of the own ship when last seen */
     bool sideways;      /* in a sideways episode */
     double slow_since;  /* s, since when slower than stop_speed; < 0: not slow */
@@ -123,10 +123,10 @@ static void moved(fw_monitor *m, double t, ship_state *p, const fw_target *a)
     double de = a->east - p->east, dn = a->north - p->north;
     /* across the mean of the two headings: a ship turning at a lane vertex
      * moves along its track, not across it */
-    if (!(p->mean_ok && p->mean_from == p->course && p->mean_to == a->course)) {
-        double h = atan2(sin(p->course) + sin(a->course), cos(p->course) + cos(a->course));
-        p->mean_from = p->course;
-        p->mean_to = a->course;
+    if (!(p->mean_ok && p->mean_from == p->heading && p->mean_to == a->heading)) {
+        double h = atan2(sin(p->heading) + sin(a->heading), cos(p->heading) + cos(a->heading));
+        p->mean_from = p->heading;
+        p->mean_to = a->heading;
         p->mean_sin = sin(h);
         p->mean_cos = cos(h);
         p->mean_ok = true;
@@ -175,8 +175,8 @@ static void on_pair(void *ctx, int i, int j, double d2)
     (void)d2;
     fw_monitor *m = ctx;
     const fw_target *a = &m->ships[m->bg[i]], *b = &m->ships[m->bg[j]];
-    if (!fw_hulls_overlap(a->east, a->north, a->course, a->length, a->breadth, b->east, b->north,
-                          b->course, b->length, b->breadth))
+    if (!fw_hulls_overlap(a->east, a->north, a->heading, a->length, a->breadth, b->east, b->north,
+                          b->heading, b->length, b->breadth))
         return;
     uint64_t key = sv_pair_key(m->cur[m->bg[i]], m->cur[m->bg[j]]);
     int last = sv_pairs_get(&m->pairs, key);
@@ -237,7 +237,7 @@ fw_status fw_monitor_step(fw_monitor *m, double t, const fw_target *own, const f
             p->slow_since = -1.0, p->stopped = false, p->sideways = false;
         slow(m, t, p, a);
         *p = (ship_state){.seen = m->stamp, .t = t, .east = a->east, .north = a->north,
-                          .course = a->course, .speed = a->speed, .close = close,
+                          .heading = a->heading, .speed = a->speed, .close = close,
                           .sideways = p->sideways, .slow_since = p->slow_since,
                           .stopped = p->stopped, .mean_from = p->mean_from,
                           .mean_to = p->mean_to, .mean_sin = p->mean_sin,

@@ -18,7 +18,8 @@
  *   stopped      a ship slower than stop_speed for stop_time (one per episode)
  *
  * Each event is written to the log (time, kind, ships, where) and counted.
- * Frame: fw_target records (hull centre, navigational course), SI.
+ * Frame: fw_target records (hull centre; the heading orients the hull and
+ * the sideways check), SI.
  */
 #ifndef FW_MONITOR_H
 #define FW_MONITOR_H

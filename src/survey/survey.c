@@ -143,7 +143,7 @@ static bool reserve_records(fw_survey *sv)
 static fw_survey_type pair_type(const fw_colregs_def *c, const fw_target *a,
                                 const fw_target *b)
 {
-    fw_own_state own = {.east = a->east, .north = a->north, .psi = a->course, .U = a->speed};
+    fw_own_state own = {.east = a->east, .north = a->north, .psi = a->heading, .U = a->speed};
     /* fw_classify's roles swap with the ships (give-way <-> stand-on,
      * overtaking <-> being overtaken), so the pair's type is symmetric */
     switch (fw_classify(c, &own, b)) {
@@ -163,8 +163,8 @@ static double hull_gap(const fw_target *a, const fw_target *b, double d)
     double reach = 0.5 * (hypot(a->length, a->breadth) + hypot(b->length, b->breadth));
     if (d > reach + FW_SURVEY_HULL_WATCH)
         return INFINITY;
-    return fw_hull_distance(a->east, a->north, a->course, a->length, a->breadth, b->east,
-                            b->north, b->course, b->length, b->breadth);
+    return fw_hull_distance(a->east, a->north, a->heading, a->length, a->breadth, b->east,
+                            b->north, b->heading, b->length, b->breadth);
 }
 
 /* A pair within release range this step (i, j: positions in the step). */
@@ -259,6 +259,7 @@ static fw_status check_ship(const fw_target *s, int k, fw_error *err)
         return fw_fail(err, FW_ERUN, "survey: ship %d has %s id", k,
                        len ? "a too long" : "no");
     if (!(fabs(s->east) <= kMaxCoord && fabs(s->north) <= kMaxCoord) || !isfinite(s->course) ||
+        !isfinite(s->heading) ||
         !(s->speed >= 0.0 && s->speed < 1e3) || !(s->length >= 0.0 && s->length < 1e4) ||
         !(s->breadth >= 0.0 && s->breadth < 1e4))
         return fw_fail(err, FW_ERUN,

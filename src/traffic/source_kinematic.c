@@ -67,8 +67,8 @@ static void scripted(const kin_ship *s, double t, fw_target *at)
     fw_velocity(l->speed, l->course, &ve, &vn);
     at->east = l->east + ve * dt + s->off_e;
     at->north = l->north + vn * dt + s->off_n;
-    at->course = l->course;
-    at->speed = l->speed;
+    at->course = at->heading = l->course; /* a script knows no drift, no current */
+    at->speed = at->stw = l->speed;
 }
 
 /* Every ship where it is at time t. */
@@ -84,8 +84,8 @@ static void move_all(kin_source *k, double t)
         fw_velocity(s->hold_speed, s->hold_course, &ve, &vn);
         s->now.east = s->hold_e + ve * dt;
         s->now.north = s->hold_n + vn * dt;
-        s->now.course = s->hold_course;
-        s->now.speed = s->hold_speed;
+        s->now.course = s->now.heading = s->hold_course;
+        s->now.speed = s->now.stw = s->hold_speed;
     }
 }
 

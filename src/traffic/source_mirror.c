@@ -51,7 +51,7 @@ static fw_status sync_ships(mirror *m, fw_error *err)
         if (m->shown[k] < 0)
             st = fw_traffic_add_placed(m->tr, v[i].id, len, wid, err);
         if (!st)
-            st = fw_traffic_move(m->tr, v[i].id, v[i].east, v[i].north, v[i].course, len, err);
+            st = fw_traffic_move(m->tr, v[i].id, v[i].east, v[i].north, v[i].heading, len, err);
         m->shown[k] = m->sync;
     }
     for (int k = 0; !st && k < m->ids.n; k++)
@@ -67,7 +67,7 @@ static fw_status mr_place(fw_source *s, const fw_target *own, fw_error *err)
     mirror *m = (mirror *)s;
     m->own = *own;
     fw_status st = fw_source_place(m->inner, own, err);
-    return st ? st : fw_traffic_place(m->tr, own->east, own->north, own->course, own->speed, err);
+    return st ? st : fw_traffic_place(m->tr, own->east, own->north, own->heading, own->speed, err);
 }
 
 static fw_status mr_advance(fw_source *s, fw_error *err)

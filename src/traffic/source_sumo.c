@@ -225,7 +225,7 @@ static double ss_step_length(const fw_source *s) { return ((const sumo_source *)
 
 static fw_status ss_place(fw_source *s, const fw_target *own, fw_error *err)
 {
-    return fw_traffic_place(((sumo_source *)s)->tr, own->east, own->north, own->course,
+    return fw_traffic_place(((sumo_source *)s)->tr, own->east, own->north, own->heading,
                             own->speed, err);
 }
 

@@ -93,8 +93,10 @@ static bool at(trk_ship *s, double t, double max_gap, fw_target *out)
     *out = s->tr.info;
     out->east = a->east + w * (b->east - a->east);
     out->north = a->north + w * (b->north - a->north);
-    out->course = a->course;
-    out->speed = a->speed;
+    /* a recorded point has one course (AIS: COG, else the heading) and one
+     * speed: the record has them as both */
+    out->course = out->heading = a->course;
+    out->speed = out->stw = a->speed;
     return true;
 }
 

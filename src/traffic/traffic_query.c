@@ -20,6 +20,7 @@ static void convert_sc(const fw_sumo_raw *r, const char *own_id, double sh, doub
     fw_traffic_from_sumo_sc(r->x, r->y, r->angle_deg, sh, ch, r->length, &s->east, &s->north,
                             &s->course);
     s->speed = r->speed;
+    s->heading = s->course, s->stw = s->speed; /* SUMO knows no drift */
     s->length = r->length;
     s->breadth = r->width;
     s->own = strcmp(r->id, own_id) == 0;
@@ -120,6 +121,9 @@ static void follow_motion(fw_traffic *t, int k, int i)
         if (lat > kMinLateral) {
             c->course = fw_wrap_2pi(atan2(dx, dy));
             c->speed = hypot(dx, dy) / t->def.step;
+            /* a lane change is SUMO's sideways jump, not a hull drifting:
+             * the hull turns with the motion, as the record always had it */
+            c->heading = c->course, c->stw = c->speed;
         }
     }
     t->last_e[i] = c->east, t->last_n[i] = c->north, t->last_step[i] = t->steps;
@@ -248,8 +252,9 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
     memcpy(o->type, FW_TRAFFIC_OWN_TYPE, sizeof FW_TRAFFIC_OWN_TYPE);
     o->east = t->own_x;
     o->north = t->own_y;
-    o->course = t->own_heading;
+    o->course = t->own_heading; /* SUMO has the own ship's heading and speed only */
     o->speed = t->own_speed;
+    o->heading = o->course, o->stw = o->speed;
     o->length = t->def.own_length;
     o->breadth = t->def.own_width;
     o->own = true;

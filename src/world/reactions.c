@@ -163,7 +163,7 @@ static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
         return false;
     *tcpa = tc;
     *dcpa = sqrt(d2);
-    fw_own_state me = {.east = a->east, .north = a->north, .psi = a->course, .U = va};
+    fw_own_state me = {.east = a->east, .north = a->north, .psi = a->heading, .U = va};
     *sit = fw_classify(&r->def.colregs, &me, b);
     /* a give-way ship stays one until the other is past and clear (rule 8):
      * the ship it is giving way to counts while the risk lasts, whatever the
@@ -238,7 +238,7 @@ static void nearest_of(const fw_reactions *r, int self, const fw_target *all, co
         cpa_at(r, &all[self], v0, &all[list[q]], &tc, &dc);
         if (tc < tbest) {
             fw_own_state me = {.east = all[self].east, .north = all[self].north,
-                               .psi = all[self].course, .U = v0};
+                               .psi = all[self].heading, .U = v0};
             tbest = tc;
             *nearest = list[q];
             *sit = fw_classify(&r->def.colregs, &me, &all[list[q]]);
@@ -363,7 +363,7 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
         cpa_at(r, a, v0, &all[j], &tc, &dc);
         if (!(tc > 0.0 && tc < r->def.last_time && dc < r->def.last_cpa))
             continue;
-        fw_own_state me = {.east = a->east, .north = a->north, .psi = a->course, .U = v0};
+        fw_own_state me = {.east = a->east, .north = a->north, .psi = a->heading, .U = v0};
         fw_situation s = fw_classify(&r->def.colregs, &me, &all[j]);
         if ((s == FW_SIT_STAND_ON || s == FW_SIT_OVERTAKEN) && tc < tbest) {
             tbest = tc;

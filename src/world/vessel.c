@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "core/mem.h"
+#include "core/units.h"
 #include "world/vessel_internal.h"
 
 fw_vessel_def fw_default_vessel_def(void)
@@ -12,24 +13,45 @@ fw_vessel_def fw_default_vessel_def(void)
     return (fw_vessel_def){.id = "own", .dynamics = FW_DYN_MMG, .radius = 6.0 * 1852.0};
 }
 
-/* The policy's view of the vessel and its record, from the motion state. */
+/* The policy's view of the vessel and its record, from the motion state.
+ * The policy's own state is through the water plus the current at the ship
+ * (the track predictor adds it, track.h); the record has the hull's heading
+ * and speed through the water, and the course and speed over ground (what
+ * the others' CPA needs): in a current the triangle of velocities, in calm
+ * water psi - beta (it differs from the heading in a turn, where the hull
+ * drifts outwards) at the speed through the water. */
 static void refresh(fw_vessel *v, double dt)
 {
     const fw_mmg_state *x = &v->motion;
+    double ce = 0.0, cn = 0.0;
+    fw_current_at(&v->env->current, x->east, x->north, v->t, &ce, &cn);
+    double stw = hypot(x->u, x->vm), beta = atan2(-x->vm, x->u);
     if (v->dyn == FW_DYN_MMG) {
         v->own = (fw_own_state){.east = x->east, .north = x->north, .psi = x->psi,
-                                .U = hypot(x->u, x->vm), .U0 = v->U0,
-                                .beta = atan2(-x->vm, x->u), .r = x->r,
+                                .U = stw, .U0 = v->U0, .beta = beta, .r = x->r,
                                 .rdot = v->advanced ? (x->r - v->r_prev) / dt : 0.0,
-                                .delta = x->delta};
+                                .delta = x->delta, .cur_e = ce, .cur_n = cn};
     } else {
         v->own = v->nom;
+        v->own.cur_e = ce, v->own.cur_n = cn;
     }
     fw_target *t = &v->record;
     t->east = x->east;
     t->north = x->north;
-    t->course = x->psi;
-    t->speed = hypot(x->u, x->vm);
+    t->heading = x->psi;
+    t->stw = stw;
+    if (ce == 0.0 && cn == 0.0) {
+        /* calm water: the direction of motion, the heading less the drift
+         * angle (the same bits as the heading on a straight course, where
+         * beta = -0) */
+        t->course = x->psi - beta;
+        t->speed = stw;
+    } else {
+        double ve = x->u * sin(x->psi) + x->vm * cos(x->psi) + ce;
+        double vn = x->u * cos(x->psi) - x->vm * sin(x->psi) + cn;
+        t->course = x->psi + fw_wrap_pi(atan2(ve, vn) - x->psi); /* near psi, as psi is kept */
+        t->speed = hypot(ve, vn);
+    }
 }
 
 static void nomoto_motion(fw_vessel *v)
@@ -42,6 +64,7 @@ static void nomoto_motion(fw_vessel *v)
 static fw_status init_mmg(fw_vessel *v, const fw_vessel_def *def, fw_error *err)
 {
     fw_stepper_def sd = fw_default_stepper_def();
+    sd.current = v->env->current;
     fw_mmg_state x0 = fw_mmg_straight(def->speed, def->east, def->north, def->course);
     fw_status st;
     if ((st = fw_mmg_propeller_for_speed(def->ship, def->speed, &v->n_prop, err)) ||
@@ -52,8 +75,10 @@ static fw_status init_mmg(fw_vessel *v, const fw_vessel_def *def, fw_error *err)
     return FW_OK;
 }
 
-fw_status fw_vessel_init(fw_vessel *v, const fw_vessel_def *def, double dt, fw_error *err)
+fw_status fw_vessel_init(fw_vessel *v, const fw_vessel_def *def, double dt, const fw_env *env,
+                         fw_error *err)
 {
+    v->env = env;
     if (!def->id || !def->id[0] || strlen(def->id) >= sizeof v->id)
         return fw_fail(err, FW_EINPUT, "vessel id must have 1..%d characters",
                        FW_TARGET_ID_MAX - 1);
@@ -109,6 +134,9 @@ fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err)
         /* one step of the predicted track, the light plant: its state is
          * the prediction's, speed and drift as they were */
         fw_track_def one = {.dt = dt, .horizon = dt};
+        /* carried by the current at the start of the step */
+        fw_current_at(&v->env->current, v->nom.east, v->nom.north, v->t, &v->nom.cur_e,
+                      &v->nom.cur_n);
         if ((st = fw_track_predict(v->ship, &one, &v->nom, v->d.helm, &v->one, err)))
             return st;
         v->nom.east = v->one.east[1], v->nom.north = v->one.north[1];
@@ -117,6 +145,7 @@ fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err)
         nomoto_motion(v);
     }
     v->advanced = true;
+    v->t += dt;
     refresh(v, dt);
     return FW_OK;
 }

@@ -13,8 +13,11 @@
  *   a predictor   how the others expect it to move (geom/target.h): NULL,
  *                 constant velocity
  *
- * What others see of it is its record (fw_target): hull centre, heading,
- * speed through the water, Loa and B.
+ * What others see of it is its record (fw_target): hull centre, course and
+ * speed over ground, heading and speed through the water, Loa and B.  In a
+ * current (the world's, env/env.h) an MMG vessel moves through the water and
+ * is carried by it (dynamics/stepper.h); a Nomoto vessel's step is carried by
+ * the current at its start.
  */
 #ifndef FW_WORLD_VESSEL_H
 #define FW_WORLD_VESSEL_H
@@ -60,8 +63,9 @@ typedef struct fw_vessel_def {
     const char *id;            /* 1..63 characters, unique in the world */
     const fw_ship *ship;       /* must outlive the world */
     fw_dynamics_kind dynamics;
-    /* start: MMG from straight running at speed on course; Nomoto from
-     * `start` as given (when start_state is set) */
+    /* start: MMG from straight running at speed (through the water) on
+     * course (its heading); Nomoto from `start` as given (when start_state
+     * is set) */
     double east, north, course, speed;
     const fw_own_state *start_state; /* FW_DYN_NOMOTO: the exact start (NULL: from the above) */
     double radius;             /* m, sight (other vessels, hull centre to hull centre) */
@@ -76,7 +80,8 @@ typedef struct fw_vessel fw_vessel;
 
 const char *fw_vessel_id(const fw_vessel *v);
 const fw_ship *fw_vessel_ship(const fw_vessel *v);
-/* Motion state: position, heading, u, v, r, rudder (Nomoto: u = U, v = 0). */
+/* Motion state: position, heading, u, v (through the water), r, rudder
+ * (Nomoto: u = U, v = 0). */
 const fw_mmg_state *fw_vessel_motion(const fw_vessel *v);
 /* What the predictor and the policy need of it. */
 const fw_own_state *fw_vessel_own_state(const fw_vessel *v);

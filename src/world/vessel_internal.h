@@ -3,6 +3,7 @@
 #define FW_WORLD_VESSEL_INTERNAL_H
 
 #include "dynamics/stepper.h"
+#include "env/env.h"
 #include "nomoto/track.h"
 #include "world/vessel.h"
 
@@ -11,6 +12,8 @@ struct fw_vessel {
     const fw_ship *ship;
     fw_dynamics_kind dyn;
     double radius;
+    const fw_env *env;         /* the world's */
+    double t;                  /* s, the time of the motion state */
     double U0;                 /* m/s, the speed on a straight course */
     /* dynamics */
     fw_stepper *st;            /* MMG */
@@ -33,8 +36,10 @@ struct fw_vessel {
     int n_view, cap;
 };
 
-/* Creates the dynamics and the first state; v->ctl is set by the caller. */
-fw_status fw_vessel_init(fw_vessel *v, const fw_vessel_def *def, double dt, fw_error *err);
+/* Creates the dynamics and the first state in the environment env (which
+ * must outlive the vessel); v->ctl is set by the caller. */
+fw_status fw_vessel_init(fw_vessel *v, const fw_vessel_def *def, double dt, const fw_env *env,
+                         fw_error *err);
 void fw_vessel_free(fw_vessel *v);
 /* Advances the dynamics by dt under the last decision's helm. */
 fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err);

@@ -34,7 +34,8 @@ static void lap(const fw_world *w, double *acc, double *t)
 
 fw_world_def fw_default_world_def(void)
 {
-    fw_world_def d = {.step = 1.0, .source = NULL, .reactions = fw_default_reactions_def()};
+    fw_world_def d = {.step = 1.0, .source = NULL, .reactions = fw_default_reactions_def(),
+                      .env = fw_default_env()};
     d.reactions.behaviour = FW_BEHAVIOUR_BLIND;
     return d;
 }
@@ -64,6 +65,10 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
         fw_source_destroy(def->source);
         return fw_fail(err, FW_EINPUT, "the traffic source steps %g s, the world %g s", s,
                        def->step);
+    }
+    if (fw_env_check(&def->env, err)) {
+        fw_source_destroy(def->source);
+        return FW_EINPUT;
     }
     fw_world *w = calloc(1, sizeof *w);
     if (!w) {
@@ -97,8 +102,10 @@ fw_status fw_world_add_vessel(fw_world *w, const fw_vessel_def *def, fw_vessel *
     for (int i = 0; !st && i < w->nv; i++)
         if (def->id && strcmp(w->v[i]->id, def->id) == 0)
             st = fw_fail(err, FW_EINPUT, "vessel '%s' added twice", def->id);
+    if (!st && v && def->ship)
+        st = fw_env_check_vessel(&w->def.env, def->id ? def->id : "?", def->ship->name, err);
     if (!st && v)
-        st = fw_vessel_init(v, def, w->def.step, err);
+        st = fw_vessel_init(v, def, w->def.step, &w->def.env, err);
     if (st) {
         if (v)
             fw_vessel_free(v);

@@ -35,6 +35,7 @@
 #define FW_WORLD_H
 
 #include "core/error.h"
+#include "env/env.h"
 #include "traffic/source.h"
 #include "world/reactions.h"
 #include "world/vessel.h"
@@ -46,13 +47,18 @@ typedef struct fw_world_def {
     /* how the source's ships treat the others (world/reactions.h): colregs,
      * or blind (they keep course and speed whatever happens) */
     fw_reactions_def reactions;
+    /* the current and the wind (env/env.h; none by default): the MMG
+     * vessels move through the current, their predictions know it, and a
+     * wind that is not calm is refused (no ship has windage particulars) */
+    fw_env env;
     /* keep fw_world_timing (CPU seconds by phase; seven clock reads a
      * step, each a system call): off by default */
     bool timing;
 } fw_world_def;
 
 /* step 1 s, no source, blind traffic (a world built by hand has the traffic
- * its source scripts; scenarios choose colregs by default). */
+ * its source scripts; scenarios choose colregs by default), calm water and
+ * still air. */
 fw_world_def fw_default_world_def(void);
 
 typedef struct fw_world fw_world;
