@@ -16,7 +16,7 @@
  *   }
  *   fw_world_destroy(w);
  *
- * One step, in this order (design.md's loop):
+ * One step, in this order (README.md, Layout, "One step of a run"):
  *   1. every vessel's dynamics advance dt under the order decided last
  *   2. the source is told where the own ship is and moves its ships one step
  *   3. every vessel senses: the ships within its sight (the source's, for
