@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "core/units.h"
-#include "dynamics/calibrate.h"
+#include "fit/calibrate.h"
 #include "nomoto/nomoto.h"
 #include "test.h"
 #include "test_ship.h"

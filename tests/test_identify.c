@@ -4,7 +4,7 @@
 
 #include "core/units.h"
 #include "dynamics/stepper.h"
-#include "nomoto/identify.h"
+#include "fit/identify.h"
 #include "avoid/helm_search.h"
 #include "nomoto/track.h"
 #include "test.h"

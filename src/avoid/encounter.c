@@ -24,7 +24,6 @@ const char *fw_situation_name(fw_situation s)
     return "?";
 }
 
-/* Relative bearing in degrees [0, 360) of point (e, n) seen from (e0, n0) on heading h. */
 /* Relative bearing (deg) of a point whose true bearing is a (atan2 of the
  * east and north offsets) from a ship heading h. */
 static double rel_bearing_deg(double a, double h) { return fw_rad_to_deg(fw_wrap_2pi(a - h)); }

@@ -6,7 +6,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "core/units.h"
-#include "dynamics/calibrate.h"
+#include "fit/calibrate.h"
 #include "yaml/yaml_edit.h"
 
 static void help(void)

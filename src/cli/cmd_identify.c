@@ -7,7 +7,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "core/units.h"
-#include "nomoto/identify.h"
+#include "fit/identify.h"
 #include "yaml/yaml_edit.h"
 
 enum { MAXV = 32 };

@@ -8,7 +8,7 @@
 #include "core/files.h"
 #include "core/json.h"
 #include "core/units.h"
-#include "dynamics/calibrate.h"
+#include "fit/calibrate.h"
 #include "dynamics/manoeuvre.h"
 #include "nomoto/track.h"
 

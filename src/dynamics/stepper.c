@@ -6,9 +6,11 @@
  * helm change also moves the kink where the rudder reaches its order.  A jump
  * in an input needs a re-initialisation.  CVODE's Adams method restarts at
  * order 1 with a tiny step after each one and needs dozens of steps to climb
- * back (measured in the reference notes: 20.6 ms per simulated hour against
- * 3.0 ms for plain RK4).  A one-step method has no history to lose: after a
- * re-initialisation it resumes with the last accepted step size.  Its dense
+ * back (measured when this integrator was chosen, with a CVODE stepper the
+ * project did not keep: 20.6 ms per simulated hour against 3.0 ms for plain
+ * RK4; bench/bench_stepper.c measures this one against RK4 today).  A
+ * one-step method has no history to lose: after a re-initialisation it
+ * resumes with the last accepted step size.  Its dense
  * output also lets one internal step span several 1 s control steps when
  * nothing changes, so the integrator is NOT re-initialised at every step.
  * Cash-Karp rather than Dormand-Prince: on an hour of helm orders every 60 s

@@ -5,7 +5,7 @@
  * the MMG scaling (forces by 0.5 rho L d U^2, moments by 0.5 rho L^2 d U^2).
  * The Nomoto knowledge base keeps the paper's interface units (U in knots,
  * rudder angle in degrees) because its regression coefficients are fitted in
- * them; fw_nomoto_kb_eval() is the only place that reads them.
+ * them; fw_nomoto_index_eval() is the only place that evaluates them.
  */
 #ifndef FW_SHIP_H
 #define FW_SHIP_H

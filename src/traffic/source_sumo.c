@@ -316,8 +316,6 @@ double fw_sumo_source_step_wall(const fw_source *s)
     return s && s->ops == &sumo_ops ? ((const sumo_source *)s)->wall : 0.0;
 }
 
-/* The fill's ships too close to the own ship at t = 0, taken out (see
- * source_sumo.h); *n_out counts them. */
 /* Is the fill's ship i on a collision course with another of the fill (its
  * hulls within clear_cpa in the next clear_tcpa s, crossing, not following in
  * a lane)?  Put there at the start it has no time to give way: the later
@@ -340,7 +338,8 @@ static bool fill_conflict(const fw_sumo_source_def *d, const fw_target *v, const
 
 /* After SUMO's first step, the fill's ships that would be a scenario's
  * artefact rather than traffic are taken out: near the own ship or on a
- * collision course with it, or on one with another of the fill. */
+ * collision course with it, or on one with another of the fill (see
+ * source_sumo.h); *n_out counts them. */
 static fw_status clear_start(sumo_source *k, const fw_sumo_source_def *d, int *n_out,
                              fw_error *err)
 {

@@ -56,7 +56,6 @@ static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_erro
     return FW_OK;
 }
 
-/* The context results of the last step, asked of SUMO once per step. */
 /* SUMO's angle is its lane's: a ship changing lanes moves across it (at up
  * to the lane width over lane_change_s) with its angle unchanged.  Such a
  * ship gets the direction and speed of its hull centre's motion since the
@@ -129,6 +128,7 @@ static void follow_motion(fw_traffic *t, int k, int i)
     t->last_e[i] = c->east, t->last_n[i] = c->north, t->last_step[i] = t->steps;
 }
 
+/* The context results of the last step, asked of SUMO once per step. */
 fw_status fw_traffic_context(fw_traffic *t, fw_error *err)
 {
     if (t->ctx_step == t->steps)

@@ -35,7 +35,7 @@ static void lap(const fw_world *w, double *acc, double *t)
 fw_world_def fw_default_world_def(void)
 {
     fw_world_def d = {.step = 1.0, .source = NULL, .reactions = fw_default_reactions_def(),
-                      .env = fw_default_env()};
+                      .env = fw_default_env(), .seed = 1};
     d.reactions.behaviour = FW_BEHAVIOUR_BLIND;
     return d;
 }
@@ -239,6 +239,7 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err)
 
 const fw_world_timing *fw_world_timing_of(const fw_world *w) { return &w->timing; }
 double fw_world_time(const fw_world *w) { return (double)w->steps * w->def.step; }
+uint64_t fw_world_seed(const fw_world *w) { return w->def.seed; }
 long fw_world_steps(const fw_world *w) { return w->steps; }
 int fw_world_vessel_count(const fw_world *w) { return w->nv; }
 fw_vessel *fw_world_vessel(fw_world *w, int i) { return i >= 0 && i < w->nv ? w->v[i] : NULL; }

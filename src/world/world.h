@@ -16,7 +16,7 @@
  *   }
  *   fw_world_destroy(w);
  *
- * One step, in this order (design.md's loop):
+ * One step, in this order (README.md, Layout, "One step of a run"):
  *   1. every vessel's dynamics advance dt under the order decided last
  *   2. the source is told where the own ship is and moves its ships one step
  *   3. every vessel senses: the ships within its sight (the source's, for
@@ -33,6 +33,8 @@
  */
 #ifndef FW_WORLD_H
 #define FW_WORLD_H
+
+#include <stdint.h>
 
 #include "core/error.h"
 #include "env/env.h"
@@ -54,6 +56,9 @@ typedef struct fw_world_def {
     /* keep fw_world_timing (CPU seconds by phase; seven clock reads a
      * step, each a system call): off by default */
     bool timing;
+    /* the run's seed (a study's replication's): the key of the vessels'
+     * random streams (core/rng.h fw_rng_make); 1 by default */
+    uint64_t seed;
 } fw_world_def;
 
 /* step 1 s, no source, blind traffic (a world built by hand has the traffic
@@ -93,6 +98,7 @@ typedef struct fw_world_timing {
 const fw_world_timing *fw_world_timing_of(const fw_world *w);
 
 double fw_world_time(const fw_world *w);  /* s */
+uint64_t fw_world_seed(const fw_world *w); /* the def's seed */
 long fw_world_steps(const fw_world *w);
 
 int fw_world_vessel_count(const fw_world *w);

@@ -1,6 +1,6 @@
 /* The trial file of `fairway calibrate`: measured turning circles, targets
  * from a Nomoto knowledge base, and the coefficients to tune. */
-#include "dynamics/calibrate.h"
+#include "fit/calibrate.h"
 
 #include <math.h>
 #include <stdio.h>

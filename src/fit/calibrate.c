@@ -1,6 +1,6 @@
 /* `fairway calibrate`: the fit and the ship file it writes. */
 #include "core/files.h"
-#include "dynamics/calibrate.h"
+#include "fit/calibrate.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,4 +1,4 @@
-#include "nomoto/identify.h"
+#include "fit/identify.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,0 +1,2 @@
+/* the module core/a.h wrongly includes */
+#include "core/a.h"
