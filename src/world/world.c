@@ -100,10 +100,11 @@ fw_status fw_world_add_vessel(fw_world *w, const fw_vessel_def *def, fw_vessel *
     if (!st && v)
         st = fw_vessel_init(v, def, w->def.step, err);
     if (st) {
+        /* taken over also on failure: v->ctl is not set yet, so v's free
+         * leaves it alone */
+        fw_controller_destroy(def->controller);
         if (v)
             fw_vessel_free(v);
-        else
-            fw_controller_destroy(def->controller);
         free(v);
         return st;
     }
