@@ -192,7 +192,11 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     vd.speed = s->speed;
     vd.radius = s->radius;
     vd.controller = ctl;
-    return fw_world_add_vessel(*w, &vd, own, err);
+    fw_vessel_handle h;
+    if ((st = fw_world_add_vessel(*w, &vd, &h, err)))
+        return st;
+    *own = fw_world_vessel(*w, h); /* never removed: borrowed for the run */
+    return FW_OK;
 }
 
 typedef struct run_state {

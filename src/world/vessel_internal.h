@@ -10,6 +10,8 @@ struct fw_vessel {
     char id[FW_TARGET_ID_MAX];
     const fw_ship *ship;
     fw_dynamics_kind dyn;
+    fw_vessel_role role;
+    bool taken;                /* from the source, told where it is every step */
     double radius;
     double U0;                 /* m/s, the speed on a straight course */
     /* dynamics */
