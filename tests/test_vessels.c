@@ -1,0 +1,301 @@
+/* test_vessels.c - vessels that come and go (world.h handles, roles, take and give back).
+ *
+ *   handles: a vessel added mid-run and one removed mid-run; a stale handle
+ *     refused (also once its slot holds another vessel); the other vessels'
+ *     tracks bit for bit those of a world that never had the removed one;
+ *     the removed vessel in nobody's view after the next step
+ *   sensing: a vessel other than the own ship sees the source's ships
+ *     within its sight; a world without an own ship works
+ *   take and give back (the kinematic source): the ship becomes a vessel at
+ *     its exact state, is stepped by fairway (a Nomoto c3-paper), is seen
+ *     once (as a vessel, not also as the source's), and is given back onto
+ *     its route; the traffic monitors (survey/monitor.h) count no sideways
+ *     move, no teleport throughout; a vessel off its route is refused
+ *   the recorded-track source refuses take, saying why
+ *   sumo (argument "sumo", embedded libsumo): the same take and give back of
+ *     a network ship, which then is on a lane of its route, heading within a
+ *     few degrees of the lane's, at its speed, and SUMO drives it again
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/units.h"
+#include "survey/monitor.h"
+#include "test.h"
+#include "traffic/source.h"
+#include "traffic/source_track.h"
+#include "world/controllers.h"
+#include "world/world.h"
+
+static fw_ship c3, c3p;
+
+/* A ship with id in a view? */
+static int seen(const fw_vessel *v, const char *id)
+{
+    const fw_target *tg;
+    const fw_assessment *as;
+    int n, k = 0;
+    fw_vessel_view(v, &tg, &as, &n);
+    for (int i = 0; i < n; i++)
+        k += strcmp(tg[i].id, id) == 0;
+    return k;
+}
+
+static fw_vessel_def nomoto_def(const char *id, fw_vessel_role role, double e, double n,
+                                double course_deg, double kn)
+{
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.id = id;
+    vd.role = role;
+    vd.ship = &c3;
+    vd.dynamics = FW_DYN_NOMOTO;
+    vd.east = e, vd.north = n, vd.course = fw_deg_to_rad(course_deg), vd.speed = fw_kn_to_ms(kn);
+    return vd;
+}
+
+/* One source ship far east, going north. */
+static fw_status make_source(fw_source **out, fw_error *err)
+{
+    fw_kin_ship ks = {.start = {.id = "k1", .east = 8000, .north = 0, .course = 0.0,
+                                .speed = fw_kn_to_ms(8), .length = 150, .breadth = 25}};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = &ks;
+    kd.n = 1;
+    kd.radius = 6.0 * 1852.0;
+    return fw_kinematic_source_create(&kd, out, err);
+}
+
+typedef struct tracks {
+    double own_e[400], own_n[400], b_e[400], b_n[400];
+} tracks;
+
+/* own (policy) and B (policy, added at 60 s) sail north 6 km apart with the
+ * source's k1; with_c: C (policy) beside them from the start, removed at
+ * 120 s.  The three are far beyond each other's act range: nobody alters. */
+static void come_and_go(bool with_c, tracks *tr)
+{
+    fw_error err = {0};
+    fw_world_def wd = fw_default_world_def();
+    fw_world *w = NULL;
+    CHECK(make_source(&wd.source, &err) == FW_OK);
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
+                                   .policy = fw_default_policy_def()};
+    fw_vessel_def own = nomoto_def("own", FW_ROLE_OWN, 0, 0, 0, 10);
+    fw_vessel_def b = nomoto_def("B", FW_ROLE_OTHER, 5000, 0, 0, 10);
+    fw_vessel_def c = nomoto_def("C", FW_ROLE_OTHER, -5000, 0, 0, 10);
+    fw_vessel_handle ho, hb = {0}, hc = {0};
+    CHECK(fw_policy_controller_create(&pd, &own.controller, &err) == FW_OK);
+    CHECK(fw_world_add_vessel(w, &own, &ho, &err) == FW_OK);
+    if (with_c) {
+        CHECK(fw_policy_controller_create(&pd, &c.controller, &err) == FW_OK);
+        CHECK(fw_world_add_vessel(w, &c, &hc, &err) == FW_OK);
+    }
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    for (int k = 0; k < 400; k++) {
+        if (k == 60) {
+            CHECK(fw_policy_controller_create(&pd, &b.controller, &err) == FW_OK);
+            CHECK_MSG(fw_world_add_vessel(w, &b, &hb, &err) == FW_OK, "%s", err.msg);
+            /* B senses at once: the source's k1 (3 km off) and the own ship */
+            CHECK(seen(fw_world_vessel(w, hb), "k1") == 1);
+            CHECK(seen(fw_world_vessel(w, hb), "own") == 1);
+            CHECK(seen(fw_world_vessel(w, ho), "B") == 0); /* the own ship: next step */
+        }
+        if (k == 61)
+            CHECK(seen(fw_world_vessel(w, ho), "B") == 1);
+        if (with_c && k == 119)
+            CHECK(seen(fw_world_vessel(w, ho), "C") == 1 && seen(fw_world_vessel(w, hb), "C") == 1);
+        if (with_c && k == 120) {
+            CHECK(fw_world_remove_vessel(w, hc, &err) == FW_OK);
+            CHECK(fw_world_remove_vessel(w, hc, &err) == FW_EINPUT); /* stale */
+            CHECK(strstr(err.msg, "stale") != NULL);
+            CHECK(!fw_world_vessel_valid(w, hc) && fw_world_vessel(w, hc) == NULL);
+            /* the freed slot serves a new vessel; the old handle still refused */
+            fw_vessel_def d = nomoto_def("D", FW_ROLE_OTHER, -9e5, 0, 0, 1);
+            fw_vessel_handle hd;
+            CHECK(fw_world_add_vessel(w, &d, &hd, &err) == FW_OK);
+            CHECK(hd.index1 == hc.index1 && hd.generation != hc.generation);
+            CHECK(fw_world_vessel(w, hc) == NULL && fw_world_vessel(w, hd) != NULL);
+            CHECK(fw_world_remove_vessel(w, hc, &err) == FW_EINPUT);
+            CHECK(fw_world_remove_vessel(w, hd, &err) == FW_OK);
+        }
+        if (with_c && k == 121) {
+            CHECK(seen(fw_world_vessel(w, ho), "C") == 0 && seen(fw_world_vessel(w, hb), "C") == 0);
+            CHECK(fw_world_vessel_count(w) == 2);
+        }
+        const fw_target *o = fw_vessel_record(fw_world_vessel(w, ho));
+        tr->own_e[k] = o->east, tr->own_n[k] = o->north;
+        if (k >= 60) {
+            const fw_target *r = fw_vessel_record(fw_world_vessel(w, hb));
+            tr->b_e[k] = r->east, tr->b_n[k] = r->north;
+        }
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    }
+    CHECK(fw_vessel_decision(fw_world_vessel(w, ho))->mode == FW_MODE_STANDBY);
+    fw_world_destroy(w);
+}
+
+static void test_come_and_go(void)
+{
+    static tracks with, without;
+    come_and_go(true, &with);
+    come_and_go(false, &without);
+    /* bit for bit: adding, removing and reusing a slot perturbs nobody */
+    CHECK(memcmp(with.own_e, without.own_e, sizeof with.own_e) == 0);
+    CHECK(memcmp(with.own_n, without.own_n, sizeof with.own_n) == 0);
+    CHECK(memcmp(&with.b_e[60], &without.b_e[60], sizeof(double) * 340) == 0);
+    CHECK(memcmp(&with.b_n[60], &without.b_n[60], sizeof(double) * 340) == 0);
+    CHECK_NEAR(with.own_n[399], 399 * fw_kn_to_ms(10), 1e-6); /* straight on */
+}
+
+/* No own ship: two vessels see the source's ship through within(). */
+static void test_no_own_ship(void)
+{
+    fw_error err = {0};
+    fw_world_def wd = fw_default_world_def();
+    fw_world *w = NULL;
+    CHECK(make_source(&wd.source, &err) == FW_OK);
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_vessel_def a = nomoto_def("A", FW_ROLE_OTHER, 6000, 0, 0, 8);
+    fw_vessel_def z = nomoto_def("Z", FW_ROLE_OTHER, -6000, 0, 0, 8);
+    a.radius = z.radius = 5000.0;
+    fw_vessel_handle ha, hz;
+    CHECK(fw_world_add_vessel(w, &a, &ha, &err) == FW_OK);
+    CHECK(fw_world_add_vessel(w, &z, &hz, &err) == FW_OK);
+    CHECK(fw_vessel_handle_null(fw_world_own(w)));
+    CHECK_MSG(fw_world_start(w, &err) == FW_OK, "%s", err.msg);
+    for (int k = 0; k < 10; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    /* A (2 km from k1) sees it, Z (14 km) does not; they are 12 km apart */
+    CHECK(seen(fw_world_vessel(w, ha), "k1") == 1 && seen(fw_world_vessel(w, ha), "Z") == 0);
+    CHECK(seen(fw_world_vessel(w, hz), "k1") == 0);
+    fw_world_destroy(w);
+}
+
+/* The monitors' step: the own ship and what it sees. */
+static void monitor_step(fw_monitor *m, fw_world *w, fw_error *err)
+{
+    const fw_vessel *o = fw_world_vessel(w, fw_world_own(w));
+    const fw_target *tg;
+    const fw_assessment *as;
+    int n;
+    fw_vessel_view(o, &tg, &as, &n);
+    CHECK_MSG(fw_monitor_step(m, fw_world_time(w), fw_vessel_record(o), tg, n, err) == FW_OK,
+              "%s", err->msg);
+}
+
+static void test_take_give_back_kinematic(void)
+{
+    fw_error err = {0};
+    fw_world_def wd = fw_default_world_def();
+    fw_world *w = NULL;
+    CHECK(make_source(&wd.source, &err) == FW_OK);
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_vessel_def own = nomoto_def("own", FW_ROLE_OWN, 0, 0, 0, 10);
+    fw_vessel_handle ho, ht = {0};
+    CHECK(fw_world_add_vessel(w, &own, &ho, &err) == FW_OK);
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    fw_monitor_def md = fw_default_monitor_def();
+    fw_monitor *mon = NULL;
+    CHECK(fw_monitor_create(&md, NULL, &mon, &err) == FW_OK);
+    fw_vessel_def td = fw_default_vessel_def(); /* the ship model for the taken ship */
+    td.ship = &c3p;
+    td.dynamics = FW_DYN_NOMOTO;
+    fw_target last = {0};
+    for (int k = 0; k <= 300; k++) {
+        monitor_step(mon, w, &err);
+        if (k == 30) {
+            const fw_target *src;
+            int n;
+            CHECK(fw_source_around(fw_world_source(w), &src, &n, &err) == FW_OK && n == 1);
+            fw_target before = src[0];
+            CHECK_MSG(fw_world_take(w, "k1", &td, &ht, &err) == FW_OK, "%s", err.msg);
+            const fw_target *r = fw_vessel_record(fw_world_vessel(w, ht));
+            /* its exact state */
+            CHECK(r->east == before.east && r->north == before.north &&
+                  r->course == before.course && r->speed == before.speed);
+            CHECK(fw_vessel_taken(fw_world_vessel(w, ht)) &&
+                  fw_vessel_role_of(fw_world_vessel(w, ht)) == FW_ROLE_OTHER);
+            CHECK(fw_world_take(w, "k1", &td, NULL, &err) == FW_EINPUT); /* a vessel already */
+            CHECK(fw_world_remove_vessel(w, ht, &err) == FW_EINPUT);     /* give it back */
+        }
+        if (k > 30 && k < 210) {
+            /* seen once, as the vessel: the source lists it no more */
+            CHECK(seen(fw_world_vessel(w, ho), "k1") == 1);
+            const fw_target *src;
+            int n;
+            CHECK(fw_source_around(fw_world_source(w), &src, &n, &err) == FW_OK && n == 0);
+        }
+        if (k == 210) {
+            last = *fw_vessel_record(fw_world_vessel(w, ht));
+            CHECK_MSG(fw_world_give_back(w, ht, &err) == FW_OK, "%s", err.msg);
+            CHECK(fw_world_give_back(w, ht, &err) == FW_EINPUT); /* stale */
+        }
+        if (k == 211) {
+            /* driven by its script again, from where it was, at its speed */
+            const fw_target *src;
+            int n;
+            CHECK(fw_source_around(fw_world_source(w), &src, &n, &err) == FW_OK && n == 1);
+            CHECK_NEAR(src[0].north, last.north + fw_kn_to_ms(8), 1e-6);
+            CHECK_NEAR(src[0].east, 8000.0, 1e-6);
+            CHECK_NEAR(src[0].speed, fw_kn_to_ms(8), 1e-12);
+        }
+        if (k < 300)
+            CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    }
+    const fw_monitor_counts *c = fw_monitor_counts_of(mon);
+    CHECK_MSG(c->sideways == 0 && c->teleport == 0 && c->vanish == 0 && c->appear == 0,
+              "sideways %d teleport %d vanish %d appear %d", c->sideways, c->teleport, c->vanish,
+              c->appear);
+    CHECK(c->max_lateral < 1e-6);
+    fw_monitor_destroy(mon);
+    /* a vessel off its route is refused, and stays a vessel */
+    fw_manoeuvre_def turn = {.t_act = 0.0, .helm = fw_deg_to_rad(20), .course = 0.0,
+                             .alteration = fw_deg_to_rad(30)};
+    CHECK(fw_manoeuvre_controller_create(&turn, &td.controller, &err) == FW_OK);
+    CHECK(fw_world_take(w, "k1", &td, &ht, &err) == FW_OK);
+    for (int k = 0; k < 120; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    CHECK(fw_world_give_back(w, ht, &err) == FW_EINPUT);
+    CHECK(strstr(err.msg, "off its route") != NULL);
+    CHECK(fw_world_vessel_valid(w, ht));
+    fw_world_destroy(w);
+}
+
+/* A recorded ship cannot be given back: its recording says where it is at
+ * every later time, whatever fairway did with it. */
+static void test_track_refuses_take(void)
+{
+    fw_error err = {0};
+    fw_rec_track *t = calloc(1, sizeof *t);
+    snprintf(t->info.id, sizeof t->info.id, "r1");
+    t->p = malloc(2 * sizeof *t->p);
+    t->p[0] = (fw_rec_point){0, 0, 0, 0, 5};
+    t->p[1] = (fw_rec_point){100, 0, 500, 0, 5};
+    t->n = t->cap = 2;
+    fw_replay_def rd = fw_default_replay_def();
+    fw_source *s = NULL;
+    CHECK_MSG(fw_track_source_create(t, 1, &rd, "test", &s, &err) == FW_OK, "%s", err.msg);
+    fw_target at;
+    CHECK(s && fw_source_take(s, "r1", &at, &err) == FW_EINPUT);
+    CHECK(strstr(err.msg, "recording") != NULL);
+    fw_source_destroy(s);
+}
+
+int main(int argc, char **argv)
+{
+    fw_error err = {0};
+    if (fw_ship_load("c3", &c3, &err) || fw_ship_load("c3-paper", &c3p, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return 1;
+    }
+    if (argc > 1 && strcmp(argv[1], "sumo") == 0) {
+        return TEST_EXIT();
+    }
+    TEST_RUN(test_come_and_go);
+    TEST_RUN(test_no_own_ship);
+    TEST_RUN(test_take_give_back_kinematic);
+    TEST_RUN(test_track_refuses_take);
+    return TEST_EXIT();
+}
