@@ -65,3 +65,6 @@ fw_test(test_vessels test_vessels.c)
 target_link_libraries(test_vessels PRIVATE fairway_run)
 set_tests_properties(test_vessels PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+add_test(NAME test_vessels_sumo COMMAND test_vessels sumo)
+set_tests_properties(test_vessels_sumo PROPERTIES TIMEOUT 90
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

@@ -19,11 +19,13 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/units.h"
 #include "survey/monitor.h"
 #include "test.h"
 #include "traffic/source.h"
+#include "traffic/source_sumo.h"
 #include "traffic/source_track.h"
 #include "world/controllers.h"
 #include "world/world.h"
@@ -283,6 +285,147 @@ static void test_track_refuses_take(void)
     fw_source_destroy(s);
 }
 
+/* Lane centre lines of networks/channel (its net.xml): eastbound y -375 and
+ * -125, westbound 125 and 375. */
+static double lane_off(double north)
+{
+    static const double lanes[4] = {-375.0, -125.0, 125.0, 375.0};
+    double best = INFINITY;
+    for (int i = 0; i < 4; i++)
+        best = fmin(best, fabs(north - lanes[i]));
+    return best;
+}
+
+/* The own ship's view entry for id (NULL: not seen). */
+static const fw_target *in_view(const fw_vessel *v, const char *id)
+{
+    const fw_target *tg;
+    const fw_assessment *as;
+    int n;
+    fw_vessel_view(v, &tg, &as, &n);
+    int j = fw_target_find(tg, n, id);
+    return j < 0 ? NULL : &tg[j];
+}
+
+/* Sideways speed (m/s) between two records of one ship a step dt apart:
+ * the monitors' measure (survey/monitor.h), across the earlier heading. */
+static double lateral(const fw_target *a, const fw_target *b, double dt)
+{
+    double de = b->east - a->east, dn = b->north - a->north;
+    return fabs(de * cos(a->course) - dn * sin(a->course)) / dt;
+}
+
+/* A ship of the channel network taken for 3 minutes and given back. */
+static void test_take_give_back_sumo(void)
+{
+    fw_error err = {0};
+    char dir[] = "/tmp/fw_test_vessels.XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    fw_sumo_source_def sd = fw_default_sumo_source_def();
+    sd.dir = dir;
+    sd.network = "channel";
+    sd.fill = 20;
+    sd.duration = 600.0;
+    sd.own = (fw_target){.id = "fw_own", .east = 4000, .north = -1500, .course = 0.5 * FW_PI,
+                         .speed = fw_kn_to_ms(10), .length = c3.Loa, .breadth = c3.B};
+    sd.clear_range = 10.0; /* keep the fill near the own ship: ships to take */
+    sd.clear_cpa = 0.0;
+    fw_world_def wd = fw_default_world_def();
+    fw_world *w = NULL;
+    CHECK_MSG(fw_sumo_source_create(&sd, &wd.source, &err) == FW_OK, "%s", err.msg);
+    CHECK_MSG(wd.source && fw_world_create(&wd, &w, &err) == FW_OK, "%s", err.msg);
+    if (!w)
+        return;
+    fw_vessel_def own = nomoto_def("fw_own", FW_ROLE_OWN, 4000, -1500, 90, 10);
+    fw_vessel_handle ho, ht = {0};
+    CHECK(fw_world_add_vessel(w, &own, &ho, &err) == FW_OK);
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    fw_monitor_def md = fw_default_monitor_def();
+    fw_monitor *mon = NULL;
+    CHECK(fw_monitor_create(&md, NULL, &mon, &err) == FW_OK);
+    fw_vessel_def td = fw_default_vessel_def();
+    td.ship = &c3p;
+    td.dynamics = FW_DYN_NOMOTO;
+    char id[FW_TARGET_ID_MAX] = "";
+    fw_target prev = {0}, at_back = {0};
+    double lat_max = 0.0, lane_back = 0.0;
+    int seen_steps = 0;
+    for (int k = 0; k <= 300; k++) {
+        const fw_vessel *o = fw_world_vessel(w, ho);
+        monitor_step(mon, w, &err);
+        if (k == 30) {
+            /* a ship on its lane's line, under way, not changing lanes */
+            const fw_target *tg;
+            const fw_assessment *as;
+            int n;
+            fw_vessel_view(o, &tg, &as, &n);
+            for (int i = 0; i < n && !id[0]; i++)
+                if (lane_off(tg[i].north) < 0.01 && tg[i].speed > 2.0 &&
+                    fabs(sin(tg[i].course)) > 0.99999 && fabs(tg[i].east - 4000) < 6000)
+                    snprintf(id, sizeof id, "%s", tg[i].id);
+            CHECK_MSG(id[0], "no ship to take among %d", n);
+            if (!id[0])
+                break;
+            const fw_target before = *in_view(o, id);
+            CHECK_MSG(fw_world_take(w, id, &td, &ht, &err) == FW_OK, "%s", err.msg);
+            const fw_target *r = fw_vessel_record(fw_world_vessel(w, ht));
+            CHECK(r->east == before.east && r->north == before.north &&
+                  r->course == before.course && r->speed == before.speed);
+            lane_back = before.north;
+        }
+        if (id[0] && k > 30) {
+            const fw_target *now = in_view(o, id);
+            CHECK_MSG(now != NULL, "t %d: '%s' not seen", k, id);
+            if (now && prev.id[0]) {
+                lat_max = fmax(lat_max, lateral(&prev, now, 1.0));
+                seen_steps++;
+            }
+            if (now)
+                prev = *now;
+        }
+        if (id[0] && k > 30 && k < 210) {
+            /* seen once: as the vessel, not also as SUMO's */
+            CHECK(seen(o, id) == 1);
+            const fw_target *src;
+            int n;
+            CHECK(fw_source_around(fw_world_source(w), &src, &n, &err) == FW_OK &&
+                  fw_target_find(src, n, id) < 0);
+        }
+        if (id[0] && k == 210) {
+            at_back = *fw_vessel_record(fw_world_vessel(w, ht));
+            CHECK_MSG(fw_world_give_back(w, ht, &err) == FW_OK, "%s", err.msg);
+            CHECK(fw_world_give_back(w, ht, &err) == FW_EINPUT); /* stale */
+        }
+        if (id[0] && k > 210) {
+            /* SUMO's again: on its lane, along it, at its speed, moving on */
+            const fw_target *now = in_view(o, id);
+            CHECK(now && fabs(now->north - lane_back) < 1.0);
+            CHECK(now && fabs(sin(now->course)) > cos(fw_deg_to_rad(3.0)));
+            CHECK(now && fabs(now->speed - at_back.speed) < 0.1 * at_back.speed);
+            if (now && k == 300)
+                CHECK_NEAR(fabs(now->east - at_back.east), 90.0 * at_back.speed,
+                           0.05 * 90.0 * at_back.speed);
+        }
+        if (k < 300)
+            CHECK_MSG(fw_world_step(w, 1.0, &err) == FW_OK, "%s", err.msg);
+    }
+    /* no sideways speed above the monitors' bound: at the take, during, at
+     * the give back and after; nor any sideways move or jump of any ship */
+    CHECK_MSG(lat_max < md.lateral_max, "largest sideways speed %.3f m/s", lat_max);
+    CHECK(seen_steps == 269);
+    const fw_monitor_counts *c = fw_monitor_counts_of(mon);
+    CHECK_MSG(c->sideways == 0 && c->teleport == 0, "sideways %d teleport %d", c->sideways,
+              c->teleport);
+    printf("took '%s': largest sideways speed %.4f m/s (monitors' bound %.1f)\n", id, lat_max,
+           md.lateral_max);
+    fw_monitor_destroy(mon);
+    fw_world_destroy(w);
+    char cmd[200];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    if (test_failures_ == 0 && system(cmd) != 0)
+        fprintf(stderr, "could not remove %s\n", dir);
+}
+
 int main(int argc, char **argv)
 {
     fw_error err = {0};
@@ -291,6 +434,7 @@ int main(int argc, char **argv)
         return 1;
     }
     if (argc > 1 && strcmp(argv[1], "sumo") == 0) {
+        TEST_RUN(test_take_give_back_sumo);
         return TEST_EXIT();
     }
     TEST_RUN(test_come_and_go);
