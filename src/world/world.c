@@ -22,6 +22,8 @@ struct fw_world {
     slot *slots;
     int n_slots, cap, nv;
     int own;            /* the own ship's slot, -1: none */
+    fw_target *recs;    /* the vessels' records for the reactive traffic */
+    int recs_cap;
     int n_taken;        /* vessels taken from the source */
     long steps;
     bool started, broken;
@@ -57,6 +59,7 @@ void fw_world_destroy(fw_world *w)
         free(w->slots[i].v);
     }
     free(w->slots);
+    free(w->recs);
     fw_source_destroy(w->source);
     fw_reactions_destroy(w->react);
     free(w);
@@ -333,6 +336,28 @@ static fw_status decide(fw_world *w, fw_vessel *v, fw_error *err)
     return v->ctl->ops->decide(v->ctl, &in, &v->d, err);
 }
 
+/* Every vessel's record, the own ship first (the own ship alone: its own
+ * record, nothing copied). */
+static fw_status vessel_records(fw_world *w, const fw_target **v, int *n, fw_error *err)
+{
+    *n = 0;
+    *v = NULL;
+    if (w->nv == 1 && w->own >= 0) {
+        *v = &w->slots[w->own].v->record;
+        *n = 1;
+        return FW_OK;
+    }
+    if (!fw_reserve((void **)&w->recs, sizeof *w->recs, &w->recs_cap, w->nv))
+        return fw_fail(err, FW_ERUN, "out of memory for %d vessels", w->nv);
+    if (w->own >= 0)
+        w->recs[(*n)++] = w->slots[w->own].v->record;
+    for (int i = 0; i < w->n_slots; i++)
+        if (w->slots[i].v && i != w->own)
+            w->recs[(*n)++] = w->slots[i].v->record;
+    *v = w->recs;
+    return FW_OK;
+}
+
 static fw_status sense_and_decide(fw_world *w, fw_error *err)
 {
     const fw_target *src = NULL;
@@ -355,12 +380,16 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
     lap(w, &tm->decide, &t);
     /* the reactive traffic watches its own, wider circle (traffic/source.h) */
     if (!st && w->source && fw_reactions_active(w->react)) {
-        const fw_target *own = w->own >= 0 ? &w->slots[w->own].v->record : NULL;
+        const fw_target *vs;
+        int nvs = 0;
         src = NULL, n_src = 0;
-        if (own)
+        if (w->own >= 0)
             st = fw_source_nearby(w->source, &src, &n_src, err);
         if (!st)
-            st = fw_reactions_step(w->react, fw_world_time(w), own, src, n_src, w->source, err);
+            st = vessel_records(w, &vs, &nvs, err);
+        if (!st)
+            st = fw_reactions_step(w->react, fw_world_time(w), vs, nvs, src, n_src, w->source,
+                                   err);
         lap(w, &tm->reactions, &t);
     }
     return st;
