@@ -305,6 +305,49 @@ static void test_traffic_reacts_to_taken(void)
     fw_world_destroy(w);
 }
 
+/* The policy returns to the route it is given, not to the line through its
+ * first position: the own ship starts 300 m west of its route's line (north,
+ * x = 300), avoids a head-on ship, and ends on the route. */
+static void test_returns_to_given_route(void)
+{
+    double v = fw_kn_to_ms(10), end_e[2] = {NAN, NAN};
+    for (int given = 0; given < 2; given++) {
+        fw_error err = {0};
+        fw_kin_ship sh = {.start = {.id = "T1", .east = 0, .north = 3000, .course = FW_PI,
+                                    .speed = v, .length = 200, .breadth = 32}};
+        fw_kinematic_def kd = fw_default_kinematic_def();
+        kd.ships = &sh;
+        kd.n = 1;
+        fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
+                                       .policy = fw_default_policy_def()};
+        double we[3] = {300, 300, 300}, wn[3] = {-1000, 5000, 20000}, sp[2] = {v, v};
+        if (given)
+            CHECK(fw_route_from_waypoints(we, wn, sp, 3, &pd.policy.route, &err) == FW_OK);
+        fw_world_def wd = fw_default_world_def();
+        fw_world *w = NULL;
+        fw_vessel_def vd = nomoto_def("own", FW_ROLE_OWN, 0, 0, 0, 10);
+        fw_vessel_handle h;
+        CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
+              fw_world_create(&wd, &w, &err) == FW_OK &&
+              fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK &&
+              fw_world_add_vessel(w, &vd, &h, &err) == FW_OK && fw_world_start(w, &err) == FW_OK);
+        for (int k = 0; k < 2400; k++)
+            CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+        const fw_vessel *o = fw_world_vessel(w, h);
+        end_e[given] = o ? fw_vessel_own_state(o)->east : NAN;
+        fw_world_destroy(w);
+    }
+    CHECK_MSG(fabs(end_e[0]) < 50.0, "no route given: %.0f m from the start's line", end_e[0]);
+    CHECK_MSG(fabs(end_e[1] - 300.0) < 50.0, "route given: %.0f m east, its line at 300 m",
+              end_e[1]);
+    /* bad routes */
+    fw_route r;
+    fw_error err = {0};
+    double e[2] = {0, 0}, n[2] = {0, 0}, sp[1] = {1};
+    CHECK(fw_route_from_waypoints(e, n, sp, 2, &r, &err) == FW_EINPUT); /* coincide */
+    CHECK(fw_route_from_waypoints(e, n, sp, 1, &r, &err) == FW_EINPUT);
+}
+
 /* A recorded ship cannot be given back: its recording says where it is at
  * every later time, whatever fairway did with it. */
 static void test_track_refuses_take(void)
@@ -481,6 +524,7 @@ int main(int argc, char **argv)
     TEST_RUN(test_no_own_ship);
     TEST_RUN(test_take_give_back_kinematic);
     TEST_RUN(test_traffic_reacts_to_taken);
+    TEST_RUN(test_returns_to_given_route);
     TEST_RUN(test_track_refuses_take);
     return TEST_EXIT();
 }
