@@ -501,6 +501,16 @@ static void test_take_give_back_sumo(void)
               c->teleport);
     printf("took '%s': largest sideways speed %.4f m/s (monitors' bound %.1f)\n", id, lat_max,
            md.lateral_max);
+    /* taken again, turned 20 deg off its lane: refused, still a vessel */
+    fw_manoeuvre_def turn = {.t_act = 0.0, .helm = fw_deg_to_rad(20), .course = 0.5 * FW_PI,
+                             .alteration = fw_deg_to_rad(20)};
+    CHECK(fw_manoeuvre_controller_create(&turn, &td.controller, &err) == FW_OK);
+    CHECK_MSG(id[0] && fw_world_take(w, id, &td, &ht, &err) == FW_OK, "%s", err.msg);
+    for (int k = 0; id[0] && k < 90; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    CHECK(fw_world_give_back(w, ht, &err) == FW_EINPUT);
+    CHECK_MSG(strstr(err.msg, "off the nearest lane") != NULL, "%s", err.msg);
+    CHECK(fw_world_vessel_valid(w, ht));
     fw_monitor_destroy(mon);
     fw_world_destroy(w);
     char cmd[200];
