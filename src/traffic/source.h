@@ -135,7 +135,10 @@ enum { FW_KIN_MAX_LEGS = 8 };
 
 /* One scripted ship: from t = 0 on its first leg; at each later leg's
  * t_start it takes that leg's course and speed at once (a script, not a ship
- * manoeuvre: for tests of what the own ship does when a target alters). */
+ * manoeuvre: for tests of what the own ship does when a target alters).
+ * Taken (take), it is where steer puts it; given back, its script goes on
+ * from the foot of the perpendicular from where it is onto its leg of that
+ * time (the leg moved along itself), at the leg's course and speed. */
 typedef struct fw_kin_ship {
     fw_target start;  /* id, type, position, course, speed, size at t = 0 */
     int n_legs;       /* further legs, 0 = constant velocity throughout */

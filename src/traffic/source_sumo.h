@@ -27,6 +27,16 @@
  * the later (in SUMO's order) of two network ships on crossing courses (more
  * than 30 deg apart) that would come that close that soon: put there at the
  * start they would have no time to give way.
+ *
+ * A ship taken (source.h take: its state as the range query converted it)
+ * stays in SUMO, placed every step where fairway's vessel is by moveToXY off
+ * the lanes, as the own ship is: sumo-gui shows it, area() lists it as
+ * placed, SUMO's ships never brake for it, and fairway's reactive traffic
+ * gives way to it (world/reactions.h).  Given back, it is moved onto the
+ * nearest lane of its route ahead where it will be after the next step
+ * (moveToXY keepRoute 1) with its speed as its last (setPreviousSpeed), and
+ * SUMO drives it on; refused if that lane's line is more than
+ * FW_SOURCE_REJOIN_MAX away (traffic.h fw_traffic_give_back).
  */
 #ifndef FW_SOURCE_SUMO_H
 #define FW_SOURCE_SUMO_H
