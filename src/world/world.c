@@ -1,6 +1,7 @@
 /* world.c - the world and its step (world.h). */
 #include "world/world.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -177,6 +178,7 @@ static fw_status add(fw_world *w, const fw_vessel_def *def, bool taken, int *i, 
 
 static fw_vessel_handle handle_of(const fw_world *w, int i)
 {
+    assert(i >= 0 && i < w->n_slots && w->slots[i].v);
     return (fw_vessel_handle){.index1 = i + 1, .generation = w->slots[i].generation};
 }
 
@@ -200,6 +202,7 @@ fw_status fw_world_add_vessel(fw_world *w, const fw_vessel_def *def, fw_vessel_h
 static void drop(fw_world *w, int i)
 {
     fw_vessel *v = w->slots[i].v;
+    assert(v && w->nv > 0 && (w->own == i) == (v->role == FW_ROLE_OWN));
     w->n_taken -= v->taken;
     if (w->own == i)
         w->own = -1;

@@ -85,7 +85,8 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
 void fw_world_destroy(fw_world *w);
 
 /* A vessel, by the slot it has in its world and that slot's generation;
- * the zero handle is no vessel (index1 counts from 1). */
+ * the zero handle is no vessel (index1 counts from 1).  A slot's generation
+ * wraps after 65536 removals from it, as Box2D's does. */
 typedef struct fw_vessel_handle {
     int32_t index1;
     uint16_t generation;
@@ -141,7 +142,8 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err);
  * --profile`, never in anything a run's results depend on. */
 typedef struct fw_world_timing {
     double dynamics;  /* the vessels' own motion (MMG or Nomoto, integrated) */
-    double place;     /* the own ship put into the traffic (SUMO: moveToXY) */
+    double place;     /* the own ship and the taken ones put into the traffic
+                         (SUMO: moveToXY) */
     double traffic;   /* the traffic's own step (SUMO's) */
     double read;      /* the ships around the own ship read and converted */
     double decide;    /* sensing and the controllers (the avoidance policy) */
