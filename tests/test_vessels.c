@@ -124,7 +124,13 @@ static void come_and_go(bool with_c, tracks *tr)
         }
         if (with_c && k == 121) {
             CHECK(seen(fw_world_vessel(w, ho), "C") == 0 && seen(fw_world_vessel(w, hb), "C") == 0);
+            /* walking the vessels: the own ship (slot 1), B (slot 3); C's slot empty */
             CHECK(fw_world_vessel_count(w) == 2);
+            fw_vessel_handle h0 = fw_world_vessel_at(w, 0), h1 = fw_world_vessel_at(w, 1);
+            CHECK(h0.index1 == ho.index1 && h0.generation == ho.generation);
+            CHECK(h1.index1 == hb.index1 && h1.generation == hb.generation);
+            CHECK(fw_vessel_handle_null(fw_world_vessel_at(w, 2)));
+            CHECK(fw_world_own(w).index1 == ho.index1);
         }
         const fw_target *o = fw_vessel_record(fw_world_vessel(w, ho));
         tr->own_e[k] = o->east, tr->own_n[k] = o->north;
