@@ -29,10 +29,18 @@
  * start they would have no time to give way.
  *
  * A ship taken (source.h take: its state as the range query converted it)
- * stays in SUMO, placed every step where fairway's vessel is by moveToXY off
- * the lanes, as the own ship is: sumo-gui shows it, area() lists it as
- * placed, SUMO's ships never brake for it, and fairway's reactive traffic
- * gives way to it (world/reactions.h).  Given back, it is moved onto the
+ * stays in SUMO, placed every step where fairway's vessel is by moveToXY
+ * with the own ship's keepRoute 2 and 1 mm threshold: sumo-gui shows it,
+ * area() lists it as placed, and fairway's reactive traffic gives way to it
+ * (world/reactions.h).  SUMO's own view of it depends on where it is
+ * (measured with SUMO 1.15 on networks/channel): within 1 mm of a lane's
+ * line (a ship taken on its lane and held straight) SUMO keeps it on that
+ * lane and its followers keep their distance by car following (one slowed
+ * from 9.5 to 7.4 m/s behind it in 5 minutes); off the lines it is off the
+ * lanes, as the own ship is, SUMO's ships do not see it and SUMO's reads of
+ * it are stale (so nothing here reads them).  Mapped onto a lane of another
+ * edge, SUMO gives it that edge as its route, and it can no longer be given
+ * back (refused, below).  Given back, it is moved onto the
  * nearest lane of its route ahead where it will be after the next step
  * (moveToXY keepRoute 1) with its speed as its last (setPreviousSpeed), and
  * SUMO drives it on; refused if that lane's line is more than
