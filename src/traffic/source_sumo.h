@@ -37,8 +37,9 @@
  * line (a ship taken on its lane and held straight) SUMO keeps it on that
  * lane and its followers keep their distance by car following (one slowed
  * from 9.5 to 7.4 m/s behind it in 5 minutes); off the lines it is off the
- * lanes, as the own ship is, SUMO's ships do not see it and SUMO's reads of
- * it are stale (so nothing here reads them).  Mapped onto a lane of another
+ * lanes, as the own ship is, and SUMO's ships do not see it (SUMO's reads
+ * of one taken in the middle of a lane change stayed where the first move
+ * put it: nothing here reads them).  Mapped onto a lane of another
  * edge, SUMO gives it that edge as its route, and it can no longer be given
  * back (refused, below).  Given back, it is moved onto the
  * nearest lane of its route ahead where it will be after the next step
