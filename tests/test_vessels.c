@@ -216,6 +216,12 @@ static void test_take_give_back_kinematic(void)
         if (k == 30) {
             const fw_target *src;
             int n;
+            /* refused (no ship model): undone, still the source's */
+            td.ship = NULL;
+            CHECK(fw_world_take(w, "k1", &td, &ht, &err) == FW_EINPUT);
+            CHECK(fw_vessel_handle_null(ht) && fw_world_vessel_count(w) == 1);
+            CHECK(fw_world_take(w, "nobody", &td, &ht, &err) == FW_EINPUT);
+            td.ship = &c3p;
             CHECK(fw_source_around(fw_world_source(w), &src, &n, &err) == FW_OK && n == 1);
             fw_target before = src[0];
             CHECK_MSG(fw_world_take(w, "k1", &td, &ht, &err) == FW_OK, "%s", err.msg);
