@@ -178,6 +178,13 @@ static void test_no_own_ship(void)
     /* A (2 km from k1) sees it, Z (14 km) does not; they are 12 km apart */
     CHECK(seen(fw_world_vessel(w, ha), "k1") == 1 && seen(fw_world_vessel(w, ha), "Z") == 0);
     CHECK(seen(fw_world_vessel(w, hz), "k1") == 0);
+    /* an own ship added mid-run sees the source's ships (around()) at once */
+    fw_vessel_def own = nomoto_def("own", FW_ROLE_OWN, 8000, -1000, 0, 8);
+    fw_vessel_handle ho;
+    CHECK(fw_world_add_vessel(w, &own, &ho, &err) == FW_OK);
+    CHECK(seen(fw_world_vessel(w, ho), "k1") == 1 && seen(fw_world_vessel(w, ho), "A") == 1);
+    CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    CHECK(seen(fw_world_vessel(w, ho), "k1") == 1);
     fw_world_destroy(w);
 }
 

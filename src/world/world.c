@@ -138,6 +138,7 @@ static fw_status check_new(const fw_world *w, const fw_vessel_def *def, fw_error
 
 static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, fw_error *err);
 static fw_status decide(fw_world *w, fw_vessel *v, fw_error *err);
+static void drop(fw_world *w, int i);
 
 /* A vessel into slot *i; after the start it senses and decides at once (the
  * own ship placed into the source first).  The controller is taken over. */
@@ -169,11 +170,18 @@ static fw_status add(fw_world *w, const fw_vessel_def *def, bool taken, int *i, 
         w->own = *i;
     if (!w->started)
         return FW_OK;
-    if (w->own == *i && w->source)
-        st = fw_source_place(w->source, &v->record, err);
+    const fw_target *src = NULL;
+    int n_src = 0;
+    if (w->own == *i && w->source &&
+        !(st = fw_source_place(w->source, &v->record, err)))
+        st = fw_source_around(w->source, &src, &n_src, err);
     if (!st)
-        st = sense_one(w, *i, NULL, 0, err);
-    return st ? st : decide(w, v, err);
+        st = sense_one(w, *i, src, n_src, err);
+    if (!st)
+        st = decide(w, v, err);
+    if (st) /* not half there: gone again */
+        drop(w, *i);
+    return st;
 }
 
 static fw_vessel_handle handle_of(const fw_world *w, int i)
