@@ -28,6 +28,11 @@
  * than 30 deg apart) that would come that close that soon: put there at the
  * start they would have no time to give way.
  *
+ * It has no within() (source.h): a vessel other than the own ship sees the
+ * SUMO ships of nearby() (the range query about the own ship) within its
+ * sight, so none beyond the query's circle; reading every ship's position
+ * for it would cost a getter per ship and step.
+ *
  * A ship taken (source.h take: its state as the range query converted it)
  * stays in SUMO, placed every step where fairway's vessel is by moveToXY
  * with the own ship's keepRoute 2 and 1 mm threshold: sumo-gui shows it,
