@@ -58,3 +58,10 @@ set_tests_properties(sumo_replay PROPERTIES ENVIRONMENT "${fw_lsan}")
 # run plots: the network's lanes, which ships are named
 fw_script_test(plot_run 0 "plot run ok" plot_run.sh)
 set_tests_properties(plot_run PROPERTIES ENVIRONMENT "${fw_lsan}")
+
+# Vessels that come and go (world.h handles, roles, take and give back); its
+# "sumo" case (a SUMO ship taken and given back) is with the traffic tests.
+fw_test(test_vessels test_vessels.c)
+target_link_libraries(test_vessels PRIVATE fairway_run)
+set_tests_properties(test_vessels PROPERTIES TIMEOUT 60
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

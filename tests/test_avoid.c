@@ -229,12 +229,14 @@ static loop_out closed_loop(const fw_target *t0, int n, int seconds)
     vd.radius = INFINITY;
     fw_world *w = NULL;
     fw_vessel *own = NULL;
+    fw_vessel_handle oh = {0};
     CHECK_MSG(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
                   fw_world_create(&wd, &w, &err) == FW_OK &&
                   fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK &&
-                  fw_world_add_vessel(w, &vd, &own, &err) == FW_OK &&
+                  fw_world_add_vessel(w, &vd, &oh, &err) == FW_OK &&
                   fw_world_start(w, &err) == FW_OK,
               "%s", err.msg);
+    own = w ? fw_world_vessel(w, oh) : NULL;
     if (!own) {
         fw_world_destroy(w);
         return o;

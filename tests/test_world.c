@@ -96,12 +96,22 @@ static void test_world_contract(void)
     vd.ship = &c3;
     vd.speed = fw_kn_to_ms(10);
     vd.course = 0.5 * FW_PI;
-    fw_vessel *v;
+    fw_vessel_handle h;
     CHECK(fw_world_step(w, 1.0, &err) == FW_ERUN); /* not started */
-    CHECK(fw_world_add_vessel(w, &vd, &v, &err) == FW_OK);
-    CHECK(fw_world_add_vessel(w, &vd, NULL, &err) == FW_EINPUT); /* same id */
-    CHECK(fw_world_start(w, &err) == FW_OK);
+    CHECK(fw_world_add_vessel(w, &vd, &h, &err) == FW_OK);
+    fw_vessel *v = fw_world_vessel(w, h);
+    /* same id: refused, and the controller it was given freed (LeakSanitizer
+     * in the sanitizer build) */
+    fw_manoeuvre_def md = {.t_act = 0.0};
+    CHECK(fw_manoeuvre_controller_create(&md, &vd.controller, &err) == FW_OK);
     CHECK(fw_world_add_vessel(w, &vd, NULL, &err) == FW_EINPUT);
+    vd.controller = NULL;
+    vd.id = "own2";
+    CHECK(fw_world_add_vessel(w, &vd, NULL, &err) == FW_EINPUT); /* a second own ship */
+    CHECK(strstr(err.msg, "an own ship already") != NULL);
+    vd.id = "own";
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    CHECK(fw_world_add_vessel(w, &vd, NULL, &err) == FW_EINPUT); /* same id, after the start */
     CHECK(fw_world_step(w, 0.5, &err) == FW_EINPUT);
     /* no controller: helm amidships, the MMG ship runs straight at its speed */
     for (int k = 0; k < 60; k++)
@@ -130,13 +140,16 @@ static void test_two_vessels_head_on(void)
     for (int i = 0; i < 2; i++) {
         fw_vessel_def vd = fw_default_vessel_def();
         vd.id = ids[i];
+        vd.role = FW_ROLE_OTHER; /* no own ship: two ships fairway steps */
         vd.ship = &c3;
         vd.dynamics = FW_DYN_NOMOTO;
         vd.north = i ? 4000.0 : 0.0;
         vd.course = i ? FW_PI : 0.0;
         vd.speed = fw_kn_to_ms(10);
         CHECK_MSG(fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK, "%s", err.msg);
-        CHECK_MSG(fw_world_add_vessel(w, &vd, &v[i], &err) == FW_OK, "%s", err.msg);
+        fw_vessel_handle h;
+        CHECK_MSG(fw_world_add_vessel(w, &vd, &h, &err) == FW_OK, "%s", err.msg);
+        v[i] = fw_world_vessel(w, h);
     }
     CHECK(fw_world_start(w, &err) == FW_OK);
     double dmin = INFINITY, asym = 0.0, t_act[2] = {-1, -1};
@@ -187,15 +200,17 @@ static react_out react_world(const fw_kin_ship *ships, int n, fw_behaviour b, in
     wd.reactions.behaviour = b;
     fw_world *w = NULL;
     fw_vessel *own = NULL;
+    fw_vessel_handle oh = {0};
     fw_vessel_def vd = fw_default_vessel_def();
     vd.ship = &c3;
     vd.dynamics = FW_DYN_NOMOTO;
     vd.speed = fw_kn_to_ms(10);
     CHECK_MSG(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
                   fw_world_create(&wd, &w, &err) == FW_OK &&
-                  fw_world_add_vessel(w, &vd, &own, &err) == FW_OK &&
+                  fw_world_add_vessel(w, &vd, &oh, &err) == FW_OK &&
                   fw_world_start(w, &err) == FW_OK,
               "%s", err.msg);
+    own = w ? fw_world_vessel(w, oh) : NULL;
     for (int k = 0; own && k < seconds; k++) {
         const fw_target *tg, *me = fw_vessel_record(own);
         const fw_assessment *as;
@@ -280,6 +295,7 @@ static void own_world(const fw_kinematic_def *kd, const fw_policy_controller_def
 {
     static fw_own_state start;
     start = (fw_own_state){.U = fw_kn_to_ms(10)};
+    fw_vessel_handle oh = {0};
     fw_world_def wd = fw_default_world_def();
     fw_vessel_def vd = fw_default_vessel_def();
     vd.ship = &c3;
@@ -289,9 +305,10 @@ static void own_world(const fw_kinematic_def *kd, const fw_policy_controller_def
     CHECK_MSG(fw_kinematic_source_create(kd, &wd.source, err) == FW_OK &&
                   fw_world_create(&wd, w, err) == FW_OK &&
                   fw_policy_controller_create(pd, &vd.controller, err) == FW_OK &&
-                  fw_world_add_vessel(*w, &vd, own, err) == FW_OK &&
+                  fw_world_add_vessel(*w, &vd, &oh, err) == FW_OK &&
                   fw_world_start(*w, err) == FW_OK,
               "%s", err->msg);
+    *own = *w ? fw_world_vessel(*w, oh) : NULL;
 }
 
 /* After avoiding a head-on ship the own ship comes back onto its planned

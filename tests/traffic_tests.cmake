@@ -13,6 +13,12 @@ foreach(case embedded remote badnet noport dies)
                        ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 endforeach()
 
+# A SUMO ship taken by fairway and given back (embedded libsumo; test_vessels
+# is built with the run tests).
+add_test(NAME test_vessels_sumo COMMAND test_vessels sumo)
+set_tests_properties(test_vessels_sumo PROPERTIES TIMEOUT 90
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
 # The traffic command: a short embedded run, and one-line errors for bad input.
 fw_cli_test(cli_traffic_run 0 "median [0-9.]+ ms per step" traffic --network channel --ships 20
             --duration 30 --every 10 --log traffic-cli.log --routes traffic-cli.rou.xml)

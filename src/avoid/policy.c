@@ -419,11 +419,13 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
 {
     const fw_helm_def *hdef = in->helm;
     if (!p->track_set) {
-        /* the planned track: where the ship is and heads at the first step */
+        /* the planned track: the route's first leg (route.h), or where the
+         * ship is and heads at the first step when none was given */
+        const fw_route *r = &p->def.route;
         p->track_set = true;
-        p->track_e = in->own->east;
-        p->track_n = in->own->north;
-        p->psi_ref = in->own->psi;
+        p->track_e = r->n > 0 ? r->leg[0].east : in->own->east;
+        p->track_n = r->n > 0 ? r->leg[0].north : in->own->north;
+        p->psi_ref = r->n > 0 ? r->leg[0].course : in->own->psi;
     }
     fw_colregs_def colregs = hdef->colregs;
     if (colregs.rank_range_m <= 0.0)

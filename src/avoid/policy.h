@@ -55,6 +55,7 @@
 #define FW_POLICY_H
 
 #include "avoid/helm_search.h"
+#include "avoid/route.h"
 
 typedef enum fw_policy_mode {
     FW_MODE_STANDBY,
@@ -108,6 +109,10 @@ typedef struct fw_policy_def {
     double los_lookahead;      /* m, 1852: the track return's line-of-sight distance */
     double los_max_angle;      /* rad, 30 deg: the largest intercept angle */
     double track_done;         /* m, 50: the return ends this close to the track */
+    /* the planned route (route.h): its first leg is the track returned to
+     * and its course the heading kept; n 0: none given, a one-leg route
+     * from where the ship is and heads at its first step */
+    fw_route route;
 } fw_policy_def;
 
 fw_policy_def fw_default_policy_def(void);

@@ -37,7 +37,11 @@ static fw_status make_world(const fw_scenario *s, double step, const fw_manoeuvr
     vd.speed = s->speed;
     vd.radius = INFINITY;
     vd.controller = ctl;
-    return fw_world_add_vessel(*w, &vd, own, err);
+    fw_vessel_handle h;
+    if ((st = fw_world_add_vessel(*w, &vd, &h, err)))
+        return st;
+    *own = fw_world_vessel(*w, h); /* never removed: borrowed for the run */
+    return FW_OK;
 }
 
 /* One manoeuvre: smallest normalised domain radius and centre distance. */

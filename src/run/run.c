@@ -180,6 +180,9 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     if ((st = fw_world_create(&wd, w, err)))
         return st;
     fw_policy_controller_def pd = {.ship = &s->ship, .helm = s->helm, .policy = s->policy};
+    /* its planned route: one leg from its start on its course at its speed */
+    pd.policy.route = fw_route_line(s->east, s->north, s->course, s->speed,
+                                    fmax(s->leg, s->speed * s->duration));
     fw_controller *ctl;
     if ((st = fw_policy_controller_create(&pd, &ctl, err)))
         return st;
@@ -193,7 +196,11 @@ static fw_status make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     vd.speed = s->speed;
     vd.radius = s->radius;
     vd.controller = ctl;
-    return fw_world_add_vessel(*w, &vd, own, err);
+    fw_vessel_handle h;
+    if ((st = fw_world_add_vessel(*w, &vd, &h, err)))
+        return st;
+    *own = fw_world_vessel(*w, h); /* never removed: borrowed for the run */
+    return FW_OK;
 }
 
 typedef struct run_state {

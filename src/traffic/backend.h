@@ -70,6 +70,15 @@ typedef struct fw_sumo_backend {
      * fw_traffic_add_placed): its own vType of this size and a vehicle on the
      * own ship's route, placed by `place` from then on. */
     fw_status (*add_placed)(const char *id, double length, double width, fw_error *err);
+    /* A background ship handed to fairway (traffic.h fw_traffic_take): any
+     * speed it was told released; `place` moves it from then on. */
+    fw_status (*take)(const char *id, fw_error *err);
+    /* ... and given back: the lane of its route ahead nearest (fx, fy) and
+     * how far its line is (*off, m); if within max_off, the ship moved onto
+     * it there (moveToXY, keepRoute 1) with speed as its last; else
+     * FW_EINPUT saying how far. */
+    fw_status (*rejoin)(const char *id, double fx, double fy, double angle_deg, double speed,
+                        double max_off, double *off, fw_error *err);
 } fw_sumo_backend;
 
 /* A remote sumo (where: "HOST:PORT") must run net_file's network: the same

@@ -16,6 +16,20 @@
  *                middle of a crossing nobody handled (optional: a source
  *                without it gives around())
  *   set_speed()  a ship told to hold a speed (or to go on as before)
+ *   within()     the ships within r of a point, sorted by id: what a vessel
+ *                other than the own ship sees (optional: a source without it
+ *                gives nearby() filtered by distance, so such a vessel sees
+ *                only what the source watches around the own ship)
+ *   take()       a ship handed to fairway (world.h fw_world_take): its exact
+ *                state out; from then on the source no longer drives it nor
+ *                lists it in around(), nearby() or within() (it is a vessel,
+ *                seen through the world), but area() lists it where steer()
+ *                last put it (optional: a source without it refuses)
+ *   steer()      where a taken ship is now, every step before advance()
+ *   give_back()  a taken ship driven by the source again: it rejoins its
+ *                route ahead of where it is, at its speed; FW_EINPUT (and
+ *                still taken) if it is more than FW_SOURCE_REJOIN_MAX off
+ *                its route: a vessel must be steered back to its route first
  *
  * Sources:
  *   SUMO        (source_sumo.h) libsumo in-process or libtraci to a sumo or
@@ -46,6 +60,12 @@ typedef struct fw_source_ops {
      * back its own (the scripted or SUMO's).  The world's reactive traffic
      * (world/reactions.h) gives way through it. */
     fw_status (*set_speed)(fw_source *s, const char *id, double speed, fw_error *err);
+    /* Optional, see above. */
+    fw_status (*within)(fw_source *s, double east, double north, double r,
+                        const fw_target **ships, int *n, fw_error *err);
+    fw_status (*take)(fw_source *s, const char *id, fw_target *state, fw_error *err);
+    fw_status (*steer)(fw_source *s, const fw_target *ship, fw_error *err);
+    fw_status (*give_back)(fw_source *s, const fw_target *ship, fw_error *err);
     double (*time)(const fw_source *s);        /* s, after the last advance */
     double (*step_length)(const fw_source *s); /* s */
     void (*destroy)(fw_source *s);
@@ -83,6 +103,27 @@ static inline fw_status fw_source_set_speed(fw_source *s, const char *id, double
 {
     return s->ops->set_speed(s, id, speed, err);
 }
+/* m, how far off its route a ship may be given back: a step's sideways move
+ * at well under the traffic monitors' 2 m/s (survey/monitor.h) */
+#define FW_SOURCE_REJOIN_MAX 1.0
+
+static inline fw_status fw_source_take(fw_source *s, const char *id, fw_target *state,
+                                       fw_error *err)
+{
+    if (!s->ops->take)
+        return fw_fail(err, FW_EINPUT, "the %s source cannot hand its ships over (take '%s')",
+                       s->ops->name, id);
+    return s->ops->take(s, id, state, err);
+}
+/* Only for ships taken (so never NULL then). */
+static inline fw_status fw_source_steer(fw_source *s, const fw_target *ship, fw_error *err)
+{
+    return s->ops->steer(s, ship, err);
+}
+static inline fw_status fw_source_give_back(fw_source *s, const fw_target *ship, fw_error *err)
+{
+    return s->ops->give_back(s, ship, err);
+}
 static inline double fw_source_time(const fw_source *s) { return s->ops->time(s); }
 static inline double fw_source_step_length(const fw_source *s) { return s->ops->step_length(s); }
 /* Safe on NULL. */
@@ -94,7 +135,10 @@ enum { FW_KIN_MAX_LEGS = 8 };
 
 /* One scripted ship: from t = 0 on its first leg; at each later leg's
  * t_start it takes that leg's course and speed at once (a script, not a ship
- * manoeuvre: for tests of what the own ship does when a target alters). */
+ * manoeuvre: for tests of what the own ship does when a target alters).
+ * Taken (take), it is where steer puts it; given back, its script goes on
+ * from the foot of the perpendicular from where it is onto its leg of that
+ * time (the leg moved along itself), at the leg's course and speed. */
 typedef struct fw_kin_ship {
     fw_target start;  /* id, type, position, course, speed, size at t = 0 */
     int n_legs;       /* further legs, 0 = constant velocity throughout */

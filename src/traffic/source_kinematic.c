@@ -28,6 +28,8 @@ typedef struct kin_ship {
     bool holding;
     double hold_t, hold_e, hold_n, hold_course, hold_speed;
     double off_e, off_n;
+    /* taken by fairway (source.h take): placed by steer, not by its script */
+    bool taken;
 } kin_ship;
 
 typedef struct kin_source {
@@ -76,6 +78,8 @@ static void move_all(kin_source *k, double t)
 {
     for (int i = 0; i < k->n; i++) {
         kin_ship *s = &k->ships[i];
+        if (s->taken)
+            continue;
         if (!s->holding) {
             scripted(s, t, &s->now);
             continue;
@@ -91,15 +95,22 @@ static void move_all(kin_source *k, double t)
 
 /* A ship's speed held from now (a script: the change is immediate), or its
  * script taken up again from where it is. */
+static kin_ship *find(kin_source *k, const char *id)
+{
+    for (int i = 0; i < k->n; i++)
+        if (strcmp(k->ships[i].now.id, id) == 0)
+            return &k->ships[i];
+    return NULL;
+}
+
 static fw_status kin_set_speed(fw_source *src, const char *id, double speed, fw_error *err)
 {
     kin_source *k = (kin_source *)src;
-    kin_ship *s = NULL;
-    for (int i = 0; i < k->n && !s; i++)
-        if (strcmp(k->ships[i].now.id, id) == 0)
-            s = &k->ships[i];
+    kin_ship *s = find(k, id);
     if (!s)
         return fw_fail(err, FW_ERUN, "kinematic source: no ship '%s'", id);
+    if (s->taken) /* fairway steers it: nothing to hold */
+        return FW_OK;
     double t = (double)k->steps * k->def.step;
     if (speed >= 0.0 && isfinite(speed)) {
         s->holding = true;
@@ -155,6 +166,8 @@ static fw_status list(kin_source *k, double r, bool with_own, const fw_target **
             k->out[m++] = k->own;
             own_done = true;
         }
+        if (k->ships[i].taken && !with_own) /* a vessel now: only the area lists it */
+            continue;
         if (isinf(r) || hypot(t->east - k->own.east, t->north - k->own.north) <= r)
             k->out[m++] = *t;
     }
@@ -178,6 +191,71 @@ static fw_status kin_area(fw_source *s, const fw_target **v, int *n, fw_error *e
     return list(k, k->def.area_radius, true, v, n, err);
 }
 
+/* The untaken ships within r of (e, n), in id order; no own ship needed. */
+static fw_status kin_within(fw_source *s, double e, double n, double r, const fw_target **v,
+                            int *m, fw_error *err)
+{
+    (void)err;
+    kin_source *k = (kin_source *)s;
+    int c = 0;
+    for (int i = 0; i < k->n; i++) {
+        const fw_target *t = &k->ships[i].now;
+        if (!k->ships[i].taken && hypot(t->east - e, t->north - n) <= r)
+            k->out[c++] = *t;
+    }
+    *v = k->out;
+    *m = c;
+    return FW_OK;
+}
+
+static fw_status kin_take(fw_source *s, const char *id, fw_target *state, fw_error *err)
+{
+    kin_ship *p = find((kin_source *)s, id);
+    if (!p || p->taken)
+        return fw_fail(err, FW_EINPUT, "kinematic source: no ship '%s'%s", id,
+                       p ? " to take (taken already)" : "");
+    p->taken = true;
+    *state = p->now;
+    return FW_OK;
+}
+
+static fw_status kin_steer(fw_source *s, const fw_target *ship, fw_error *err)
+{
+    kin_ship *p = find((kin_source *)s, ship->id);
+    if (!p || !p->taken)
+        return fw_fail(err, FW_ERUN, "kinematic source: '%s' is not a taken ship", ship->id);
+    p->now.east = ship->east, p->now.north = ship->north;
+    p->now.course = ship->course, p->now.speed = ship->speed;
+    return FW_OK;
+}
+
+/* Its script again, its leg of now moved along itself so that the ship is
+ * where the foot of the perpendicular from where it is falls (refused if
+ * that is farther than FW_SOURCE_REJOIN_MAX); course and speed the leg's. */
+static fw_status kin_give_back(fw_source *s, const fw_target *ship, fw_error *err)
+{
+    kin_source *k = (kin_source *)s;
+    kin_ship *p = find(k, ship->id);
+    if (!p || !p->taken)
+        return fw_fail(err, FW_EINPUT, "kinematic source: '%s' is not a taken ship", ship->id);
+    double t = kin_time(s), ue, un;
+    fw_target at;
+    p->holding = false;
+    scripted(p, t, &at);
+    fw_velocity(1.0, at.course, &ue, &un);
+    double de = ship->east - at.east, dn = ship->north - at.north;
+    double along = de * ue + dn * un, across = de * un - dn * ue;
+    if (fabs(across) > FW_SOURCE_REJOIN_MAX)
+        return fw_fail(err, FW_EINPUT,
+                       "kinematic source: '%s' is %.1f m off its route (at most %.1f m): steer "
+                       "it back first",
+                       ship->id, fabs(across), FW_SOURCE_REJOIN_MAX);
+    p->off_e += along * ue, p->off_n += along * un;
+    p->taken = false;
+    scripted(p, t, &p->now);
+    return FW_OK;
+}
+
 static void kin_destroy(fw_source *s)
 {
     kin_source *k = (kin_source *)s;
@@ -187,6 +265,8 @@ static void kin_destroy(fw_source *s)
 static const fw_source_ops kin_ops = {.name = "kinematic", .place = kin_place,
                                       .advance = kin_advance, .around = kin_around,
                                       .area = kin_area, .set_speed = kin_set_speed,
+                                      .within = kin_within, .take = kin_take,
+                                      .steer = kin_steer, .give_back = kin_give_back,
                                       .time = kin_time,
                                       .step_length = kin_step_length, .destroy = kin_destroy};
 

@@ -35,6 +35,12 @@ typedef struct sumo_source {
     int n_labels;
     int cleared;          /* fill ships taken out at the start */
     double near_radius;   /* m, nearby() (0: around())   */
+    /* ships taken by fairway (source.h take), as last steered: left out of
+     * around() and nearby(), listed so in area() */
+    fw_target *taken;
+    int n_taken, taken_cap;
+    fw_target *listed;    /* around() / nearby() / area() with the taken ships seen to */
+    int listed_cap;
 } sumo_source;
 
 fw_sumo_source_def fw_default_sumo_source_def(void)
@@ -270,14 +276,42 @@ static fw_status ss_around(fw_source *s, const fw_target **v, int *n, fw_error *
     /* sorted by id so that nothing downstream depends on SUMO's order */
     if (m > 1)
         qsort(k->sorted, (size_t)m, sizeof *k->sorted, cmp_id);
+    int kept = 0;
+    for (int i = 0; i < m; i++)
+        if (k->n_taken == 0 || fw_target_find(k->taken, k->n_taken, k->sorted[i].id) < 0)
+            k->sorted[kept++] = k->sorted[i];
     *v = k->sorted;
+    *n = kept;
+    return FW_OK;
+}
+
+/* list (n) with the taken ships left out (area: listed as steered), into
+ * k->listed; list as it is when nothing is taken. */
+static fw_status see_to_taken(sumo_source *k, bool area, const fw_target **v, int *n,
+                              fw_error *err)
+{
+    if (k->n_taken == 0)
+        return FW_OK;
+    if (!fw_reserve((void **)&k->listed, sizeof *k->listed, &k->listed_cap, *n))
+        return fw_fail(err, FW_ERUN, "out of memory for %d ships", *n);
+    int m = 0;
+    for (int i = 0; i < *n; i++) {
+        int j = fw_target_find(k->taken, k->n_taken, (*v)[i].id);
+        if (j < 0)
+            k->listed[m++] = (*v)[i];
+        else if (area)
+            k->listed[m++] = k->taken[j];
+    }
+    *v = k->listed;
     *n = m;
     return FW_OK;
 }
 
 static fw_status ss_area(fw_source *s, const fw_target **v, int *n, fw_error *err)
 {
-    return fw_traffic_area(((sumo_source *)s)->tr, v, n, err);
+    sumo_source *k = (sumo_source *)s;
+    fw_status st = fw_traffic_area(k->tr, v, n, err);
+    return st ? st : see_to_taken(k, true, v, n, err);
 }
 
 static fw_status ss_nearby(fw_source *s, const fw_target **v, int *n, fw_error *err)
@@ -285,25 +319,107 @@ static fw_status ss_nearby(fw_source *s, const fw_target **v, int *n, fw_error *
     sumo_source *k = (sumo_source *)s;
     if (!(k->near_radius > 0.0))
         return ss_around(s, v, n, err);
-    return fw_traffic_nearby(k->tr, v, n, err);
+    fw_status st = fw_traffic_nearby(k->tr, v, n, err);
+    return st ? st : see_to_taken(k, false, v, n, err);
 }
 
 static fw_status ss_set_speed(fw_source *s, const char *id, double speed, fw_error *err)
 {
-    return fw_traffic_set_speed(((sumo_source *)s)->tr, id, speed, err);
+    sumo_source *k = (sumo_source *)s;
+    if (fw_target_find(k->taken, k->n_taken, id) >= 0) /* fairway steers it */
+        return FW_OK;
+    return fw_traffic_set_speed(k->tr, id, speed, err);
+}
+
+/* A ship as fairway sees it now: from the range query's lists (SUMO's angle
+ * replaced by its motion in a lane change, traffic.h), else SUMO's getters. */
+static fw_status state_of(sumo_source *k, const char *id, fw_target *out, fw_error *err)
+{
+    const fw_target *v;
+    int n, j;
+    fw_status st = ss_around(&k->base, &v, &n, err);
+    if (!st && (j = fw_target_find(v, n, id)) >= 0) {
+        *out = v[j];
+        return FW_OK;
+    }
+    if (!st && k->near_radius > 0.0 && !(st = fw_traffic_nearby(k->tr, &v, &n, err)) &&
+        (j = fw_target_find(v, n, id)) >= 0) {
+        *out = v[j];
+        return FW_OK;
+    }
+    if (st || (st = fw_traffic_get(k->tr, id, out, err)))
+        return fw_fail(err, FW_EINPUT, "sumo source: no ship '%s' to take", id);
+    return FW_OK;
+}
+
+/* Kept sorted by id. */
+static fw_status ss_take(fw_source *s, const char *id, fw_target *state, fw_error *err)
+{
+    sumo_source *k = (sumo_source *)s;
+    if (fw_target_find(k->taken, k->n_taken, id) >= 0)
+        return fw_fail(err, FW_EINPUT, "sumo source: '%s' is taken already", id);
+    fw_status st = state_of(k, id, state, err);
+    if (!st && !fw_reserve((void **)&k->taken, sizeof *k->taken, &k->taken_cap, k->n_taken + 1))
+        st = fw_fail(err, FW_ERUN, "out of memory");
+    if (!st)
+        st = fw_traffic_take(k->tr, id, err);
+    if (st)
+        return st;
+    int i = k->n_taken;
+    while (i > 0 && strcmp(k->taken[i - 1].id, id) > 0) {
+        k->taken[i] = k->taken[i - 1];
+        i--;
+    }
+    k->taken[i] = *state;
+    k->n_taken++;
+    return FW_OK;
+}
+
+static fw_status ss_steer(fw_source *s, const fw_target *ship, fw_error *err)
+{
+    sumo_source *k = (sumo_source *)s;
+    int j = fw_target_find(k->taken, k->n_taken, ship->id);
+    if (j < 0)
+        return fw_fail(err, FW_ERUN, "sumo source: '%s' is not a taken ship", ship->id);
+    fw_target *t = &k->taken[j];
+    t->east = ship->east, t->north = ship->north, t->course = ship->course;
+    t->speed = ship->speed;
+    return fw_traffic_move(k->tr, t->id, t->east, t->north, t->course, t->length, err);
+}
+
+/* Onto its route where it will be after the next step at its speed, so
+ * that SUMO's step puts it there (as steer would have). */
+static fw_status ss_give_back(fw_source *s, const fw_target *ship, fw_error *err)
+{
+    sumo_source *k = (sumo_source *)s;
+    int j = fw_target_find(k->taken, k->n_taken, ship->id);
+    if (j < 0)
+        return fw_fail(err, FW_EINPUT, "sumo source: '%s' is not a taken ship", ship->id);
+    double ve, vn;
+    fw_velocity(ship->speed, ship->course, &ve, &vn);
+    fw_status st = fw_traffic_give_back(k->tr, ship->id, ship->east + ve * k->step,
+                                        ship->north + vn * k->step, ship->course, ship->speed,
+                                        k->taken[j].length, FW_SOURCE_REJOIN_MAX, err);
+    if (st)
+        return st;
+    memmove(&k->taken[j], &k->taken[j + 1], sizeof *k->taken * (size_t)(k->n_taken - j - 1));
+    k->n_taken--;
+    return FW_OK;
 }
 
 static void ss_destroy(fw_source *s)
 {
     sumo_source *k = (sumo_source *)s;
     fw_traffic_close(k->tr);
-    fw_free_each(3, k->sorted, k->labels, k);
+    fw_free_each(5, k->sorted, k->labels, k->taken, k->listed, k);
 }
 
 static const fw_source_ops sumo_ops = {.name = "sumo", .place = ss_place, .advance = ss_advance,
                                        .around = ss_around, .area = ss_area,
                                        .nearby = ss_nearby,
-                                       .set_speed = ss_set_speed, .time = ss_time,
+                                       .set_speed = ss_set_speed, .take = ss_take,
+                                       .steer = ss_steer, .give_back = ss_give_back,
+                                       .time = ss_time,
                                        .step_length = ss_step_length, .destroy = ss_destroy};
 
 int fw_sumo_source_cleared(const fw_source *s)

@@ -27,6 +27,30 @@
  * the later (in SUMO's order) of two network ships on crossing courses (more
  * than 30 deg apart) that would come that close that soon: put there at the
  * start they would have no time to give way.
+ *
+ * It has no within() (source.h): a vessel other than the own ship sees the
+ * SUMO ships of nearby() (the range query about the own ship) within its
+ * sight, so none beyond the query's circle; reading every ship's position
+ * for it would cost a getter per ship and step.
+ *
+ * A ship taken (source.h take: its state as the range query converted it)
+ * stays in SUMO, placed every step where fairway's vessel is by moveToXY
+ * with the own ship's keepRoute 2 and 1 mm threshold: sumo-gui shows it,
+ * area() lists it as placed, and fairway's reactive traffic gives way to it
+ * (world/reactions.h).  SUMO's own view of it depends on where it is
+ * (measured with SUMO 1.15 on networks/channel): within 1 mm of a lane's
+ * line (a ship taken on its lane and held straight) SUMO keeps it on that
+ * lane and its followers keep their distance by car following (one slowed
+ * from 9.5 to 7.4 m/s behind it in 5 minutes); off the lines it is off the
+ * lanes, as the own ship is, and SUMO's ships do not see it (SUMO's reads
+ * of one taken in the middle of a lane change stayed where the first move
+ * put it: nothing here reads them).  Mapped onto a lane of another
+ * edge, SUMO gives it that edge as its route, and it can no longer be given
+ * back (refused, below).  Given back, it is moved onto the
+ * nearest lane of its route ahead where it will be after the next step
+ * (moveToXY keepRoute 1) with its speed as its last (setPreviousSpeed), and
+ * SUMO drives it on; refused if that lane's line is more than
+ * FW_SOURCE_REJOIN_MAX away (traffic.h fw_traffic_give_back).
  */
 #ifndef FW_SOURCE_SUMO_H
 #define FW_SOURCE_SUMO_H

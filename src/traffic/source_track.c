@@ -118,6 +118,34 @@ static fw_status trk_around(fw_source *s, const fw_target **v, int *n, fw_error 
     return FW_OK;
 }
 
+/* The recorded ships within r of (e, n) now; no own ship needed. */
+static fw_status trk_within(fw_source *s, double e, double n, double r, const fw_target **v,
+                            int *m, fw_error *err)
+{
+    (void)err;
+    trk_source *k = (trk_source *)s;
+    double t = trk_time(s);
+    *v = k->out;
+    *m = 0;
+    for (int i = 0; i < k->n; i++) {
+        fw_target x;
+        if (at(&k->ships[i], t, k->def.max_gap, &x) && hypot(x.east - e, x.north - n) <= r)
+            k->out[(*m)++] = x;
+    }
+    return FW_OK;
+}
+
+/* Refused: a recorded ship could not be given back meaningfully. */
+static fw_status trk_take(fw_source *s, const char *id, fw_target *state, fw_error *err)
+{
+    (void)s, (void)state;
+    return fw_fail(err, FW_EINPUT,
+                   "track source: '%s' cannot be taken: its recording says where it is at every "
+                   "later time, so it could not rejoin it from wherever fairway leaves it "
+                   "without a jump",
+                   id);
+}
+
 static fw_status trk_area(fw_source *s, const fw_target **v, int *n, fw_error *err)
 {
     (void)s;
@@ -143,6 +171,7 @@ static void trk_destroy(fw_source *s)
 static const fw_source_ops trk_ops = {.name = "track", .place = trk_place,
                                       .advance = trk_advance, .around = trk_around,
                                       .area = trk_area, .set_speed = trk_set_speed,
+                                      .within = trk_within, .take = trk_take,
                                       .time = trk_time, .step_length = trk_step_length,
                                       .destroy = trk_destroy};
 

@@ -10,6 +10,9 @@
  * ship's sight).  Course and speed are those of the point before.  The ships
  * cannot be told to give way: set_speed does nothing, so a replay is of
  * `blind` traffic (what the ships did, reactions included, is in the track).
+ * Nor can they be taken (source.h take: FW_EINPUT): a recording says where a
+ * ship is at every later time, so one fairway had steered elsewhere could
+ * not rejoin it without a jump.
  *
  * fairway's own runs write such files (the study's worst cases: `fairway
  * worst`).  AIS reports (ais/ais_track.h) replay through the same source,

@@ -424,6 +424,31 @@ fw_status fw_traffic_move(fw_traffic *t, const char *id, double x, double y, dou
     return t->be->place(id, fx, fy, a, t->own_x, t->own_y, err);
 }
 
+fw_status fw_traffic_take(fw_traffic *t, const char *id, fw_error *err)
+{
+    if (fw_traffic_alive(t, err))
+        return FW_ERUN;
+    if (strcmp(id, t->own_id) == 0)
+        return fw_fail(err, FW_EINPUT, "the own ship is fairway's already");
+    return t->be->take(id, err);
+}
+
+fw_status fw_traffic_give_back(fw_traffic *t, const char *id, double x, double y, double heading,
+                               double speed, double length, double max_off, fw_error *err)
+{
+    if (fw_traffic_alive(t, err))
+        return FW_ERUN;
+    double fx, fy, a, off;
+    fw_traffic_to_sumo(x, y, heading, length, &fx, &fy, &a);
+    fw_status st = t->be->rejoin(id, fx, fy, a, speed, max_off, &off, err);
+    /* its last position (SUMO's stale one while fairway had it) is no base
+     * for the direction of its motion in the first step back */
+    int i = fw_idmap_find(&t->ids, id);
+    if (!st && i >= 0 && i < t->last_cap)
+        t->last_step[i] = -2;
+    return st;
+}
+
 fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err)
 {
     if (fw_traffic_alive(t, err) || fw_traffic_context(t, err))

@@ -153,6 +153,18 @@ fw_status fw_traffic_add_placed(fw_traffic *t, const char *id, double length, do
                                 fw_error *err);
 fw_status fw_traffic_move(fw_traffic *t, const char *id, double x, double y, double heading,
                           double length, fw_error *err);
+/* Background ship id handed to fairway: whatever speed it was told is
+ * released, and fw_traffic_move places it from then on (off the lanes, like
+ * the own ship: SUMO's ships never brake for it; SUMO's reads of it are
+ * stale until it is given back, so the caller lists it as it placed it). */
+fw_status fw_traffic_take(fw_traffic *t, const char *id, fw_error *err);
+/* ... given back: its hull centre (x, y, heading rad) for the next step
+ * mapped onto the nearest lane of its route ahead and moved there, its
+ * speed (m/s) as its last, SUMO's car following driving it from then on.
+ * FW_EINPUT (nothing changed) when that lane's line is more than max_off m
+ * away or the nearest lane is not on its route ahead. */
+fw_status fw_traffic_give_back(fw_traffic *t, const char *id, double x, double y, double heading,
+                               double speed, double length, double max_off, fw_error *err);
 /* Advances SUMO by one step. */
 fw_status fw_traffic_step(fw_traffic *t, fw_error *err);
 /* Ships within the radius of the own ship after the last step, own ship

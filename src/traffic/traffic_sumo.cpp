@@ -273,6 +273,48 @@ fw_status be_add_placed(const char *id, double length, double width, fw_error *e
     });
 }
 
+fw_status be_take(const char *id, fw_error *err)
+{
+    return guarded("cannot take a ship", err, [&] {
+        // whatever speed the reactive traffic held it at: fairway's now
+        S::Vehicle::setSpeed(id, -1.0);
+#ifndef FW_LIBTRACI
+        // moved anywhere from now on: read every step (it stays so)
+        fw_range::placed_anywhere(id);
+#endif
+    });
+}
+
+fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, double speed,
+                    double max_off, double *off, fw_error *err)
+{
+    fw_status st = FW_OK;
+    *off = INFINITY;
+    fw_status gst = guarded("cannot give a ship back", err, [&] {
+        const std::vector<std::string> route = S::Vehicle::getRoute(id);
+        const int at = std::max(0, S::Vehicle::getRouteIndex(id));
+        // the nearest lane a ship may use, and the point of its line there
+        const libsumo::TraCIRoadPosition rp = S::Simulation::convertRoad(fx, fy, false, "ship");
+        if (at > (int)route.size() ||
+            std::find(route.begin() + at, route.end(), rp.edgeID) == route.end()) {
+            st = fw_fail(err, FW_EINPUT, "ship '%s' is nearest to edge '%s', not on its route "
+                         "ahead: steer it back first", id, rp.edgeID.c_str());
+            return;
+        }
+        const libsumo::TraCIPosition c = S::Simulation::convert2D(rp.edgeID, rp.pos, rp.laneIndex);
+        *off = std::hypot(fx - c.x, fy - c.y);
+        if (!(*off <= max_off)) {
+            st = fw_fail(err, FW_EINPUT, "ship '%s' is %.1f m off the nearest lane of its route "
+                         "(at most %.1f m): steer it back first", id, *off, max_off);
+            return;
+        }
+        // keepRoute 1: onto that lane of its route, where it is along it
+        S::Vehicle::moveToXY(id, rp.edgeID, rp.laneIndex, fx, fy, angle_deg, 1, max_off + 1.0);
+        S::Vehicle::setPreviousSpeed(id, speed);
+    });
+    return gst ? gst : st;
+}
+
 fw_status be_set_speed(const char *id, double speed, fw_error *err)
 {
     return guarded("cannot set a ship's speed", err, [&] {
@@ -447,7 +489,7 @@ void be_close(void)
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
     be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_gui_follow,
-    be_gui_screenshot, be_net, be_close, be_add_placed,
+    be_gui_screenshot, be_net, be_close, be_add_placed, be_take, be_rejoin,
 };
 
 extern "C" __attribute__((visibility("default"))) const fw_sumo_backend *fw_sumo_backend_table(void)

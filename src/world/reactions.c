@@ -557,25 +557,25 @@ static void course_trig(fw_reactions *r, const fw_target *all, int n, int m)
     }
 }
 
-fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
+fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *vessels, int nv,
                             const fw_target *ships, int n, fw_source *src, fw_error *err)
 {
     if (r->def.behaviour == FW_BEHAVIOUR_BLIND || n == 0)
         return FW_OK;
-    /* the own ship joins the list (last) as a ship to give way to */
-    if (n + 1 > r->list_cap) {
-        if (!fw_resize_each((size_t)(n + 1), 6, (void **)&r->list, sizeof *r->list,
+    /* fairway's vessels join the list (last) as ships to give way to */
+    if (n + nv > r->list_cap) {
+        if (!fw_resize_each((size_t)(n + nv), 6, (void **)&r->list, sizeof *r->list,
                             (void **)&r->nb, sizeof *r->nb, (void **)&r->all_buf,
                             sizeof *r->all_buf, (void **)&r->idx, sizeof *r->idx,
                             (void **)&r->sn, sizeof *r->sn, (void **)&r->cs, sizeof *r->cs))
-            return fw_fail(err, FW_ERUN, "out of memory for %d ships", n);
-        r->list_cap = n + 1;
+            return fw_fail(err, FW_ERUN, "out of memory for %d ships", n + nv);
+        r->list_cap = n + nv;
     }
     fw_target *all = r->all_buf;
     memcpy(all, ships, sizeof *all * (size_t)n);
     int m = n;
-    if (own) {
-        all[m] = *own;
+    for (int i = 0; i < nv; i++) {
+        all[m] = vessels[i];
         all[m++].own = true;
     }
     /* every state found first: a new one may move the array */

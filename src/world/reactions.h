@@ -85,9 +85,11 @@ typedef struct fw_reactions fw_reactions;
 fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, fw_error *err);
 void fw_reactions_destroy(fw_reactions *r);
 
-/* One step at time t: the background ships seen and the own ship (NULL: none);
- * orders go to src.  Does nothing with behaviour blind. */
-fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *own,
+/* One step at time t: the background ships seen and the nv vessels fairway
+ * steps (world.h: the own ship and any other, a ship taken from the source
+ * among them), which are given way to as the own ship is and never told
+ * anything; orders go to src.  Does nothing with behaviour blind. */
+fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *vessels, int nv,
                             const fw_target *ships, int n, fw_source *src, fw_error *err);
 
 /* Does it do anything (behaviour colregs)? */

@@ -10,7 +10,8 @@
 
 fw_vessel_def fw_default_vessel_def(void)
 {
-    return (fw_vessel_def){.id = "own", .dynamics = FW_DYN_MMG, .radius = 6.0 * 1852.0};
+    return (fw_vessel_def){.id = "own", .role = FW_ROLE_OWN, .dynamics = FW_DYN_MMG,
+                           .radius = 6.0 * 1852.0};
 }
 
 /* The policy's view of the vessel and its record, from the motion state.
@@ -84,12 +85,16 @@ fw_status fw_vessel_init(fw_vessel *v, const fw_vessel_def *def, double dt, cons
                        FW_TARGET_ID_MAX - 1);
     if (!def->ship)
         return fw_fail(err, FW_EINPUT, "vessel '%s' has no ship", def->id);
+    if (def->role != FW_ROLE_OWN && def->role != FW_ROLE_OTHER)
+        return fw_fail(err, FW_EINPUT, "vessel '%s': role %d is not a role", def->id,
+                       (int)def->role);
     if (!(def->radius > 0.0) || !isfinite(def->east) || !isfinite(def->north) ||
         !isfinite(def->course) || !(def->speed >= 0.0))
         return fw_fail(err, FW_EINPUT, "vessel '%s': not a start state (or sight <= 0)", def->id);
     snprintf(v->id, sizeof v->id, "%s", def->id);
     v->ship = def->ship;
     v->dyn = def->dynamics;
+    v->role = def->role;
     v->radius = def->radius;
     v->U0 = def->speed;
     v->record = (fw_target){.length = def->ship->Loa, .breadth = def->ship->B,
@@ -171,6 +176,8 @@ const fw_target *fw_vessel_record(const fw_vessel *v) { return &v->record; }
 double fw_vessel_propeller(const fw_vessel *v) { return v->n_prop; }
 const fw_decision *fw_vessel_decision(const fw_vessel *v) { return &v->d; }
 fw_controller *fw_vessel_controller(fw_vessel *v) { return v->ctl; }
+fw_vessel_role fw_vessel_role_of(const fw_vessel *v) { return v->role; }
+bool fw_vessel_taken(const fw_vessel *v) { return v->taken; }
 
 void fw_vessel_view(const fw_vessel *v, const fw_target **targets, const fw_assessment **as,
                     int *n)

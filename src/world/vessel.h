@@ -29,6 +29,13 @@
 
 typedef enum fw_dynamics_kind { FW_DYN_MMG, FW_DYN_NOMOTO } fw_dynamics_kind;
 
+/* What a vessel is to the world (world.h): FW_ROLE_OWN, the own ship (at
+ * most one: placed into the traffic source, the one whose sight the source's
+ * around() serves and the records and the survey follow), or FW_ROLE_OTHER,
+ * another ship fairway steps (seen by all, seeing the source's ships through
+ * within()). */
+typedef enum fw_vessel_role { FW_ROLE_OWN, FW_ROLE_OTHER } fw_vessel_role;
+
 /* What a controller is given each step. */
 typedef struct fw_sense {
     double t;                  /* s */
@@ -61,6 +68,7 @@ void fw_controller_destroy(fw_controller *c);
 
 typedef struct fw_vessel_def {
     const char *id;            /* 1..63 characters, unique in the world */
+    fw_vessel_role role;
     const fw_ship *ship;       /* must outlive the world */
     fw_dynamics_kind dynamics;
     /* start: MMG from straight running at speed (through the water) on
@@ -73,7 +81,8 @@ typedef struct fw_vessel_def {
     const fw_predictor *predictor; /* NULL: constant velocity */
 } fw_vessel_def;
 
-/* MMG, at rest at the origin heading north, sight 6 nm, no controller. */
+/* The own ship (id "own", FW_ROLE_OWN), MMG, at rest at the origin heading
+ * north, sight 6 nm, no controller. */
 fw_vessel_def fw_default_vessel_def(void);
 
 typedef struct fw_vessel fw_vessel;
@@ -94,5 +103,8 @@ const fw_decision *fw_vessel_decision(const fw_vessel *v);
 void fw_vessel_view(const fw_vessel *v, const fw_target **targets, const fw_assessment **as,
                     int *n);
 fw_controller *fw_vessel_controller(fw_vessel *v);
+fw_vessel_role fw_vessel_role_of(const fw_vessel *v);
+/* Taken from the traffic source (world.h fw_world_take)? */
+bool fw_vessel_taken(const fw_vessel *v);
 
 #endif

@@ -11,6 +11,8 @@ struct fw_vessel {
     char id[FW_TARGET_ID_MAX];
     const fw_ship *ship;
     fw_dynamics_kind dyn;
+    fw_vessel_role role;
+    bool taken;                /* from the source, told where it is every step */
     double radius;
     const fw_env *env;         /* the world's */
     double t;                  /* s, the time of the motion state */

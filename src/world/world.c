@@ -1,20 +1,31 @@
 /* world.c - the world and its step (world.h). */
 #include "world/world.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/clock.h"
+#include "core/mem.h"
 #include "world/vessel_internal.h"
 
-enum { MAX_VESSELS = 64 };
+/* One place a vessel can live: the vessel (NULL: free) and how many times
+ * the slot was freed, so that a handle outlives no vessel. */
+typedef struct slot {
+    fw_vessel *v;
+    uint16_t generation;
+} slot;
 
 struct fw_world {
     fw_world_def def;
     fw_source *source;
-    fw_vessel *v[MAX_VESSELS];
-    int nv;
+    slot *slots;
+    int n_slots, cap, nv;
+    int own;            /* the own ship's slot, -1: none */
+    fw_target *recs;    /* the vessels' records for the reactive traffic */
+    int recs_cap;
+    int n_taken;        /* vessels taken from the source */
     long steps;
     bool started, broken;
     fw_reactions *react;
@@ -44,10 +55,13 @@ void fw_world_destroy(fw_world *w)
 {
     if (!w)
         return;
-    for (int i = 0; i < w->nv; i++) {
-        fw_vessel_free(w->v[i]);
-        free(w->v[i]);
+    for (int i = 0; i < w->n_slots; i++) {
+        if (w->slots[i].v)
+            fw_vessel_free(w->slots[i].v);
+        free(w->slots[i].v);
     }
+    free(w->slots);
+    free(w->recs);
     fw_source_destroy(w->source);
     fw_reactions_destroy(w->react);
     free(w);
@@ -77,6 +91,7 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
     }
     w->def = *def;
     w->source = def->source;
+    w->own = -1;
     fw_status st = fw_reactions_create(&def->reactions, &w->react, err);
     if (st) {
         fw_world_destroy(w);
@@ -86,39 +101,191 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
     return FW_OK;
 }
 
-fw_status fw_world_add_vessel(fw_world *w, const fw_vessel_def *def, fw_vessel **out,
-                              fw_error *err)
+/* The slot behind h, or -1 for a null or stale handle. */
+static int slot_of(const fw_world *w, fw_vessel_handle h)
 {
-    if (out)
-        *out = NULL;
+    int i = h.index1 - 1;
+    if (i < 0 || i >= w->n_slots || !w->slots[i].v || w->slots[i].generation != h.generation)
+        return -1;
+    return i;
+}
+
+static fw_status stale(fw_vessel_handle h, fw_error *err)
+{
+    return fw_fail(err, FW_EINPUT, "vessel handle (slot %d, generation %u) is stale or null",
+                   (int)h.index1, (unsigned)h.generation);
+}
+
+/* A free slot (the lowest: the same calls give the same slots), grown if none. */
+static int free_slot(fw_world *w, fw_error *err)
+{
+    for (int i = 0; i < w->n_slots; i++)
+        if (!w->slots[i].v)
+            return i;
+    if (!fw_reserve((void **)&w->slots, sizeof *w->slots, &w->cap, w->n_slots + 1)) {
+        fw_fail(err, FW_ERUN, "out of memory for %d vessels", w->n_slots + 1);
+        return -1;
+    }
+    w->slots[w->n_slots] = (slot){0};
+    return w->n_slots++;
+}
+
+static fw_status check_new(const fw_world *w, const fw_vessel_def *def, fw_error *err)
+{
+    if (def->role == FW_ROLE_OWN && w->own >= 0)
+        return fw_fail(err, FW_EINPUT, "vessel '%s': the world has an own ship already ('%s')",
+                       def->id ? def->id : "", w->slots[w->own].v->id);
+    for (int i = 0; i < w->n_slots; i++)
+        if (w->slots[i].v && def->id && strcmp(w->slots[i].v->id, def->id) == 0)
+            return fw_fail(err, FW_EINPUT, "vessel '%s' added twice", def->id);
+    return FW_OK;
+}
+
+static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, fw_error *err);
+static fw_status decide(fw_world *w, fw_vessel *v, fw_error *err);
+static void drop(fw_world *w, int i);
+
+/* A vessel into slot *i; after the start it senses and decides at once (the
+ * own ship placed into the source first).  The controller is taken over. */
+static fw_status add(fw_world *w, const fw_vessel_def *def, bool taken, int *i, fw_error *err)
+{
     fw_vessel *v = NULL;
-    fw_status st = FW_OK;
-    if (w->started)
-        st = fw_fail(err, FW_EINPUT, "vessels are added before the world starts");
-    else if (w->nv == MAX_VESSELS)
-        st = fw_fail(err, FW_EINPUT, "a world holds at most %d vessels", MAX_VESSELS);
-    else if (!(v = calloc(1, sizeof *v)))
+    fw_status st = check_new(w, def, err);
+    if (!st && (*i = free_slot(w, err)) < 0)
+        st = FW_ERUN;
+    if (!st && !(v = calloc(1, sizeof *v)))
         st = fw_fail(err, FW_ERUN, "out of memory");
-    for (int i = 0; !st && i < w->nv; i++)
-        if (def->id && strcmp(w->v[i]->id, def->id) == 0)
-            st = fw_fail(err, FW_EINPUT, "vessel '%s' added twice", def->id);
-    if (!st && v && def->ship)
+    if (!st && def->ship)
         st = fw_env_check_vessel(&w->def.env, def->id ? def->id : "?", def->ship->name, err);
-    if (!st && v)
+    if (!st)
         st = fw_vessel_init(v, def, w->def.step, &w->def.env, err);
     if (st) {
+        /* taken over also on failure: v->ctl is not set yet, so v's free
+         * leaves it alone */
+        fw_controller_destroy(def->controller);
         if (v)
             fw_vessel_free(v);
-        else
-            fw_controller_destroy(def->controller);
         free(v);
         return st;
     }
     v->ctl = def->controller;
-    w->v[w->nv++] = v;
+    v->taken = taken;
+    w->slots[*i].v = v;
+    w->nv++;
+    w->n_taken += taken;
+    if (def->role == FW_ROLE_OWN)
+        w->own = *i;
+    if (!w->started)
+        return FW_OK;
+    const fw_target *src = NULL;
+    int n_src = 0;
+    if (w->own == *i && w->source &&
+        !(st = fw_source_place(w->source, &v->record, err)))
+        st = fw_source_around(w->source, &src, &n_src, err);
+    if (!st)
+        st = sense_one(w, *i, src, n_src, err);
+    if (!st)
+        st = decide(w, v, err);
+    if (st) /* not half there: gone again */
+        drop(w, *i);
+    return st;
+}
+
+static fw_vessel_handle handle_of(const fw_world *w, int i)
+{
+    assert(i >= 0 && i < w->n_slots && w->slots[i].v);
+    return (fw_vessel_handle){.index1 = i + 1, .generation = w->slots[i].generation};
+}
+
+fw_status fw_world_add_vessel(fw_world *w, const fw_vessel_def *def, fw_vessel_handle *out,
+                              fw_error *err)
+{
     if (out)
-        *out = v;
+        *out = (fw_vessel_handle){0};
+    if (w->broken) {
+        fw_controller_destroy(def->controller);
+        return fw_fail(err, FW_ERUN, "the world failed in an earlier step");
+    }
+    int i;
+    fw_status st = add(w, def, false, &i, err);
+    if (!st && out)
+        *out = handle_of(w, i);
+    return st;
+}
+
+/* Slot i freed: its vessel gone, its generation bumped. */
+static void drop(fw_world *w, int i)
+{
+    fw_vessel *v = w->slots[i].v;
+    assert(v && w->nv > 0 && (w->own == i) == (v->role == FW_ROLE_OWN));
+    w->n_taken -= v->taken;
+    if (w->own == i)
+        w->own = -1;
+    fw_vessel_free(v);
+    free(v);
+    w->slots[i].v = NULL;
+    w->slots[i].generation++;
+    w->nv--;
+}
+
+fw_status fw_world_remove_vessel(fw_world *w, fw_vessel_handle h, fw_error *err)
+{
+    int i = slot_of(w, h);
+    if (i < 0)
+        return stale(h, err);
+    if (w->slots[i].v->taken)
+        return fw_fail(err, FW_EINPUT, "vessel '%s' was taken from the source: give it back",
+                       w->slots[i].v->id);
+    drop(w, i);
     return FW_OK;
+}
+
+fw_status fw_world_take(fw_world *w, const char *ship, const fw_vessel_def *def,
+                        fw_vessel_handle *out, fw_error *err)
+{
+    if (out)
+        *out = (fw_vessel_handle){0};
+    fw_target at;
+    fw_status st = w->broken ? fw_fail(err, FW_ERUN, "the world failed in an earlier step")
+                   : !w->source ? fw_fail(err, FW_EINPUT, "no traffic source to take '%s' from",
+                                          ship)
+                                : FW_OK;
+    fw_vessel_def vd = *def;
+    vd.id = ship;
+    vd.role = FW_ROLE_OTHER;
+    if (!st)
+        st = check_new(w, &vd, err);
+    if (!st)
+        st = fw_source_take(w->source, ship, &at, err);
+    if (st) {
+        fw_controller_destroy(def->controller);
+        return st;
+    }
+    vd.east = at.east, vd.north = at.north, vd.course = at.course, vd.speed = at.speed;
+    int i;
+    if ((st = add(w, &vd, true, &i, err))) {
+        /* not a vessel after all: the source drives it on from where it was */
+        fw_error e2 = {0};
+        fw_source_give_back(w->source, &at, &e2);
+        return st;
+    }
+    if (out)
+        *out = handle_of(w, i);
+    return FW_OK;
+}
+
+fw_status fw_world_give_back(fw_world *w, fw_vessel_handle h, fw_error *err)
+{
+    int i = slot_of(w, h);
+    if (i < 0)
+        return stale(h, err);
+    fw_vessel *v = w->slots[i].v;
+    if (!v->taken)
+        return fw_fail(err, FW_EINPUT, "vessel '%s' was not taken from the source", v->id);
+    fw_status st = fw_source_give_back(w->source, &v->record, err);
+    if (!st)
+        drop(w, i);
+    return st;
 }
 
 static int cmp_id(const void *a, const void *b)
@@ -126,25 +293,47 @@ static int cmp_id(const void *a, const void *b)
     return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
-/* Vessel i's view: the source's ships (the own ship's only), then the other
- * vessels within its sight; sorted by id. */
-static fw_status sense(fw_world *w, int i, const fw_target *src, int n_src, fw_error *err)
+/* The source's ships a vessel other than the own ship sees (source.h
+ * within(), or nearby() filtered), into its view; *n counts them. */
+static fw_status sense_source(fw_world *w, fw_vessel *v, int *n, fw_error *err)
 {
-    fw_vessel *v = w->v[i];
+    const fw_target *src;
+    int m;
+    double e = v->record.east, no = v->record.north, r = v->radius;
+    const fw_source_ops *ops = w->source->ops;
+    fw_status st = ops->within ? ops->within(w->source, e, no, r, &src, &m, err)
+                               : fw_source_nearby(w->source, &src, &m, err);
+    if (!st)
+        st = fw_vessel_reserve(v, m + w->nv, err);
+    for (int j = 0; !st && j < m; j++)
+        if (ops->within || hypot(src[j].east - e, src[j].north - no) <= r)
+            v->view[(*n)++] = src[j];
+    return st;
+}
+
+/* The vessel in slot i's view: the source's ships (src, n_src: the own
+ * ship's around(); the others query within()), then the other vessels within
+ * its sight; sorted by id. */
+static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, fw_error *err)
+{
+    fw_vessel *v = w->slots[i].v;
     fw_status st = fw_vessel_reserve(v, n_src + w->nv, err);
     if (st)
         return st;
     int n = 0;
-    if (i == 0 && n_src > 0) {
+    if (i == w->own && n_src > 0) {
         memcpy(v->view, src, sizeof *src * (size_t)n_src);
         n = n_src;
+    } else if (i != w->own && w->source && (st = sense_source(w, v, &n, err))) {
+        return st;
     }
     bool extra = false;
-    for (int j = 0; j < w->nv; j++) {
-        const fw_target *o = &w->v[j]->record;
-        if (j == i || hypot(o->east - v->record.east, o->north - v->record.north) > v->radius)
+    for (int j = 0; j < w->n_slots; j++) {
+        const fw_vessel *o = w->slots[j].v;
+        if (j == i || !o ||
+            hypot(o->record.east - v->record.east, o->record.north - v->record.north) > v->radius)
             continue;
-        v->view[n++] = *o;
+        v->view[n++] = o->record;
         extra = true;
     }
     if (extra)
@@ -153,9 +342,8 @@ static fw_status sense(fw_world *w, int i, const fw_target *src, int n_src, fw_e
     return FW_OK;
 }
 
-static fw_status decide(fw_world *w, int i, fw_error *err)
+static fw_status decide(fw_world *w, fw_vessel *v, fw_error *err)
 {
-    fw_vessel *v = w->v[i];
     if (!v->ctl) {
         v->d = (fw_decision){.mode = FW_MODE_STANDBY, .helm = 0.0, .reason = "no controller",
                              .primary = -1};
@@ -166,6 +354,28 @@ static fw_status decide(fw_world *w, int i, fw_error *err)
     return v->ctl->ops->decide(v->ctl, &in, &v->d, err);
 }
 
+/* Every vessel's record, the own ship first (the own ship alone: its own
+ * record, nothing copied). */
+static fw_status vessel_records(fw_world *w, const fw_target **v, int *n, fw_error *err)
+{
+    *n = 0;
+    *v = NULL;
+    if (w->nv == 1 && w->own >= 0) {
+        *v = &w->slots[w->own].v->record;
+        *n = 1;
+        return FW_OK;
+    }
+    if (!fw_reserve((void **)&w->recs, sizeof *w->recs, &w->recs_cap, w->nv))
+        return fw_fail(err, FW_ERUN, "out of memory for %d vessels", w->nv);
+    if (w->own >= 0)
+        w->recs[(*n)++] = w->slots[w->own].v->record;
+    for (int i = 0; i < w->n_slots; i++)
+        if (w->slots[i].v && i != w->own)
+            w->recs[(*n)++] = w->slots[i].v->record;
+    *v = w->recs;
+    return FW_OK;
+}
+
 static fw_status sense_and_decide(fw_world *w, fw_error *err)
 {
     const fw_target *src = NULL;
@@ -173,21 +383,30 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
     fw_status st = FW_OK;
     fw_world_timing *tm = &w->timing;
     double t = tick(w);
-    if (w->source && w->nv > 0)
+    if (w->source && w->own >= 0)
         st = fw_source_around(w->source, &src, &n_src, err);
     lap(w, &tm->read, &t);
-    for (int i = 0; !st && i < w->nv; i++)
-        st = sense(w, i, src, n_src, err);
-    for (int i = 0; !st && i < w->nv; i++)
-        st = decide(w, i, err);
+    /* the own ship first: the others' queries may reuse the source's list */
+    if (!st && w->own >= 0)
+        st = sense_one(w, w->own, src, n_src, err);
+    for (int i = 0; !st && i < w->n_slots; i++)
+        if (w->slots[i].v && i != w->own)
+            st = sense_one(w, i, NULL, 0, err);
+    for (int i = 0; !st && i < w->n_slots; i++)
+        if (w->slots[i].v)
+            st = decide(w, w->slots[i].v, err);
     lap(w, &tm->decide, &t);
     /* the reactive traffic watches its own, wider circle (traffic/source.h) */
     if (!st && w->source && fw_reactions_active(w->react)) {
-        if (w->nv > 0)
+        const fw_target *vs;
+        int nvs = 0;
+        src = NULL, n_src = 0;
+        if (w->own >= 0)
             st = fw_source_nearby(w->source, &src, &n_src, err);
         if (!st)
-            st = fw_reactions_step(w->react, fw_world_time(w),
-                                   w->nv > 0 ? &w->v[0]->record : NULL, src, n_src, w->source,
+            st = vessel_records(w, &vs, &nvs, err);
+        if (!st)
+            st = fw_reactions_step(w->react, fw_world_time(w), vs, nvs, src, n_src, w->source,
                                    err);
         lap(w, &tm->reactions, &t);
     }
@@ -200,11 +419,23 @@ fw_status fw_world_start(fw_world *w, fw_error *err)
         return fw_fail(err, FW_EINPUT, "the world has already started");
     w->started = true;
     fw_status st = FW_OK;
-    if (w->source && w->nv > 0)
-        st = fw_source_place(w->source, &w->v[0]->record, err);
+    if (w->source && w->own >= 0)
+        st = fw_source_place(w->source, &w->slots[w->own].v->record, err);
     if (!st)
         st = sense_and_decide(w, err);
     w->broken = st != FW_OK;
+    return st;
+}
+
+/* The source told where the own ship and every taken ship are now. */
+static fw_status tell_source(fw_world *w, fw_error *err)
+{
+    fw_status st = FW_OK;
+    if (w->own >= 0)
+        st = fw_source_place(w->source, &w->slots[w->own].v->record, err);
+    for (int i = 0; !st && w->n_taken > 0 && i < w->n_slots; i++)
+        if (w->slots[i].v && w->slots[i].v->taken)
+            st = fw_source_steer(w->source, &w->slots[i].v->record, err);
     return st;
 }
 
@@ -218,12 +449,12 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err)
     fw_status st = FW_OK;
     fw_world_timing *tm = &w->timing;
     double t = tick(w);
-    for (int i = 0; !st && i < w->nv; i++)
-        st = fw_vessel_advance(w->v[i], w->def.step, err);
+    for (int i = 0; !st && i < w->n_slots; i++)
+        if (w->slots[i].v)
+            st = fw_vessel_advance(w->slots[i].v, w->def.step, err);
     lap(w, &tm->dynamics, &t);
     if (!st && w->source) {
-        if (w->nv > 0)
-            st = fw_source_place(w->source, &w->v[0]->record, err);
+        st = tell_source(w, err);
         lap(w, &tm->place, &t);
         if (!st)
             st = fw_source_advance(w->source, err);
@@ -242,8 +473,27 @@ double fw_world_time(const fw_world *w) { return (double)w->steps * w->def.step;
 uint64_t fw_world_seed(const fw_world *w) { return w->def.seed; }
 long fw_world_steps(const fw_world *w) { return w->steps; }
 int fw_world_vessel_count(const fw_world *w) { return w->nv; }
-fw_vessel *fw_world_vessel(fw_world *w, int i) { return i >= 0 && i < w->nv ? w->v[i] : NULL; }
 fw_source *fw_world_source(fw_world *w) { return w->source; }
+bool fw_world_vessel_valid(const fw_world *w, fw_vessel_handle h) { return slot_of(w, h) >= 0; }
+
+fw_vessel *fw_world_vessel(fw_world *w, fw_vessel_handle h)
+{
+    int i = slot_of(w, h);
+    return i < 0 ? NULL : w->slots[i].v;
+}
+
+fw_vessel_handle fw_world_own(const fw_world *w)
+{
+    return w->own < 0 ? (fw_vessel_handle){0} : handle_of(w, w->own);
+}
+
+fw_vessel_handle fw_world_vessel_at(const fw_world *w, int i)
+{
+    for (int j = 0; i >= 0 && j < w->n_slots; j++)
+        if (w->slots[j].v && i-- == 0)
+            return handle_of(w, j);
+    return (fw_vessel_handle){0};
+}
 
 const fw_reaction *fw_world_reactions(const fw_world *w, int *n)
 {

@@ -1,39 +1,60 @@
 /* world.h - the simulation: vessels fairway steps, a traffic source for the rest, one step.
  *
  * In Box2D's manner: a definition with a default (fw_default_world_def), a
- * world that owns everything created in it, and a caller that drives time:
+ * world that owns everything created in it, handles for what comes and goes,
+ * and a caller that drives time:
  *
  *   fw_world_def wd = fw_default_world_def();
  *   wd.step = 1.0;
  *   wd.source = source;                    the world takes it over
  *   fw_world_create(&wd, &w, &err);
- *   fw_vessel_def vd = fw_default_vessel_def();  ...
- *   fw_world_add_vessel(w, &vd, &own, &err);      the first vessel is the own ship
+ *   fw_vessel_def vd = fw_default_vessel_def();  ...  vd.role = FW_ROLE_OWN;
+ *   fw_vessel_handle own;
+ *   fw_world_add_vessel(w, &vd, &own, &err);
  *   fw_world_start(w, &err);               sense and decide at t = 0
  *   while (...) {
  *       ... read the vessels, their views, decisions ...
+ *       fw_world_add_vessel / fw_world_remove_vessel / fw_world_take /
+ *       fw_world_give_back                 at any time between steps
  *       fw_world_step(w, dt, &err);
  *   }
  *   fw_world_destroy(w);
  *
- * One step, in this order (README.md, Layout, "One step of a run"):
+ * Vessels are held by handles (fw_vessel_handle: a slot index and the slot's
+ * generation, as Box2D's b2BodyId): removing a vessel frees its slot and
+ * bumps its generation, so an old handle is refused (FW_EINPUT from the calls
+ * that take one, NULL from fw_world_vessel) and never reaches another vessel.
+ *
+ * Roles (vessel.h): at most one FW_ROLE_OWN vessel, the own ship: the source
+ * is told where it is, its sight is what the source's around() lists and
+ * what the records and the survey follow.  FW_ROLE_OTHER vessels are stepped
+ * by fairway too (a background ship taken from the source, a second ship
+ * under a policy).  A world with no own ship works: nothing is placed into
+ * the source, and the reactive traffic judges the source's ships among
+ * themselves.
+ *
+ * One step, in this order (README.md, "One step of a run"):
  *   1. every vessel's dynamics advance dt under the order decided last
- *   2. the source is told where the own ship is and moves its ships one step
- *   3. every vessel senses: the ships within its sight (the source's, for
- *      the own ship, and the other vessels'), sorted by id
+ *   2. the source is told where the own ship is and where every ship taken
+ *      from it is (fw_world_take), and moves its own ships one step
+ *   3. every vessel senses the ships within its sight, sorted by id: the
+ *      source's (the own ship: around(); another vessel: within(), source.h)
+ *      and the other vessels' records
  *   4. every vessel's controller decides its next order from what it sensed,
  *      and the source's ships that must give way to another are told their
  *      speed (reactions.h; orders take effect in the next step)
  * so after fw_world_start and after each step, everything read from the world
- * is of one instant: the positions and the decision taken on them.
+ * is of one instant: the positions and the decision taken on them.  A vessel
+ * added after the start senses and decides at once; the others see it from
+ * the next step.  A removed vessel leaves the others' views at the next step.
  *
- * The source's ships are seen from the own ship (the first vessel); other
- * vessels see the vessels.  The world checks nothing about collisions: that
- * is the records' job (run/records).
+ * The world checks nothing about collisions: that is the records' job
+ * (run/records).
  */
 #ifndef FW_WORLD_H
 #define FW_WORLD_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "core/error.h"
@@ -72,10 +93,51 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
 /* Safe on NULL. */
 void fw_world_destroy(fw_world *w);
 
-/* Adds a vessel (its controller is taken over, also on failure).  Before
- * fw_world_start only. */
-fw_status fw_world_add_vessel(fw_world *w, const fw_vessel_def *def, fw_vessel **out,
+/* A vessel, by the slot it has in its world and that slot's generation;
+ * the zero handle is no vessel (index1 counts from 1).  A slot's generation
+ * wraps after 65536 removals from it, as Box2D's does. */
+typedef struct fw_vessel_handle {
+    int32_t index1;
+    uint16_t generation;
+} fw_vessel_handle;
+
+static inline bool fw_vessel_handle_null(fw_vessel_handle h) { return h.index1 == 0; }
+
+/* Adds a vessel (its controller is taken over, also on failure) at any time
+ * between steps; FW_EINPUT on a bad def, an id already in the world, or a
+ * second own ship.  out may be NULL. */
+fw_status fw_world_add_vessel(fw_world *w, const fw_vessel_def *def, fw_vessel_handle *out,
                               fw_error *err);
+/* Removes a vessel and frees its slot (FW_EINPUT for a stale handle).  A
+ * vessel taken from the source must be given back instead.  Removing the own
+ * ship leaves the source's idea of it where it was last placed. */
+fw_status fw_world_remove_vessel(fw_world *w, fw_vessel_handle h, fw_error *err);
+bool fw_world_vessel_valid(const fw_world *w, fw_vessel_handle h);
+/* The vessel behind h, NULL for a stale handle.  A borrowed pointer for
+ * reads (vessel.h's accessors): vessels are allocated one by one and never
+ * moved, so it stays valid until that vessel is removed (steps, adds and
+ * other removals leave it alone). */
+fw_vessel *fw_world_vessel(fw_world *w, fw_vessel_handle h);
+/* The own ship's handle (the zero handle: none). */
+fw_vessel_handle fw_world_own(const fw_world *w);
+/* The live vessels: count, and the i-th in slot order (0 <= i < count; the
+ * zero handle otherwise), for walking them. */
+int fw_world_vessel_count(const fw_world *w);
+fw_vessel_handle fw_world_vessel_at(const fw_world *w, int i);
+
+/* A source's ship (by id) becomes an FW_ROLE_OTHER vessel at its exact state
+ * (position, heading, speed; its Loa and B from def->ship): the source stops
+ * driving it and lists it no more among its ships, and is told every step
+ * where the vessel is (source.h take / steer).  def gives the ship model,
+ * dynamics, sight, controller (taken over, also on failure) and predictor;
+ * its id, role and start are the source's.  FW_EINPUT when the source has no
+ * such ship or cannot hand ships over. */
+fw_status fw_world_take(fw_world *w, const char *ship, const fw_vessel_def *def,
+                        fw_vessel_handle *out, fw_error *err);
+/* A taken vessel back to its source (source.h give_back: it rejoins its
+ * route ahead of where it is, at its speed; FW_EINPUT if it is not near its
+ * route), and its slot freed. */
+fw_status fw_world_give_back(fw_world *w, fw_vessel_handle h, fw_error *err);
 
 /* Senses and decides at the present time (t = 0). */
 fw_status fw_world_start(fw_world *w, fw_error *err);
@@ -89,7 +151,8 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err);
  * --profile`, never in anything a run's results depend on. */
 typedef struct fw_world_timing {
     double dynamics;  /* the vessels' own motion (MMG or Nomoto, integrated) */
-    double place;     /* the own ship put into the traffic (SUMO: moveToXY) */
+    double place;     /* the own ship and the taken ones put into the traffic
+                         (SUMO: moveToXY) */
     double traffic;   /* the traffic's own step (SUMO's) */
     double read;      /* the ships around the own ship read and converted */
     double decide;    /* sensing and the controllers (the avoidance policy) */
@@ -100,9 +163,6 @@ const fw_world_timing *fw_world_timing_of(const fw_world *w);
 double fw_world_time(const fw_world *w);  /* s */
 uint64_t fw_world_seed(const fw_world *w); /* the def's seed */
 long fw_world_steps(const fw_world *w);
-
-int fw_world_vessel_count(const fw_world *w);
-fw_vessel *fw_world_vessel(fw_world *w, int i);
 
 /* Every ship in the area around the own ship, the own ship included, sorted
  * by id (the source's area query: the survey's input). */
