@@ -30,6 +30,17 @@
 #include "world/controllers.h"
 #include "world/world.h"
 
+
+/* fw_world_add_vessel, the vessel borrowed by pointer (world.h: valid until
+ * it is removed; these tests remove none). */
+static fw_status add_vessel(fw_world *w, const fw_vessel_def *vd, fw_vessel **v, fw_error *err)
+{
+    fw_vessel_handle h;
+    fw_status st = fw_world_add_vessel(w, vd, &h, err);
+    *v = st ? NULL : fw_world_vessel(w, h);
+    return st;
+}
+
 static fw_ship mmg;
 
 /* A helm by the clock and the heading: 20 deg starboard for 5 minutes, a
@@ -92,7 +103,7 @@ static fw_world *world_in(const fw_env *env, fw_vessel **v)
     vd.east = 100.0, vd.north = -200.0, vd.course = fw_deg_to_rad(30.0);
     vd.speed = fw_kn_to_ms(12.0);
     vd.controller = script();
-    CHECK_MSG(fw_world_add_vessel(w, &vd, v, &err) == FW_OK, "%s", err.msg);
+    CHECK_MSG(add_vessel(w, &vd, v, &err) == FW_OK, "%s", err.msg);
     CHECK_MSG(fw_world_start(w, &err) == FW_OK, "%s", err.msg);
     return w;
 }
@@ -196,7 +207,7 @@ static void test_record_heading_and_course(void)
     vd.ship = &mmg;
     vd.course = fw_deg_to_rad(30.0), vd.speed = fw_kn_to_ms(12.0);
     fw_vessel *v;
-    CHECK_MSG(fw_world_add_vessel(w, &vd, &v, &err) == FW_OK, "%s", err.msg);
+    CHECK_MSG(add_vessel(w, &vd, &v, &err) == FW_OK, "%s", err.msg);
     CHECK(fw_world_start(w, &err) == FW_OK);
     for (int k = 0; k < 600; k++)
         CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
@@ -235,7 +246,7 @@ static void test_nomoto_vessel_in_current(void)
         vd.dynamics = FW_DYN_NOMOTO;
         vd.course = 0.3, vd.speed = 6.0;
         vd.controller = script();
-        CHECK_MSG(fw_world_add_vessel(w[i], &vd, &v[i], &err) == FW_OK, "%s", err.msg);
+        CHECK_MSG(add_vessel(w[i], &vd, &v[i], &err) == FW_OK, "%s", err.msg);
         CHECK(fw_world_start(w[i], &err) == FW_OK);
     }
     double worst = 0.0, worst_psi = 0.0;
@@ -277,9 +288,10 @@ static void test_avoidance_in_current(void)
             vd.ship = &mmg;
             vd.north = i ? 9000.0 : 0.0, vd.east = i ? 200.0 : 0.0;
             vd.course = i ? FW_PI : 0.0;
+            vd.role = i ? FW_ROLE_OTHER : FW_ROLE_OWN;
             vd.speed = fw_kn_to_ms(10);
             CHECK(fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK);
-            CHECK_MSG(fw_world_add_vessel(w[e], &vd, &v[e][i], &err) == FW_OK, "%s", err.msg);
+            CHECK_MSG(add_vessel(w[e], &vd, &v[e][i], &err) == FW_OK, "%s", err.msg);
         }
         CHECK(fw_world_start(w[e], &err) == FW_OK);
     }
@@ -448,13 +460,13 @@ static void test_refusals(void)
     fw_vessel_def vd = fw_default_vessel_def();
     vd.ship = &mmg;
     fw_vessel *v = NULL;
-    CHECK(fw_world_add_vessel(w, &vd, &v, &err) == FW_EINPUT && v == NULL);
+    CHECK(add_vessel(w, &vd, &v, &err) == FW_EINPUT && v == NULL);
     CHECK_MSG(strstr(err.msg, "windage") && strstr(err.msg, "refused"), "%s", err.msg);
     fw_world_destroy(w);
     /* still air and a calm wind of 0 m/s are accepted */
     wd.env.wind.speed = 0.0;
     CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
-    CHECK(fw_world_add_vessel(w, &vd, &v, &err) == FW_OK);
+    CHECK(add_vessel(w, &vd, &v, &err) == FW_OK);
     fw_world_destroy(w);
     /* bad fields */
     wd = fw_default_world_def();

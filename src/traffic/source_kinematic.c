@@ -226,6 +226,7 @@ static fw_status kin_steer(fw_source *s, const fw_target *ship, fw_error *err)
         return fw_fail(err, FW_ERUN, "kinematic source: '%s' is not a taken ship", ship->id);
     p->now.east = ship->east, p->now.north = ship->north;
     p->now.course = ship->course, p->now.speed = ship->speed;
+    p->now.heading = ship->heading, p->now.stw = ship->stw;
     return FW_OK;
 }
 

@@ -383,8 +383,9 @@ static fw_status ss_steer(fw_source *s, const fw_target *ship, fw_error *err)
         return fw_fail(err, FW_ERUN, "sumo source: '%s' is not a taken ship", ship->id);
     fw_target *t = &k->taken[j];
     t->east = ship->east, t->north = ship->north, t->course = ship->course;
-    t->speed = ship->speed;
-    return fw_traffic_move(k->tr, t->id, t->east, t->north, t->course, t->length, err);
+    t->speed = ship->speed, t->heading = ship->heading, t->stw = ship->stw;
+    /* SUMO draws the hull: its angle is the heading, not the course over ground */
+    return fw_traffic_move(k->tr, t->id, t->east, t->north, t->heading, t->length, err);
 }
 
 /* Onto its route where it will be after the next step at its speed, so
