@@ -106,7 +106,6 @@ const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n)
 
 static const double kResume = 1.25;
 
-/* Closest approach of a (at speed va on its course) and b (as it goes). */
 /* Velocity of ship t (one of r->all) at speed v on its course. */
 static void vel(const fw_reactions *r, const fw_target *t, double v, double *ve, double *vn)
 {
@@ -115,6 +114,8 @@ static void vel(const fw_reactions *r, const fw_target *t, double v, double *ve,
     *vn = v * r->cs[i];
 }
 
+/* Closest approach of a (at speed va on its course) and b (as it goes): the
+ * square of the distance, and with cpa_at the distance itself. */
 static void cpa_sq_at(const fw_reactions *r, const fw_target *a, double va, const fw_target *b,
                       double *tcpa, double *dcpa2)
 {
@@ -211,7 +212,6 @@ static int threats(const fw_reactions *r, int self, const fw_target *all, double
     return k;
 }
 
-/* Does a at speed v pass every ship it gives way to (at v0) at cpa? */
 /* The ships a gives way to (at cpa) into list; their count. */
 static int threat_list(const fw_reactions *r, int self, const fw_target *all, double v0,
                        double vh, const char *keep, int *list)
@@ -342,7 +342,6 @@ static fw_status record(fw_reactions *r, const fw_reaction *x, fw_error *err)
     return FW_OK;
 }
 
-/* Background ship `self` of all[0..n-1] this step. */
 /* Rule 17(b): a stand-on ship that finds itself so close to a ship that
  * should give way that this alone cannot avoid a collision (DCPA below
  * last_cpa within last_time s) takes the action that best aids: the speed
@@ -423,6 +422,7 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
     return s2 ? s2 : record(r, &x, err);
 }
 
+/* Background ship `self` of all[0..n-1] this step. */
 static fw_status react(fw_reactions *r, double t, int self, const fw_target *all, int n,
                        react_state *st, fw_source *src, fw_error *err)
 {
