@@ -115,10 +115,11 @@ static fw_outcome sample(int run_id)
     o.n_enc = 2;
     o.enc = calloc(2, sizeof *o.enc);
     for (int i = 0; i < 2; i++) {
-        snprintf(o.enc[i].target, sizeof o.enc[i].target, "east.%d", i);
-        snprintf(o.enc[i].situation, sizeof o.enc[i].situation, "head-on");
-        o.enc[i].min_dist = 400.0 + i;
-        o.enc[i].t_act = i ? NAN : 12.0;
+        snprintf(o.enc[i].e.id, sizeof o.enc[i].e.id, "east.%d", i);
+        o.enc[i].e.situation = FW_SIT_HEAD_ON;
+        o.enc[i].e.min_dist = 400.0 + i;
+        o.enc[i].e.acted = i == 0;
+        o.enc[i].e.t_act = i ? NAN : 12.0;
     }
     o.n_traffic = 1;
     o.traffic = calloc(1, sizeof *o.traffic);
@@ -138,8 +139,8 @@ static void test_outcome_bytes(void)
     CHECK(fw_outcome_pack(&o, &buf, &n, &err) == FW_OK);
     CHECK(fw_outcome_unpack(buf, n, &back, &err) == FW_OK);
     CHECK(back.run_id == 3 && back.n_enc == 2 && back.n_traffic == 1);
-    CHECK(strcmp(back.enc[1].target, "east.1") == 0 && isnan(back.enc[1].t_act));
-    CHECK(back.enc[0].t_act == 12.0 && back.traffic[0].dcpa0 == 250.0);
+    CHECK(strcmp(back.enc[1].e.id, "east.1") == 0 && isnan(back.enc[1].e.t_act));
+    CHECK(back.enc[0].e.t_act == 12.0 && back.traffic[0].dcpa0 == 250.0);
     fw_outcome_free(&back);
     /* a short or padded message is refused, never read past its end */
     CHECK(fw_outcome_unpack(buf, n - 1, &back, &err) == FW_ERUN);
