@@ -373,30 +373,43 @@ static fw_status observe(run_state *R, long k, fw_run_summary *sum, fw_error *er
     return FW_OK;
 }
 
-/* The run's steps; the track measures at the end. */
-static fw_status loop(run_state *R, fw_run_summary *sum, fw_error *err)
+/* The first instant: the world started and observed. */
+static fw_status loop_start(run_state *R, fw_run_summary *sum, fw_error *err)
 {
     const fw_scenario *s = R->s;
-    long n_steps = lround(s->duration / s->step);
     R->e_prev = s->east;
     R->n_prev = s->north;
     R->mode_prev = FW_MODE_STANDBY;
-    double t0 = tick(R);
     fw_status st = fw_world_start(R->w, err);
-    for (long k = 0; !st; k++) {
-        double t1 = tick(R);
-        st = observe(R, k, sum, err);
-        R->t_observe += tick(R) - t1;
-        if (st || k >= n_steps)
-            break;
-        if ((st = fw_world_step(R->w, s->step, err)))
-            break;
-        const fw_mmg_state *x = fw_vessel_motion(R->own);
-        sum->rudder_work += fabs(x->delta) * s->step;
-        sum->path_length += hypot(x->east - R->e_prev, x->north - R->n_prev);
-        R->e_prev = x->east;
-        R->n_prev = x->north;
-    }
+    double t1 = tick(R);
+    if (!st)
+        st = observe(R, 0, sum, err);
+    R->t_observe += tick(R) - t1;
+    return st;
+}
+
+/* One world step, its accumulators and the records of the new instant k. */
+static fw_status loop_step(run_state *R, long k, fw_run_summary *sum, fw_error *err)
+{
+    const fw_scenario *s = R->s;
+    fw_status st = fw_world_step(R->w, s->step, err);
+    if (st)
+        return st;
+    const fw_mmg_state *x = fw_vessel_motion(R->own);
+    sum->rudder_work += fabs(x->delta) * s->step;
+    sum->path_length += hypot(x->east - R->e_prev, x->north - R->n_prev);
+    R->e_prev = x->east;
+    R->n_prev = x->north;
+    double t1 = tick(R);
+    st = observe(R, k, sum, err);
+    R->t_observe += tick(R) - t1;
+    return st;
+}
+
+/* The track measures at the end. */
+static void loop_end(run_state *R, fw_run_summary *sum)
+{
+    const fw_scenario *s = R->s;
     const fw_mmg_state *x = fw_vessel_motion(R->own);
     double de = x->east - s->east, dn = x->north - s->north;
     double se = sin(s->course), ce = cos(s->course);
@@ -405,8 +418,6 @@ static fw_status loop(run_state *R, fw_run_summary *sum, fw_error *err)
     sum->heading_error = fw_wrap_pi(x->psi - s->course);
     sum->path_lengthening = sum->path_length - sum->along_track;
     sum->time_lost = sum->t_end - sum->along_track / s->speed;
-    R->t_loop = tick(R) - t0;
-    return st;
 }
 
 /* --profile: where the run's CPU time went, into run.log and onto stderr. */
@@ -515,38 +526,141 @@ static void log_start(run_state *R)
                 cleared);
 }
 
+/* A run between open and close (run.h). */
+struct fw_run {
+    run_state R;
+    fw_run_def def;
+    fw_run_summary sum;
+    fw_encounter *enc0; /* init_summary's outputs, unused until close */
+    int n_enc0;
+    long k, n_steps;    /* the instant observed last; the run's steps */
+    bool ready;         /* set up: the loop ran or may run */
+    fw_status st;       /* the first failure (FW_OK: none) */
+    fw_error err;       /* its message */
+    double wall0, cpu0, t_loop0;
+    uint64_t branch;    /* branch.h: 0 the unbranched run */
+};
+
+fw_status fw_run_open(const fw_run_def *def, fw_run **out, fw_error *err)
+{
+    fw_run *r = calloc(1, sizeof *r);
+    *out = r;
+    if (!r)
+        return fw_fail(err, FW_ERUN, "out of memory for a run");
+    const fw_scenario *s = def->scenario;
+    r->def = *def;
+    r->wall0 = fw_clock_s();
+    init_summary(def, &r->sum, &r->enc0, &r->n_enc0);
+    r->R = (run_state){.s = s, .profile = def->profile};
+    run_state *R = &r->R;
+    r->cpu0 = tick(R);
+    r->n_steps = lround(s->duration / s->step);
+    fw_monitor_def md = fw_default_monitor_def();
+    fw_status st;
+    if ((st = fw_records_open(&R->rec, s, def->dir, &r->err)) ||
+        (st = fw_monitor_create(&md, fw_records_log(R->rec), &R->mon, &r->err)) ||
+        (s->survey && (st = fw_survey_create(&s->survey_def, &R->sv, &r->err))) ||
+        (st = make_world(def, &R->w, &R->own, &r->err))) {
+        r->st = st;
+        if (err)
+            *err = r->err;
+        return st;
+    }
+    log_start(R);
+    R->t_setup = tick(R) - r->cpu0;
+    r->ready = true;
+    r->t_loop0 = tick(R);
+    r->st = loop_start(R, &r->sum, &r->err);
+    if (r->st && err)
+        *err = r->err;
+    return r->st;
+}
+
+fw_status fw_run_step(fw_run *r, fw_error *err)
+{
+    if (!r->st && fw_run_done(r))
+        r->st = fw_fail(&r->err, FW_EINPUT, "%s: the run has ended (%ld steps)",
+                        r->R.s->name, r->n_steps);
+    if (!r->st)
+        r->st = loop_step(&r->R, ++r->k, &r->sum, &r->err);
+    if (r->st && err)
+        *err = r->err;
+    return r->st;
+}
+
+bool fw_run_done(const fw_run *r) { return r->st != FW_OK || r->k >= r->n_steps; }
+
+fw_world *fw_run_world(fw_run *r) { return r->R.w; }
+double fw_run_time(const fw_run *r) { return r->R.w ? fw_world_time(r->R.w) : 0.0; }
+long fw_run_steps(const fw_run *r) { return r->k; }
+const char *fw_run_dir(const fw_run *r) { return r->def.dir; }
+uint64_t fw_run_branch(const fw_run *r) { return r->branch; }
+void fw_run_set_branch(fw_run *r, uint64_t branch) { r->branch = branch; }
+
+const char *fw_run_unforkable(const fw_run *r)
+{
+    const fw_scenario *s = r->def.scenario;
+    bool sumo = !s->tracks[0] && r->def.traffic == FW_RUN_TRAFFIC_SUMO;
+    if (sumo && r->def.mode.kind != FW_TRAFFIC_EMBEDDED)
+        return "whose SUMO is another process (--sumo gui or remote: libtraci)";
+    return NULL;
+}
+
+/* Everything the run holds, freed (the summary's clock fields set); r stays. */
+static void teardown(fw_run *r)
+{
+    run_state *R = &r->R;
+    r->sum.sumo_s = fw_sumo_source_step_wall(R->w ? fw_world_source(R->w) : NULL);
+    fw_world_destroy(R->w);
+    fw_survey_destroy(R->sv);
+    fw_monitor_destroy(R->mon);
+    r->sum.wall_s = fw_clock_s() - r->wall0;
+    fw_records_close(R->rec);
+}
+
+void fw_run_discard(fw_run *r)
+{
+    if (!r)
+        return;
+    teardown(r);
+    free(r);
+}
+
+fw_status fw_run_close(fw_run *r, fw_run_summary *sum, fw_encounter **enc, int *n_enc,
+                       fw_error *err)
+{
+    *enc = NULL;
+    *n_enc = 0;
+    if (!r)
+        return fw_fail(err, FW_ERUN, "out of memory for a run");
+    run_state *R = &r->R;
+    fw_status st = r->st;
+    if (err && st)
+        *err = r->err;
+    if (r->ready) {
+        loop_end(R, &r->sum);
+        R->t_loop = tick(R) - r->t_loop0;
+        if (st)
+            fprintf(fw_records_log(R->rec), "run failed: %s\n", r->err.msg);
+        else
+            r->sum.status = FW_RUN_OK;
+        double t_finish = tick(R);
+        st = finish(R, &r->def, &r->sum, enc, n_enc, st, err);
+        if (r->def.profile)
+            log_profile(R, tick(R) - t_finish, tick(R) - r->cpu0);
+    }
+    teardown(r);
+    *sum = r->sum;
+    free(r);
+    return st;
+}
+
 fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
                           int *n_enc, fw_error *err)
 {
-    const fw_scenario *s = def->scenario;
-    double wall0 = fw_clock_s();
-    init_summary(def, sum, enc, n_enc);
-    run_state R = {.s = s, .profile = def->profile};
-    double cpu0 = tick(&R);
-    fw_status st;
-    fw_monitor_def md = fw_default_monitor_def();
-    if ((st = fw_records_open(&R.rec, s, def->dir, err)) ||
-        (st = fw_monitor_create(&md, fw_records_log(R.rec), &R.mon, err)) ||
-        (s->survey && (st = fw_survey_create(&s->survey_def, &R.sv, err))) ||
-        (st = make_world(def, &R.w, &R.own, err)))
-        goto out;
-    log_start(&R);
-    R.t_setup = tick(&R) - cpu0;
-    st = loop(&R, sum, err);
-    if (st)
-        fprintf(fw_records_log(R.rec), "run failed: %s\n", err ? err->msg : "");
-    else
-        sum->status = FW_RUN_OK;
-    double t_finish = tick(&R);
-    st = finish(&R, def, sum, enc, n_enc, st, err);
-    if (def->profile)
-        log_profile(&R, tick(&R) - t_finish, tick(&R) - cpu0);
-out:
-    sum->sumo_s = fw_sumo_source_step_wall(R.w ? fw_world_source(R.w) : NULL);
-    fw_world_destroy(R.w);
-    fw_survey_destroy(R.sv);
-    fw_monitor_destroy(R.mon);
-    sum->wall_s = fw_clock_s() - wall0;
-    fw_records_close(R.rec);
-    return st;
+    fw_run *r;
+    fw_status st = fw_run_open(def, &r, err);
+    while (!st && !fw_run_done(r))
+        st = fw_run_step(r, err);
+    return fw_run_close(r, sum, enc, n_enc, err);
 }

@@ -23,6 +23,7 @@
 #define FW_RUN_H
 
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "avoid/encounter.h"
@@ -145,9 +146,39 @@ typedef struct fw_run_def {
 fw_run_def fw_default_run_def(void);
 
 /* Runs the scenario to its end, writing the records into def->dir.  The
- * summary is filled even when the run fails part way (status "failed"). */
+ * summary is filled even when the run fails part way (status "failed"):
+ * fw_run_open, fw_run_step until fw_run_done, fw_run_close. */
 fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
                           int *n_enc, fw_error *err);
+
+/* A run as an object the caller steps.  fw_run_open sets it up (records,
+ * monitors, the world: SUMO loaded and started) and records t = 0; each
+ * fw_run_step is one world step and the records of its instant; fw_run_close
+ * writes the end (encounters.csv, summary.json, the survey's records) and
+ * frees it.  *out is set whatever open returns (NULL only when out of
+ * memory), and must be closed: a run that failed part way is still closed
+ * into its files, as fw_run_scenario does.  A failed step ends the run
+ * (fw_run_done); its error comes back from close too.  def (and its
+ * scenario) must outlive the run. */
+typedef struct fw_run fw_run;
+typedef struct fw_world fw_world;
+fw_status fw_run_open(const fw_run_def *def, fw_run **out, fw_error *err);
+fw_status fw_run_step(fw_run *r, fw_error *err);
+bool fw_run_done(const fw_run *r);
+fw_status fw_run_close(fw_run *r, fw_run_summary *sum, fw_encounter **enc, int *n_enc,
+                       fw_error *err);
+/* Frees the run and writes nothing more (branch.h: an abandoned branch). */
+void fw_run_discard(fw_run *r);
+fw_world *fw_run_world(fw_run *r);
+double fw_run_time(const fw_run *r); /* s, the instant recorded last */
+long fw_run_steps(const fw_run *r);  /* steps taken */
+const char *fw_run_dir(const fw_run *r);
+/* branch.h: the branch this run is (0: not a restored one), which fairway's
+ * random streams take; set by a restore.  And why the run cannot be
+ * snapshotted (NULL: it can). */
+uint64_t fw_run_branch(const fw_run *r);
+void fw_run_set_branch(fw_run *r, uint64_t branch);
+const char *fw_run_unforkable(const fw_run *r);
 
 /* The scenario's explicit targets at constant velocity as a kinematic source
  * (traffic/source.h) stepping `step`, seen within `radius` (INFINITY: all),
