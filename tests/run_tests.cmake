@@ -58,3 +58,10 @@ set_tests_properties(sumo_replay PROPERTIES ENVIRONMENT "${fw_lsan}")
 # run plots: the network's lanes, which ships are named
 fw_script_test(plot_run 0 "plot run ok" plot_run.sh)
 set_tests_properties(plot_run PROPERTIES ENVIRONMENT "${fw_lsan}")
+
+# Snapshot and restore of a running run (src/run/branch.h): a run of each
+# source kind branched at three steps ends byte-identical to the unbranched one
+fw_test(test_branch test_branch.c)
+target_link_libraries(test_branch PRIVATE fairway_run)
+set_tests_properties(test_branch PROPERTIES TIMEOUT 120
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

@@ -152,39 +152,63 @@ static fw_status note_fd(int fd, const char *path, void *ctx, fw_error *err)
     return FW_OK;
 }
 
-/* The abandoned branch writes no more: its descriptors go to /dev/null. */
-static fw_status silence_fd(int fd, const char *path, void *ctx, fw_error *err)
+/* The first n bytes of the file descriptor `from` holds (open for writing
+ * only, perhaps no longer named) into to. */
+static int copy_prefix(int from_fd, int to, off_t n)
 {
-    (void)path;
-    (void)ctx;
-    int null = open("/dev/null", O_WRONLY);
-    if (null < 0 || dup2(null, fd) < 0)
-        return fw_fail(err, FW_ERUN, "cannot silence %s: %s", path, strerror(errno));
-    close(null);
-    return FW_OK;
+    char buf[65536], proc[64];
+    snprintf(proc, sizeof proc, "/proc/self/fd/%d", from_fd);
+    int from = open(proc, O_RDONLY);
+    if (from < 0)
+        return -1;
+    for (off_t at = 0; at < n;) {
+        size_t want = n - at < (off_t)sizeof buf ? (size_t)(n - at) : sizeof buf;
+        ssize_t k = pread(from, buf, want, at);
+        if (k <= 0 || pwrite(to, buf, (size_t)k, at) != k) {
+            close(from);
+            return -1;
+        }
+        at += k;
+    }
+    close(from);
+    return 0;
+}
+
+/* One file that was open at the snapshot, as it was then, cut back to cut
+ * bytes, written on from its offset through a descriptor of the branch's own
+ * (not sharing its offset with the paused copy's) at the same number.  If the
+ * abandoned branch removed or renamed it (an atomic write's temporary file,
+ * traffic/fcd.c), it is made again from the file the descriptor still holds. */
+static fw_status rewind_file(const snap_open *o, off_t cut, fw_error *err)
+{
+    struct stat fs, ps;
+    bool same = fstat(o->fd, &fs) == 0 && stat(o->path, &ps) == 0 && fs.st_dev == ps.st_dev &&
+                fs.st_ino == ps.st_ino;
+    int flags = (o->flags & ~(O_TRUNC | O_EXCL)) | O_CREAT | (same ? 0 : O_TRUNC);
+    int fd = open(o->path, flags, 0666);
+    fw_status st = FW_OK;
+    if (fd < 0 || (!same && copy_prefix(o->fd, fd, cut) != 0) || dup2(fd, o->fd) < 0 ||
+        ftruncate(o->fd, cut) != 0 || lseek(o->fd, o->off, SEEK_SET) != o->off)
+        st = fw_fail(err, FW_ERUN, "cannot restore %s: %s", o->path, strerror(errno));
+    if (fd >= 0 && fd != o->fd)
+        close(fd);
+    return st;
 }
 
 /* In a branch: the run directory as it was at the snapshot.  Each file that
  * was open is cut back to its offset then (the largest if several
- * descriptors had it) and written on through a descriptor of the branch's own
- * (not sharing its offset with the paused copy's), at the same number. */
+ * descriptors had it); then the files made after the snapshot go. */
 static fw_status rewind_files(const fw_snapshot *s, fw_error *err)
 {
-    fw_status st = walk(s->dir, drop_new_file, (void *)s, err);
+    fw_status st = FW_OK;
     for (int i = 0; !st && i < s->n_open; i++) {
-        const snap_open *o = &s->open[i];
-        off_t cut = o->off;
+        off_t cut = s->open[i].off;
         for (int j = 0; j < s->n_open; j++)
-            if (!strcmp(s->open[j].path, o->path) && s->open[j].off > cut)
+            if (!strcmp(s->open[j].path, s->open[i].path) && s->open[j].off > cut)
                 cut = s->open[j].off;
-        int fd = open(o->path, (o->flags & ~(O_TRUNC | O_EXCL)) | O_CREAT, 0666);
-        if (fd < 0 || dup2(fd, o->fd) < 0 || ftruncate(o->fd, cut) != 0 ||
-            lseek(o->fd, o->off, SEEK_SET) != o->off)
-            st = fw_fail(err, FW_ERUN, "cannot restore %s: %s", o->path, strerror(errno));
-        if (fd >= 0 && fd != o->fd)
-            close(fd);
+        st = rewind_file(&s->open[i], cut, err);
     }
-    return st;
+    return st ? st : walk(s->dir, drop_new_file, (void *)s, err);
 }
 
 /* ---- the paused copy ---- */
@@ -340,15 +364,9 @@ fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint64_t branch, int *exit_c
     if (!s || s->owner != getpid())
         return fw_fail(err, FW_EINPUT, "a snapshot can be restored only by the process that "
                                        "took it");
-    fw_status st = FW_OK;
-    if (r) {
-        /* nothing the abandoned branch still holds reaches the files; what it
-         * makes while closing, the branch removes */
-        st = each_written_fd(s->dir, silence_fd, NULL, err);
-        fw_run_discard(r);
-        if (st)
-            return st;
-    }
+    /* the abandoned branch ends first: what it writes while closing (past
+     * the snapshot's offsets, or files of its own) the restored copy undoes */
+    fw_run_discard(r);
     int code;
     if (full_write(s->cmd, &branch, sizeof branch) != 0 ||
         full_read(s->reply, &code, sizeof code) != 0)

@@ -33,9 +33,11 @@
  *   open for writing (own.csv, targets.csv, run.log, SUMO's sumo.log and
  *   fcd.xml: found in /proc/self/fd, so SUMO's are caught too) is noted with
  *   its offset, with the list of files there.  A restored branch truncates each
- *   to its offset, writes on from there through its own descriptor, and removes
- *   the files made after the snapshot (encounters.csv, summary.json of an
- *   abandoned branch that finished): the directory is as it was.
+ *   to its offset, writes on from there through its own descriptor, makes
+ *   again from the descriptor it inherited any that the abandoned branch
+ *   removed or renamed (fcd.xml.tmp, renamed fcd.xml when SUMO closes), and
+ *   removes the files made after the snapshot (encounters.csv, summary.json of
+ *   an abandoned branch that finished): the directory is as it was.
  * What is not saved:
  *   - SUMO in another process (--sumo gui, remote:HOST:PORT: libtraci): fork
  *     copies this process only.  fw_run_snapshot refuses such a run
@@ -89,9 +91,9 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err);
 /* Ends the caller's branch and continues the run from s in a copy numbered
  * branch (fairway's random streams take it; 0 = the unbranched run's), waits
  * for that copy to end and puts its exit code in *exit_code (128 + the signal
- * if one killed it).  r is the caller's run, discarded here (nothing more of
- * it is written: its open files are pointed at /dev/null first; the caller
- * must not use r again), or NULL when the caller's run is already closed or
+ * if one killed it).  r is the caller's run, discarded here before the copy
+ * goes on (fw_run_discard: its end is not written; what it still flushes
+ * into the files the copy cuts away; the caller must not use r again), or NULL when the caller's run is already closed or
  * discarded (another branch from the same snapshot).  Only the process that
  * took s may restore it (FW_EINPUT in another); FW_ERUN when the copy has
  * gone or cannot fork. */

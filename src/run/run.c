@@ -597,14 +597,15 @@ const char *fw_run_dir(const fw_run *r) { return r->def.dir; }
 uint64_t fw_run_branch(const fw_run *r) { return r->branch; }
 void fw_run_set_branch(fw_run *r, uint64_t branch) { r->branch = branch; }
 
-const char *fw_run_unforkable(const fw_run *r)
+const char *fw_run_def_unforkable(const fw_run_def *d)
 {
-    const fw_scenario *s = r->def.scenario;
-    bool sumo = !s->tracks[0] && r->def.traffic == FW_RUN_TRAFFIC_SUMO;
-    if (sumo && r->def.mode.kind != FW_TRAFFIC_EMBEDDED)
+    bool sumo = !d->scenario->tracks[0] && d->traffic == FW_RUN_TRAFFIC_SUMO;
+    if (sumo && d->mode.kind != FW_TRAFFIC_EMBEDDED)
         return "whose SUMO is another process (--sumo gui or remote: libtraci)";
     return NULL;
 }
+
+const char *fw_run_unforkable(const fw_run *r) { return fw_run_def_unforkable(&r->def); }
 
 /* Everything the run holds, freed (the summary's clock fields set); r stays. */
 static void teardown(fw_run *r)

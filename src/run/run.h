@@ -179,6 +179,7 @@ const char *fw_run_dir(const fw_run *r);
 uint64_t fw_run_branch(const fw_run *r);
 void fw_run_set_branch(fw_run *r, uint64_t branch);
 const char *fw_run_unforkable(const fw_run *r);
+const char *fw_run_def_unforkable(const fw_run_def *d);
 
 /* The scenario's explicit targets at constant velocity as a kinematic source
  * (traffic/source.h) stepping `step`, seen within `radius` (INFINITY: all),
