@@ -163,7 +163,7 @@ int main(int argc, char **argv)
         snap_s[i] = bench_now() - t0;
         int code;
         t0 = bench_now();
-        if (fw_run_restore(NULL, s, (uint64_t)i + 1, &code, &err) || code != 0)
+        if (fw_run_restore(NULL, s, (uint32_t)i + 1, &code, &err) || code != 0)
             die("restore", &err);
         total[i] = bench_now() - t0;
         copy_report c;

@@ -162,7 +162,7 @@ static void same_dirs(const char *ref, const char *got, const char *what)
 
 /* In the restored copy: finish the run and end the process with its status
  * (the copy must never return into the test's own code further up). */
-static void branch_finish(fw_run *r, uint64_t want_branch)
+static void branch_finish(fw_run *r, uint32_t want_branch)
 {
     fw_error err = {0};
     int code = fw_run_branch(r) != want_branch ? 3 : finish(r, &err) ? 2 : 0;

@@ -250,14 +250,14 @@ static int exit_code(int status)
 /* The paused copy: forks a branch for each branch number the owner sends and
  * answers with the branch's exit code; exits when the owner's end closes.
  * Returns (in a branch only) that branch's number. */
-static uint64_t serve(fw_snapshot *s)
+static uint32_t serve(fw_snapshot *s)
 {
     /* a dead owner must not kill the copy mid-answer before it reaps */
     struct sigaction ign = {.sa_handler = SIG_IGN}, old;
     sigemptyset(&ign.sa_mask);
     sigaction(SIGPIPE, &ign, &old);
     for (;;) {
-        uint64_t branch;
+        uint32_t branch;
         if (full_read(s->cmd, &branch, sizeof branch) != 0)
             _exit(0);
         pid_t b = fork();
@@ -341,12 +341,19 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err)
         close(from[0]);
         s->cmd = to[0];
         s->reply = from[1];
-        uint64_t branch = serve(s);
-        st = rewind_files(s, err);
+        uint32_t branch = serve(s);
+        fw_error ferr = {0};
+        if (rewind_files(s, &ferr)) {
+            /* never back into the caller's code with an error: it would
+             * take itself for the original */
+            fprintf(stderr, "fairway: a restored branch: %s\n", ferr.msg);
+            fflush(stderr);
+            _exit(FW_BRANCH_EXIT_REWIND);
+        }
         free_lists(s);
         free(s);
         fw_run_set_branch(r, branch);
-        return st;
+        return FW_OK;
     }
     close(to[0]);
     close(from[1]);
@@ -358,7 +365,7 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err)
     return FW_OK;
 }
 
-fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint64_t branch, int *exit_code_out,
+fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_code_out,
                          fw_error *err)
 {
     if (!s || s->owner != getpid())
@@ -373,6 +380,10 @@ fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint64_t branch, int *exit_c
         return fw_fail(err, FW_ERUN, "the snapshot at t = %.1f s has gone", s->t);
     if (code < 0)
         return fw_fail(err, FW_ERUN, "the snapshot at t = %.1f s could not fork a branch", s->t);
+    if (code == FW_BRANCH_EXIT_REWIND)
+        return fw_fail(err, FW_ERUN, "the branch restored from t = %.1f s could not put the run "
+                                     "directory %s back as it was (its message is on stderr)",
+                       s->t, s->dir);
     *exit_code_out = code;
     return FW_OK;
 }

@@ -48,9 +48,16 @@
  *     --profile line are the branch's own (they are never in the digests).
  *   - directories made after the snapshot (files in them are removed).
  * Randomness: SUMO's RNGs in a restored copy go on exactly as in the original
- *   (fork copies them): a branch differs from the unbranched run only through
- *   fairway's own random streams, which take the branch number restore is
- *   given (fw_run_branch; 0 = the unbranched run's streams).
+ *   (fork copies them, and --seed is not read again): SUMO draws in a branch
+ *   what it would have drawn unbranched.  A branch differs from the unbranched
+ *   run only through fairway's own random streams (core/rng.h), which take the
+ *   branch number restore is given: 0 keeps every stream as it is (the
+ *   unbranched run's numbers), b > 0 is to replace each by fw_rng_branch(s, b).
+ *   No element of the world draws yet: fw_run_branch(r) holds the number for
+ *   the first that will.
+ * Results: a branch's summary and encounters (fw_run_close) are in the
+ *   branch's memory: the owner sees the run directory's files and the exit
+ *   code, nothing else (def->survey_out is filled in the branch).
  *
  * Processes.  A snapshot's copy waits for a command on a pipe from the process
  * that took it (the owner); when that pipe closes (fw_snapshot_free, or the
@@ -82,10 +89,15 @@
 
 typedef struct fw_snapshot fw_snapshot;
 
+/* The exit code of a branch that could not put the run directory back (it
+ * says why on stderr); fw_run_restore turns it into FW_ERUN. */
+#define FW_BRANCH_EXIT_REWIND 125
+
 /* Snapshot of r between steps.  Returns twice: in the caller with *out the
- * snapshot; in a branch restored from it with *out = NULL.  FW_EINPUT for a
- * run whose SUMO is another process; FW_ERUN when the process cannot fork or
- * a file of the run directory cannot be read. */
+ * snapshot; in a branch restored from it with *out = NULL, always FW_OK (a
+ * branch that cannot restore the files exits, FW_BRANCH_EXIT_REWIND).
+ * FW_EINPUT for a run whose SUMO is another process; FW_ERUN when the process
+ * cannot fork or a file of the run directory cannot be read. */
 fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err);
 
 /* Ends the caller's branch and continues the run from s in a copy numbered
@@ -97,7 +109,7 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err);
  * discarded (another branch from the same snapshot).  Only the process that
  * took s may restore it (FW_EINPUT in another); FW_ERUN when the copy has
  * gone or cannot fork. */
-fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint64_t branch, int *exit_code,
+fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_code,
                          fw_error *err);
 
 /* s's time (s) and step (as fw_run_step counts them). */

@@ -538,7 +538,7 @@ struct fw_run {
     fw_status st;       /* the first failure (FW_OK: none) */
     fw_error err;       /* its message */
     double wall0, cpu0, t_loop0;
-    uint64_t branch;    /* branch.h: 0 the unbranched run */
+    uint32_t branch;    /* branch.h: 0 the unbranched run */
 };
 
 fw_status fw_run_open(const fw_run_def *def, fw_run **out, fw_error *err)
@@ -594,8 +594,8 @@ fw_world *fw_run_world(fw_run *r) { return r->R.w; }
 double fw_run_time(const fw_run *r) { return r->R.w ? fw_world_time(r->R.w) : 0.0; }
 long fw_run_steps(const fw_run *r) { return r->k; }
 const char *fw_run_dir(const fw_run *r) { return r->def.dir; }
-uint64_t fw_run_branch(const fw_run *r) { return r->branch; }
-void fw_run_set_branch(fw_run *r, uint64_t branch) { r->branch = branch; }
+uint32_t fw_run_branch(const fw_run *r) { return r->branch; }
+void fw_run_set_branch(fw_run *r, uint32_t branch) { r->branch = branch; }
 
 const char *fw_run_def_unforkable(const fw_run_def *d)
 {

@@ -176,8 +176,8 @@ const char *fw_run_dir(const fw_run *r);
 /* branch.h: the branch this run is (0: not a restored one), which fairway's
  * random streams take; set by a restore.  And why the run cannot be
  * snapshotted (NULL: it can). */
-uint64_t fw_run_branch(const fw_run *r);
-void fw_run_set_branch(fw_run *r, uint64_t branch);
+uint32_t fw_run_branch(const fw_run *r);
+void fw_run_set_branch(fw_run *r, uint32_t branch);
 const char *fw_run_unforkable(const fw_run *r);
 const char *fw_run_def_unforkable(const fw_run_def *d);
 
