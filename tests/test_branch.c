@@ -100,17 +100,31 @@ static long file_bytes(const char *path, char **buf)
     *buf = malloc((size_t)n + 1);
     if (*buf && fread(*buf, 1, (size_t)n, f) != (size_t)n)
         n = -1;
+    if (*buf && n >= 0)
+        (*buf)[n] = '\0';
     fclose(f);
     return n;
 }
 
 /* SUMO's log says how long its loading took ("done (5ms)"): wall time, which
- * differs between any two runs; masked. */
-static void mask_ms(char *s)
+ * differs between any two runs; those digits are taken out.  Returns the new
+ * length. */
+static long mask_ms(char *s)
 {
-    for (char *p = strstr(s, "ms)"); p; p = strstr(p + 3, "ms)"))
-        for (char *q = p - 1; q >= s && *q >= '0' && *q <= '9'; q--)
-            *q = '0';
+    char *w = s;
+    for (char *p = s; *p; p++) {
+        bool timing = *p >= '0' && *p <= '9';
+        char *q = p;
+        while (timing && *q >= '0' && *q <= '9')
+            q++;
+        if (timing && strncmp(q, "ms)", 3) == 0) {
+            p = q - 1;
+            continue;
+        }
+        *w++ = *p;
+    }
+    *w = '\0';
+    return (long)(w - s);
 }
 
 /* Every file under a (relative path rel) is in b with the same bytes;
@@ -137,8 +151,8 @@ static int same_tree(const char *a, const char *b, const char *what)
         char *x, *y;
         long nx = file_bytes(pa, &x), ny = file_bytes(pb, &y);
         if (!strcmp(e->d_name, "sumo.log") && nx > 0 && ny > 0) {
-            mask_ms(x);
-            mask_ms(y);
+            nx = mask_ms(x);
+            ny = mask_ms(y);
         }
         CHECK_MSG(nx >= 0 && nx == ny && memcmp(x, y, (size_t)nx) == 0,
                   "%s: %s differs from %s (%ld and %ld bytes)", what, pb, pa, nx, ny);
