@@ -296,6 +296,52 @@ static void test_two_branches(void)
     fw_snapshot_free(snap);
 }
 
+/* Two snapshots outstanding, the earlier restored (the later one paused
+ * meanwhile); in that branch a snapshot of its own, restored in turn: a
+ * branch of a branch.  The files are the unbranched run's. */
+static void test_nested(void)
+{
+    const kind *k = &kKinds[0];
+    if (!load(k))
+        return;
+    char ref[512], dir[512];
+    snprintf(ref, sizeof ref, "%s/%s-ref", tmp_root, k->name);
+    snprintf(dir, sizeof dir, "%s/%s-nested", tmp_root, k->name);
+    fw_run_def d = run_def(k, dir);
+    fw_error err = {0};
+    fw_run *r;
+    fw_snapshot *a = NULL, *b = NULL;
+    fw_status st = fw_run_open(&d, &r, &err);
+    st = st ? st : step_to(r, 100, &err);
+    st = st ? st : fw_run_snapshot(r, &a, &err);
+    CHECK_MSG(st == FW_OK, "%s", err.msg);
+    if (st)
+        return;
+    if (!a) { /* the branch from a: a snapshot of its own at 500, on to 700, back */
+        fw_snapshot *c = NULL;
+        if (step_to(r, 500, &err) || fw_run_snapshot(r, &c, &err))
+            _exit(4);
+        if (!c)
+            branch_finish(r, 2);
+        int code = -1;
+        if (step_to(r, 700, &err) || fw_run_restore(r, c, 2, &code, &err))
+            _exit(5);
+        fw_snapshot_free(c);
+        _exit(code);
+    }
+    st = step_to(r, 200, &err);
+    st = st ? st : fw_run_snapshot(r, &b, &err);
+    if (!st && !b)
+        _exit(6); /* never restored */
+    st = st ? st : step_to(r, 250, &err);
+    int code = -1;
+    st = st ? st : fw_run_restore(r, a, 1, &code, &err);
+    CHECK_MSG(st == FW_OK && code == 0, "%s (exit %d)", err.msg, code);
+    same_dirs(ref, dir, "a branch of a branch");
+    fw_snapshot_free(b);
+    fw_snapshot_free(a);
+}
+
 /* A run with SUMO in another process is refused, and a snapshot is restored
  * only by its owner. */
 static void test_refusals(void)
@@ -402,6 +448,7 @@ int main(void)
         return 1;
     TEST_RUN(test_kinds);
     TEST_RUN(test_two_branches);
+    TEST_RUN(test_nested);
     TEST_RUN(test_refusals);
     TEST_RUN(test_owner_killed);
     /* no process of ours is left: every copy and branch reaped */
