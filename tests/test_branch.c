@@ -371,6 +371,12 @@ static void test_refusals(void)
     fflush(NULL);
     CHECK_MSG(WIFEXITED(status) && WEXITSTATUS(status) == 0,
               "a process other than the owner restored a snapshot");
+    CHECK(fw_snapshot_step(snap) == 0);
+    /* a paused copy that has gone: an error, not SIGPIPE */
+    kill(fw_snapshot_pid(snap), SIGKILL);
+    int code = -1;
+    CHECK(fw_run_restore(NULL, snap, 0, &code, &err) == FW_ERUN && code == -1);
+    CHECK_MSG(strstr(err.msg, "has gone") != NULL, "%s", err.msg);
     fw_snapshot_free(snap);
     fw_run_discard(r);
     /* the refusal is decided on the run's definition: SUMO through libtraci */

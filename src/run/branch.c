@@ -374,9 +374,14 @@ fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_c
     /* the abandoned branch ends first: what it writes while closing (past
      * the snapshot's offsets, or files of its own) the restored copy undoes */
     fw_run_discard(r);
-    int code;
-    if (full_write(s->cmd, &branch, sizeof branch) != 0 ||
-        full_read(s->reply, &code, sizeof code) != 0)
+    /* a copy that has gone (killed) closes the pipe: an error, not SIGPIPE */
+    struct sigaction ign = {.sa_handler = SIG_IGN}, old;
+    sigemptyset(&ign.sa_mask);
+    sigaction(SIGPIPE, &ign, &old);
+    int code, bad = full_write(s->cmd, &branch, sizeof branch) != 0 ||
+                    full_read(s->reply, &code, sizeof code) != 0;
+    sigaction(SIGPIPE, &old, NULL);
+    if (bad)
         return fw_fail(err, FW_ERUN, "the snapshot at t = %.1f s has gone", s->t);
     if (code < 0)
         return fw_fail(err, FW_ERUN, "the snapshot at t = %.1f s could not fork a branch", s->t);
@@ -389,6 +394,8 @@ fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_c
 }
 
 double fw_snapshot_time(const fw_snapshot *s) { return s->t; }
+long fw_snapshot_step(const fw_snapshot *s) { return s->step; }
+int fw_snapshot_pid(const fw_snapshot *s) { return (int)s->pid; }
 
 void fw_snapshot_free(fw_snapshot *s)
 {

@@ -117,8 +117,11 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err);
 fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_code,
                          fw_error *err);
 
-/* s's time (s) and step (as fw_run_step counts them). */
+/* s's time (s) and step (as fw_run_steps counts them); its paused copy's
+ * process id (for a driver that watches its processes). */
 double fw_snapshot_time(const fw_snapshot *s);
+long fw_snapshot_step(const fw_snapshot *s);
+int fw_snapshot_pid(const fw_snapshot *s);
 
 /* Ends s's paused copy (and reaps it) and frees s.  In a process other than
  * its owner (a branch holding its owner's snapshots) only frees the memory.
