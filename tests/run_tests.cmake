@@ -5,6 +5,13 @@ target_link_libraries(test_run PRIVATE fairway_run)
 set_tests_properties(test_run PROPERTIES TIMEOUT 180
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 
+# A run stepped by hand (open, step, close) against fw_run_scenario: the same
+# bytes, kinematic and SUMO; closed half way; without a directory.
+fw_test(test_run_step test_run_step.c)
+target_link_libraries(test_run_step PRIVATE fairway_run)
+set_tests_properties(test_run_step PROPERTIES TIMEOUT 120
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
 # The command: a run with a table row, --json, help, and bad input that leaves
 # no output directory behind (run_bad.sh checks the directory).
 fw_cli_test(cli_run_paper 0 "paper-3-crossing +[0-9]+ +no +no" run

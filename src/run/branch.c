@@ -200,6 +200,8 @@ static fw_status rewind_file(const snap_open *o, off_t cut, fw_error *err)
  * descriptors had it); then the files made after the snapshot go. */
 static fw_status rewind_files(const fw_snapshot *s, fw_error *err)
 {
+    if (!s->dir[0])
+        return FW_OK;
     fw_status st = FW_OK;
     for (int i = 0; !st && i < s->n_open; i++) {
         off_t cut = s->open[i].off;
@@ -293,6 +295,8 @@ static void free_lists(fw_snapshot *s)
 /* The snapshot's notes: the run directory's files and its open ones. */
 static fw_status note_dir(fw_snapshot *s, const char *dir, fw_error *err)
 {
+    if (!dir) /* a run without files */
+        return FW_OK;
     if (!realpath(dir, s->dir))
         return fw_fail(err, FW_ERUN, "cannot resolve the run directory %s: %s", dir,
                        strerror(errno));

@@ -1,11 +1,12 @@
-/* oracle.c - the best fixed manoeuvre (oracle.h), each tried in a world of
- * its own: the kinematic source for the targets, the MMG ship under the
- * manoeuvre controller. */
+/* oracle.c - the best fixed manoeuvre (oracle.h), each tried in a run of its
+ * own (run.h): the kinematic source for the targets, the MMG ship under the
+ * manoeuvre controller, no files. */
 #include "run/oracle.h"
 #include "run/run.h"
 
 #include <math.h>
 #include <stddef.h>
+#include <stdlib.h>
 
 #include "core/units.h"
 #include "world/controllers.h"
@@ -16,61 +17,48 @@ fw_oracle_def fw_default_oracle_def(void)
     return (fw_oracle_def){.t_act = 0.0, .helm = 0.0, .step = 1.0, .after = 0.0};
 }
 
-/* The scenario's targets at constant velocity (all seen, whatever the range)
- * and the own ship under one fixed manoeuvre, in a world of their own. */
-static fw_status make_world(const fw_scenario *s, double step, const fw_manoeuvre_def *md,
-                            fw_world **w, fw_vessel **own, fw_error *err)
-{
-    fw_world_def wd = fw_default_world_def();
-    wd.step = step;
-    fw_controller *ctl = NULL;
-    fw_status st;
-    if ((st = fw_run_kinematic_source(s, step, INFINITY, &wd.source, err)) ||
-        (st = fw_world_create(&wd, w, err)) ||
-        (st = fw_manoeuvre_controller_create(md, &ctl, err)))
-        return st;
-    fw_vessel_def vd = fw_default_vessel_def();
-    vd.ship = &s->ship;
-    vd.east = s->east;
-    vd.north = s->north;
-    vd.course = s->course;
-    vd.speed = s->speed;
-    vd.radius = INFINITY;
-    vd.controller = ctl;
-    return fw_world_add_vessel(*w, &vd, own, err);
-}
-
-/* One manoeuvre: smallest normalised domain radius and centre distance. */
+/* One manoeuvre: smallest normalised domain radius and centre distance, over
+ * all targets and instants.  A run (run.h) of the scenario as the oracle sails
+ * it: every target at constant velocity (the kinematic source) and seen
+ * whatever the range, blind traffic, the MMG ship under the fixed manoeuvre,
+ * steps of def->step to t_act + after, no files.  Its encounter book measures
+ * what the oracle asks (min_lambda, min_dist: the run's own domain reading). */
 static fw_status follow(const fw_scenario *s, const fw_oracle_def *def, double helm,
                         double alteration, double *lam_out, double *dist_out, fw_error *err)
 {
+    *lam_out = *dist_out = INFINITY;
+    fw_scenario *sail = malloc(sizeof *sail);
+    if (!sail)
+        return fw_fail(err, FW_ERUN, "oracle: out of memory");
+    *sail = *s;
+    sail->step = def->step;
+    sail->record_every = def->step;
+    sail->duration = def->after > 0.0 ? fmin(s->duration, def->t_act + def->after) : s->duration;
+    sail->radius = INFINITY;
+    sail->tracks[0] = '\0';
+    sail->ais.file[0] = '\0';
+    sail->survey = false;
+    sail->nomoto_plant = false;
+    sail->reactions = fw_default_world_def().reactions;
     fw_manoeuvre_def md = {.t_act = def->t_act, .helm = helm, .course = s->course,
                            .alteration = alteration};
-    fw_world *w = NULL;
-    fw_vessel *own = NULL;
-    fw_status rc = make_world(s, def->step, &md, &w, &own, err);
-    if (!rc)
-        rc = fw_world_start(w, err);
-    double t_end = def->after > 0.0 ? fmin(s->duration, def->t_act + def->after) : s->duration;
-    double lam = INFINITY, dist = INFINITY;
-    long n = lround(t_end / def->step);
-    for (long k = 0; !rc && k <= n; k++) {
-        const fw_mmg_state *x = fw_vessel_motion(own);
-        const fw_target *tg;
-        const fw_assessment *as;
-        int nt;
-        fw_vessel_view(own, &tg, &as, &nt);
-        for (int i = 0; i < nt; i++) {
-            lam = fmin(lam, fw_domain_lambda(&s->helm.domain, x->east, x->north, x->psi, &tg[i]));
-            dist = fmin(dist, hypot(tg[i].east - x->east, tg[i].north - x->north));
-        }
-        if (k < n)
-            rc = fw_world_step(w, def->step, err);
+    fw_run_def rd = fw_default_run_def();
+    rd.scenario = sail;
+    rd.dir = NULL;
+    rd.traffic = FW_RUN_TRAFFIC_KINEMATIC;
+    fw_status st = fw_manoeuvre_controller_create(&md, &rd.controller, err);
+    fw_run_summary sum;
+    fw_encounter *e = NULL;
+    int n = 0;
+    if (!st)
+        st = fw_run_scenario(&rd, &sum, &e, &n, err);
+    for (int i = 0; !st && i < n; i++) {
+        *lam_out = fmin(*lam_out, e[i].min_lambda);
+        *dist_out = fmin(*dist_out, e[i].min_dist);
     }
-    fw_world_destroy(w);
-    *lam_out = lam;
-    *dist_out = dist;
-    return rc;
+    free(e);
+    free(sail);
+    return st;
 }
 
 fw_status fw_oracle_best(const fw_scenario *s, const fw_oracle_def *def, fw_oracle_result *out,

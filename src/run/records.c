@@ -68,8 +68,8 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
         return fw_fail(err, FW_ERUN, "out of memory");
     r->s = s;
     *out = r;
-    fw_status st = fw_path(r->dir, sizeof r->dir, err, "%s", dir);
-    if (st)
+    fw_status st = dir ? fw_path(r->dir, sizeof r->dir, err, "%s", dir) : FW_OK;
+    if (st || !dir) /* no directory: the book only */
         return st;
     if (!(r->own = open_in(dir, "own.csv", err)) || !(r->log = open_in(dir, "run.log", err)) ||
         (s->targets_csv && !(r->tgt = open_in(dir, "targets.csv", err))))
@@ -131,11 +131,23 @@ static void end_row(const fw_records *r, FILE *f, double east, double north)
 
 FILE *fw_records_log(fw_records *r) { return r->log; }
 
+int fw_records_files(fw_records *r, FILE **f, int max)
+{
+    FILE *all[] = {r->own, r->log, r->tgt};
+    int n = 0;
+    for (int i = 0; i < 3; i++)
+        if (all[i] && n++ < max)
+            f[n - 1] = all[i];
+    return n;
+}
+
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
                     const char *mode)
 {
     /* t_s,east_m,north_m,heading_deg,speed_kn,u_mps,v_mps,r_degps,rudder_deg,helm_deg,
      * propeller_rps,mode */
+    if (!r->own)
+        return;
     fw_put_fixed(r->own, t, 1);
     put_nums(r->own,
              (const double[]){x->east, x->north, fw_heading_deg(x->psi),
@@ -406,6 +418,8 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
 
 fw_status fw_records_survey(fw_records *r, const fw_survey_record *rec, int n, fw_error *err)
 {
+    if (!r->dir[0])
+        return FW_OK;
     FILE *f = open_in(r->dir, "traffic_encounters.csv", err);
     if (!f)
         return FW_ERUN;
@@ -451,6 +465,8 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
         sum->collision |= e->collision;
         sum->colregs_ok &= e->colregs_ok;
     }
+    if (!r->dir[0])
+        return FW_OK;
     FILE *f = open_in(r->dir, "encounters.csv", err);
     if (!f)
         return FW_ERUN;

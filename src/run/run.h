@@ -1,12 +1,24 @@
-/* run.h - one scenario run: set-up, a loop of world steps with records, tear-down.
+/* run.h - one scenario run as an object the caller steps: open, step, close.
  *
- * fw_run_scenario builds a world (world/world.h) from the scenario: a traffic
+ * fw_run_open builds a world (world/world.h) from the scenario: a traffic
  * source (SUMO, which writes its own files into sumo/, or the kinematic source
- * for explicit targets) and the own ship (MMG dynamics, the avoidance policy).
- * After the world's start and after every fw_world_step the records take the
- * instant: the own ship's state and decision, every target seen with its
- * assessment (the encounter book), and, with a survey: section, every ship in
- * the survey area (survey/survey.h: the encounters among all ships, by type).
+ * for explicit targets) and the own ship (MMG dynamics, the avoidance policy
+ * or a controller of the caller's).  After the world's start and after every
+ * fw_run_step the records take the instant: the own ship's state and decision,
+ * every target seen with its assessment (the encounter book), and, with a
+ * survey: section, every ship in the survey area (survey/survey.h: the
+ * encounters among all ships, by type).  fw_run_close finishes: the track
+ * measures, the survey's totals, the files written at the end, the summary.
+ *
+ *   fw_run *r;
+ *   fw_status st = fw_run_open(&def, &r, &err);    t = 0 recorded
+ *   while (!st && !fw_run_done(r))
+ *       st = fw_run_step(r, &err);                 ... read fw_run_world(r) ...
+ *   st = fw_run_close(r, &sum, &enc, &n_enc, &err);
+ *
+ * which is fw_run_scenario.  Every evolving part of a run (the world, the
+ * records, the monitors, the survey, the summary so far and the loop's own
+ * state: last helm, mode, path sums, reactions logged) hangs from the fw_run.
  *
  * Outputs (in the run directory; every number printed with a fixed format and
  * no clock time anywhere, so the same scenario and seed give identical files):
@@ -27,6 +39,7 @@
 #include <stdio.h>
 
 #include "avoid/encounter.h"
+#include "world/world.h"
 #include "core/error.h"
 #include "dynamics/mmg.h"
 #include "scenario/scenario.h"
@@ -128,8 +141,11 @@ typedef struct fw_run_summary {
 typedef enum fw_run_traffic { FW_RUN_TRAFFIC_SUMO, FW_RUN_TRAFFIC_KINEMATIC } fw_run_traffic;
 
 typedef struct fw_run_def {
-    const fw_scenario *scenario;
-    const char *dir;          /* the run directory (created by the caller) */
+    const fw_scenario *scenario; /* must outlive the run */
+    /* the run directory (created by the caller); NULL: no files at all (the
+     * records still keep the encounter book and the summary; SUMO traffic
+     * needs a directory: FW_EINPUT) */
+    const char *dir;
     fw_run_traffic traffic;   /* SUMO (default) or kinematic */
     fw_traffic_mode mode;     /* SUMO back end */
     /* Optional: the survey's records, sorted by (t_first, ship_a, ship_b), as
@@ -141,45 +157,66 @@ typedef struct fw_run_def {
     /* run.log (and stderr) get where the run's wall time went: set-up, the
      * world's phases (world.h fw_world_timing), the records, the finish */
     bool profile;
+    /* The own ship's controller in place of the scenario's avoidance policy
+     * (world/controllers.h; the oracle's fixed manoeuvre): taken over by
+     * fw_run_open, also when it fails.  NULL: the policy. */
+    fw_controller *controller;
 } fw_run_def;
 
+/* SUMO embedded, no survey records wanted, no profile, the policy. */
 fw_run_def fw_default_run_def(void);
 
-/* Runs the scenario to its end, writing the records into def->dir.  The
- * summary is filled even when the run fails part way (status "failed"):
- * fw_run_open, fw_run_step until fw_run_done, fw_run_close. */
-fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
-                          int *n_enc, fw_error *err);
-
-/* A run as an object the caller steps.  fw_run_open sets it up (records,
- * monitors, the world: SUMO loaded and started) and records t = 0; each
- * fw_run_step is one world step and the records of its instant; fw_run_close
- * writes the end (encounters.csv, summary.json, the survey's records) and
- * frees it.  *out is set whatever open returns (NULL only when out of
- * memory), and must be closed: a run that failed part way is still closed
- * into its files, as fw_run_scenario does.  A failed step ends the run
- * (fw_run_done); its error comes back from close too.  def (and its
- * scenario) must outlive the run. */
 typedef struct fw_run fw_run;
-typedef struct fw_world fw_world;
+
+/* Set-up (records, monitors, survey, the world), then the world's start and
+ * the records of t = 0.  *out is a run whenever memory for it was found (NULL
+ * otherwise), also when this fails: a failure in set-up or at t = 0 leaves a
+ * run that is done and failed, for fw_run_close to report (a failed set-up
+ * writes no summary.json, as before).  def is copied; def->scenario, def->dir
+ * and the survey_out pointers must outlive the run. */
 fw_status fw_run_open(const fw_run_def *def, fw_run **out, fw_error *err);
+/* One world step of the scenario's length and the records of its instant.
+ * A run that is done is not stepped: FW_EINPUT, nothing changes.  A failure
+ * ends the run (done, status failed; the records up to the step before). */
 fw_status fw_run_step(fw_run *r, fw_error *err);
+/* The scenario's duration reached (lround(duration / step) steps), or failed. */
 bool fw_run_done(const fw_run *r);
+long fw_run_steps(const fw_run *r);   /* steps taken since t = 0 */
+double fw_run_time(const fw_run *r);  /* s, the world's time (0 before it exists) */
+/* The run's world, to read (the vessels, their views and decisions, the
+ * source): NULL if the set-up failed.  Stepping it other than by fw_run_step
+ * leaves the records behind. */
+fw_world *fw_run_world(fw_run *r);
+/* The run's output streams open now (own.csv, run.log, targets.csv if asked),
+ * up to max of them into files; returns how many there are.  Everything else
+ * (encounters.csv, traffic_encounters.csv, summary.json) is written whole by
+ * fw_run_close; SUMO's own files in sumo/ are SUMO's.  None without a dir. */
+int fw_run_files(fw_run *r, FILE **files, int max);
+/* Finishes and frees the run: the track measures (final offsets, path and time
+ * lost), the monitors' and the survey's totals, encounters.csv,
+ * traffic_encounters.csv, summary.json; the summary (status "ok" unless the run
+ * failed; t_end the last instant recorded, so a run closed before its duration
+ * ends there) and a malloc'd copy of the encounter book.  Returns the run's
+ * failure if it had one, else the finish's.  sum, enc, n_enc are filled also
+ * after a failure part way. */
 fw_status fw_run_close(fw_run *r, fw_run_summary *sum, fw_encounter **enc, int *n_enc,
                        fw_error *err);
 /* Frees the run and writes nothing more (branch.h: an abandoned branch). */
 void fw_run_discard(fw_run *r);
-fw_world *fw_run_world(fw_run *r);
-double fw_run_time(const fw_run *r); /* s, the instant recorded last */
-long fw_run_steps(const fw_run *r);  /* steps taken */
-const char *fw_run_dir(const fw_run *r);
-/* branch.h: the branch this run is (0: not a restored one), which fairway's
- * random streams take; set by a restore.  And why the run cannot be
- * snapshotted (NULL: it can). */
+const char *fw_run_dir(const fw_run *r); /* def->dir (NULL: no files) */
+/* branch.h: the branch this run is (0: not one restored as another), which
+ * fairway's random streams take; set by a restore.  And why a run cannot be
+ * snapshotted (NULL: it can): decided on its definition. */
 uint32_t fw_run_branch(const fw_run *r);
 void fw_run_set_branch(fw_run *r, uint32_t branch);
 const char *fw_run_unforkable(const fw_run *r);
 const char *fw_run_def_unforkable(const fw_run_def *d);
+
+/* open, step until done, close: runs the scenario to its end, writing the
+ * records into def->dir.  The summary is filled even when the run fails part
+ * way (status "failed"). */
+fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
+                          int *n_enc, fw_error *err);
 
 /* The scenario's explicit targets at constant velocity as a kinematic source
  * (traffic/source.h) stepping `step`, seen within `radius` (INFINITY: all),
@@ -199,7 +236,10 @@ typedef struct fw_records fw_records;
 fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *dir,
                           fw_error *err);
 void fw_records_close(fw_records *r);
+/* run.log (NULL without a directory). */
 FILE *fw_records_log(fw_records *r);
+/* The open streams (own.csv, run.log, targets.csv), up to max into f; how many. */
+int fw_records_files(fw_records *r, FILE **f, int max);
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, double helm, double n,
                     const char *mode);
 /* One target seen at time t, with its assessment (situation, DCPA/TCPA, threat).

@@ -1,0 +1,189 @@
+/* run_world.c - a run's world from its scenario: the traffic source (SUMO,
+ * the kinematic source, recorded tracks, AIS reports) and the own ship
+ * (run_world.h; the run's set-up, run.c). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "ais/ais_track.h"
+#include "core/files.h"
+#include "core/units.h"
+#include "run/run_world.h"
+#include "traffic/source_mirror.h"
+#include "traffic/source_sumo.h"
+#include "traffic/source_track.h"
+#include "world/controllers.h"
+
+/* The own ship at t = 0 as a record (hull centre, heading, speed, size). */
+static fw_target own_start(const fw_scenario *s)
+{
+    fw_target o = {.east = s->east, .north = s->north, .course = s->course, .speed = s->speed,
+                   .length = s->ship.Loa, .breadth = s->ship.B};
+    snprintf(o.id, sizeof o.id, "fw_own");
+    return o;
+}
+
+/* m, how far out the reactive traffic is watched: beyond sight by what
+ * two ships crossing at 15 kn close in the reactions' horizon of 15
+ * minutes, 4 nm, so that a ship coming into sight has been giving way
+ * already (none with blind traffic). */
+static double near_radius(const fw_scenario *s)
+{
+    if (s->reactions.behaviour == FW_BEHAVIOUR_BLIND)
+        return 0.0;
+    return s->radius + 4.0 * FW_NMILE;
+}
+
+/* The run's sumo/ directory, created: SUMO's files and logs. */
+static fw_status sumo_dir(const fw_run_def *def, char *dir, size_t n, fw_error *err)
+{
+    if (!def->dir)
+        return fw_fail(err, FW_EINPUT, "%s: SUMO traffic needs a run directory",
+                       def->scenario->file);
+    fw_status st = fw_path(dir, n, err, "%s/sumo", def->dir);
+    if (!st && mkdir(dir, 0777) != 0)
+        st = fw_fail(err, FW_ERUN, "cannot create %s", dir);
+    return st;
+}
+
+static fw_status sumo_source(const fw_run_def *def, fw_source **src, fw_error *err)
+{
+    const fw_scenario *s = def->scenario;
+    char dir[1100];
+    fw_status st = sumo_dir(def, dir, sizeof dir, err);
+    if (st)
+        return st;
+    fw_sumo_source_def dflt = fw_default_sumo_source_def();
+    fw_sumo_source_def sd = {.mode = def->mode, .dir = dir, .network = s->network,
+                             .density = s->density, .fill = s->fill, .seed = s->seed,
+                             .duration = s->duration, .step = s->step, .fcd = s->fcd,
+                             .fcd_period = s->record_every,
+                             .proj = s->plane[0] ? s->plane : NULL,
+                             .proj_off_e = s->plane_off_e, .proj_off_n = s->plane_off_n,
+                             .targets = s->targets,
+                             .n_targets = s->n_targets, .own = own_start(s), .own_leg = s->leg,
+                             .radius = s->radius,
+                             .area_radius = s->survey ? s->survey_radius : 0.0,
+                             .near_radius = near_radius(s),
+                             .clear_range = dflt.clear_range, .clear_cpa = dflt.clear_cpa,
+                             .clear_tcpa = dflt.clear_tcpa};
+    return fw_sumo_source_create(&sd, src, err);
+}
+
+fw_status fw_run_kinematic_source(const fw_scenario *s, double step, double radius,
+                                  fw_source **src, fw_error *err)
+{
+    if (s->network[0])
+        return fw_fail(err, FW_EINPUT, "%s: traffic on network '%s' needs SUMO, not the "
+                                       "kinematic source", s->file, s->network);
+    fw_kin_ship ships[FW_SCN_MAX_TARGETS];
+    for (int i = 0; i < s->n_targets; i++)
+        ships[i] = (fw_kin_ship){.start = s->targets[i]};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ships;
+    kd.n = s->n_targets;
+    kd.step = step;
+    kd.radius = radius;
+    kd.area_radius = s->survey ? s->survey_radius : 0.0;
+    kd.own_id = "fw_own";
+    return fw_kinematic_source_create(&kd, src, err);
+}
+
+fw_status fw_run_ais_tracks(const fw_scenario *s, fw_ais_tracks *t, fw_error *err)
+{
+    const fw_scn_ais *a = &s->ais;
+    fw_ais_track_def d = fw_default_ais_track_def();
+    d.origin_lat = s->origin_lat;
+    d.origin_lon = s->origin_lon;
+    if (s->plane[0]) {
+        d.proj = s->plane;
+        d.off_e = s->plane_off_e;
+        d.off_n = s->plane_off_n;
+    }
+    d.start = a->start;
+    d.end = a->end;
+    d.start_rel = a->start_rel;
+    d.end_rel = a->end_rel;
+    d.max_gap = a->max_gap;
+    fw_ais_columns cols;
+    if (a->columns[0] && fw_ais_columns_parse(a->columns, s->file, &cols, err))
+        return err->status;
+    d.cols = a->columns[0] ? &cols : NULL;
+    fw_status st = fw_ais_tracks_load(a->file, &d, t, err);
+    if (!st && t->n == 0)
+        st = fw_fail(err, FW_EINPUT, "%s: no ship reports in the scenario's window and within "
+                                     "%.0f km of its origin", a->file, d.area_radius / 1000);
+    return st;
+}
+
+/* AIS reports replayed (ais/ais_track.h), the run's t = 0 the window's
+ * start; with SUMO traffic also shown in SUMO (traffic/source_mirror.h). */
+static fw_status ais_source(const fw_run_def *def, const fw_replay_def *td, fw_source **src,
+                            fw_error *err)
+{
+    const fw_scenario *s = def->scenario;
+    fw_ais_tracks t;
+    fw_status st = fw_run_ais_tracks(s, &t, err);
+    fw_replay_def d = *td;
+    d.max_gap = s->ais.max_gap;
+    bool sumo = def->traffic == FW_RUN_TRAFFIC_SUMO;
+    if (sumo)
+        d.radius = INFINITY; /* every ship shown; the mirror applies the sight */
+    if (!st)
+        st = fw_ais_replay_source_create(&t, &d, src, err);
+    fw_ais_tracks_free(&t);
+    if (st || !sumo)
+        return st;
+    char dir[1100];
+    if ((st = sumo_dir(def, dir, sizeof dir, err)))
+        return st;
+    fw_mirror_def md = {.mode = def->mode, .dir = dir, .step = s->step, .seed = s->seed,
+                        .own = own_start(s), .own_leg = s->leg, .duration = s->duration,
+                        .radius = s->radius};
+    fw_source *inner = *src;
+    *src = NULL;
+    return fw_mirror_source_create(inner, &md, src, err);
+}
+
+/* The world: the source and the own ship (MMG, the avoidance policy or the
+ * caller's controller, which is destroyed here if the world is not made). */
+fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own, fw_error *err)
+{
+    const fw_scenario *s = def->scenario;
+    fw_controller *ctl = def->controller;
+    fw_source *src = NULL;
+    fw_replay_def td = fw_default_replay_def();
+    td.file = s->tracks;
+    td.step = s->step;
+    td.radius = s->radius;
+    /* recorded tracks replay without SUMO, whatever the run asked for */
+    fw_status st = s->tracks[0]     ? fw_replay_source_create(&td, &src, err)
+                   : s->ais.file[0] ? ais_source(def, &td, &src, err)
+                   : def->traffic == FW_RUN_TRAFFIC_KINEMATIC
+                       ? fw_run_kinematic_source(s, s->step, s->radius, &src, err)
+                       : sumo_source(def, &src, err);
+    fw_world_def wd = fw_default_world_def();
+    wd.step = s->step;
+    wd.source = src;
+    wd.reactions = s->reactions;
+    wd.timing = def->profile;
+    if (st || (st = fw_world_create(&wd, w, err))) {
+        fw_controller_destroy(ctl);
+        return st;
+    }
+    fw_policy_controller_def pd = {.ship = &s->ship, .helm = s->helm, .policy = s->policy};
+    if (!ctl && (st = fw_policy_controller_create(&pd, &ctl, err)))
+        return st;
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.id = "fw_own";
+    vd.ship = &s->ship;
+    vd.dynamics = s->nomoto_plant ? FW_DYN_NOMOTO : FW_DYN_MMG;
+    vd.east = s->east;
+    vd.north = s->north;
+    vd.course = s->course;
+    vd.speed = s->speed;
+    vd.radius = s->radius;
+    vd.controller = ctl;
+    return fw_world_add_vessel(*w, &vd, own, err);
+}
