@@ -10,15 +10,15 @@
  * Why fork and not SUMO's saveState / loadState (bench/results/snapshot.txt,
  * bench/bench_sumo_state.cpp, t = 1800 s of the base scenario): both cost about
  * the same (fork 1.4-2.5 ms and 157 page faults in the branch's first minute,
- * against saveState 1.5-2.8 ms and loadState 3.3-4.9 ms for 38 ships), but
+ * against saveState 1.5-2.8 ms and loadState 3.3-5.1 ms for 38 ships), but
  * after a loadState SUMO 1.15 does not go on as it would have: in the first
  * step 16 fill ships that had left come back and ships jump up to 659 m
  * sideways (lane changes in progress are not saved), where the forked copy's
  * ships are where the original's are to the last bit for the next 600 s.
- * Costs here (bench_snapshot, the base scenario): a snapshot 0.8-1.3 ms, 0.13
- * of a simulated minute; a restore 6-8 ms beyond the minutes the branch
- * simulates (its fork, the files put back, about 250 page faults), about one
- * simulated minute.  A paused copy's memory is the pages the original changes
+ * Costs here (bench_snapshot, the base scenario): a snapshot 0.8-1.3 ms, 0.13-
+ * 0.17 of a simulated minute; a restore 2.4-2.7 ms beyond the minutes the
+ * branch simulates on a quiet host, 6-8 ms on a busy one (its fork, the files
+ * put back, about 250 page faults), 0.4-1.1 simulated minutes.  A paused copy's memory is the pages the original changes
  * after it.  And the rest
  * of a run (the vessels' ARKODE integrators, controllers, reactions, monitors,
  * records, the libsumo range read's file-scope state) would each need its own
