@@ -320,6 +320,61 @@ static void test_two_branches(void)
     fw_snapshot_free(snap);
 }
 
+/* The summaries' measures that a branch must give as the unbranched run
+ * did (wall_s and sumo_s are clocks). */
+static bool same_summary(const fw_run_summary *a, const fw_run_summary *b)
+{
+    return a->status == b->status && a->t_end == b->t_end && a->n_encounters == b->n_encounters &&
+           a->min_dist == b->min_dist && a->min_hull == b->min_hull &&
+           !strcmp(a->min_dist_id, b->min_dist_id) && a->acted == b->acted &&
+           a->t_act == b->t_act && a->act_helm == b->act_helm && a->max_helm == b->max_helm &&
+           a->path_length == b->path_length && a->cross_track == b->cross_track &&
+           a->heading_error == b->heading_error && a->rudder_work == b->rudder_work &&
+           a->helm_orders == b->helm_orders && a->n_actions == b->n_actions;
+}
+
+/* A run without files (def.dir NULL: what a splitting driver would run): the
+ * branch's summary is the unbranched run's, to the bit (the branch compares
+ * and says so by its exit code). */
+static void test_no_files(void)
+{
+    const kind *k = &kKinds[0];
+    if (!load(k))
+        return;
+    fw_run_def d = fw_default_run_def();
+    d.scenario = &scn;
+    d.traffic = k->traffic;
+    fw_error err = {0};
+    fw_run *r;
+    fw_run_summary ref, got;
+    fw_encounter *e;
+    int ne;
+    fw_status st = fw_run_open(&d, &r, &err);
+    while (!st && !fw_run_done(r))
+        st = fw_run_step(r, &err);
+    st = fw_run_close(r, &ref, &e, &ne, &err) || st;
+    free(e);
+    CHECK_MSG(st == FW_OK && ref.acted, "%s", err.msg);
+    fw_snapshot *snap = NULL;
+    st = fw_run_open(&d, &r, &err);
+    st = st ? st : step_to(r, 200, &err);
+    st = st ? st : fw_run_snapshot(r, &snap, &err);
+    CHECK_MSG(st == FW_OK, "%s", err.msg);
+    if (st)
+        return;
+    if (!snap) {
+        st = step_to(r, 1L << 40, &err);
+        st = fw_run_close(r, &got, &e, &ne, &err) || st;
+        free(e);
+        _exit(st == FW_OK && same_summary(&got, &ref) ? 0 : 7);
+    }
+    st = step_to(r, 600, &err);
+    int code = -1;
+    st = st ? st : fw_run_restore(r, snap, 0, &code, &err);
+    CHECK_MSG(st == FW_OK && code == 0, "%s (exit %d: 7 = the summaries differ)", err.msg, code);
+    fw_snapshot_free(snap);
+}
+
 /* Two snapshots outstanding, the earlier restored (the later one paused
  * meanwhile); in that branch a snapshot of its own, restored in turn: a
  * branch of a branch.  The files are the unbranched run's. */
@@ -479,6 +534,7 @@ int main(void)
     TEST_RUN(test_kinds);
     TEST_RUN(test_two_branches);
     TEST_RUN(test_nested);
+    TEST_RUN(test_no_files);
     TEST_RUN(test_refusals);
     TEST_RUN(test_owner_killed);
     /* no process of ours is left: every copy and branch reaped */
