@@ -15,7 +15,8 @@
 #include "core/mem.h"
 #include "core/units.h"
 #include "geom/geo.h"
-#include "run/run.h"
+#include "run/encounter_record.h"
+#include "run/records.h"
 
 struct fw_records {
     const fw_scenario *s;
@@ -392,26 +393,8 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     kb_json(f, s, ind);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {
-        const fw_encounter *x = &e[i];
-        fprintf(f, "%s\n%s    {", i ? "," : "", ind);
-        str(f, "id", x->id);
-        fprintf(f, ", ");
-        str(f, "type", x->type);
-        fprintf(f, ", \"situation\": \"%s\", \"t_detect_s\": %.1f, \"dcpa_m\": %.1f, "
-                   "\"tcpa_s\": %.1f, \"threat\": %s, ",
-                fw_situation_name(x->situation), x->t_detect, x->dcpa0, x->tcpa0,
-                x->threat ? "true" : "false");
-        fprintf(f, "\"t_act_s\": ");
-        num(f, "%.1f", x->t_act);
-        fprintf(f, ", \"act_side\": \"%s\", \"act_helm_deg\": %.1f, \"primary\": %s, "
-                   "\"min_distance_m\": %.1f, \"t_min_s\": %.1f, \"min_domain_ratio\": %.3f, "
-                   "\"domain_entered\": %s, \"collision\": %s, \"colregs_ok\": %s, \"min_hull_m\": ",
-                fw_side_name(x->act_side), fw_rad_to_deg(fabs(x->act_helm)),
-                x->primary ? "true" : "false", x->min_dist, x->t_min, x->min_lambda,
-                x->domain_entered ? "true" : "false", x->collision ? "true" : "false",
-                x->colregs_ok ? "true" : "false");
-        num(f, "%.1f", x->min_hull);
-        fputc('}', f);
+        fprintf(f, "%s\n%s    ", i ? "," : "", ind);
+        fw_enc_json(f, &e[i]);
     }
     fprintf(f, "%s]\n%s}", n ? "\n  " : "", ind);
 }
@@ -470,20 +453,9 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
     FILE *f = open_in(r->dir, "encounters.csv", err);
     if (!f)
         return FW_ERUN;
-    fprintf(f, "id,type,length_m,breadth_m,situation,t_detect_s,dcpa_m,tcpa_s,threat,t_act_s,"
-               "act_side,act_helm_deg,primary,min_distance_m,t_min_s,min_domain_ratio,"
-               "domain_entered,collision,colregs_ok,min_hull_m\n");
-    for (int i = 0; i < r->n; i++) {
-        const fw_encounter *e = &r->e[i];
-        fprintf(f, "%s,%s,%.1f,%.1f,%s,%.1f,%.1f,%.1f,%d,", e->id, e->type, e->length, e->breadth,
-                fw_situation_name(e->situation), e->t_detect, e->dcpa0, e->tcpa0, e->threat);
-        num(f, "%.1f", e->t_act);
-        fprintf(f, ",%s,%.1f,%d,%.1f,%.1f,%.3f,%d,%d,%d,", fw_side_name(e->act_side),
-                fw_rad_to_deg(fabs(e->act_helm)), e->primary, e->min_dist, e->t_min,
-                e->min_lambda, e->domain_entered, e->collision, e->colregs_ok);
-        num(f, "%.1f", e->min_hull);
-        fputc('\n', f);
-    }
+    fw_enc_csv_header(f);
+    for (int i = 0; i < r->n; i++)
+        fw_enc_csv_row(f, &r->e[i]);
     if (fclose(f) != 0)
         return fw_fail(err, FW_ERUN, "cannot write %s/encounters.csv", r->dir);
     f = open_in(r->dir, "summary.json", err);
