@@ -15,14 +15,15 @@
  * step 16 fill ships that had left come back and ships jump up to 659 m
  * sideways (lane changes in progress are not saved), where the forked copy's
  * ships are where the original's are to the last bit for the next 600 s.
- * Costs here (bench_snapshot, the base scenario): a snapshot 0.8-1.3 ms, 0.13-
- * 0.17 of a simulated minute; a restore 2.4-2.7 ms beyond the minutes the
- * branch simulates on a quiet host, 6-8 ms on a busy one (its fork, the files
- * put back, about 250 page faults), 0.4-1.1 simulated minutes.  A paused copy's memory is the pages the original changes
- * after it.  And the rest
- * of a run (the vessels' ARKODE integrators, controllers, reactions, monitors,
- * records, the libsumo range read's file-scope state) would each need its own
- * save and load; a fork copies them all at once and cannot forget one.
+ * And the rest of a run (the vessels' ARKODE integrators, controllers,
+ * reactions, monitors, records, the libsumo range read's file-scope state)
+ * would each need its own save and load; a fork copies them all at once and
+ * cannot forget one.  Costs here (bench_snapshot, the base scenario): a
+ * snapshot 0.8-1.3 ms, 0.13-0.17 of a simulated minute; a restore 2.4-2.7 ms
+ * beyond the minutes the branch simulates on a quiet host, 6-8 ms on a busy
+ * one (its fork, the files put back, about 250 page faults), 0.4-1.1
+ * simulated minutes.  A paused copy's memory is the pages the original
+ * changes after it.
  *
  * What is saved (everything in this process's memory, by construction):
  *   the vessels (states, MMG/Nomoto dynamics and their ARKODE integrators with
@@ -78,6 +79,8 @@
  *     fw_snapshot *snap;
  *     fw_run_snapshot(run, &snap, &err);
  *     if (!snap) { ... the branch: step to the end, close the run, _exit(code) }
+ *         (_exit, not exit: atexit handlers and leak checks belong to the
+ *         original, whose memory the branch holds a copy of)
  *     ... the original goes on; to continue from the snapshot instead:
  *     fw_run_restore(run, snap, 0, &code, &err);   (run discarded: do not use it)
  *     fw_snapshot_free(snap);
