@@ -243,6 +243,15 @@ static int full_write(int fd, const void *buf, size_t n)
     return 0;
 }
 
+/* SIGPIPE ignored (writing to a closed pipe an error instead); the action it
+ * had into *old, for sigaction(SIGPIPE, old, NULL) to put back. */
+static void ignore_sigpipe(struct sigaction *old)
+{
+    struct sigaction ign = {.sa_handler = SIG_IGN};
+    sigemptyset(&ign.sa_mask);
+    sigaction(SIGPIPE, &ign, old);
+}
+
 static int exit_code(int status)
 {
     return WIFEXITED(status) ? WEXITSTATUS(status)
@@ -255,9 +264,8 @@ static int exit_code(int status)
 static uint32_t serve(fw_snapshot *s)
 {
     /* a dead owner must not kill the copy mid-answer before it reaps */
-    struct sigaction ign = {.sa_handler = SIG_IGN}, old;
-    sigemptyset(&ign.sa_mask);
-    sigaction(SIGPIPE, &ign, &old);
+    struct sigaction old;
+    ignore_sigpipe(&old);
     for (;;) {
         uint32_t branch;
         if (full_read(s->cmd, &branch, sizeof branch) != 0)
@@ -379,9 +387,8 @@ fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_c
      * the snapshot's offsets, or files of its own) the restored copy undoes */
     fw_run_discard(r);
     /* a copy that has gone (killed) closes the pipe: an error, not SIGPIPE */
-    struct sigaction ign = {.sa_handler = SIG_IGN}, old;
-    sigemptyset(&ign.sa_mask);
-    sigaction(SIGPIPE, &ign, &old);
+    struct sigaction old;
+    ignore_sigpipe(&old);
     int code, bad = full_write(s->cmd, &branch, sizeof branch) != 0 ||
                     full_read(s->reply, &code, sizeof code) != 0;
     sigaction(SIGPIPE, &old, NULL);
