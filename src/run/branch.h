@@ -23,7 +23,7 @@
  * beyond the minutes the branch simulates on a quiet host, 6-8 ms on a busy
  * one (its fork, the files put back, about 250 page faults), 0.4-1.1
  * simulated minutes.  A paused copy's memory is the pages the original
- * changes after it.
+ * changes after it: 228 pages (0.9 MB) over the next ten simulated minutes.
  *
  * What is saved (everything in this process's memory, by construction):
  *   the vessels (states, MMG/Nomoto dynamics and their ARKODE integrators with
