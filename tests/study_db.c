@@ -17,7 +17,9 @@ sqlite3 *sdb_create(const char *path, const char *schema_version)
         sqlite3_close(db);
         return NULL;
     }
-    if (sdb_exec(db, "%s", FW_SCHEMA_SQL) ||
+    char schema[8192];
+    if (fw_schema_sql(schema, sizeof schema) >= (int)sizeof schema ||
+        sdb_exec(db, "%s", schema) ||
         sdb_exec(db, "INSERT INTO meta VALUES('schema_version', '%s'), ('study_name', 'synthetic'), "
                      "('near_miss_m', '200')",
                  schema_version)) {

@@ -1,6 +1,6 @@
 /* study_db.h - synthetic study databases for the report tests.
  *
- * Built with the real schema (FW_SCHEMA_SQL), so a change of the contract
+ * Built with the real schema (fw_schema_sql), so a change of the contract
  * shows up here.  The hand database's report numbers are worked out in
  * test_report.c; the random one is a plausible study for the plots and the
  * command-line tests (make_study_db writes any of them to a file).

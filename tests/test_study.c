@@ -1,5 +1,6 @@
 /* test_study.c - study files, the run list (common random numbers), run
  * outcomes as bytes, and the database's one-transaction commits. */
+#define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <sqlite3.h>
 #include <stdlib.h>
@@ -115,10 +116,11 @@ static fw_outcome sample(int run_id)
     o.n_enc = 2;
     o.enc = calloc(2, sizeof *o.enc);
     for (int i = 0; i < 2; i++) {
-        snprintf(o.enc[i].target, sizeof o.enc[i].target, "east.%d", i);
-        snprintf(o.enc[i].situation, sizeof o.enc[i].situation, "head-on");
-        o.enc[i].min_dist = 400.0 + i;
-        o.enc[i].t_act = i ? NAN : 12.0;
+        snprintf(o.enc[i].e.id, sizeof o.enc[i].e.id, "east.%d", i);
+        o.enc[i].e.situation = FW_SIT_HEAD_ON;
+        o.enc[i].e.min_dist = 400.0 + i;
+        o.enc[i].e.acted = i == 0;
+        o.enc[i].e.t_act = i ? NAN : 12.0;
     }
     o.n_traffic = 1;
     o.traffic = calloc(1, sizeof *o.traffic);
@@ -138,8 +140,8 @@ static void test_outcome_bytes(void)
     CHECK(fw_outcome_pack(&o, &buf, &n, &err) == FW_OK);
     CHECK(fw_outcome_unpack(buf, n, &back, &err) == FW_OK);
     CHECK(back.run_id == 3 && back.n_enc == 2 && back.n_traffic == 1);
-    CHECK(strcmp(back.enc[1].target, "east.1") == 0 && isnan(back.enc[1].t_act));
-    CHECK(back.enc[0].t_act == 12.0 && back.traffic[0].dcpa0 == 250.0);
+    CHECK(strcmp(back.enc[1].e.id, "east.1") == 0 && isnan(back.enc[1].e.t_act));
+    CHECK(back.enc[0].e.t_act == 12.0 && back.traffic[0].dcpa0 == 250.0);
     fw_outcome_free(&back);
     /* a short or padded message is refused, never read past its end */
     CHECK(fw_outcome_unpack(buf, n - 1, &back, &err) == FW_ERUN);
@@ -211,6 +213,140 @@ static void test_store(void)
     unlink(wal);
 }
 
+/* An encounter with a value in every field (an action to starboard, helm
+ * signed -20 deg... as the book keeps it, the hulls never within 1 nm). */
+static fw_encounter full_encounter(void)
+{
+    fw_encounter e = {.length = 182.5, .breadth = 32.25, .situation = FW_SIT_GIVE_WAY,
+                      .t_detect = 31.5, .dcpa0 = 123.44, .tcpa0 = 456.7, .threat = true,
+                      .acted = true, .t_act = 40.0, .act_side = FW_SIDE_STARBOARD,
+                      .act_helm = -0.3490658503988659, .primary = true, .min_dist = 812.3,
+                      .t_min = 600.0, .min_lambda = 0.8734, .domain_entered = true,
+                      .colregs_ok = true, .min_hull = INFINITY, .cand_miss = 0.0};
+    snprintf(e.id, sizeof e.id, "ais.366123");
+    snprintf(e.type, sizeof e.type, "tanker");
+    e.audit = (fw_audit_result){.rule = 15, .role = FW_ROLE_GIVE_WAY, .risk = true,
+                                .t_risk = 10.0, .tcpa_risk = 300.0, .acted = true,
+                                .tcpa_act = 250.0, .course_change = 0.5, .speed_change = 0.125,
+                                .early = true, .phase = 0, .compliant = -1};
+    snprintf(e.audit.note, sizeof e.audit.note, "not substantial");
+    return e;
+}
+
+/* The CSV row's cell under `name` in the header. */
+static const char *cell(char *const *head, char *const *row, int n, const char *name)
+{
+    for (int i = 0; i < n; i++)
+        if (strcmp(head[i], name) == 0)
+            return row[i];
+    return "(none)";
+}
+
+static int split(char *line, char **out, int max)
+{
+    int n = 0;
+    for (char *p = strtok(line, ",\n"); p && n < max; p = strtok(NULL, ",\n"))
+        out[n++] = p;
+    return n;
+}
+
+/* One encounter record (run/encounter_record.h): encounters.csv's columns and
+ * summary.json's keys are the table's, and a row of the database read back
+ * column by column is the record (a non-finite number NULL). */
+static void test_encounter_record(void)
+{
+    fw_encounter e = full_encounter();
+    char *buf = NULL, *head[64], *row[64];
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    fw_enc_csv_header(f);
+    fw_enc_csv_row(f, &e);
+    fclose(f);
+    char *nl = strchr(buf, '\n');
+    *nl = '\0';
+    int nh = split(buf, head, 64), nr = split(nl + 1, row, 64), nf;
+    const fw_enc_field *fl = fw_enc_fields(&nf);
+    int ncsv = 0;
+    for (int i = 0; i < nf; i++)
+        if (fl[i].flags & FW_ENC_CSV)
+            CHECK(fw_enc_csv_column(fl[i].name) == ncsv++);
+    CHECK(nh == 20 && nr == nh && ncsv == nh && strcmp(head[0], "id") == 0);
+    CHECK(strcmp(cell(head, row, nh, "act_helm_deg"), "20.0") == 0);   /* unsigned in files */
+    CHECK(strcmp(cell(head, row, nh, "min_hull_m"), "null") == 0);
+    CHECK(strcmp(cell(head, row, nh, "min_domain_ratio"), "0.873") == 0);
+    CHECK(strcmp(cell(head, row, nh, "situation"), "crossing give-way") == 0);
+    CHECK(strcmp(cell(head, row, nh, "threat"), "1") == 0);
+    CHECK(strcmp(cell(head, row, nh, "length_m"), "182.5") == 0);
+    free(buf);
+    f = open_memstream(&buf, &len);
+    fw_enc_json(f, &e);
+    fclose(f);
+    CHECK(strncmp(buf, "{\"id\": \"ais.366123\", \"type\": \"tanker\", \"situation\": ", 52) == 0);
+    CHECK(strstr(buf, "\"threat\": true, \"t_act_s\": 40.0, \"act_side\": \"starboard\", "
+                      "\"act_helm_deg\": 20.0, \"primary\": true") != NULL);
+    CHECK(strstr(buf, "\"min_hull_m\": null}") != NULL && !strstr(buf, "length_m"));
+    free(buf);
+
+    char path[] = "/tmp/fw-test-record-XXXXXX";
+    int fd = mkstemp(path);
+    close(fd);
+    unlink(path);
+    fw_study *s = load("tests/data/study/small.yaml");
+    fw_store *st = NULL;
+    fw_error err = {0};
+    CHECK_MSG(fw_store_open(path, s, &st, &err) == FW_OK, "%s", err.msg);
+    fw_outcome o = sample(6);
+    o.enc[0] = (fw_outcome_encounter){.e = e, .v = {.near_miss = 0, .outcome = "domain"}};
+    CHECK_MSG(fw_store_commit(st, s, &o, &err) == FW_OK, "%s", err.msg);
+    fw_store_close(st);
+    sqlite3 *db = NULL;
+    CHECK(sqlite3_open(path, &db) == SQLITE_OK);
+    int checked = 0;
+    for (int i = 0; i < nf; i++) {
+        if (!(fl[i].flags & FW_ENC_SQL))
+            continue;
+        char sql[200];
+        snprintf(sql, sizeof sql, "SELECT %s FROM encounters WHERE run_id = 6 AND target = "
+                                  "'ais.366123'", fl[i].sql);
+        sqlite3_stmt *q = NULL;
+        if (sqlite3_prepare_v2(db, sql, -1, &q, NULL) != SQLITE_OK || sqlite3_step(q) != SQLITE_ROW) {
+            CHECK_MSG(false, "%s: %s", sql, sqlite3_errmsg(db));
+            sqlite3_finalize(q);
+            continue;
+        }
+        fw_enc_value v = {0};
+        fl[i].get(&o.enc[0].e, &o.enc[0].v, true, &v);
+        int type = sqlite3_column_type(q, 0);
+        if (v.null || (fl[i].type == FW_ENC_REAL && !isfinite(v.num)))
+            CHECK_MSG(type == SQLITE_NULL, "%s not NULL", fl[i].sql);
+        else if (fl[i].type == FW_ENC_TEXT)
+            CHECK_MSG(type == SQLITE_TEXT &&
+                          strcmp((const char *)sqlite3_column_text(q, 0), v.text) == 0,
+                      "%s: '%s' against '%s'", fl[i].sql, sqlite3_column_text(q, 0), v.text);
+        else if (fl[i].type == FW_ENC_REAL)
+            CHECK_MSG(type == SQLITE_FLOAT && sqlite3_column_double(q, 0) == v.num, "%s", fl[i].sql);
+        else
+            CHECK_MSG(type == SQLITE_INTEGER && sqlite3_column_int(q, 0) == (int)v.num, "%s",
+                      fl[i].sql);
+        checked++;
+        sqlite3_finalize(q);
+    }
+    CHECK(checked == 34);
+    /* the database's helm is signed, the audit's course change in degrees */
+    CHECK(count(db, "SELECT COUNT(*) FROM encounters WHERE act_helm_deg < -19.99 AND "
+                    "act_helm_deg > -20.01 AND compliant IS NULL AND candidate = 1 AND "
+                    "min_hull_m IS NULL AND outcome = 'domain'") == 1);
+    sqlite3_close(db);
+    fw_outcome_free(&o);
+    free(s);
+    char wal[64];
+    unlink(path);
+    snprintf(wal, sizeof wal, "%s-wal", path);
+    unlink(wal);
+    snprintf(wal, sizeof wal, "%s-shm", path);
+    unlink(wal);
+}
+
 int main(void)
 {
     TEST_RUN(test_run_list);
@@ -218,5 +354,6 @@ int main(void)
     TEST_RUN(test_run_list_shapes);
     TEST_RUN(test_outcome_bytes);
     TEST_RUN(test_store);
+    TEST_RUN(test_encounter_record);
     return TEST_EXIT();
 }

@@ -186,3 +186,20 @@ void fw_enc_json(FILE *f, const fw_encounter *e)
         }
     fputc('}', f);
 }
+
+int fw_enc_sql_table(char *buf, size_t n)
+{
+    static const char *const decl[] = {[FW_ENC_TEXT] = "TEXT", [FW_ENC_REAL] = "REAL",
+                                       [FW_ENC_FLAG] = "INTEGER", [FW_ENC_INT] = "INTEGER"};
+    size_t k = 0;
+#define PUT(...) k += (size_t)snprintf(buf + (k < n ? k : n), k < n ? n - k : 0, __VA_ARGS__)
+    PUT("CREATE TABLE IF NOT EXISTS encounters(\n"
+        "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n");
+    for (int i = 0; i < NFIELDS; i++)
+        if (kFields[i].flags & FW_ENC_SQL)
+            PUT("  %s %s%s,\n", kFields[i].sql, decl[kFields[i].type],
+                kFields[i].flags & FW_ENC_NOT_NULL ? " NOT NULL" : "");
+    PUT("  PRIMARY KEY(run_id, target));\n");
+#undef PUT
+    return (int)k;
+}

@@ -3,9 +3,8 @@
  * An encounter (records.h fw_encounter: what the book kept of one target) is
  * written in three places: a row of the run's encounters.csv, an object in
  * its summary.json, and a row of a study database's encounters table
- * (study/store.c; study/schema.h declares the table, and a test checks that
- * its columns are these, in this order).  All three are made from the one
- * table below: a field's name in the run's files, its column in the database,
+ * (study/store.c; its CREATE TABLE in study/schema.h).  All three are made
+ * from the one table below: a field's name in the run's files, its column in the database,
  * its type, unit, decimals, and how its value is had from the encounter.  The
  * two shapes differ where they always did: the files carry the hull size and
  * the "primary" flag and print the helm unsigned; the database carries the
@@ -73,5 +72,10 @@ void fw_enc_csv_header(FILE *f);
 void fw_enc_csv_row(FILE *f, const fw_encounter *e);
 /* One summary.json encounter object ({...}, one line). */
 void fw_enc_json(FILE *f, const fw_encounter *e);
+
+/* The study database's "CREATE TABLE IF NOT EXISTS encounters(...);\n": run_id
+ * (the runs' key), then the fields' columns in order, keyed by (run_id,
+ * target).  Into buf as snprintf does (the length it needs). */
+int fw_enc_sql_table(char *buf, size_t n);
 
 #endif

@@ -94,30 +94,10 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
         if (!(x->min_dist < s->encounter_range || x->threat))
             continue;
         fw_outcome_encounter *y = &o->enc[o->n_enc++];
-        snprintf(y->target, sizeof y->target, "%s", x->id);
-        snprintf(y->target_type, sizeof y->target_type, "%s", x->type);
-        snprintf(y->situation, sizeof y->situation, "%s", fw_situation_name(x->situation));
-        snprintf(y->act_side, sizeof y->act_side, "%s", fw_side_name(x->act_side));
-        y->t_detect = x->t_detect;
-        y->dcpa0 = x->dcpa0;
-        y->tcpa0 = x->tcpa0;
-        y->threat = x->threat;
-        y->acted = x->acted;
-        y->t_act = x->acted ? x->t_act : NAN;
-        y->act_helm_deg = x->acted ? fw_rad_to_deg(x->act_helm) : NAN;
-        y->min_dist = x->min_dist;
-        y->t_min = x->t_min;
-        y->min_lambda = x->min_lambda;
-        y->domain_entered = x->domain_entered;
-        y->near_miss = x->min_dist < s->near_miss;
-        y->collision = x->collision;
-        y->colregs_ok = x->colregs_ok;
-        y->min_hull = isfinite(x->min_hull) ? x->min_hull : NAN;
-        y->cand_miss = x->cand_miss;
-        y->candidate = x->cand_miss == 0.0;
-        snprintf(y->outcome, sizeof y->outcome, "%s",
+        y->e = *x;
+        y->v.near_miss = x->min_dist < s->near_miss;
+        snprintf(y->v.outcome, sizeof y->v.outcome, "%s",
                  fw_outcome_ended(x->collision, x->min_hull, s->near_miss, x->domain_entered));
-        y->audit = x->audit;
     }
     return FW_OK;
 }

@@ -18,22 +18,16 @@
 #include <stddef.h>
 
 #include "core/error.h"
+#include "run/encounter_record.h"
 #include "run/run.h"
 #include "survey/monitor.h"
 #include "study/study.h"
 
+/* An own-ship encounter: the run's record (records.h; its fields written
+ * by the table of run/encounter_record.h) and the study's verdicts on it. */
 typedef struct fw_outcome_encounter {
-    char target[64], target_type[64], situation[32], act_side[16];
-    double t_detect, dcpa0, tcpa0;  /* s, m, s */
-    int threat, acted;
-    double t_act, act_helm_deg;     /* NAN when it never acted */
-    double min_dist, t_min, min_lambda;
-    int domain_entered, near_miss, collision, colregs_ok;
-    double min_hull;                /* m, NAN if never within 1 nm */
-    double cand_miss;               /* m, straight tracks from first detection */
-    int candidate;                  /* cand_miss == 0: a geometric collision candidate */
-    char outcome[16];               /* fw_outcome_ended */
-    fw_audit_result audit;          /* the COLREGs audit (audit/audit.h) */
+    fw_encounter e;
+    fw_enc_verdict v;
 } fw_outcome_encounter;
 
 typedef struct fw_outcome_traffic {

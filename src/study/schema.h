@@ -42,9 +42,13 @@
 #ifndef FW_STUDY_SCHEMA_H
 #define FW_STUDY_SCHEMA_H
 
+#include <stdio.h>
+
+#include "run/encounter_record.h"
+
 #define FW_SCHEMA_VERSION "3"
 
-#define FW_SCHEMA_SQL                                                                   \
+#define FW_SCHEMA_SQL_RUNS                                                              \
     "CREATE TABLE IF NOT EXISTS meta(\n"                                                \
     "  key TEXT PRIMARY KEY,\n"                                                         \
     "  value TEXT NOT NULL);\n"                                                         \
@@ -86,29 +90,21 @@
     "  mon_stopped INTEGER,\n"                                                          \
     "  max_lateral_mps REAL,\n"                                                         \
     "  min_hull_m REAL,\n"               /* hull to hull; NULL: none within 1 nm */      \
-    "  UNIQUE(domain_m, fore_aft_ratio, density, behaviour, replication));\n"          \
-    "CREATE TABLE IF NOT EXISTS encounters(\n"                                          \
-    "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \
-    "  target TEXT NOT NULL,\n"                                                         \
-    "  target_type TEXT NOT NULL,\n"                                                    \
-    "  situation TEXT NOT NULL,\n"                                                      \
-    "  t_detect_s REAL, dcpa0_m REAL, tcpa0_s REAL,\n"                                  \
-    "  threat INTEGER, acted INTEGER,\n"                                                \
-    "  t_act_s REAL, act_side TEXT, act_helm_deg REAL,\n"                               \
-    "  min_dist_m REAL, t_min_s REAL, min_lambda REAL,\n"                               \
-    "  domain_entered INTEGER, near_miss INTEGER, collision INTEGER,\n"                 \
-    "  colregs_ok INTEGER,\n"                                                           \
-    "  min_hull_m REAL,\n"               /* hull to hull; NULL: never within 1 nm */     \
-    "  candidate INTEGER,\n"             /* geometric collision candidate (below) */     \
-    "  cand_miss_m REAL,\n"              /* hull to hull on the straight tracks */       \
-    "  outcome TEXT,\n"                  /* collision, near miss, domain, passed */      \
-    "  rule INTEGER, role TEXT,\n"       /* the COLREGs audit (below) */                 \
-    "  t_risk_s REAL, tcpa_risk_s REAL, tcpa_act_s REAL,\n"                             \
-    "  course_change_deg REAL, speed_change REAL,\n"                                    \
-    "  early INTEGER, substantial INTEGER, rule17_phase INTEGER,\n"                     \
-    "  compliant INTEGER,\n"             /* NULL: not audited (no risk of collision) */  \
-    "  audit_note TEXT,\n"                                                              \
-    "  PRIMARY KEY(run_id, target));\n"                                                 \
+    "  UNIQUE(domain_m, fore_aft_ratio, density, behaviour, replication));\n"
+
+/* The encounters table: made from the encounter record's field table
+ * (run/encounter_record.h fw_enc_sql_table): target, target_type, situation;
+ * t_detect_s, dcpa0_m, tcpa0_s; threat, acted; t_act_s, act_side,
+ * act_helm_deg (signed, + starboard; NULL: never acted); min_dist_m, t_min_s,
+ * min_lambda; domain_entered, near_miss, collision, colregs_ok; min_hull_m
+ * (hull to hull; NULL: never within 1 nm); candidate, cand_miss_m (hull to
+ * hull on the straight tracks), outcome (collision, near miss, domain,
+ * passed); the COLREGs audit (below): rule, role, t_risk_s, tcpa_risk_s,
+ * tcpa_act_s, course_change_deg, speed_change, early, substantial,
+ * rule17_phase, compliant (NULL: not audited, no risk of collision),
+ * audit_note.  Keyed by (run_id, target). */
+
+#define FW_SCHEMA_SQL_TRAFFIC                                                           \
     "CREATE TABLE IF NOT EXISTS traffic_encounters(\n"                                  \
     "  run_id INTEGER NOT NULL REFERENCES runs(run_id),\n"                              \
     "  ship_a TEXT NOT NULL, ship_b TEXT NOT NULL,\n" /* ship_a < ship_b */             \
@@ -121,5 +117,15 @@
     "  cand_miss_m REAL,\n"                                                              \
     "  outcome TEXT,\n"                  /* collision, near miss, passed */              \
     "  PRIMARY KEY(run_id, ship_a, ship_b, t_first_s));\n"
+
+/* The whole schema into buf, as snprintf (returns the length it needs). */
+static inline int fw_schema_sql(char *buf, size_t n)
+{
+    int a = snprintf(buf, n, "%s", FW_SCHEMA_SQL_RUNS);
+    size_t k = (size_t)a < n ? (size_t)a : n;
+    a += fw_enc_sql_table(buf + k, n - k);
+    k = (size_t)a < n ? (size_t)a : n;
+    return a + snprintf(buf + k, n - k, "%s", FW_SCHEMA_SQL_TRAFFIC);
+}
 
 #endif

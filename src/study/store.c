@@ -14,6 +14,7 @@
 
 #include "core/files.h"
 #include "core/units.h"
+#include "run/encounter_record.h"
 #include "study/schema.h"
 #include "study/store.h"
 
@@ -230,13 +231,27 @@ static const char kRunSql[] =
     "mon_sideways, mon_teleport, mon_overlap, mon_appear, mon_vanish, mon_start_close, "
     "mon_stopped, max_lateral_mps, min_hull_m) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
     "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
-static const char kEncSql[] =
-    "INSERT INTO encounters(run_id, target, target_type, situation, t_detect_s, dcpa0_m, "
-    "tcpa0_s, threat, acted, t_act_s, act_side, act_helm_deg, min_dist_m, t_min_s, min_lambda, "
-    "domain_entered, near_miss, collision, colregs_ok, min_hull_m, candidate, cand_miss_m, "
-    "outcome, rule, role, t_risk_s, tcpa_risk_s, tcpa_act_s, course_change_deg, speed_change, "
-    "early, substantial, rule17_phase, compliant, audit_note) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,"
-    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
+/* INSERT INTO encounters(run_id, ...): the columns of the encounter record's
+ * table (run/encounter_record.h), in its order. */
+static fw_status enc_sql(char *sql, size_t n, fw_error *err)
+{
+    int nf;
+    const fw_enc_field *fl = fw_enc_fields(&nf);
+    size_t k = (size_t)snprintf(sql, n, "INSERT INTO encounters(run_id");
+    int cols = 1;
+    for (int i = 0; i < nf && k < n; i++)
+        if (fl[i].flags & FW_ENC_SQL) {
+            k += (size_t)snprintf(sql + k, n - k, ", %s", fl[i].sql);
+            cols++;
+        }
+    for (int i = 0; i < cols && k < n; i++)
+        k += (size_t)snprintf(sql + k, n - k, "%s", i ? ",?" : ") VALUES(?");
+    if (k + 1 >= n)
+        return fw_fail(err, FW_ERUN, "the encounters' INSERT is longer than %zu bytes", n);
+    snprintf(sql + k, n - k, ")");
+    return FW_OK;
+}
+
 static const char kTrfSql[] =
     "INSERT INTO traffic_encounters(run_id, ship_a, ship_b, type, own, t_first_s, range0_m, "
     "dcpa0_m, tcpa0_s, min_dist_m, t_min_s, min_hull_m, candidate, cand_miss_m, outcome) "
@@ -248,7 +263,12 @@ static fw_status setup(fw_store *st, const fw_study *s, fw_error *err)
     fw_status r;
     if ((r = exec(st, "BEGIN IMMEDIATE", err)))
         return r;
-    if ((r = exec(st, FW_SCHEMA_SQL, err))) {
+    char schema[8192];
+    if (fw_schema_sql(schema, sizeof schema) >= (int)sizeof schema)
+        r = fw_fail(err, FW_ERUN, "the schema is longer than %zu bytes", sizeof schema);
+    else
+        r = exec(st, schema, err);
+    if (r) {
         if (err)
             err->status = FW_EINPUT;
         r = FW_EINPUT;
@@ -307,8 +327,11 @@ fw_status fw_store_open(const char *path, const fw_study *s, fw_store **out, fw_
     }
     if ((r = setup(st, s, err)))
         goto fail;
+    char enc[2048];
+    if ((r = enc_sql(enc, sizeof enc, err)))
+        goto fail;
     if (sqlite3_prepare_v2(st->db, kRunSql, -1, &st->run, NULL) ||
-        sqlite3_prepare_v2(st->db, kEncSql, -1, &st->enc, NULL) ||
+        sqlite3_prepare_v2(st->db, enc, -1, &st->enc, NULL) ||
         sqlite3_prepare_v2(st->db, kTrfSql, -1, &st->trf, NULL)) {
         r = db_fail(st, err, "preparing statements");
         goto fail;
@@ -435,48 +458,25 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
 
 static int enc_row(sqlite3_stmt *q, int run_id, const fw_outcome_encounter *e)
 {
-    int i = 1;
+    int i = 1, nf;
+    const fw_enc_field *fl = fw_enc_fields(&nf);
     sqlite3_reset(q);
     sqlite3_clear_bindings(q);
     sqlite3_bind_int(q, i++, run_id);
-    sqlite3_bind_text(q, i++, e->target, -1, SQLITE_STATIC);
-    sqlite3_bind_text(q, i++, e->target_type, -1, SQLITE_STATIC);
-    sqlite3_bind_text(q, i++, e->situation, -1, SQLITE_STATIC);
-    bind_num(q, i++, e->t_detect);
-    bind_num(q, i++, e->dcpa0);
-    bind_num(q, i++, e->tcpa0);
-    sqlite3_bind_int(q, i++, e->threat);
-    sqlite3_bind_int(q, i++, e->acted);
-    bind_num(q, i++, e->t_act);
-    sqlite3_bind_text(q, i++, e->act_side, -1, SQLITE_STATIC);
-    bind_num(q, i++, e->act_helm_deg);
-    bind_num(q, i++, e->min_dist);
-    bind_num(q, i++, e->t_min);
-    bind_num(q, i++, e->min_lambda);
-    sqlite3_bind_int(q, i++, e->domain_entered);
-    sqlite3_bind_int(q, i++, e->near_miss);
-    sqlite3_bind_int(q, i++, e->collision);
-    sqlite3_bind_int(q, i++, e->colregs_ok);
-    bind_num(q, i++, e->min_hull);
-    sqlite3_bind_int(q, i++, e->candidate);
-    bind_num(q, i++, e->cand_miss);
-    sqlite3_bind_text(q, i++, e->outcome, -1, SQLITE_STATIC);
-    const fw_audit_result *a = &e->audit;
-    sqlite3_bind_int(q, i++, a->rule);
-    sqlite3_bind_text(q, i++, fw_audit_role_name(a->role), -1, SQLITE_STATIC);
-    bind_num(q, i++, a->t_risk);
-    bind_num(q, i++, a->tcpa_risk);
-    bind_num(q, i++, a->tcpa_act);
-    bind_num(q, i++, a->acted ? fw_rad_to_deg(a->course_change) : NAN);
-    bind_num(q, i++, a->acted ? a->speed_change : NAN);
-    sqlite3_bind_int(q, i++, a->early);
-    sqlite3_bind_int(q, i++, a->substantial);
-    sqlite3_bind_int(q, i++, a->phase);
-    if (a->compliant < 0)
-        sqlite3_bind_null(q, i++);
-    else
-        sqlite3_bind_int(q, i++, a->compliant);
-    sqlite3_bind_text(q, i++, a->note, -1, SQLITE_STATIC);
+    for (int k = 0; k < nf; k++) {
+        if (!(fl[k].flags & FW_ENC_SQL))
+            continue;
+        fw_enc_value v = {0};
+        fl[k].get(&e->e, &e->v, true, &v);
+        if (v.null)
+            sqlite3_bind_null(q, i++);
+        else if (fl[k].type == FW_ENC_TEXT)
+            sqlite3_bind_text(q, i++, v.text, -1, SQLITE_STATIC);
+        else if (fl[k].type == FW_ENC_REAL)
+            bind_num(q, i++, v.num);
+        else
+            sqlite3_bind_int(q, i++, (int)v.num);
+    }
     return sqlite3_step(q);
 }
 

@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 
 #include "core/files.h"
+#include "run/encounter_record.h"
 #include "run/run.h"
 #include "study/study.h"
 #include "yaml/yaml_tree.h"
@@ -218,11 +219,18 @@ static fw_status read_sizes(const char *path, ship_info **out, int *n, fw_error 
     if (!f)
         return fw_fail(err, FW_ERUN, "cannot read %s", path);
     char line[2048], *c[32];
+    /* the columns as the encounter record's table has them */
+    int ci = fw_enc_csv_column("id"), ct = fw_enc_csv_column("type"),
+        cl = fw_enc_csv_column("length_m"), cb = fw_enc_csv_column("breadth_m");
+    int need = 1 + ci;
+    need = need > ct + 1 ? need : ct + 1;
+    need = need > cl + 1 ? need : cl + 1;
+    need = need > cb + 1 ? need : cb + 1;
     fw_status st = FW_OK;
     if (!fgets(line, sizeof line, f))
         st = fw_fail(err, FW_ERUN, "%s: empty", path);
     while (!st && fgets(line, sizeof line, f)) {
-        if (fw_csv_split(line, c, 32) < 4)
+        if (fw_csv_split(line, c, 32) < need)
             continue;
         ship_info *p = realloc(*out, (size_t)(*n + 1) * sizeof *p);
         if (!p) {
@@ -230,10 +238,10 @@ static fw_status read_sizes(const char *path, ship_info **out, int *n, fw_error 
             break;
         }
         *out = p;
-        snprintf(p[*n].id, sizeof p[*n].id, "%s", c[0]);
-        snprintf(p[*n].type, sizeof p[*n].type, "%s", c[1]);
-        p[*n].length = atof(c[2]);
-        p[(*n)++].breadth = atof(c[3]);
+        snprintf(p[*n].id, sizeof p[*n].id, "%s", c[ci]);
+        snprintf(p[*n].type, sizeof p[*n].type, "%s", c[ct]);
+        p[*n].length = atof(c[cl]);
+        p[(*n)++].breadth = atof(c[cb]);
     }
     fclose(f);
     return st;
