@@ -339,7 +339,7 @@ static bool same_summary(const fw_run_summary *a, const fw_run_summary *b)
 
 /* A run without files (def.dir NULL: what a splitting driver would run): the
  * branch's summary is the unbranched run's, to the bit (the branch compares
- * and says so by its exit code). */
+ * and says so by its exit code), and the result it leaves reaches the owner. */
 static void test_no_files(void)
 {
     const kind *k = &kKinds[0];
@@ -366,16 +366,27 @@ static void test_no_files(void)
     CHECK_MSG(st == FW_OK, "%s", err.msg);
     if (st)
         return;
-    if (!snap) {
+    if (!snap) { /* leaves its time and steps at the end as its result */
         st = step_to(r, 1L << 40, &err);
+        double res[2] = {fw_run_time(r), (double)fw_run_steps(r)};
+        st = st ? st : fw_run_result(r, res, sizeof res, &err);
         st = fw_run_close(r, &got, &e, &ne, &err) || st;
         free(e);
         _exit(st == FW_OK && same_summary(&got, &ref) ? 0 : 7);
     }
+    double mine = 1.0;
+    CHECK(fw_run_result(r, &mine, sizeof mine, &err) == FW_EINPUT); /* not a branch */
     st = step_to(r, 600, &err);
     int code = -1;
     st = st ? st : fw_run_restore(r, snap, 0, &code, &err);
     CHECK_MSG(st == FW_OK && code == 0, "%s (exit %d: 7 = the summaries differ)", err.msg, code);
+    size_t n = 0;
+    const double *res = fw_snapshot_result(snap, &n);
+    CHECK(n == 2 * sizeof *res);
+    if (n == 2 * sizeof *res) {
+        CHECK_NEAR(res[0], scn.duration, 1e-9);
+        CHECK_NEAR(res[1], lround(scn.duration / scn.step), 0.0);
+    }
     fw_snapshot_free(snap);
 }
 

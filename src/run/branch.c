@@ -4,9 +4,11 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -21,7 +23,16 @@ typedef struct snap_open {
     char *path;
 } snap_open;
 
+/* A page shared by the owner, the paused copy and its branches: the last
+ * restored branch's result.  One branch runs at a time (restore waits), so
+ * no lock. */
+typedef struct result_box {
+    uint32_t n;
+    _Alignas(max_align_t) unsigned char data[FW_BRANCH_RESULT_MAX]; /* any type reads it */
+} result_box;
+
 struct fw_snapshot {
+    result_box *box;  /* MAP_SHARED */
     pid_t pid;        /* the paused copy */
     pid_t owner;      /* the process that took the snapshot */
     int cmd, reply;   /* to the copy: branch numbers; from it: exit codes */
@@ -325,6 +336,12 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err)
     if (!s)
         return fw_fail(err, FW_ERUN, "out of memory for a snapshot");
     s->cmd = s->reply = -1;
+    s->box = mmap(NULL, sizeof *s->box, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1,
+                  0);
+    if (s->box == MAP_FAILED) {
+        free(s);
+        return fw_fail(err, FW_ERUN, "mmap: %s", strerror(errno));
+    }
     s->t = fw_run_time(r);
     s->step = fw_run_steps(r);
     /* the buffers hold what was written before the snapshot: flushed, the
@@ -345,6 +362,7 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err)
                 close(from[k]);
         }
         free_lists(s);
+        munmap(s->box, sizeof *s->box);
         free(s);
         return st;
     }
@@ -362,9 +380,9 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err)
             fflush(stderr);
             _exit(FW_BRANCH_EXIT_REWIND);
         }
-        free_lists(s);
+        fw_run_set_branch(r, branch, s->box);
+        free_lists(s); /* the box stays mapped: the branch's result goes there */
         free(s);
-        fw_run_set_branch(r, branch);
         return FW_OK;
     }
     close(to[0]);
@@ -387,6 +405,7 @@ fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_c
      * the snapshot's offsets, or files of its own) the restored copy undoes */
     fw_run_discard(r);
     /* a copy that has gone (killed) closes the pipe: an error, not SIGPIPE */
+    s->box->n = 0;
     struct sigaction old;
     ignore_sigpipe(&old);
     int code, bad = full_write(s->cmd, &branch, sizeof branch) != 0 ||
@@ -402,6 +421,25 @@ fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_c
                        s->t, s->dir);
     *exit_code_out = code;
     return FW_OK;
+}
+
+fw_status fw_run_result(fw_run *r, const void *data, size_t n, fw_error *err)
+{
+    result_box *box = fw_run_branch_box(r);
+    if (!box)
+        return fw_fail(err, FW_EINPUT, "a result is for a branch restored from a snapshot");
+    if (n > sizeof box->data)
+        return fw_fail(err, FW_EINPUT, "a branch's result of %zu bytes is over %d", n,
+                       FW_BRANCH_RESULT_MAX);
+    memcpy(box->data, data, n);
+    box->n = (uint32_t)n;
+    return FW_OK;
+}
+
+const void *fw_snapshot_result(const fw_snapshot *s, size_t *n)
+{
+    *n = s->box->n <= sizeof s->box->data ? s->box->n : 0;
+    return s->box->data;
 }
 
 double fw_snapshot_time(const fw_snapshot *s) { return s->t; }
@@ -423,6 +461,7 @@ void fw_snapshot_free(fw_snapshot *s)
     if (s->owner == getpid() && kill(s->pid, SIGKILL) == 0)
         while (waitpid(s->pid, NULL, 0) < 0 && errno == EINTR)
             ;
+    munmap(s->box, sizeof *s->box);
     free_lists(s);
     free(s);
 }

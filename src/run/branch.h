@@ -62,8 +62,10 @@
  *   No element of the world draws yet: fw_run_branch(r) holds the number for
  *   the first that will.
  * Results: a branch's summary and encounters (fw_run_close) are in the
- *   branch's memory: the owner sees the run directory's files and the exit
- *   code, nothing else (def->survey_out is filled in the branch).
+ *   branch's memory: the owner sees the run directory's files, the exit code
+ *   and the bytes the branch leaves with fw_run_result (a page shared by the
+ *   owner, the paused copy and its branches), nothing else (def->survey_out
+ *   is filled in the branch).
  *
  * Processes.  A snapshot's copy waits for a command on a pipe from the process
  * that took it (the owner); when that pipe closes (fw_snapshot_free, or the
@@ -119,6 +121,18 @@ fw_status fw_run_snapshot(fw_run *r, fw_snapshot **out, fw_error *err);
  * gone or cannot fork. */
 fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_code,
                          fw_error *err);
+
+/* Results: a restored branch leaves up to FW_BRANCH_RESULT_MAX bytes (say a
+ * splitting score) with fw_run_result while its run is open (before
+ * fw_run_close), each call replacing the last; after
+ * fw_run_restore returns, fw_snapshot_result gives the bytes that branch left
+ * (*n = 0: none; aligned for any type), valid until the next restore or
+ * fw_snapshot_free.
+ * fw_run_result: FW_EINPUT in a run that is not a restored branch, or over
+ * the size. */
+#define FW_BRANCH_RESULT_MAX 4000
+fw_status fw_run_result(fw_run *r, const void *data, size_t n, fw_error *err);
+const void *fw_snapshot_result(const fw_snapshot *s, size_t *n);
 
 /* s's time (s) and step (as fw_run_steps counts them); its paused copy's
  * process id (for a driver that watches its processes). */

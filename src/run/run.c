@@ -50,6 +50,7 @@ struct fw_run {
     double wall0, cpu0;      /* clock and CPU s at the open */
     double t_setup, t_observe, t_loop; /* CPU s (--profile) */
     uint32_t branch;         /* branch.h: 0 unless restored from a snapshot as another */
+    void *branch_box;        /* branch.h: where a restored branch leaves its result */
 };
 
 /* The CPU clock with --profile, else 0 (no system calls). */
@@ -514,7 +515,12 @@ void fw_run_discard(fw_run *R)
 
 const char *fw_run_dir(const fw_run *R) { return R->def.dir; }
 uint32_t fw_run_branch(const fw_run *R) { return R->branch; }
-void fw_run_set_branch(fw_run *R, uint32_t branch) { R->branch = branch; }
+void fw_run_set_branch(fw_run *R, uint32_t branch, void *box)
+{
+    R->branch = branch;
+    R->branch_box = box;
+}
+void *fw_run_branch_box(const fw_run *R) { return R->branch_box; }
 
 const char *fw_run_def_unforkable(const fw_run_def *d)
 {

@@ -115,10 +115,12 @@ fw_status fw_run_close(fw_run *r, fw_run_summary *sum, fw_encounter **enc, int *
 void fw_run_discard(fw_run *r);
 const char *fw_run_dir(const fw_run *r); /* def->dir (NULL: no files) */
 /* branch.h: the branch this run is (0: not one restored as another), which
- * fairway's random streams take; set by a restore.  And why a run cannot be
- * snapshotted (NULL: it can): decided on its definition. */
+ * fairway's random streams take, and where its result goes (branch.c's); set
+ * by a restore.  And why a run cannot be snapshotted (NULL: it can): decided
+ * on its definition. */
 uint32_t fw_run_branch(const fw_run *r);
-void fw_run_set_branch(fw_run *r, uint32_t branch);
+void fw_run_set_branch(fw_run *r, uint32_t branch, void *box);
+void *fw_run_branch_box(const fw_run *r);
 const char *fw_run_unforkable(const fw_run *r);
 const char *fw_run_def_unforkable(const fw_run_def *d);
 
