@@ -16,6 +16,7 @@
 
 #include "core/files.h"
 #include "run/run.h"
+#include "world/controllers.h"
 #include "test.h"
 
 static char tmp_root[256];
@@ -239,6 +240,13 @@ static void test_no_dir(void)
     CHECK(fw_run_close(r, &sn, &en, &nn, &err) == FW_EINPUT);
     CHECK(sn.status == FW_RUN_FAILED && nn == 0 && en == NULL);
     CHECK(strcmp(sn.scenario, s.name) == 0);
+
+    /* a controller of the caller's is the run's also when the set-up fails
+     * (LeakSanitizer would see it otherwise) */
+    fw_manoeuvre_def md = {.t_act = 0.0, .helm = 0.1, .course = s.course, .alteration = 0.5};
+    CHECK(fw_manoeuvre_controller_create(&md, &ds.controller, &err) == FW_OK);
+    CHECK(fw_run_open(&ds, &r, &err) == FW_EINPUT && r && fw_run_done(r));
+    CHECK(fw_run_close(r, &sn, &en, &nn, &err) == FW_EINPUT && sn.status == FW_RUN_FAILED);
 }
 
 int main(void)
