@@ -423,10 +423,13 @@ fw_status fw_run_open(const fw_run_def *def, fw_run **out, fw_error *err)
     log_start(R);
     double t0 = tick(R);
     R->t_setup = t0 - R->cpu0;
-    if ((st = fw_world_start(R->w, err)) || (st = observe(R, 0, &R->sum, err)))
+    st = fw_world_start(R->w, err);
+    double t1 = tick(R);
+    if (st || (st = observe(R, 0, &R->sum, err)))
         fail_run(R, st, err);
-    R->t_observe += tick(R) - t0;
-    R->t_loop += tick(R) - t0;
+    double t2 = tick(R);
+    R->t_observe += t2 - t1;
+    R->t_loop += t2 - t0;
     return st;
 }
 

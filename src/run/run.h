@@ -69,7 +69,10 @@ typedef struct fw_run_def {
     bool profile;
     /* The own ship's controller in place of the scenario's avoidance policy
      * (world/controllers.h; the oracle's fixed manoeuvre): taken over by
-     * fw_run_open, also when it fails.  NULL: the policy. */
+     * fw_run_open, also when it fails.  NULL: the policy.  If it assesses
+     * nothing, the records get the run's own assessments of the targets,
+     * made as the policy makes them (the scenario's COLREGs, domain and
+     * horizon). */
     fw_controller *controller;
 } fw_run_def;
 
