@@ -72,3 +72,10 @@ fw_test(test_vessels test_vessels.c)
 target_link_libraries(test_vessels PRIVATE fairway_run)
 set_tests_properties(test_vessels PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
+# Snapshot and restore of a running run (src/run/branch.h): a run of each
+# source kind branched at three steps ends byte-identical to the unbranched one
+fw_test(test_branch test_branch.c)
+target_link_libraries(test_branch PRIVATE fairway_run)
+set_tests_properties(test_branch PROPERTIES TIMEOUT 120
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

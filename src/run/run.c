@@ -49,6 +49,8 @@ struct fw_run {
     int as_cap;
     double wall0, cpu0;      /* clock and CPU s at the open */
     double t_setup, t_observe, t_loop; /* CPU s (--profile) */
+    uint32_t branch;         /* branch.h: 0 unless restored from a snapshot as another */
+    void *branch_box;        /* branch.h: where a restored branch leaves its result */
 };
 
 /* The CPU clock with --profile, else 0 (no system calls). */
@@ -468,6 +470,19 @@ int fw_run_files(fw_run *R, FILE **files, int max)
     return R->rec ? fw_records_files(R->rec, files, max) : 0;
 }
 
+/* Everything the run holds freed but R itself (the summary's clock fields
+ * set); nothing written that was not written already. */
+static void teardown(fw_run *R)
+{
+    R->sum.sumo_s = fw_sumo_source_step_wall(R->w ? fw_world_source(R->w) : NULL);
+    fw_world_destroy(R->w);
+    fw_survey_destroy(R->sv);
+    fw_monitor_destroy(R->mon);
+    R->sum.wall_s = fw_clock_s() - R->wall0;
+    fw_records_close(R->rec);
+    free(R->as);
+}
+
 fw_status fw_run_close(fw_run *R, fw_run_summary *sum, fw_encounter **enc, int *n_enc,
                        fw_error *err)
 {
@@ -487,17 +502,38 @@ fw_status fw_run_close(fw_run *R, fw_run_summary *sum, fw_encounter **enc, int *
         if (R->def.profile)
             log_profile(R, tick(R) - t_finish, tick(R) - R->cpu0);
     }
-    R->sum.sumo_s = fw_sumo_source_step_wall(R->w ? fw_world_source(R->w) : NULL);
-    fw_world_destroy(R->w);
-    fw_survey_destroy(R->sv);
-    fw_monitor_destroy(R->mon);
-    R->sum.wall_s = fw_clock_s() - R->wall0;
-    fw_records_close(R->rec);
+    teardown(R);
     *sum = R->sum;
-    free(R->as);
     free(R);
     return st;
 }
+
+void fw_run_discard(fw_run *R)
+{
+    if (!R)
+        return;
+    teardown(R);
+    free(R);
+}
+
+const char *fw_run_dir(const fw_run *R) { return R->def.dir; }
+uint32_t fw_run_branch(const fw_run *R) { return R->branch; }
+void fw_run_set_branch(fw_run *R, uint32_t branch, void *box)
+{
+    R->branch = branch;
+    R->branch_box = box;
+}
+void *fw_run_branch_box(const fw_run *R) { return R->branch_box; }
+
+const char *fw_run_def_unforkable(const fw_run_def *d)
+{
+    bool sumo = !d->scenario->tracks[0] && d->traffic == FW_RUN_TRAFFIC_SUMO;
+    if (sumo && d->mode.kind != FW_TRAFFIC_EMBEDDED)
+        return "whose SUMO is another process (--sumo gui or remote: libtraci)";
+    return NULL;
+}
+
+const char *fw_run_unforkable(const fw_run *R) { return fw_run_def_unforkable(&R->def); }
 
 fw_status fw_run_scenario(const fw_run_def *def, fw_run_summary *sum, fw_encounter **enc,
                           int *n_enc, fw_error *err)

@@ -35,6 +35,7 @@
 #define FW_RUN_H
 
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "core/error.h"
@@ -113,6 +114,18 @@ int fw_run_files(fw_run *r, FILE **files, int max);
  * after a failure part way. */
 fw_status fw_run_close(fw_run *r, fw_run_summary *sum, fw_encounter **enc, int *n_enc,
                        fw_error *err);
+/* Frees the run and writes nothing more (branch.h: an abandoned branch). */
+void fw_run_discard(fw_run *r);
+const char *fw_run_dir(const fw_run *r); /* def->dir (NULL: no files) */
+/* branch.h: the branch this run is (0: not one restored as another), which
+ * fairway's random streams take, and where its result goes (branch.c's); set
+ * by a restore.  And why a run cannot be snapshotted (NULL: it can): decided
+ * on its definition. */
+uint32_t fw_run_branch(const fw_run *r);
+void fw_run_set_branch(fw_run *r, uint32_t branch, void *box);
+void *fw_run_branch_box(const fw_run *r);
+const char *fw_run_unforkable(const fw_run *r);
+const char *fw_run_def_unforkable(const fw_run_def *d);
 
 /* open, step until done, close: runs the scenario to its end, writing the
  * records into def->dir.  The summary is filled even when the run fails part
