@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/spawn.h"
 #include "yaml/yaml_tree.h"
 
 struct fw_yaml_edit {
@@ -476,16 +477,7 @@ out:
 
 static fw_status write_all(int fd, const char *p, size_t n)
 {
-    while (n > 0) {
-        ssize_t k = write(fd, p, n);
-        if (k < 0 && errno == EINTR)
-            continue;
-        if (k <= 0)
-            return FW_ERUN;
-        p += k;
-        n -= (size_t)k;
-    }
-    return FW_OK;
+    return fw_fd_write(fd, p, n) ? FW_ERUN : FW_OK;
 }
 
 /* The directory part of path ("." when none), malloc'd. */
