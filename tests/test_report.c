@@ -346,7 +346,7 @@ static void test_refusals(void)
     sqlite3_open(p, &db);
     sdb_exec(db, "UPDATE runs SET sim_s = NULL WHERE run_id = 3");
     sqlite3_close(db);
-    expect_refused(p, "run 3 has status ok but sim_s");
+    expect_refused(p, "table runs, row 3 (run synthetic-000003), column sim_s: missing in a finished run");
 }
 
 /* The hand database copied to NAME.db, changed by sql, and reported into the

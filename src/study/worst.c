@@ -12,6 +12,7 @@
 #include "core/files.h"
 #include "run/encounter_record.h"
 #include "run/run.h"
+#include "study/db_check.h"
 #include "study/study.h"
 #include "yaml/yaml_tree.h"
 
@@ -42,8 +43,12 @@ static fw_status select_cases(const fw_worst_def *def, char *study, size_t sz, c
                      db ? sqlite3_errmsg(db) : "cannot open");
         goto out;
     }
+    /* a tampered value would be printed as the case's distance (db_check.h) */
+    if ((st = fw_db_check(db, def->db, err)))
+        goto out;
     while (sqlite3_step(q) == SQLITE_ROW) {
         const char *k = (const char *)sqlite3_column_text(q, 0);
+        k = k ? k : "";
         const char *v = (const char *)sqlite3_column_text(q, 1);
         if (strcmp(k, "study_file") == 0)
             snprintf(study, sz, "%s", v ? v : "");
