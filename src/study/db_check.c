@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "run/encounter_record.h"
+#include "study/report_data.h"
 
 typedef enum kind { K_NUM, K_INT, K_FLAG, K_TEXT } kind;
 
@@ -100,6 +101,31 @@ static const rule enc_ranges[] = {
     {"rule", K_INT, 0, 99, 0, "a COLREGs rule"},
 };
 
+/* Text columns whose values are names the readers know (the same lists they count by). */
+typedef struct names_rule {
+    const char *table, *col;
+    const char *const *names;
+    int n;
+} names_rule;
+
+static const names_rule names_rules[] = {
+    {"encounters", "situation", fw_rep_situation_names, FW_REP_NSIT},
+    {"encounters", "outcome", fw_cand_outcomes, 4},
+    {"traffic_encounters", "type", fw_rep_type_names + 1, FW_REP_NTYPE - 1},
+    {"traffic_encounters", "outcome", fw_cand_outcomes, 4},
+};
+
+static const names_rule *names_of(const char *table, const char *col)
+{
+    for (size_t i = 0; i < sizeof names_rules / sizeof *names_rules; i++)
+        if (strcmp(names_rules[i].table, table) == 0 && strcmp(names_rules[i].col, col) == 0)
+            return &names_rules[i];
+    return NULL;
+}
+
+/* A text not among names: why (into why), or false when it is one. */
+static bool not_named(const names_rule *nr, const unsigned char *t, char *why, size_t sz);
+
 enum { MAX_ENC_RULES = 64 };
 
 /* The encounters' rules from the field table: a distance (m) >= 0, a time
@@ -155,8 +181,22 @@ static void show_text(char *buf, size_t sz, const unsigned char *t)
     snprintf(buf + k, sz - k, "'");
 }
 
-/* Why the value in column i breaks rule r (into why), or false when it keeps it. */
-static bool breaks(const rule *r, sqlite3_stmt *st, int i, int reps, char *why, size_t sz)
+static bool not_named(const names_rule *nr, const unsigned char *t, char *why, size_t sz)
+{
+    for (int j = 0; j < nr->n; j++)
+        if (strcmp(nr->names[j], (const char *)t) == 0)
+            return false;
+    char shown[64];
+    show_text(shown, sizeof shown, t);
+    size_t k = (size_t)snprintf(why, sz, "%s is not one of", shown);
+    for (int j = 0; j < nr->n && k < sz; j++)
+        k += (size_t)snprintf(why + k, sz - k, "%s %s", j ? "," : "", nr->names[j]);
+    return true;
+}
+
+/* Why the value in column i breaks rule r (names: the text's list, or NULL) (into why), or false when it keeps it. */
+static bool breaks(const rule *r, const names_rule *nr, sqlite3_stmt *st, int i, int reps,
+                   char *why, size_t sz)
 {
     int type = sqlite3_column_type(st, i);
     char shown[64];
@@ -172,7 +212,7 @@ static bool breaks(const rule *r, sqlite3_stmt *st, int i, int reps, char *why, 
     if (r->k == K_TEXT) {
         if (type != SQLITE_TEXT)
             snprintf(why, sz, "a number is not %s", r->what);
-        return type != SQLITE_TEXT;
+        return type != SQLITE_TEXT || (nr && not_named(nr, sqlite3_column_text(st, i), why, sz));
     }
     if (type == SQLITE_TEXT) {
         show_text(shown, sizeof shown, sqlite3_column_text(st, i));
@@ -222,7 +262,10 @@ static fw_status check_table(checker *C, const char *table, const rule *rules, i
         return FW_OK; /* no such table: the readers say what they miss */
     int n_col = sqlite3_column_count(st), run_col = -1;
     const rule **map = calloc((size_t)n_col, sizeof *map);
-    if (!map) {
+    const names_rule **names = calloc((size_t)n_col, sizeof *names);
+    if (!map || !names) {
+        free(map);
+        free(names);
         sqlite3_finalize(st);
         return fw_fail(C->err, FW_ERUN, "%s: out of memory", C->file);
     }
@@ -231,13 +274,14 @@ static fw_status check_table(checker *C, const char *table, const rule *rules, i
         run_col = strcmp(name, "run_id") == 0 ? i : run_col;
         for (int j = 0; j < n_rules && !map[i]; j++)
             map[i] = strcmp(rules[j].col, name) == 0 ? &rules[j] : NULL;
+        names[i] = names_of(table, name);
     }
     fw_status s = FW_OK;
     int rc;
-    char why[160];
+    char why[200];
     while (!s && (rc = sqlite3_step(st)) == SQLITE_ROW) {
         for (int i = 1; i < n_col && !s; i++) {
-            if (!map[i] || !breaks(map[i], st, i, C->reps, why, sizeof why))
+            if (!map[i] || !breaks(map[i], names[i], st, i, C->reps, why, sizeof why))
                 continue;
             char run[200] = "";
             if (run_col > 0 && sqlite3_column_type(st, run_col) == SQLITE_INTEGER)
@@ -251,6 +295,7 @@ static fw_status check_table(checker *C, const char *table, const rule *rules, i
         s = fw_fail(C->err, FW_EINPUT, "%s: cannot read table %s (%s)", C->file, table,
                     sqlite3_errmsg(C->db));
     free(map);
+    free(names);
     sqlite3_finalize(st);
     return s;
 }

@@ -11,14 +11,18 @@
  * number: text such as 'abc' or 'NaN' in a REAL column is refused, not read
  * as 0), finite, in range (distances, exposures and counts >= 0, the domain
  * > 0, counts integers below 1e9 so sums stay exact, flags 0/1, the
- * replication below meta's replications), NOT NULL where the schema says so.
+ * replication below meta's replications), NOT NULL where the schema says so,
+ * and the names the report counts by (situation, traffic type, outcome) among
+ * the ones it knows.
  * The rules for encounters come from the encounter field table
  * (run/encounter_record.h: type and unit), the others from a column table in
  * db_check.c; a column the table does not name is not checked (an older or
  * newer writer's extra), a named one the database lacks is skipped (the
  * readers say what they miss).  Not checked here: relations between rows
- * (runs.n_encounters against the rows: report warns), names such as the
- * situation (the readers refuse unknown ones) and meta's other values.
+ * (runs.n_encounters against the rows: report warns; encounters of a run that
+ * is not in runs: skipped), relations between columns (t_min_s after
+ * t_detect_s, min_hull_m <= min_dist_m), other names (behaviour, role,
+ * act_side, target_type) and meta's other values (shown as text).
  *
  * The first bad value fails with FW_EINPUT:
  *   "FILE: table encounters, row 17 (run dover-000003), column min_hull_m: -inf is not a distance"

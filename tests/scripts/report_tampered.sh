@@ -82,6 +82,13 @@ tampered "UPDATE encounters SET situation = x'00ff' WHERE rowid = 1" \
   "$enc 1 (run synthetic-000000), column situation: a blob is not text"
 tampered "UPDATE encounters SET min_hull_m = 'a' || char(10) || 'b' WHERE rowid = 1" \
   "$enc 1 (run synthetic-000000), column min_hull_m: 'a?b' is text, not a distance"
+# names the report counts by
+tampered "UPDATE encounters SET situation = 'sideways' WHERE rowid = 4" \
+  "$enc 4 (run synthetic-000000), column situation: 'sideways' is not one of head-on, overtaking, being overtaken, crossing give-way, crossing stand-on"
+tampered "UPDATE traffic_encounters SET type = 'zigzag' WHERE rowid = 1" \
+  "table traffic_encounters, row 1 (run synthetic-000000), column type: 'zigzag' is not one of head-on, overtaking, crossing"
+tampered "UPDATE encounters SET candidate = 1, outcome = 'sunk' WHERE rowid = 2" \
+  "$enc 2 (run synthetic-000000), column outcome: 'sunk' is not one of collision, near miss, domain, passed"
 # fairway worst reads the same database: refused before any run is sailed
 tampered "UPDATE encounters SET min_hull_m = -9e999 WHERE rowid = 3" \
   "$enc 3 (run synthetic-000000), column min_hull_m: -inf is not a distance" worst
