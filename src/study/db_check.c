@@ -32,6 +32,8 @@ typedef struct rule {
 /* Counts stay below 1e9 so a group's sums are exact in a double and an int64. */
 #define COUNT 0, 1e9
 #define NONNEG 0, HUGE_VAL
+/* Distances below 1e8 m (twice round the Earth): a CPA histogram's bins stay sane. */
+#define DIST 0, 1e8
 #define ANY -HUGE_VAL, HUGE_VAL
 
 static const rule runs_rules[] = {
@@ -43,19 +45,19 @@ static const rule runs_rules[] = {
     {"seed", K_INT, ANY, F_NN, "a seed"},
     {"status", K_TEXT, ANY, F_NN, "a status"},
     {"reason", K_TEXT, ANY, F_NN, "a reason"},
-    {"sim_s", K_NUM, NONNEG, 0, "a simulated time"}, /* > 0 when ok: report_load.c */
+    {"sim_s", K_NUM, 0, 1e9, 0, "a simulated time"}, /* >= 1 ms when ok: report_load.c */
     {"wall_s", K_NUM, NONNEG, 0, "a time"},
     {"sumo_s", K_NUM, NONNEG, 0, "a time"},
     {"n_encounters", K_INT, COUNT, 0, "a count"},
     {"n_actions", K_INT, COUNT, 0, "a count"},
-    {"min_dist_m", K_NUM, NONNEG, 0, "a distance"},
+    {"min_dist_m", K_NUM, DIST, 0, "a distance"},
     {"domain_entered", K_FLAG, 0, 1, 0, "a flag"},
     {"near_miss", K_FLAG, 0, 1, 0, "a flag"},
     {"collision", K_FLAG, 0, 1, 0, "a flag"},
     {"colregs_ok", K_FLAG, 0, 1, 0, "a flag"},
     {"max_helm_deg", K_NUM, ANY, 0, "an angle"},
-    {"path_length_m", K_NUM, NONNEG, 0, "a distance"},
-    {"path_lengthening_m", K_NUM, ANY, 0, "a distance"},
+    {"path_length_m", K_NUM, DIST, 0, "a distance"},
+    {"path_lengthening_m", K_NUM, -1e8, 1e8, 0, "a distance"},
     {"time_lost_s", K_NUM, ANY, 0, "a time"},
     {"rudder_work_deg_s", K_NUM, NONNEG, 0, "a rudder work"},
     {"helm_orders", K_INT, COUNT, 0, "a count"},
@@ -71,7 +73,7 @@ static const rule runs_rules[] = {
     {"mon_start_close", K_INT, COUNT, 0, "a count"},
     {"mon_stopped", K_INT, COUNT, 0, "a count"},
     {"max_lateral_mps", K_NUM, NONNEG, 0, "a speed"},
-    {"min_hull_m", K_NUM, NONNEG, 0, "a distance"},
+    {"min_hull_m", K_NUM, DIST, 0, "a distance"},
 };
 
 static const rule traffic_rules[] = {
@@ -81,14 +83,14 @@ static const rule traffic_rules[] = {
     {"type", K_TEXT, ANY, F_NN, "a type"},
     {"own", K_FLAG, 0, 1, F_NN, "a flag"},
     {"t_first_s", K_NUM, ANY, F_NN, "a time"},
-    {"range0_m", K_NUM, NONNEG, 0, "a distance"},
-    {"dcpa0_m", K_NUM, NONNEG, 0, "a distance"},
+    {"range0_m", K_NUM, DIST, 0, "a distance"},
+    {"dcpa0_m", K_NUM, DIST, 0, "a distance"},
     {"tcpa0_s", K_NUM, ANY, 0, "a time"},
-    {"min_dist_m", K_NUM, NONNEG, 0, "a distance"},
+    {"min_dist_m", K_NUM, DIST, 0, "a distance"},
     {"t_min_s", K_NUM, ANY, 0, "a time"},
-    {"min_hull_m", K_NUM, NONNEG, 0, "a distance"},
+    {"min_hull_m", K_NUM, DIST, 0, "a distance"},
     {"candidate", K_FLAG, 0, 1, 0, "a flag"},
-    {"cand_miss_m", K_NUM, NONNEG, 0, "a distance"},
+    {"cand_miss_m", K_NUM, DIST, 0, "a distance"},
     {"outcome", K_TEXT, ANY, 0, "an outcome"},
 };
 
@@ -128,7 +130,7 @@ static bool not_named(const names_rule *nr, const unsigned char *t, char *why, s
 
 enum { MAX_ENC_RULES = 64 };
 
-/* The encounters' rules from the field table: a distance (m) >= 0, a time
+/* The encounters' rules from the field table: a distance (m) in [0, 1e8], a time
  * (s) or an angle (deg) any finite number, a plain number (ratios: the
  * domain ratio, the speed change) >= 0 unless signed in the table above. */
 static int enc_rules(rule *out)
@@ -152,7 +154,7 @@ static int enc_rules(rule *out)
             break;
         case FW_ENC_REAL:
             if (strcmp(f[i].unit, "m") == 0)
-                r.lo = 0, r.what = "a distance";
+                r.lo = 0, r.hi = 1e8, r.what = "a distance";
             else if (strcmp(f[i].unit, "s") == 0)
                 r.what = "a time";
             else if (strcmp(f[i].unit, "deg") == 0)

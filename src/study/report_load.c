@@ -236,12 +236,15 @@ static fw_status read_runs(loader *L)
         r->ratio = col_num(st, 17);
         /* without its exposure a run has no rates at all: the writer broke the
          * contract (the values themselves were checked: db_check.h) */
-        if (!(r->sim_s > 0.0)) {
+        if (!(r->sim_s >= 1e-3)) { /* so a count over its hours stays finite */
+            char v[40] = "missing";
+            if (!isnan(r->sim_s))
+                snprintf(v, sizeof v, "%.15g s", r->sim_s);
             sqlite3_finalize(st);
             return fw_fail(L->err, FW_EINPUT,
                            "%s: table runs, row %lld (run %s-%06lld), column sim_s: %s in a "
-                           "finished run (status ok)", L->file, r->run_id, rep->study_name,
-                           r->run_id, isnan(r->sim_s) ? "missing" : "0");
+                           "finished run (status ok; at least 0.001 s)", L->file, r->run_id,
+                           rep->study_name, r->run_id, v);
         }
         if (r->replication + 1 > rep->n_reps)
             rep->n_reps = r->replication + 1;

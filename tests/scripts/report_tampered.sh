@@ -51,11 +51,16 @@ tampered "UPDATE encounters SET min_dist_m = 'far' WHERE rowid = 2" \
   "$enc 2 (run synthetic-000000), column min_dist_m: 'far' is text, not a distance"
 tampered "UPDATE runs SET sim_s = 'half an hour' WHERE run_id = 5" \
   "$runs 5 (run synthetic-000005), column sim_s: 'half an hour' is text, not a simulated time"
-# a finished run without its exposure
+# a finished run without its exposure, or with one so short its rates overflow
 tampered "UPDATE runs SET sim_s = 0 WHERE run_id = 5" \
-  "$runs 5 (run synthetic-000005), column sim_s: 0 in a finished run (status ok)"
+  "$runs 5 (run synthetic-000005), column sim_s: 0 s in a finished run (status ok; at least 0.001 s)"
 tampered "UPDATE runs SET sim_s = NULL WHERE run_id = 5" \
-  "$runs 5 (run synthetic-000005), column sim_s: missing in a finished run (status ok)"
+  "$runs 5 (run synthetic-000005), column sim_s: missing in a finished run"
+tampered "UPDATE runs SET sim_s = 1e-300 WHERE run_id = 5" \
+  "$runs 5 (run synthetic-000005), column sim_s: 1e-300 s in a finished run"
+# a distance no encounter can have
+tampered "UPDATE encounters SET min_dist_m = 1e300 WHERE rowid = 3" \
+  "$enc 3 (run synthetic-000000), column min_dist_m: 1e+300 is not a distance (at most 100000000)"
 # the reference domain: 0 and -300 m
 tampered "UPDATE runs SET domain_m = 0 WHERE domain_m = 100" \
   "$runs 0 (run synthetic-000000), column domain_m: 0 is not a domain size (must be > 0)"
