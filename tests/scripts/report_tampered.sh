@@ -34,9 +34,12 @@ tampered "UPDATE runs SET n_actions = -3 WHERE run_id = 2" \
   "$runs 2 (run synthetic-000002), column n_actions: -3 is not a count (must be >= 0)"
 tampered "UPDATE runs SET helm_orders = -1 WHERE run_id = 4" \
   "$runs 4 (run synthetic-000004), column helm_orders: -1 is not a count (must be >= 0)"
-# -inf and inf (9e999 is how SQL writes them); -inf in a count was UBSan's overflow
-tampered "UPDATE runs SET n_actions = -9e999 WHERE run_id = 1" \
+# -inf and inf (9e999 is how SQL writes them); -inf or 1e30 in a count of two runs
+# of a group was UBSan's signed overflow summing their events (report_stats.c)
+tampered "UPDATE runs SET n_actions = -9e999 WHERE run_id IN (1, 2)" \
   "$runs 1 (run synthetic-000001), column n_actions: -inf is not a count"
+tampered "UPDATE runs SET helm_orders = 1e30 WHERE run_id IN (1, 2)" \
+  "$runs 1 (run synthetic-000001), column helm_orders: 1e+30 is not a count (at most 1000000000)"
 tampered "UPDATE encounters SET min_dist_m = -9e999 WHERE rowid = 5" \
   "$enc 5 (run synthetic-000001), column min_dist_m: -inf is not a distance"
 tampered "UPDATE runs SET path_lengthening_m = 9e999 WHERE run_id = 0" \
