@@ -125,14 +125,38 @@ static const names_rule *names_of(const char *table, const char *col)
     return NULL;
 }
 
+/* What the message shows of a text: at most 40 characters, no control ones. */
+static void show_text(char *buf, size_t sz, const unsigned char *t)
+{
+    size_t k = 0;
+    buf[k++] = '\'';
+    for (; t && *t && k + 5 < sz && k < 41; t++)
+        buf[k++] = isprint(*t) ? (char)*t : '?';
+    if (t && *t)
+        k += (size_t)snprintf(buf + k, sz - k, "...");
+    snprintf(buf + k, sz - k, "'");
+}
+
 /* A text not among names: why (into why), or false when it is one. */
-static bool not_named(const names_rule *nr, const unsigned char *t, char *why, size_t sz);
+static bool not_named(const names_rule *nr, const unsigned char *t, char *why, size_t sz)
+{
+    for (int j = 0; j < nr->n; j++)
+        if (strcmp(nr->names[j], (const char *)t) == 0)
+            return false;
+    char shown[64];
+    show_text(shown, sizeof shown, t);
+    size_t k = (size_t)snprintf(why, sz, "%s is not one of", shown);
+    for (int j = 0; j < nr->n && k < sz; j++)
+        k += (size_t)snprintf(why + k, sz - k, "%s %s", j ? "," : "", nr->names[j]);
+    return true;
+}
 
 enum { MAX_ENC_RULES = 64 };
 
-/* The encounters' rules from the field table: a distance (m) in [0, 1e8], a time
- * (s) or an angle (deg) any finite number, a plain number (ratios: the
- * domain ratio, the speed change) >= 0 unless signed in the table above. */
+/* The encounters' rules from the field table: a distance (m) in [0, 1e8], a
+ * time (s), an angle (deg) or a plain number (the speed change) any finite
+ * number, the domain ratio >= 0, a flag 0/1, an INT a count unless
+ * enc_ranges says otherwise, text text. */
 static int enc_rules(rule *out)
 {
     int n_f, n = 0;
@@ -171,32 +195,8 @@ static int enc_rules(rule *out)
     return n;
 }
 
-/* What the message shows of a text: at most 40 characters, no control ones. */
-static void show_text(char *buf, size_t sz, const unsigned char *t)
-{
-    size_t k = 0;
-    buf[k++] = '\'';
-    for (; t && *t && k + 5 < sz && k < 41; t++)
-        buf[k++] = isprint(*t) ? (char)*t : '?';
-    if (t && *t)
-        k += (size_t)snprintf(buf + k, sz - k, "...");
-    snprintf(buf + k, sz - k, "'");
-}
-
-static bool not_named(const names_rule *nr, const unsigned char *t, char *why, size_t sz)
-{
-    for (int j = 0; j < nr->n; j++)
-        if (strcmp(nr->names[j], (const char *)t) == 0)
-            return false;
-    char shown[64];
-    show_text(shown, sizeof shown, t);
-    size_t k = (size_t)snprintf(why, sz, "%s is not one of", shown);
-    for (int j = 0; j < nr->n && k < sz; j++)
-        k += (size_t)snprintf(why + k, sz - k, "%s %s", j ? "," : "", nr->names[j]);
-    return true;
-}
-
-/* Why the value in column i breaks rule r (names: the text's list, or NULL) (into why), or false when it keeps it. */
+/* Why the value in column i breaks rule r or is not among nr's names (nr NULL:
+ * any text), into why; false when it keeps them. */
 static bool breaks(const rule *r, const names_rule *nr, sqlite3_stmt *st, int i, int reps,
                    char *why, size_t sz)
 {
