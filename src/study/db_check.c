@@ -16,7 +16,8 @@ typedef enum kind { K_NUM, K_INT, K_FLAG, K_TEXT } kind;
 enum {
     F_NN = 1,   /* NOT NULL */
     F_POS = 2,  /* strictly above lo */
-    F_REPS = 4  /* below meta's replications */
+    F_REPS = 4, /* below meta's replications */
+    F_RUNS = 8  /* below meta's runs (the study's run list) */
 };
 
 /* A column's rule: its kind, the closed range [lo, hi] (F_POS: (lo, hi]),
@@ -37,7 +38,7 @@ typedef struct rule {
 #define ANY -HUGE_VAL, HUGE_VAL
 
 static const rule runs_rules[] = {
-    {"run_id", K_INT, 0, 1e15, F_NN, "a run id"},
+    {"run_id", K_INT, 0, 1e15, F_NN | F_RUNS, "a run id"},
     {"domain_m", K_NUM, NONNEG, F_NN | F_POS, "a domain size"},
     {"fore_aft_ratio", K_NUM, NONNEG, F_POS, "a domain shape (fore-aft ratio)"},
     {"density", K_NUM, NONNEG, F_NN, "a traffic density"},
@@ -77,7 +78,7 @@ static const rule runs_rules[] = {
 };
 
 static const rule traffic_rules[] = {
-    {"run_id", K_INT, 0, 1e15, F_NN, "a run id"},
+    {"run_id", K_INT, 0, 1e15, F_NN | F_RUNS, "a run id"},
     {"ship_a", K_TEXT, ANY, F_NN, "a ship"},
     {"ship_b", K_TEXT, ANY, F_NN, "a ship"},
     {"type", K_TEXT, ANY, F_NN, "a type"},
@@ -161,7 +162,7 @@ static int enc_rules(rule *out)
 {
     int n_f, n = 0;
     const fw_enc_field *f = fw_enc_fields(&n_f);
-    out[n++] = (rule){"run_id", K_INT, 0, 1e15, F_NN, "a run id"};
+    out[n++] = (rule){"run_id", K_INT, 0, 1e15, F_NN | F_RUNS, "a run id"};
     for (int i = 0; i < n_f && n < MAX_ENC_RULES; i++) {
         if (!f[i].sql || !(f[i].flags & FW_ENC_SQL))
             continue;
@@ -197,8 +198,8 @@ static int enc_rules(rule *out)
 
 /* Why the value in column i breaks rule r or is not among nr's names (nr NULL:
  * any text), into why; false when it keeps them. */
-static bool breaks(const rule *r, const names_rule *nr, sqlite3_stmt *st, int i, int reps,
-                   char *why, size_t sz)
+static bool breaks(const rule *r, const names_rule *nr, sqlite3_stmt *st, int i,
+                   const int study[2], char *why, size_t sz)
 {
     int type = sqlite3_column_type(st, i);
     char shown[64];
@@ -230,14 +231,16 @@ static bool breaks(const rule *r, const names_rule *nr, sqlite3_stmt *st, int i,
         snprintf(why, sz, "%.15g is not %s (not an integer)", v, r->what);
         return true;
     }
-    double hi = (r->f & F_REPS) && reps > 0 ? reps - 1 : r->hi;
+    /* study[0], study[1]: meta's replications and runs (0: not recorded) */
+    int of = (r->f & F_REPS) ? study[0] : (r->f & F_RUNS) ? study[1] : 0;
+    double hi = of > 0 ? of - 1 : r->hi;
     if (!(v < r->lo || ((r->f & F_POS) && v <= r->lo) || v > hi))
         return false;
     if (r->k == K_FLAG)
         snprintf(why, sz, "%.15g is not %s (0 or 1)", v, r->what);
-    else if ((r->f & F_REPS) && reps > 0 && v > hi)
-        snprintf(why, sz, "%.15g is not %s of this study (meta says %d replications)", v, r->what,
-                 reps);
+    else if (of > 0 && v > hi)
+        snprintf(why, sz, "%.15g is not %s of this study (meta says %d %s)", v, r->what, of,
+                 (r->f & F_REPS) ? "replications" : "runs");
     else if (v > hi)
         snprintf(why, sz, "%.15g is not %s (at most %.15g)", v, r->what, hi);
     else
@@ -250,7 +253,7 @@ typedef struct checker {
     sqlite3 *db;
     const char *file;
     char study[128]; /* meta's study_name: runs are named study-%06d */
-    int reps;        /* meta's replications; 0: not recorded */
+    int study_n[2];  /* meta's replications and runs; 0: not recorded */
     fw_error *err;
 } checker;
 
@@ -283,10 +286,11 @@ static fw_status check_table(checker *C, const char *table, const rule *rules, i
     char why[200];
     while (!s && (rc = sqlite3_step(st)) == SQLITE_ROW) {
         for (int i = 1; i < n_col && !s; i++) {
-            if (!map[i] || !breaks(map[i], names[i], st, i, C->reps, why, sizeof why))
+            if (!map[i] || !breaks(map[i], names[i], st, i, C->study_n, why, sizeof why))
                 continue;
             char run[200] = "";
-            if (run_col > 0 && sqlite3_column_type(st, run_col) == SQLITE_INTEGER)
+            if (run_col > 0 && sqlite3_column_type(st, run_col) == SQLITE_INTEGER &&
+                sqlite3_column_int64(st, run_col) >= 0)
                 snprintf(run, sizeof run, " (run %s-%06lld)", C->study,
                          (long long)sqlite3_column_int64(st, run_col));
             s = fw_fail(C->err, FW_EINPUT, "%s: table %s, row %lld%s, column %s: %s", C->file,
@@ -302,12 +306,12 @@ static fw_status check_table(checker *C, const char *table, const rule *rules, i
     return s;
 }
 
-/* meta's study_name and replications (a positive whole number when there). */
+/* meta's study_name, replications and runs (positive whole numbers when there). */
 static fw_status read_meta(checker *C)
 {
     sqlite3_stmt *st;
     if (sqlite3_prepare_v2(C->db, "SELECT rowid, key, value FROM meta WHERE key IN "
-                                  "('study_name', 'replications')", -1, &st, NULL) != SQLITE_OK)
+                                  "('study_name', 'replications', 'runs')", -1, &st, NULL) != SQLITE_OK)
         return FW_OK; /* the readers refuse a database without meta */
     fw_status s = FW_OK;
     while (!s && sqlite3_step(st) == SQLITE_ROW) {
@@ -319,17 +323,19 @@ static fw_status read_meta(checker *C)
                 C->study[i] = isprint((unsigned char)v[i]) ? v[i] : '?', C->study[i + 1] = 0;
             continue;
         }
+        int reps = strcmp(k, "replications") == 0;
+        long most = reps ? 1000000 : 1000000000;
         char *end;
         long n = strtol(v, &end, 10);
-        if (end == v || *end || n < 1 || n > 1000000) {
+        if (end == v || *end || n < 1 || n > most) {
             char shown[64];
             show_text(shown, sizeof shown, (const unsigned char *)v);
             s = fw_fail(C->err, FW_EINPUT,
-                        "%s: table meta, row %lld (key replications), column value: %s is not a "
-                        "number of replications (1 to 1000000)",
-                        C->file, (long long)sqlite3_column_int64(st, 0), shown);
+                        "%s: table meta, row %lld (key %s), column value: %s is not a number of "
+                        "%s (1 to %ld)", C->file, (long long)sqlite3_column_int64(st, 0), k, shown,
+                        k, most);
         }
-        C->reps = (int)n;
+        C->study_n[reps ? 0 : 1] = (int)n;
     }
     sqlite3_finalize(st);
     return s;

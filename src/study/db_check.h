@@ -11,7 +11,8 @@
  * number: text such as 'abc' or 'NaN' in a REAL column is refused, not read
  * as 0), finite, in range (distances, exposures and counts >= 0, the domain
  * > 0, counts integers below 1e9 so sums stay exact, flags 0/1, the
- * replication below meta's replications), NOT NULL where the schema says so,
+ * replication below meta's replications, a run id below meta's runs), NOT
+ * NULL where the schema says so,
  * and the names the report counts by (situation, traffic type, outcome) among
  * the ones it knows.
  * The rules for encounters come from the encounter field table

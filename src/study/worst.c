@@ -365,7 +365,12 @@ fw_status fw_worst_export(const fw_worst_def *def, fw_worst_case *cases, int *n,
                      "sweep): its runs cannot be sailed again", file, def->db);
         goto out;
     }
-    if ((st = fw_mkdirs(def->out, "--out", err)))
+    /* a database without meta's runs was not bounded by db_check: the study is */
+    for (int k = 0; k < *n && !st; k++)
+        if (cases[k].run_id < 0 || cases[k].run_id >= fw_study_run_count(s))
+            st = fw_fail(err, FW_EINPUT, "%s: table encounters, column run_id: %d is not a run "
+                         "of %s (%d runs)", def->db, cases[k].run_id, file, fw_study_run_count(s));
+    if (st || (st = fw_mkdirs(def->out, "--out", err)))
         goto out;
     for (int k = 0; k < *n && !st; k++)
         st = export_case(def, s, &cases[k], k, scn, err);

@@ -76,6 +76,11 @@ tampered "INSERT INTO meta VALUES('replications', '3'); UPDATE runs SET replicat
   "$runs 4 (run synthetic-000004), column replication: 3 is not a replication of this study (meta says 3 replications)"
 tampered "INSERT INTO meta VALUES('replications', 'many')" \
   "table meta, row 4 (key replications), column value: 'many' is not a number of replications"
+# a run the study does not have
+tampered "INSERT INTO meta VALUES('runs', '7'); UPDATE encounters SET run_id = 9 WHERE rowid = 6" \
+  "$enc 6 (run synthetic-000009), column run_id: 9 is not a run id of this study (meta says 7 runs)"
+tampered "UPDATE encounters SET run_id = -4 WHERE rowid = 6" \
+  "$enc 6, column run_id: -4 is not a run id (must be >= 0)"
 # a boolean of 2, a count that is not whole, a count too large to sum exactly
 tampered "UPDATE encounters SET collision = 2 WHERE rowid = 6" \
   "$enc 6 (run synthetic-000001), column collision: 2 is not a flag (0 or 1)"
