@@ -93,6 +93,33 @@ static void test_long_line(void)
     unlink(path);
 }
 
+/* A byte order mark before "# Timestamp" (as an editor saves the file) is
+ * skipped; a directory named as the file is said to be one (its read failed
+ * with EISDIR, which looked like an empty file). */
+static void test_bom_and_directory(void)
+{
+    char path[] = "/tmp/fw_ais_bom_XXXXXX";
+    int fd = mkstemp(path);
+    FILE *f = fdopen(fd, "w");
+    fputs("\xEF\xBB\xBF# Timestamp,Type of mobile,MMSI,Latitude,Longitude\n"
+          "01/03/2026 12:00:00,Class A,219000001,55.0,11.0\n",
+          f);
+    fclose(f);
+    fw_ais_report r[2];
+    fw_ais_counts c;
+    fw_error err = {0};
+    int n = read_all(path, NULL, r, 2, &c, &err);
+    CHECK_MSG(n == 1 && r[0].mmsi == 219000001 && r[0].line == 2, "%d: %s", n, err.msg);
+    unlink(path);
+    char dir[] = "/tmp/fw_ais_dir_XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    CHECK(read_all(dir, NULL, r, 2, &c, &err) < 0 && err.status == FW_EINPUT);
+    char want[64];
+    snprintf(want, sizeof want, "%s: is a directory", dir);
+    CHECK_CONTAINS(err.msg, want);
+    rmdir(dir);
+}
+
 /* Another layout (US MarineCadastre-like): mapped columns, type codes, no
  * class column (the MMSI says what is a ship). */
 static void test_columns(void)
@@ -306,6 +333,7 @@ int main(void)
     snprintf(bad_rows, sizeof bad_rows, "%s/tests/data/ais/bad-rows.csv", root ? root : ".");
     TEST_RUN(test_bad_rows);
     TEST_RUN(test_long_line);
+    TEST_RUN(test_bom_and_directory);
     TEST_RUN(test_columns);
     TEST_RUN(test_times);
     TEST_RUN(test_tracks);
