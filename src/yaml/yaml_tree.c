@@ -381,7 +381,9 @@ fw_status yt_opt_number(const yt_doc *doc, const yt_node *map, const char *path,
     if (st)
         return st;
     if (v < lo || v > hi)
-        return fw_fail_at(err, doc->file, n->line, field, "%g is out of range [%g, %g]", v, lo, hi);
+        /* the number as the file has it: %g rounds 80.000001 to "80" */
+        return fw_fail_at(err, doc->file, n->line, field, "%s is out of range [%g, %g]", n->str,
+                          lo, hi);
     *out = v;
     return FW_OK;
 }
@@ -411,8 +413,8 @@ fw_status yt_opt_int(const yt_doc *doc, const yt_node *map, const char *path, co
     if (end == n->str || *end != '\0' || errno == ERANGE)
         return fw_fail_at(err, doc->file, n->line, field, "'%s' is not an integer", n->str);
     if (v < lo || v > hi)
-        return fw_fail_at(err, doc->file, n->line, field, "%ld is out of range [%ld, %ld]", v, lo,
-                          hi);
+        return fw_fail_at(err, doc->file, n->line, field, "%s is out of range [%ld, %ld]", n->str,
+                          lo, hi);
     *out = v;
     return FW_OK;
 }
