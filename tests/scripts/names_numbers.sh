@@ -37,4 +37,24 @@ cp "$FAIRWAY_DATA/tests/data/study/"*.yaml "$dir/"
 sed -i 's/^name: .*/name: ""/' "$dir/small.yaml"
 expect "small.yaml:2: name: is empty: use letters, digits, '-' or '_' \(it names the runs\)" \
   "$FAIRWAY" sweep "$dir/small.yaml" --db "$dir/runs"
+# a comma in a path SUMO reads: SUMO splits file options at commas ("network
+# file ... cannot be read"); refused naming the path, nothing left behind
+comma() { # comma PATTERN ARGS... (exit 2; the run's table header may precede)
+  local pattern=$1; shift
+  out=$("$@" 2>&1)
+  rc=$?
+  [ $rc -eq 2 ] && grep -Eq -- "$pattern" <<<"$out" || { echo "exit $rc: $* -> $out"; exit 1; }
+}
+cp "$FAIRWAY_DATA/tests/data/study/small.yaml" "$dir/small.yaml"
+comma "fairway: the run directory: '$dir/o,ut' has a comma: SUMO splits its file options at commas" \
+  "$FAIRWAY" run "$base" --out "$dir/o,ut"
+[ -z "$(ls -A "$dir/o,ut" 2>/dev/null)" ] || { echo "left in --out: $(ls -A "$dir/o,ut")"; exit 1; }
+comma "fairway: --keep: '$dir/k,eep' has a comma" \
+  "$FAIRWAY" sweep "$dir/small.yaml" --db "$dir/s.db" --keep "$dir/k,eep"
+[ ! -e "$dir/s.db" ] || { echo "the sweep began"; exit 1; }
+mkdir -p "$dir/d,ata"
+cp -r "$FAIRWAY_DATA/networks" "$FAIRWAY_DATA/scenarios" "$dir/d,ata/"
+comma "fairway: FAIRWAY_DATA: '$dir/d,ata' has a comma" \
+  env FAIRWAY_DATA="$dir/d,ata" "$FAIRWAY" run "$FAIRWAY_DATA/scenarios/traffic/dover-crossing.yaml" \
+  --out "$dir/o2"
 echo "ok: names and numbers refused as written"
