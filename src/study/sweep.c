@@ -92,6 +92,16 @@ out:
     return r;
 }
 
+/* The work directory, refused (and removed) when SUMO would split its path. */
+static fw_status work_dir(const fw_sweep_def *def, char *work, size_t n, fw_error *err)
+{
+    fw_status r = fw_sweep_workdir(def, work, n, err);
+    if (!r && (r = fw_sumo_path_check("the work directory (TMPDIR)", work, err)) &&
+        !def->keep_dir)
+        fw_remove_tree(work);
+    return r;
+}
+
 fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error *err)
 {
     memset(res, 0, sizeof *res);
@@ -108,14 +118,7 @@ fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error
         return r;
     }
     char work[1024];
-    if ((r = fw_sweep_workdir(def, work, sizeof work, err))) {
-        free(pending);
-        fw_store_close(st);
-        return r;
-    }
-    if ((r = fw_sumo_path_check("the work directory (TMPDIR)", work, err))) {
-        if (!def->keep_dir)
-            fw_remove_tree(work);
+    if ((r = work_dir(def, work, sizeof work, err))) {
         free(pending);
         fw_store_close(st);
         return r;
