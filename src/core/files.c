@@ -115,8 +115,10 @@ FILE *fw_file_begin(const char *path, char *tmp, size_t n, fw_error *err)
     bool stream = fw_file_is_stream(path);
     const char *td = getenv("TMPDIR");
     if (stream ? fw_path(tmp, n, err, "%s/fairway-out.XXXXXX", td && *td ? td : "/tmp")
-               : fw_path(tmp, n, err, "%s.tmp.XXXXXX", path))
+               : fw_path(tmp, n, err, "%s.tmp.XXXXXX", path)) {
+        tmp[0] = '\0'; /* fw_file_abort removes nothing */
         return NULL;
+    }
     int fd = mkstemp(tmp);
     FILE *f = fd >= 0 && (stream || fchmod(fd, target_mode(path)) == 0) ? fdopen(fd, "w+b")
                                                                          : NULL;

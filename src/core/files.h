@@ -51,7 +51,8 @@ bool fw_file_is_stream(const char *path);
  * PATH.tmp.XXXXXX with the mode path has (a new file: 0666 less the umask);
  * for a stream, in $TMPDIR (else /tmp).  Either way tmp names the whole
  * content written so far, for a check that reads it back before the commit.
- * NULL and FW_EINPUT "PATH: cannot write: reason" when it cannot be made. */
+ * NULL and FW_EINPUT "PATH: cannot write: reason" when it cannot be made
+ * (tmp then "", so that fw_file_abort(NULL, tmp) is always safe). */
 FILE *fw_file_begin(const char *path, char *tmp, size_t n, fw_error *err);
 
 /* Finishes it: flushes, syncs and closes f, then renames tmp to path (and
