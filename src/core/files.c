@@ -142,6 +142,21 @@ void fw_file_abort(FILE *f, const char *tmp)
         unlink(tmp);
 }
 
+FILE *fw_file_create(const char *path, fw_error *err)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) {
+        int e = errno;
+        if (fd >= 0) {
+            close(fd);
+            unlink(path);
+        }
+        fw_fail(err, FW_ERUN, "cannot create %s: %s", path, strerror(e));
+    }
+    return f;
+}
+
 /* Copies the finished temporary file f to the stream path: standard output
  * for "-", else the device opened as it is (never created or truncated). */
 static int copy_to_stream(FILE *f, const char *path)

@@ -64,6 +64,13 @@ fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *e
 /* Gives up a file begun: closes f (may be NULL), removes tmp. */
 void fw_file_abort(FILE *f, const char *tmp);
 
+/* A file written in place as a run goes (run.log, own.csv: read while the
+ * run is under way, and by a snapshot, run/branch.h), in a directory fairway
+ * has just made: created exclusively (O_CREAT|O_EXCL|O_NOFOLLOW), so a file
+ * or link already there is an error, never written through.  NULL and FW_ERUN
+ * "cannot create PATH: reason". */
+FILE *fw_file_create(const char *path, fw_error *err);
+
 /* The whole of path in a malloc'd buffer (*data, NUL-terminated, the caller
  * frees) of *n bytes; FW_ERUN "cannot read PATH: reason". */
 fw_status fw_file_read(const char *path, char **data, size_t *n, fw_error *err);

@@ -2,7 +2,8 @@
 # Outputs are never written through a symlink fairway did not make (issue 28,
 # Files): a symlink planted at the temporary name fairway used to write
 # through (OUT.tmp) or at the output itself leaves the file it points to
-# byte for byte as it was, and the output is written in its own place; "-",
+# byte for byte as it was, and the output is written in its own place
+# (manoeuvre --csv, ais tracks and demand --out, traffic --routes); "-",
 # /dev/stdout and a link to this process's standard output are written as a
 # stream and printed, never replaced by a regular file.
 set -u
@@ -41,6 +42,15 @@ for w in manoeuvre tracks demand; do
   left=$(ls -A "$dir" | grep -F "$w.out." || true)
   [ -z "$left" ] || fail "$w left $left"
 done
+
+# fairway traffic's route file (it runs in $dir: its log and run.sumocfg go there)
+ln -s "$dir/victim" "$dir/r.rou.xml" && ln -s "$dir/victim" "$dir/r.rou.xml.tmp"
+msg=$(cd "$dir" && "$FAIRWAY" traffic --network channel --ships 5 --duration 60 --every 60 \
+        --routes "$dir/r.rou.xml" 2>&1) || fail "traffic: exit $?: $msg"
+victim_intact "traffic --routes, links at r.rou.xml and r.rou.xml.tmp"
+[ -f "$dir/r.rou.xml" ] && [ ! -L "$dir/r.rou.xml" ] && grep -q "<routes>" "$dir/r.rou.xml" ||
+  fail "traffic: no route file"
+rm -f "$dir"/r.rou.xml* "$dir/run.sumocfg" "$dir/fairway-traffic.log"
 
 # streams: "-", a link of ours to the standard output, then /dev/stdout itself
 # (last: as root a regression would replace /dev/stdout, the first two catch it)
