@@ -32,3 +32,5 @@ fw_script_test(files_outdirs 0 "ok: only fairway's own files replaced" files_out
 foreach(t files_planted files_outdirs)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 endforeach()
+fw_script_test(foreign_quote 0 "ok: no line of a foreign file printed" foreign_quote.sh)
+set_tests_properties(foreign_quote PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
