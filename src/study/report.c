@@ -311,7 +311,7 @@ fw_status fw_study_report_write(const fw_study_report *rep, const fw_study_repor
         return fw_fail(err, FW_EINPUT, "%.100s...: path too long", res->out);
     rm_tree(tmp);
     if (mkdir(tmp, 0777) != 0)
-        return fw_fail(err, FW_ERUN, "cannot create %.400s", tmp);
+        return fw_fail(err, FW_ERUN, "cannot create %.400s: %s", tmp, strerror(errno));
     res->plots = FW_PLOTS_SKIPPED;
     if (fw_rep_write_csvs(rep, tmp, err)) {
         rm_tree(tmp);
