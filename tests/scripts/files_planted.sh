@@ -5,7 +5,8 @@
 # byte for byte as it was, and the output is written in its own place
 # (manoeuvre --csv, ais tracks and demand --out, traffic --routes); "-",
 # /dev/stdout and a link to this process's standard output are written as a
-# stream and printed, never replaced by a regular file.
+# stream and printed, never replaced by a regular file (manoeuvre, ais
+# tracks, identify).
 set -u
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -21,10 +22,11 @@ writer() {
     manoeuvre) "$FAIRWAY" manoeuvre turning --ship c3 --speed 20 --rudder 35 --csv "$2" ;;
     tracks) "$FAIRWAY" ais tracks "$ais" --origin 56.5,11.5 --out "$2" 2>/dev/null ;;
     demand) "$FAIRWAY" ais demand "$ais" --network channel --origin 56.5,11.5 --out "$2" ;;
+    identify) "$FAIRWAY" identify --ship c3 --speeds 10,12,14 --rudders 10,20,30 --out "$2" ;;
   esac
 }
 declare -A head=([manoeuvre]="t_s,east_m,north_m,heading_deg" [tracks]="t_s,id,east_m,north_m"
-                 [demand]="# Demand of network channel from AIS")
+                 [demand]="# Demand of network channel from AIS" [identify]="name: c3")
 for w in manoeuvre tracks demand; do
   out=$dir/$w.out
   # at the old predictable temporary name
@@ -56,7 +58,7 @@ rm -f "$dir"/r.rou.xml* "$dir/run.sumocfg" "$dir/fairway-traffic.log"
 # (last: as root a regression would replace /dev/stdout, the first two catch it)
 ln -s /proc/self/fd/1 "$dir/to-stdout"
 for out in - "$dir/to-stdout" /dev/stdout; do
-  for w in manoeuvre tracks; do
+  for w in manoeuvre tracks identify; do
     got=$(writer $w "$out" 2>&1) || fail "$w --out $out: exit $?: $got"
     grep -q "^${head[$w]}" <<<"$got" || fail "$w --out $out printed no file: $(head -c 300 <<<"$got")"
   done
