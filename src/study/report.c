@@ -256,7 +256,7 @@ static void draw_plots(const fw_study_report_def *def, const fw_study_report *re
         return;
     }
     if (pid == 0) {
-        int fd = open(logp, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+        int fd = open(logp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0) {
             dup2(fd, 1);
             dup2(fd, 2);
