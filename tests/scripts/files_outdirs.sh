@@ -3,7 +3,8 @@
 # `report --out DIR` with a file of the user's in DIR refuses it and leaves
 # DIR as it was; `worst --out DIR` with DIR/case-1 a planted symlink writes
 # nothing into, and deletes nothing from, what it points to; links planted at
-# a case's tracks.csv and scenario.yaml are replaced, never written through.
+# a case's tracks.csv and scenario.yaml are replaced, never written through;
+# `run --out DIR` refuses a DIR/NAME that is not a run directory.
 set -u
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -52,4 +53,16 @@ msg=$("$FAIRWAY" worst "$dir/w.db" --out "$dir/w" --n 1 --study "$study" 2>&1) |
 [ "$(sha256sum < "$dir/file")" = "$want" ] || fail "written through a link in case-1"
 [ -f "$dir/w/case-1/tracks.csv" ] && [ ! -L "$dir/w/case-1/tracks.csv" ] &&
   [ ! -L "$dir/w/case-1/scenario.yaml" ] || fail "case files not written in place"
+# run: DIR/NAME of the user's (a file in a directory, a link) refused before any run
+scn=$FAIRWAY_DATA/tests/data/study/base.yaml
+mkdir -p "$dir/runs/study-base" && echo mine > "$dir/runs/study-base/thesis.tex"
+msg=$("$FAIRWAY" run "$scn" --out "$dir/runs" 2>&1)
+[ $? -eq 2 ] && grep -qF "$dir/runs/study-base is not a run directory of fairway" <<<"$msg" ||
+  fail "run into a foreign DIR/NAME: $msg"
+[ "$(cat "$dir/runs/study-base/thesis.tex")" = mine ] || fail "thesis.tex lost"
+rm -r "$dir/runs/study-base" && ln -s "$dir/victim" "$dir/runs/study-base"
+msg=$("$FAIRWAY" run "$scn" --out "$dir/runs" 2>&1)
+[ $? -eq 2 ] && grep -qF "exists and is not a run directory (a symlink)" <<<"$msg" ||
+  fail "run into a link: $msg"
+[ "$(tree "$dir/victim")" = "$before" ] || fail "run changed the link's target"
 echo "ok: only fairway's own files replaced"
