@@ -341,12 +341,13 @@ static void test_refusals(void)
     sdb_exec(db, "INSERT INTO encounters(run_id, target, target_type, situation) "
                  "VALUES(1, 'x', 'cargo', 'sideways')");
     sqlite3_close(db);
-    expect_refused(p, "run 1: unknown encounter situation 'sideways'");
+    expect_refused(p, "column situation: 'sideways' is not one of head-on, overtaking, being "
+                      "overtaken, crossing give-way, crossing stand-on");
     CHECK(sdb_hand(p) == 0);
     sqlite3_open(p, &db);
     sdb_exec(db, "UPDATE runs SET sim_s = NULL WHERE run_id = 3");
     sqlite3_close(db);
-    expect_refused(p, "run 3 has status ok but sim_s");
+    expect_refused(p, "table runs, row 3 (run synthetic-000003), column sim_s: missing in a finished run");
 }
 
 /* The hand database copied to NAME.db, changed by sql, and reported into the

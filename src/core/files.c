@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "core/files.h"
+#include "core/spawn.h"
 
 static int remove_entry(const char *path, const struct stat *sb, int flag, struct FTW *ftw)
 {
@@ -174,16 +175,8 @@ static int copy_to_stream(FILE *f, const char *path)
     size_t got;
     int e = 0;
     while (!e && (got = fread(buf, 1, sizeof buf, f)) > 0)
-        for (size_t off = 0; off < got;) {
-            ssize_t w = write(fd, buf + off, got - off);
-            if (w < 0 && errno == EINTR)
-                continue;
-            if (w <= 0) {
-                e = w < 0 ? errno : EIO;
-                break;
-            }
-            off += (size_t)w;
-        }
+        if (fw_fd_write(fd, buf, got) != 0)
+            e = errno ? errno : EIO;
     if (!e && ferror(f))
         e = EIO;
     if (close(fd) != 0 && !e && errno != EINTR)

@@ -95,3 +95,23 @@ void fw_spawn_stop(pid_t pid)
     kill(pid, SIGKILL);
     waitpid(pid, NULL, 0);
 }
+
+/* The one loop behind fw_fd_read and fw_fd_write. */
+static int transfer(int fd, char *buf, size_t n, bool out)
+{
+    while (n > 0) {
+        ssize_t k = out ? write(fd, buf, n) : read(fd, buf, n);
+        if (k < 0 && errno == EINTR)
+            continue;
+        if (k <= 0)
+            return -1;
+        buf += k;
+        n -= (size_t)k;
+    }
+    return 0;
+}
+
+int fw_fd_read(int fd, void *buf, size_t n) { return transfer(fd, buf, n, false); }
+
+/* write(2) does not change buf: the cast only lets one loop serve both */
+int fw_fd_write(int fd, const void *buf, size_t n) { return transfer(fd, (char *)buf, n, true); }

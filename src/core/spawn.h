@@ -30,4 +30,10 @@ fw_status fw_spawn_run(const fw_spawn_def *def, int *exit_status, fw_error *err)
 /* SIGTERM, wait up to 3 s, then SIGKILL; always reaps.  Safe on pid <= 0. */
 void fw_spawn_stop(pid_t pid);
 
+/* All n bytes of buf read from, or written to, fd (a pipe to another process,
+ * a file), through interrupted calls and short transfers: 0, or -1 at an end
+ * of file or on an error (errno says which). */
+int fw_fd_read(int fd, void *buf, size_t n);
+int fw_fd_write(int fd, const void *buf, size_t n);
+
 #endif

@@ -86,12 +86,15 @@ static fw_status check_common(const fw_ship *ship, double speed, double rudder, 
     return FW_OK;
 }
 
-/* Starts a stepper in straight steady running at the approach speed. */
-static fw_status start_straight(const fw_ship *ship, double speed, const fw_stepper_def *def,
-                                fw_stepper **st, double *n, fw_error *err)
+/* The manoeuvre's common inputs checked, then a stepper started in straight
+ * steady running at the approach speed (*n its propeller speed). */
+static fw_status start_straight(const fw_ship *ship, double speed, double rudder, double dt,
+                                const fw_stepper_def *def, fw_stepper **st, double *n,
+                                fw_error *err)
 {
-    fw_status s = fw_mmg_propeller_for_speed(ship, speed, n, err);
-    if (s)
+    *st = NULL;
+    fw_status s = check_common(ship, speed, rudder, dt, err);
+    if (s || (s = fw_mmg_propeller_for_speed(ship, speed, n, err)))
         return s;
     if ((s = fw_stepper_create(ship, def, st, err)))
         return s;
@@ -114,11 +117,10 @@ fw_status fw_turning_run(const fw_ship *ship, const fw_turning_def *def, fw_turn
                          fw_history *hist, fw_error *err)
 {
     memset(res, 0, sizeof *res);
-    fw_status s = check_common(ship, def->speed, def->rudder, def->sample_dt, err);
-    if (s)
-        return s;
     fw_stepper *st;
-    if ((s = start_straight(ship, def->speed, &def->stepper, &st, &res->propeller, err)))
+    fw_status s = start_straight(ship, def->speed, def->rudder, def->sample_dt, &def->stepper,
+                                 &st, &res->propeller, err);
+    if (s)
         return s;
     const double side = def->rudder > 0.0 ? 1.0 : -1.0;
     res->L = ship->L;
@@ -228,13 +230,12 @@ fw_status fw_zigzag_run(const fw_ship *ship, const fw_zigzag_def *def, fw_zigzag
                         fw_history *hist, fw_error *err)
 {
     memset(res, 0, sizeof *res);
-    fw_status s = check_common(ship, def->speed, def->angle, def->sample_dt, err);
-    if (s)
-        return s;
     if (def->executes < 2)
         return fw_fail(err, FW_EINPUT, "a zig-zag needs at least 2 helm reversals");
     fw_stepper *st;
-    if ((s = start_straight(ship, def->speed, &def->stepper, &st, &res->propeller, err)))
+    fw_status s = start_straight(ship, def->speed, def->angle, def->sample_dt, &def->stepper,
+                                 &st, &res->propeller, err);
+    if (s)
         return s;
     const double a = fabs(def->angle);
     double side = def->first_side >= 0 ? 1.0 : -1.0;

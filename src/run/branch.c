@@ -16,6 +16,8 @@
 
 #include "run/branch.h"
 
+#include "core/spawn.h"
+
 /* A file of the run directory open for writing at the snapshot. */
 typedef struct snap_open {
     int fd, flags; /* descriptor and its open flags (fcntl F_GETFL) */
@@ -226,34 +228,6 @@ static fw_status rewind_files(const fw_snapshot *s, fw_error *err)
 
 /* ---- the paused copy ---- */
 
-static int full_read(int fd, void *buf, size_t n)
-{
-    size_t got = 0;
-    while (got < n) {
-        ssize_t k = read(fd, (char *)buf + got, n - got);
-        if (k < 0 && errno == EINTR)
-            continue;
-        if (k <= 0)
-            return -1;
-        got += (size_t)k;
-    }
-    return 0;
-}
-
-static int full_write(int fd, const void *buf, size_t n)
-{
-    size_t put = 0;
-    while (put < n) {
-        ssize_t k = write(fd, (const char *)buf + put, n - put);
-        if (k < 0 && errno == EINTR)
-            continue;
-        if (k <= 0)
-            return -1;
-        put += (size_t)k;
-    }
-    return 0;
-}
-
 /* SIGPIPE ignored (writing to a closed pipe an error instead); the action it
  * had into *old, for sigaction(SIGPIPE, old, NULL) to put back. */
 static void ignore_sigpipe(struct sigaction *old)
@@ -261,12 +235,6 @@ static void ignore_sigpipe(struct sigaction *old)
     struct sigaction ign = {.sa_handler = SIG_IGN};
     sigemptyset(&ign.sa_mask);
     sigaction(SIGPIPE, &ign, old);
-}
-
-static int exit_code(int status)
-{
-    return WIFEXITED(status) ? WEXITSTATUS(status)
-           : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 255;
 }
 
 /* The paused copy: forks a branch for each branch number the owner sends and
@@ -279,7 +247,7 @@ static uint32_t serve(fw_snapshot *s)
     ignore_sigpipe(&old);
     for (;;) {
         uint32_t branch;
-        if (full_read(s->cmd, &branch, sizeof branch) != 0)
+        if (fw_fd_read(s->cmd, &branch, sizeof branch) != 0)
             _exit(0);
         pid_t b = fork();
         if (b == 0) {
@@ -288,13 +256,11 @@ static uint32_t serve(fw_snapshot *s)
             sigaction(SIGPIPE, &old, NULL);
             return branch;
         }
-        int code = -1, status;
+        int code = -1;
         if (b > 0) {
-            while (waitpid(b, &status, 0) < 0 && errno == EINTR)
-                ;
-            code = exit_code(status);
+            code = fw_spawn_wait(b);
         }
-        if (full_write(s->reply, &code, sizeof code) != 0)
+        if (fw_fd_write(s->reply, &code, sizeof code) != 0)
             _exit(0);
     }
 }
@@ -408,8 +374,8 @@ fw_status fw_run_restore(fw_run *r, fw_snapshot *s, uint32_t branch, int *exit_c
     s->box->n = 0;
     struct sigaction old;
     ignore_sigpipe(&old);
-    int code, bad = full_write(s->cmd, &branch, sizeof branch) != 0 ||
-                    full_read(s->reply, &code, sizeof code) != 0;
+    int code, bad = fw_fd_write(s->cmd, &branch, sizeof branch) != 0 ||
+                    fw_fd_read(s->reply, &code, sizeof code) != 0;
     sigaction(SIGPIPE, &old, NULL);
     if (bad)
         return fw_fail(err, FW_ERUN, "the snapshot at t = %.1f s has gone", s->t);

@@ -13,6 +13,7 @@
 #include "core/files.h"
 #include "run/encounter_record.h"
 #include "run/run.h"
+#include "study/db_check.h"
 #include "study/study.h"
 #include "yaml/yaml_tree.h"
 
@@ -43,8 +44,12 @@ static fw_status select_cases(const fw_worst_def *def, char *study, size_t sz, c
                      db ? sqlite3_errmsg(db) : "cannot open");
         goto out;
     }
+    /* a tampered value would be printed as the case's distance (db_check.h) */
+    if ((st = fw_db_check(db, def->db, err)))
+        goto out;
     while (sqlite3_step(q) == SQLITE_ROW) {
         const char *k = (const char *)sqlite3_column_text(q, 0);
+        k = k ? k : "";
         const char *v = (const char *)sqlite3_column_text(q, 1);
         if (strcmp(k, "study_file") == 0)
             snprintf(study, sz, "%s", v ? v : "");
@@ -365,7 +370,12 @@ fw_status fw_worst_export(const fw_worst_def *def, fw_worst_case *cases, int *n,
                      "sweep): its runs cannot be sailed again", file, def->db);
         goto out;
     }
-    if ((st = fw_mkdirs(def->out, "--out", err)))
+    /* a database without meta's runs was not bounded by db_check: the study is */
+    for (int k = 0; k < *n && !st; k++)
+        if (cases[k].run_id < 0 || cases[k].run_id >= fw_study_run_count(s))
+            st = fw_fail(err, FW_EINPUT, "%s: table encounters, column run_id: %d is not a run "
+                         "of %s (%d runs)", def->db, cases[k].run_id, file, fw_study_run_count(s));
+    if (st || (st = fw_mkdirs(def->out, "--out", err)))
         goto out;
     for (int k = 0; k < *n && !st; k++)
         st = export_case(def, s, &cases[k], k, scn, err);

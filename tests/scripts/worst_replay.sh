@@ -34,4 +34,21 @@ sed -i "s|scenario: base.yaml|scenario: $FAIRWAY_DATA/tests/data/study/base.yaml
 msg=$("$FAIRWAY" worst "$dir/s.db" --out "$dir/x" --study "$dir/other.yaml" 2>&1)
 [ $? -eq 2 ] || fail "another study not refused: $msg"
 grep -q "not the study of" <<<"$msg" || fail "message: $msg"
+# a run the study does not have (meta's runs gone, so only the study bounds it):
+# refused before anything is sailed, not looked up past the study's run list
+cp "$dir/s.db" "$dir/t.db"
+"$PYTHON" - "$dir/t.db" <<'PY' || fail "tampering"
+import sqlite3, sys
+db = sqlite3.connect(sys.argv[1])
+(run,) = db.execute("SELECT run_id FROM encounters WHERE min_dist_m IS NOT NULL "
+                    "ORDER BY COALESCE(min_hull_m, 1e12), min_dist_m LIMIT 1").fetchone()
+db.execute("DELETE FROM meta WHERE key = 'runs'")
+db.execute("UPDATE runs SET run_id = 99 WHERE run_id = ?", (run,))
+db.execute("UPDATE encounters SET run_id = 99 WHERE run_id = ?", (run,))
+db.commit()
+PY
+msg=$("$FAIRWAY" worst "$dir/t.db" --out "$dir/y" --study "$study" 2>&1)
+[ $? -eq 2 ] || fail "a run beyond the study not refused: $msg"
+grep -q "t.db: table encounters, column run_id: 99 is not a run of .*worst.yaml" <<<"$msg" || fail "message: $msg"
+[ ! -e "$dir/y" ] || fail "worst wrote its output for a run beyond the study"
 echo "ok: worst cases replayed within 10 m"
