@@ -26,3 +26,13 @@ fw_script_test(names_numbers 0 "ok: names and numbers refused as written" names_
 foreach(t edit_line_breaks identify_out dir_inputs names_numbers)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 endforeach()
+# Hardening, round two (issue 28, Files): nothing written through a planted
+# symlink, streams printed, only fairway's own files replaced in an output
+fw_script_test(files_planted 0 "ok: nothing written through a planted link, streams printed"
+               files_planted.sh)
+fw_script_test(files_outdirs 0 "ok: only fairway's own files replaced" files_outdirs.sh)
+foreach(t files_planted files_outdirs)
+  set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+endforeach()
+fw_script_test(foreign_quote 0 "ok: no line of a foreign file printed" foreign_quote.sh)
+set_tests_properties(foreign_quote PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

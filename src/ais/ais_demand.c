@@ -230,21 +230,19 @@ fw_status fw_ais_demand_write(const fw_ais_tracks *t, const fw_ais_demand_def *d
     FILE *f = NULL;
     fw_status st;
     if ((st = fw_net_routes_load(def->network, nr, err)) ||
-        (st = passes(t, nr, def, &p, &n, res, err)) ||
-        (st = fw_path(tmp, sizeof tmp, err, "%s.tmp", path)))
+        (st = passes(t, nr, def, &p, &n, res, err)))
         goto out;
     res->n_routes = nr->demand.n;
     for (int r = 0; r < nr->demand.n; r++)
         snprintf(res->route[r], sizeof res->route[r], "%s", nr->demand.streams[r].id);
-    if (!(f = fopen(tmp, "w"))) {
-        st = fw_fail(err, FW_EINPUT, "%s: cannot write", tmp);
+    if (!(f = fw_file_begin(path, tmp, sizeof tmp, err))) {
+        st = err->status;
         goto out;
     }
     if ((st = write_file(f, t, nr, def, p, n, res, err)) || fflush(f) != 0 ||
         (st = check_written(tmp, def->network, err))) {
-        st = st ? st : fw_fail(err, FW_ERUN, "%s: cannot write", tmp);
-        fclose(f);
-        remove(tmp);
+        st = st ? st : fw_fail(err, FW_ERUN, "%s: cannot write", path);
+        fw_file_abort(f, tmp);
         goto out;
     }
     st = fw_file_commit(f, tmp, path, err);

@@ -285,8 +285,7 @@ fw_status fw_ais_tracks_write_csv(const fw_ais_tracks *t, const char *path, fw_e
         return err->status;
     fw_status st;
     if ((st = fw_ais_tracks_print_csv(t, f, err))) {
-        fclose(f);
-        remove(tmp);
+        fw_file_abort(f, tmp);
         return st;
     }
     return fw_file_commit(f, tmp, path, err);

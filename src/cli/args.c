@@ -213,6 +213,8 @@ fw_status fw_check_out_file(const char *opt, const char *path, bool replace, fw_
     struct stat sb;
     if (!path[0])
         return fw_fail(err, FW_EINPUT, "%s: empty path", opt);
+    if (fw_file_is_stream(path))
+        return FW_OK; /* written as it is, not replaced (core/files.h) */
     if (stat(path, &sb) == 0) {
         if (S_ISDIR(sb.st_mode))
             return fw_fail(err, FW_EINPUT, "%s %s: is a directory, expected a file name", opt,

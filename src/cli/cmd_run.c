@@ -9,6 +9,7 @@
  * the child is stopped, its unfinished temporary directory removed, and the
  * message says which finished runs were kept.
  */
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -43,7 +44,8 @@ static void help(void)
            "(time, side, helm), largest helm, path lengthening and time lost.\n"
            "\n"
            "  --out DIR     where run directories go (default: runs); an existing\n"
-           "                DIR/NAME is replaced\n"
+           "                run directory DIR/NAME is replaced, anything else there\n"
+           "                refused\n"
            "  --sumo MODE   embedded (default, libsumo in-process), gui, or\n"
            "                remote:HOST:PORT (a sumo started with the command each run\n"
            "                writes, DIR/NAME/sumo/remote-command.txt: a run with no sumo\n"
@@ -172,6 +174,37 @@ static int parse_options(int argc, char **argv, run_opts *o, fw_error *err)
 }
 
 /* Every scenario loaded and checked, and --out made, before any run. */
+/* DIR/NAME is replaced whole by the run: only if it is not there, or is a
+ * run directory fairway made (a real directory holding its run.log or
+ * own.csv, which the run opens first), or empty.  Anything else there is the
+ * user's and is refused before any run. */
+static fw_status check_run_dir(const char *out, const char *name, fw_error *err)
+{
+    char dst[1024], p[1100];
+    struct stat sb;
+    if (fw_path(dst, sizeof dst, err, "%s/%s", out, name))
+        return err->status;
+    if (lstat(dst, &sb) != 0)
+        return FW_OK;
+    if (!S_ISDIR(sb.st_mode))
+        return fw_fail(err, FW_EINPUT, "--out: %s exists and is not a run directory (%s): "
+                       "not replacing it", dst, S_ISLNK(sb.st_mode) ? "a symlink" : "not a directory");
+    bool ours = false;
+    for (int i = 0; i < 2 && !ours; i++)
+        ours = !fw_path(p, sizeof p, NULL, "%s/%s", dst, i ? "own.csv" : "run.log") &&
+               lstat(p, &sb) == 0 && S_ISREG(sb.st_mode);
+    DIR *d = ours ? NULL : opendir(dst);
+    bool empty = true;
+    for (struct dirent *e; d && empty && (e = readdir(d));)
+        empty = strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0;
+    if (d)
+        closedir(d);
+    if (!ours && !empty)
+        return fw_fail(err, FW_EINPUT, "--out: %s is not a run directory of fairway (no run.log "
+                       "in it): not replacing it", dst);
+    return FW_OK;
+}
+
 static int load_all(run_opts *o, fw_error *err)
 {
     if (!(o->scn = calloc((size_t)o->nf, sizeof *o->scn)))
@@ -193,6 +226,9 @@ static int load_all(run_opts *o, fw_error *err)
         return fw_report((fw_fail(err, FW_EINPUT, "--out: path too long"), err));
     if (fw_mkdirs(o->out, "--out", err))
         return fw_report(err);
+    for (int i = 0; i < o->nf; i++)
+        if (check_run_dir(o->out, o->scn[i]->name, err))
+            return fw_report(err);
     for (int i = 0; i < o->nf; i++)
         fw_warn_nomoto_speed(&o->scn[i]->ship, fw_ms_to_kn(o->scn[i]->speed), o->files[i],
                              "own_ship.speed_kn");

@@ -2,6 +2,7 @@
 #define _XOPEN_SOURCE 700
 #include <stdarg.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <ftw.h>
 #include <libgen.h>
 #include <limits.h>
@@ -14,6 +15,7 @@
 #include <unistd.h>
 
 #include "core/files.h"
+#include "core/spawn.h"
 
 static int remove_entry(const char *path, const struct stat *sb, int flag, struct FTW *ftw)
 {
@@ -51,6 +53,24 @@ fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err)
     return FW_OK;
 }
 
+fw_status fw_mkdir_own(const char *path, const char *what, fw_error *err)
+{
+    if (mkdir(path, 0777) == 0)
+        return FW_OK;
+    int e = errno;
+    struct stat sb;
+    if (e != EEXIST || lstat(path, &sb) != 0)
+        return fw_fail(err, FW_EINPUT, "%s %s: cannot create the directory: %s", what, path,
+                       strerror(e));
+    if (S_ISLNK(sb.st_mode))
+        return fw_fail(err, FW_EINPUT,
+                       "%s %s: a symlink, not a directory fairway made; not writing through it",
+                       what, path);
+    if (!S_ISDIR(sb.st_mode))
+        return fw_fail(err, FW_EINPUT, "%s %s: not a directory", what, path);
+    return FW_OK;
+}
+
 fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
 {
     va_list ap;
@@ -70,26 +90,132 @@ fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err)
     return FW_OK;
 }
 
+bool fw_file_is_stream(const char *path)
+{
+    if (strcmp(path, "-") == 0 || strncmp(path, "/dev/", 5) == 0 ||
+        strncmp(path, "/proc/", 6) == 0)
+        return true;
+    struct stat sb;
+    return stat(path, &sb) == 0 && !S_ISREG(sb.st_mode) && !S_ISDIR(sb.st_mode);
+}
+
+/* The mode the finished file gets: a regular file's own (lstat: never the
+ * mode of what a symlink points to), else what fopen would give. */
+static mode_t target_mode(const char *path)
+{
+    struct stat sb;
+    if (lstat(path, &sb) == 0 && S_ISREG(sb.st_mode))
+        return sb.st_mode & 07777;
+    mode_t um = umask(0);
+    umask(um);
+    return 0666 & ~um;
+}
+
 FILE *fw_file_begin(const char *path, char *tmp, size_t n, fw_error *err)
 {
-    if (fw_path(tmp, n, err, "%s.tmp", path))
+    bool stream = fw_file_is_stream(path);
+    const char *td = getenv("TMPDIR");
+    if (stream ? fw_path(tmp, n, err, "%s/fairway-out.XXXXXX", td && *td ? td : "/tmp")
+               : fw_path(tmp, n, err, "%s.tmp.XXXXXX", path)) {
+        tmp[0] = '\0'; /* fw_file_abort removes nothing */
         return NULL;
-    FILE *f = fopen(tmp, "w");
-    if (!f)
-        fw_fail(err, FW_EINPUT, "%s: cannot write: %s", path, strerror(errno));
+    }
+    int fd = mkstemp(tmp);
+    FILE *f = fd >= 0 && (stream || fchmod(fd, target_mode(path)) == 0) ? fdopen(fd, "w+b")
+                                                                         : NULL;
+    if (!f) {
+        int e = errno;
+        if (fd >= 0) {
+            close(fd);
+            unlink(tmp);
+        }
+        tmp[0] = '\0';
+        fw_fail(err, FW_EINPUT, "%s: cannot write: %s", path, strerror(e));
+    }
     return f;
+}
+
+void fw_file_abort(FILE *f, const char *tmp)
+{
+    if (f)
+        fclose(f);
+    if (tmp && tmp[0])
+        unlink(tmp);
+}
+
+FILE *fw_file_create(const char *path, fw_error *err)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) {
+        int e = errno;
+        if (fd >= 0) {
+            close(fd);
+            unlink(path);
+        }
+        fw_fail(err, FW_ERUN, "cannot create %s: %s", path, strerror(e));
+    }
+    return f;
+}
+
+/* Copies the finished temporary file f to the stream path: standard output
+ * for "-", else the device opened as it is (never created or truncated). */
+static int copy_to_stream(FILE *f, const char *path)
+{
+    fflush(stdout);
+    int fd = strcmp(path, "-") == 0 ? dup(STDOUT_FILENO)
+                                    : open(path, O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        int e = errno;
+        if (fd >= 0)
+            close(fd);
+        return e ? e : EIO;
+    }
+    char buf[65536];
+    size_t got;
+    int e = 0;
+    while (!e && (got = fread(buf, 1, sizeof buf, f)) > 0)
+        if (fw_fd_write(fd, buf, got) != 0)
+            e = errno ? errno : EIO;
+    if (!e && ferror(f))
+        e = EIO;
+    if (close(fd) != 0 && !e && errno != EINTR)
+        e = errno;
+    return e;
+}
+
+static void sync_parent(const char *path)
+{
+    char *copy = strdup(path);
+    int dfd = copy ? open(dirname(copy), O_RDONLY | O_DIRECTORY | O_CLOEXEC) : -1;
+    if (dfd >= 0) {
+        fsync(dfd);
+        close(dfd);
+    }
+    free(copy);
 }
 
 fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err)
 {
     int bad = fflush(f) != 0 || ferror(f);
-    bad |= fsync(fileno(f)) != 0;
-    bad |= fclose(f) != 0;
+    int e = bad ? (errno ? errno : EIO) : 0;
+    if (!bad && fw_file_is_stream(path)) {
+        unlink(tmp); /* first: a reader that goes (SIGPIPE) leaves nothing behind */
+        e = copy_to_stream(f, path);
+        fclose(f);
+        return e ? fw_fail(err, FW_ERUN, "%s: write failed: %s", path, strerror(e)) : FW_OK;
+    }
+    if (!bad && fsync(fileno(f)) != 0)
+        bad = 1, e = errno;
+    if (fclose(f) != 0 && !bad)
+        bad = 1, e = errno;
+    /* rename replaces a symlink at path, never writes through it */
     if (bad || rename(tmp, path) != 0) {
-        int e = errno;
-        remove(tmp);
+        e = bad ? e : errno;
+        unlink(tmp);
         return fw_fail(err, FW_ERUN, "%s: write failed: %s", path, strerror(e));
     }
+    sync_parent(path);
     return FW_OK;
 }
 
@@ -123,25 +249,11 @@ fw_status fw_file_read(const char *path, char **data, size_t *n, fw_error *err)
 fw_status fw_file_write(const char *path, const void *data, size_t n, fw_error *err)
 {
     char tmp[PATH_MAX + 32];
-    if (snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", path) >= (int)sizeof tmp)
-        return fw_fail(err, FW_ERUN, "%s: path too long", path);
-    int fd = mkstemp(tmp);
-    FILE *f = fd >= 0 ? fdopen(fd, "wb") : NULL;
-    if (!f) {
-        int e = errno;
-        if (fd >= 0) {
-            close(fd);
-            remove(tmp);
-        }
-        return fw_fail(err, FW_ERUN, "%s: cannot write: %s", path, strerror(e));
-    }
-    /* mkstemp's 0600 would make the file private: as fopen would have it */
-    mode_t um = umask(0);
-    umask(um);
-    fchmod(fd, 0666 & ~um);
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
+    if (!f)
+        return err ? err->status : FW_EINPUT;
     if (n > 0 && fwrite(data, 1, n, f) != n) {
-        fclose(f);
-        remove(tmp);
+        fw_file_abort(f, tmp);
         return fw_fail(err, FW_ERUN, "%s: write failed", path);
     }
     return fw_file_commit(f, tmp, path, err);

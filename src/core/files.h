@@ -3,6 +3,7 @@
 #ifndef FW_FILES_H
 #define FW_FILES_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -16,6 +17,13 @@ void fw_remove_tree(const char *path);
  * what names the option or field in the error ("--out"). */
 fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err);
 
+/* Creates the directory path (its parent must exist) or accepts an existing
+ * one, but only a real directory: a symlink there, even to a directory, is
+ * refused (FW_EINPUT "WHAT PATH: a symlink, not a directory fairway made;
+ * not writing through it"), so nothing is written into or deleted from
+ * whatever a link planted in an output points to. */
+fw_status fw_mkdir_own(const char *path, const char *what, fw_error *err);
+
 /* The directory a file is to be written in: there, a directory, and ours to
  * write in.  FW_EINPUT "OPT PATH: no directory DIR" or "OPT PATH: CANNOT DIR:
  * reason" (cannot: "cannot write in", "cannot create it in"). */
@@ -26,16 +34,42 @@ fw_status fw_check_parent_dir(const char *opt, const char *path, const char *can
  * characters" when it does not fit, never a truncated path. */
 fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err);
 
-/* Starts the file path under a temporary name (PATH.tmp, into tmp of size
- * n), to be finished by fw_file_commit: NULL and FW_EINPUT "PATH: cannot
- * write: reason" when it cannot be opened. */
+/* Every file fairway writes goes through these three (and fw_file_write),
+ * so that a symlink or file planted beside an output can never be written
+ * through: the temporary name is unpredictable and created exclusively
+ * (mkstemp: O_CREAT|O_EXCL, never following a symlink), and the rename that
+ * finishes it replaces whatever is at path, a planted symlink included,
+ * without touching what that symlink points to.
+ *
+ * A stream is not replaced: "-" (standard output) and a path that is a
+ * character device, FIFO or socket, or under /dev/ or /proc/ (/dev/stdout,
+ * /dev/null), is written as it is, never created, truncated or renamed over
+ * (as root, renaming over /dev/stdout would replace the link with a file). */
+bool fw_file_is_stream(const char *path);
+
+/* Starts the file path: a temporary file (tmp, size n, its name) beside path,
+ * PATH.tmp.XXXXXX with the mode path has (a new file: 0666 less the umask);
+ * for a stream, in $TMPDIR (else /tmp).  Either way tmp names the whole
+ * content written so far, for a check that reads it back before the commit.
+ * NULL and FW_EINPUT "PATH: cannot write: reason" when it cannot be made
+ * (tmp then "", so that fw_file_abort(NULL, tmp) is always safe). */
 FILE *fw_file_begin(const char *path, char *tmp, size_t n, fw_error *err);
 
-/* Finishes a file written under a temporary name: flushes, syncs and closes
- * f, then renames tmp to path, so a reader never finds a partial file where a
- * complete one is expected.  On any failure tmp is removed and path left as
- * it was. */
+/* Finishes it: flushes, syncs and closes f, then renames tmp to path (and
+ * syncs the directory), so a reader never finds a partial file where a
+ * complete one is expected; for a stream, copies the content to it then and
+ * only then.  On any failure tmp is removed and path left as it was. */
 fw_status fw_file_commit(FILE *f, const char *tmp, const char *path, fw_error *err);
+
+/* Gives up a file begun: closes f (may be NULL), removes tmp. */
+void fw_file_abort(FILE *f, const char *tmp);
+
+/* A file written in place as a run goes (run.log, own.csv: read while the
+ * run is under way, and by a snapshot, run/branch.h), in a directory fairway
+ * has just made: created exclusively (O_CREAT|O_EXCL|O_NOFOLLOW), so a file
+ * or link already there is an error, never written through.  NULL and FW_ERUN
+ * "cannot create PATH: reason". */
+FILE *fw_file_create(const char *path, fw_error *err);
 
 /* The whole of path in a malloc'd buffer (*data, NUL-terminated, the caller
  * frees) of *n bytes; FW_ERUN "cannot read PATH: reason". */

@@ -31,10 +31,7 @@ static FILE *open_in(const char *dir, const char *name, fw_error *err)
     char path[1200];
     if (fw_path(path, sizeof path, err, "%s/%s", dir, name))
         return NULL;
-    FILE *f = fopen(path, "w");
-    if (!f)
-        fw_fail(err, FW_ERUN, "cannot write %s", path);
-    return f;
+    return fw_file_create(path, err);
 }
 
 fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *dir, fw_error *err)

@@ -130,8 +130,27 @@ static fw_status mkdirs(const char *dir, fw_error *err)
     return FW_OK;
 }
 
-/* An existing target is replaced only if it is empty or an earlier report:
- * --out pointed at the wrong directory must not cost the user its contents. */
+/* The files a report writes (report_csv.c, report_md.c, the plots of
+ * analysis/plot_study.py and its log): all a report directory may hold. */
+static bool report_file(const char *name)
+{
+    static const char *const own[] = {"report.md",   "runs.csv",     "summary.csv",
+                                      "traffic.csv", "cpa.csv",      "cpa_hist.csv",
+                                      "causation.csv", "audit.csv",  "paired.csv",
+                                      "behaviour.csv", "behaviour.png", "plot.log"};
+    for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
+        if (strcmp(name, own[i]) == 0)
+            return true;
+    for (int i = 0; i < fw_rep_n_plots; i++)
+        if (strcmp(name, fw_rep_plots[i]) == 0)
+            return true;
+    return false;
+}
+
+/* An existing target is replaced (as a whole, by a rename) only if it is
+ * empty or holds nothing but a report's own files: anything else in it, a
+ * file of the user's, a symlink or a directory, would be deleted with the old
+ * report, so the target is refused, naming the first such entry. */
 static fw_status check_target(const char *out, bool *exists, fw_error *err)
 {
     struct stat sb;
@@ -143,18 +162,21 @@ static fw_status check_target(const char *out, bool *exists, fw_error *err)
     DIR *d = opendir(out);
     if (!d)
         return fw_fail(err, FW_EINPUT, "%s: cannot read the directory", out);
-    bool empty = true, report = false;
-    for (struct dirent *e; (e = readdir(d));) {
+    fw_status st = FW_OK;
+    for (struct dirent *e; !st && (e = readdir(d));) {
         if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
             continue;
-        empty = false;
-        report |= strcmp(e->d_name, "report.md") == 0 || strcmp(e->d_name, "summary.csv") == 0;
+        char p[1400];
+        bool own = report_file(e->d_name) && fit(p, sizeof p, "%s/%s", out, e->d_name) &&
+                   lstat(p, &sb) == 0 && S_ISREG(sb.st_mode);
+        if (!own)
+            st = fw_fail(err, FW_EINPUT,
+                         "%.400s is not a fairway report directory: it holds %.200s, not a "
+                         "file of a report (not replacing it: give another --out)",
+                         out, e->d_name);
     }
     closedir(d);
-    if (!empty && !report)
-        return fw_fail(err, FW_EINPUT,
-                       "%s exists and is not a fairway report directory (not replacing it)", out);
-    return FW_OK;
+    return st;
 }
 
 /* The default directory: <db stem>-report beside the database. */
@@ -234,7 +256,7 @@ static void draw_plots(const fw_study_report_def *def, const fw_study_report *re
         return;
     }
     if (pid == 0) {
-        int fd = open(logp, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+        int fd = open(logp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0) {
             dup2(fd, 1);
             dup2(fd, 2);
@@ -289,7 +311,7 @@ fw_status fw_study_report_write(const fw_study_report *rep, const fw_study_repor
         return fw_fail(err, FW_EINPUT, "%.100s...: path too long", res->out);
     rm_tree(tmp);
     if (mkdir(tmp, 0777) != 0)
-        return fw_fail(err, FW_ERUN, "cannot create %.400s", tmp);
+        return fw_fail(err, FW_ERUN, "cannot create %.400s: %s", tmp, strerror(errno));
     res->plots = FW_PLOTS_SKIPPED;
     if (fw_rep_write_csvs(rep, tmp, err)) {
         rm_tree(tmp);

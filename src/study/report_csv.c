@@ -22,11 +22,12 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "core/files.h"
 #include "study/report_data.h"
 
 typedef struct csv {
     FILE *f;
-    char path[1100];
+    char path[1100], tmp[1120];
 } csv;
 
 static fw_status csv_open(csv *c, const char *dir, const char *name, const char *header,
@@ -34,19 +35,15 @@ static fw_status csv_open(csv *c, const char *dir, const char *name, const char 
 {
     if ((size_t)snprintf(c->path, sizeof c->path, "%s/%s", dir, name) >= sizeof c->path)
         return fw_fail(err, FW_EINPUT, "%s: path too long", dir);
-    c->f = fopen(c->path, "w");
-    if (!c->f)
-        return fw_fail(err, FW_ERUN, "cannot create %s", c->path);
+    if (!(c->f = fw_file_begin(c->path, c->tmp, sizeof c->tmp, err)))
+        return err->status;
     fprintf(c->f, "%s\n", header);
     return FW_OK;
 }
 
 static fw_status csv_close(csv *c, fw_error *err)
 {
-    int bad = ferror(c->f);
-    if (fclose(c->f) != 0 || bad)
-        return fw_fail(err, FW_ERUN, "cannot write %s", c->path);
-    return FW_OK;
+    return fw_file_commit(c->f, c->tmp, c->path, err);
 }
 
 /* ",x" to 12 significant digits, well past any interval's width; "," for NaN. */

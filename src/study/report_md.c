@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/files.h"
 #include "core/json.h"
 #include "study/report_data.h"
 
@@ -522,12 +523,12 @@ static void md_settings(FILE *f, const fw_study_report *rep)
 fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_result *res,
                           const char *dir, fw_error *err)
 {
-    char path[1100], name[256];
+    char path[1100], tmp[1120], name[256];
     if ((size_t)snprintf(path, sizeof path, "%s/report.md", dir) >= sizeof path)
         return fw_fail(err, FW_EINPUT, "%s: path too long", dir);
-    FILE *f = fopen(path, "w");
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
     if (!f)
-        return fw_fail(err, FW_ERUN, "cannot create %s", path);
+        return err->status;
     fprintf(f, "# Study report: %s\n\n",
             rep->study_name[0] ? rep->study_name : stem(rep->db, name, sizeof name));
     md_monitors(f, rep);
@@ -553,10 +554,7 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
     fprintf(f, "Tables: summary.csv (every own-ship measure, with its interval method), "
                "traffic.csv, paired.csv, behaviour.csv (colregs - blind), cpa.csv (CPA "
                "percentiles by type), cpa_hist.csv, runs.csv (per run).\n");
-    int bad = ferror(f);
-    if (fclose(f) != 0 || bad)
-        return fw_fail(err, FW_ERUN, "cannot write %s", path);
-    return FW_OK;
+    return fw_file_commit(f, tmp, path, err);
 }
 
 /* JSON */

@@ -1,6 +1,7 @@
 /* worst.c - a study's worst encounters exported as replayable scenarios (worst.h). */
 #include "study/worst.h"
 
+#include <errno.h>
 #include <inttypes.h>
 #include <math.h>
 #include <sqlite3.h>
@@ -174,10 +175,11 @@ static fw_status write_scenario(const fw_study *s, const fw_scenario *scn, const
     fw_status st = yt_load_file(s->scenario_file, &doc, err);
     if (st)
         return st;
-    FILE *f = fopen(path, "w");
+    char tmp[1300];
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
     if (!f) {
         yt_free(doc);
-        return fw_fail(err, FW_ERUN, "cannot write %s", path);
+        return err->status;
     }
     char east[40], north[40], dom[40], ratio[40], dur[40], rec[40];
     snprintf(east, sizeof east, "%.3f", scn->east);
@@ -204,9 +206,7 @@ static fw_status write_scenario(const fw_study *s, const fw_scenario *scn, const
     emit_map(f, "run", yt_get(root, "run"), run, 1);
     emit_map(f, "outputs", NULL, out, 2);
     yt_free(doc);
-    if (fclose(f) != 0)
-        return fw_fail(err, FW_ERUN, "cannot write %s", path);
-    return FW_OK;
+    return fw_file_commit(f, tmp, path, err);
 }
 
 /* ---- tracks: the re-run's targets.csv with each ship's type and size ---- */
@@ -256,7 +256,7 @@ static fw_status read_sizes(const char *path, ship_info **out, int *n, fw_error 
  * run_dir/encounters.csv (id,type,length_m,breadth_m,...) into tracks. */
 static fw_status write_tracks(const char *run_dir, const char *path, fw_error *err)
 {
-    char tp[1200], ep[1200], line[2048], *c[32];
+    char tp[1200], ep[1200], tmp[1300], line[2048], *c[32];
     ship_info *info = NULL;
     int n_info = 0;
     fw_status st;
@@ -264,9 +264,12 @@ static fw_status write_tracks(const char *run_dir, const char *path, fw_error *e
         (st = fw_path(ep, sizeof ep, err, "%s/encounters.csv", run_dir)))
         return st;
     st = read_sizes(ep, &info, &n_info, err);
-    FILE *in = st ? NULL : fopen(tp, "r"), *out = st || !in ? NULL : fopen(path, "w");
-    if (!st && (!in || !out))
-        st = fw_fail(err, FW_ERUN, "cannot read %s or write %s", tp, path);
+    FILE *in = st ? NULL : fopen(tp, "r");
+    if (!st && !in)
+        st = fw_fail(err, FW_ERUN, "cannot read %s: %s", tp, strerror(errno));
+    FILE *out = st ? NULL : fw_file_begin(path, tmp, sizeof tmp, err);
+    if (!st && !out)
+        st = err->status;
     if (!st && !fgets(line, sizeof line, in))
         st = fw_fail(err, FW_ERUN, "%s: empty", tp);
     if (!st)
@@ -283,8 +286,10 @@ static fw_status write_tracks(const char *run_dir, const char *path, fw_error *e
     }
     if (in)
         fclose(in);
-    if (out && fclose(out) != 0 && !st)
-        st = fw_fail(err, FW_ERUN, "cannot write %s", path);
+    if (out && st)
+        fw_file_abort(out, tmp);
+    else if (out)
+        st = fw_file_commit(out, tmp, path, err);
     free(info);
     return st;
 }
@@ -295,9 +300,9 @@ static fw_status write_tracks(const char *run_dir, const char *path, fw_error *e
 static fw_status sail(const fw_scenario *scn, const char *dir, const char *target,
                       fw_traffic_mode mode, double *min_dist, fw_error *err)
 {
-    fw_remove_tree(dir);
+    fw_remove_tree(dir); /* a symlink there goes, never what it points to */
     if (mkdir(dir, 0777) != 0)
-        return fw_fail(err, FW_ERUN, "cannot create %s", dir);
+        return fw_fail(err, FW_ERUN, "cannot create %s: %s", dir, strerror(errno));
     fw_run_def d = fw_default_run_def();
     d.scenario = scn;
     d.dir = dir;
@@ -324,7 +329,7 @@ static fw_status export_case(const fw_worst_def *def, const fw_study *s, fw_wors
         (st = fw_path(tracks, sizeof tracks, err, "%s/tracks.csv", c->dir)) ||
         (st = fw_path(yaml, sizeof yaml, err, "%s/scenario.yaml", c->dir)) ||
         (st = fw_path(replay, sizeof replay, err, "%s/replay", c->dir)) ||
-        (st = fw_mkdirs(c->dir, "--out", err)))
+        (st = fw_mkdir_own(c->dir, "--out", err)))
         return st;
     fw_study_run r = fw_study_run_at(s, c->run_id);
     fw_study_scenario(s, &r, scn);

@@ -4,6 +4,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -132,9 +133,10 @@ fw_status fw_demand_write(const fw_demand *d, const fw_demand_def *def, const ch
     double total = fw_demand_rate(d);
     if (def->fill > 0 && total <= 0.0)
         return fw_fail(err, FW_EINPUT, "%s: no stream with ships to fill", d->file);
-    FILE *f = fopen(path, "w");
+    char tmp[PATH_MAX + 32];
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
     if (!f)
-        return fw_fail(err, FW_ERUN, "cannot write %s: %s", path, strerror(errno));
+        return err->status;
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                "<!-- written by fairway from %s: density %g, %d initial ships, seed %lu -->\n"
                "<routes>\n",
@@ -190,7 +192,5 @@ fw_status fw_demand_write(const fw_demand *d, const fw_demand_def *def, const ch
                 rate < FW_SUMO_EXP_RATE_MIN ? "" : ")");
     }
     fprintf(f, "</routes>\n");
-    if (fclose(f) != 0)
-        return fw_fail(err, FW_ERUN, "cannot write %s: %s", path, strerror(errno));
-    return FW_OK;
+    return fw_file_commit(f, tmp, path, err);
 }

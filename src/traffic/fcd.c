@@ -78,8 +78,7 @@ fw_status fw_fcd_close(fw_fcd *d, bool keep, fw_error *err)
         fputs("</fcd-export>\n", d->f);
         st = fw_file_commit(d->f, d->tmp, d->path, err);
     } else {
-        fclose(d->f);
-        remove(d->tmp);
+        fw_file_abort(d->f, d->tmp);
     }
     free(d);
     return st;

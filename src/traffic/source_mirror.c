@@ -147,11 +147,12 @@ static fw_status build_net(const fw_mirror_def *d, char *net, size_t n, fw_error
         (st = fw_path(log, sizeof log, err, "%s/netconvert.log", d->dir)) ||
         (st = fw_path(net, n, err, "%s/mirror.net.xml", d->dir)))
         return st;
-    FILE *nf = fopen(np, "w"), *ef = nf ? fopen(ep, "w") : NULL;
+    char nt[1300], et[1300] = "";
+    FILE *nf = fw_file_begin(np, nt, sizeof nt, err);
+    FILE *ef = nf ? fw_file_begin(ep, et, sizeof et, err) : NULL;
     if (!nf || !ef) {
-        if (nf)
-            fclose(nf);
-        return fw_fail(err, FW_ERUN, "cannot write SUMO's network in %s", d->dir);
+        fw_file_abort(nf, nt);
+        return err->status;
     }
     const fw_target *o = &d->own;
     double se = sin(o->course), ce = cos(o->course), len = fmax(d->own_leg, o->speed * d->duration) + 2000.0;
@@ -166,8 +167,12 @@ static fw_status build_net(const fw_mirror_def *d, char *net, size_t n, fw_error
                 "    <edge id=\"fw_own\" from=\"fw_own_a\" to=\"fw_own_b\" numLanes=\"1\" "
                 "speed=\"30\" width=\"%.1f\" allow=\"ship\" spreadType=\"center\"/>\n</edges>\n",
             fmax(o->breadth, 10.0));
-    if ((fclose(nf) | fclose(ef)) != 0)
-        return fw_fail(err, FW_ERUN, "cannot write SUMO's network in %s", d->dir);
+    if ((st = fw_file_commit(nf, nt, np, err))) {
+        fw_file_abort(ef, et);
+        return st;
+    }
+    if ((st = fw_file_commit(ef, et, ep, err)))
+        return st;
     return fw_netconvert(d->dir, "mirror.nod.xml", "mirror.edg.xml", NULL, NULL, "mirror.net.xml",
                          log, err);
 }

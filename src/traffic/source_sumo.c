@@ -110,16 +110,18 @@ static fw_status write_tracks(const fw_sumo_source_def *d, fw_error *err)
         (st = fw_path(ep, sizeof ep, err, "%s/tracks.edg.xml", d->dir)) ||
         (st = fw_path(rp, sizeof rp, err, "%s/targets.rou.xml", d->dir)))
         return st;
-    FILE *nf = fopen(np, "w"), *ef = fopen(ep, "w"), *rf = fopen(rp, "w");
-    if (!nf || !ef || !rf) {
-        if (nf)
-            fclose(nf);
-        if (ef)
-            fclose(ef);
-        if (rf)
-            fclose(rf);
-        return fw_fail(err, FW_ERUN, "cannot write the track network in %s", d->dir);
+    const char *path[3] = {np, ep, rp};
+    char tmp[3][1300] = {{0}};
+    FILE *f[3] = {NULL, NULL, NULL};
+    for (int i = 0; i < 3 && !st; i++)
+        if (!(f[i] = fw_file_begin(path[i], tmp[i], sizeof tmp[i], err)))
+            st = err->status;
+    if (st) {
+        for (int i = 0; i < 3; i++)
+            fw_file_abort(f[i], tmp[i]);
+        return st;
     }
+    FILE *nf = f[0], *ef = f[1], *rf = f[2];
     fw_geo *geo = NULL;
     if (d->proj)
         st = fw_geo_create_proj(d->proj, d->proj_off_e, d->proj_off_n, &geo, err);
@@ -144,9 +146,11 @@ static fw_status write_tracks(const fw_sumo_source_def *d, fw_error *err)
     fprintf(nf, "</nodes>\n");
     fprintf(ef, "</edges>\n");
     fprintf(rf, "</routes>\n");
-    int bad = fclose(nf) | fclose(ef) | fclose(rf);
-    if (!st && bad)
-        st = fw_fail(err, FW_ERUN, "cannot write the track network in %s", d->dir);
+    for (int i = 0; i < 3; i++)
+        if (st)
+            fw_file_abort(f[i], tmp[i]);
+        else
+            st = fw_file_commit(f[i], tmp[i], path[i], err);
     return st;
 }
 

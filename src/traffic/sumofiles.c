@@ -64,16 +64,16 @@ fw_status fw_traffic_write_remote_command(const fw_traffic_def *d, fw_error *err
 {
     if (!d->log_file)
         return FW_OK;
-    char dir[1024], path[1100], buf[128];
+    char dir[1024], path[1100], tmp[1110], buf[128];
     sumo_dir(d, dir, sizeof dir);
     const char *argv[48];
     fw_status st;
     if ((st = fw_traffic_sumo_args(d, "sumo", d->mode.port, argv, 48, buf, sizeof buf, err)) ||
         (st = fw_path(path, sizeof path, err, "%s/remote-command.txt", dir)))
         return st;
-    FILE *f = fopen(path, "w");
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
     if (!f)
-        return fw_fail(err, FW_ERUN, "cannot write %s", path);
+        return err->status;
     fprintf(f, "# The sumo a remote run of this scenario needs (fairway run --sumo "
                "remote:%s:%d): run\n# it on %s in this directory, e.g. sh remote-command.txt, "
                "then start the run.\ncd \"$(dirname \"$0\")\" &&", d->mode.host, d->mode.port,
@@ -85,7 +85,7 @@ fw_status fw_traffic_write_remote_command(const fw_traffic_def *d, fw_error *err
         fputc('\'', f);
     }
     fputc('\n', f);
-    return fclose(f) ? fw_fail(err, FW_ERUN, "cannot write %s", path) : FW_OK;
+    return fw_file_commit(f, tmp, path, err);
 }
 
 /* Options of the run's command line that a replay must not repeat: the

@@ -2,6 +2,7 @@
 #include "yaml/yaml_edit.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <fcntl.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -10,7 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/spawn.h"
+#include "core/files.h"
 #include "yaml/yaml_tree.h"
 
 struct fw_yaml_edit {
@@ -475,37 +476,9 @@ out:
     return st;
 }
 
-static fw_status write_all(int fd, const char *p, size_t n)
-{
-    return fw_fd_write(fd, p, n) ? FW_ERUN : FW_OK;
-}
-
-/* The directory part of path ("." when none), malloc'd. */
-static char *dir_of(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    if (!slash)
-        return strdup(".");
-    size_t n = slash == path ? 1 : (size_t)(slash - path);
-    char *d = malloc(n + 1);
-    if (d) {
-        memcpy(d, path, n);
-        d[n] = '\0';
-    }
-    return d;
-}
-
-/* The new file keeps the mode of the one it replaces. */
-static mode_t target_mode(const char *path)
-{
-    struct stat sb;
-    if (stat(path, &sb) == 0)
-        return sb.st_mode & 07777;
-    mode_t mask = umask(0);
-    umask(mask);
-    return 0666 & ~mask;
-}
-
+/* Written through core/files.h's one writer: an unpredictable temporary name
+ * beside path, checked, then renamed (a stream such as /dev/stdout written as
+ * it is). */
 fw_status fw_yaml_edit_save(const fw_yaml_edit *ed, const char *path, fw_yaml_check check,
                             void *ctx, fw_error *err)
 {
@@ -514,45 +487,20 @@ fw_status fw_yaml_edit_save(const fw_yaml_edit *ed, const char *path, fw_yaml_ch
     struct stat sb;
     if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
         return fw_fail(err, FW_EINPUT, "%s: is a directory", path);
-    char *dir = dir_of(path);
-    const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
-    size_t need = (dir ? strlen(dir) : 0) + strlen(base) + 16;
-    char *tmp = dir ? malloc(need) : NULL;
-    if (!tmp) {
-        free(dir);
-        return fw_fail(err, FW_ERUN, "%s: out of memory", path);
-    }
-    snprintf(tmp, need, "%s/.%s.XXXXXX", dir, base);
+    char tmp[PATH_MAX + 32];
+    FILE *f = fw_file_begin(path, tmp, sizeof tmp, err);
+    if (!f)
+        return err->status;
     fw_status st = FW_OK;
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        st = fw_fail(err, FW_EINPUT, "%s: cannot write in %s: %s", path, dir, strerror(errno));
-        goto out;
+    if ((ed->len > 0 && fwrite(ed->text, 1, ed->len, f) != ed->len) || fflush(f) != 0)
+        st = fw_fail(err, FW_ERUN, "%s: write failed: %s", path, strerror(errno));
+    else if (check)
+        st = check(tmp, ctx, err); /* the check's message says why */
+    if (st) {
+        fw_file_abort(f, tmp);
+        return st;
     }
-    bool bad = fchmod(fd, target_mode(path)) != 0 || write_all(fd, ed->text, ed->len) ||
-               fsync(fd) != 0;
-    int saved = errno;
-    bad |= close(fd) != 0;
-    if (bad) {
-        st = fw_fail(err, FW_ERUN, "%s: write failed: %s", path, strerror(saved));
-    } else if (check && (st = check(tmp, ctx, err))) {
-        /* the check's message says why */
-    } else if (rename(tmp, path) != 0) {
-        st = fw_fail(err, FW_ERUN, "%s: cannot replace: %s", path, strerror(errno));
-    } else {
-        /* the rename itself survives a crash once the directory is synced */
-        int dfd = open(dir, O_RDONLY | O_DIRECTORY);
-        if (dfd >= 0) {
-            fsync(dfd);
-            close(dfd);
-        }
-    }
-    if (st)
-        unlink(tmp);
-out:
-    free(tmp);
-    free(dir);
-    return st;
+    return fw_file_commit(f, tmp, path, err);
 }
 
 fw_status fw_yaml_set_scalar(const char *path, const char *section, const char *key,

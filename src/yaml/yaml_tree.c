@@ -1,5 +1,6 @@
 #include "yaml/yaml_tree.h"
 
+#include <ctype.h>
 #include <stdarg.h>
 #include <errno.h>
 #include <math.h>
@@ -315,6 +316,18 @@ const char *yt_path(char *out, size_t outsz, const char *path, const char *key)
     return out;
 }
 
+/* A key that could be a misspelt field (letters, digits, '_', '-', at most
+ * 40) is quoted in the message; anything else is not: a file that is not the
+ * kind expected (a ship named /etc/shadow) must not have its lines printed. */
+static bool field_like(const char *key)
+{
+    size_t n = 0;
+    for (; key[n]; n++)
+        if (n >= 40 || !(isalnum((unsigned char)key[n]) || key[n] == '_' || key[n] == '-'))
+            return false;
+    return n > 0;
+}
+
 fw_status yt_check_keys(const yt_doc *doc, const yt_node *map, const char *path,
                         const char *const *allowed, fw_error *err)
 {
@@ -332,6 +345,11 @@ fw_status yt_check_keys(const yt_doc *doc, const yt_node *map, const char *path,
             for (const char *const *a = allowed; *a && used + 1 < sizeof known; a++)
                 used += (size_t)snprintf(known + used, sizeof known - used, "%s%s",
                                          a == allowed ? "" : ", ", *a);
+            if (!field_like(map->keys[i]))
+                return fw_fail_at(err, doc->file, map->key_lines[i], path,
+                                  "a key that is no field name (not the kind of file "
+                                  "expected? expected one of: %s)",
+                                  known);
             return fw_fail_at(err, doc->file, map->key_lines[i],
                               yt_path(field, sizeof field, path, map->keys[i]),
                               "unknown field (expected one of: %s)", known);

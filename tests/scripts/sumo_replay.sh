@@ -15,7 +15,7 @@ grep -q "fcd: true" "$dir/replay.yaml" && grep -q "fill: 0" "$dir/replay.yaml" &
   grep -q "behaviour: blind" "$dir/replay.yaml" && grep -q "duration_s: 1800" "$dir/replay.yaml"
 "$FAIRWAY" run "$dir/replay.yaml" --out "$dir" > /dev/null
 run="$dir/dover-crossing"
-[ -s "$run/sumo/fcd.xml" ] && [ -s "$run/sumo/run.sumocfg" ] && [ ! -e "$run/sumo/fcd.xml.tmp" ]
+[ -s "$run/sumo/fcd.xml" ] && [ -s "$run/sumo/run.sumocfg" ] && [ -z "$(ls -A "$run/sumo" | grep "fcd.xml.tmp")" ]
 (cd "$run/sumo" && SUMO_HOME=${SUMO_HOME:-/usr/share/sumo} sumo -c run.sumocfg \
    --fcd-output "$dir/alone.xml" --fcd-output.attributes x,y --no-warnings true > "$dir/sumo.out" 2>&1) || { cat "$dir/sumo.out"; exit 1; }
 "$PYTHON" - "$run/sumo/fcd.xml" "$dir/alone.xml" <<'PY'
