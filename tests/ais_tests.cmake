@@ -16,6 +16,7 @@ fw_cli_test(cli_ais_bad_columns 2 "--columns: 'speed=SOG': expected FIELD=HEADER
 fw_cli_test(cli_ais_bad_header 2 "bad-rows.csv:1: header: no column 'BaseDateTime' \\(the time\\)" ais
             summary ${CMAKE_SOURCE_DIR}/tests/data/ais/bad-rows.csv --columns time=BaseDateTime)
 fw_script_test(ais_workflow 0 "ok: AIS workflow" ais_workflow.sh)
+fw_script_test(ais_run_counts 0 "ok: AIS counts in run.log and summary.json" ais_run_counts.sh)
 # SUMO flows slower than 3.6 an hour (demand.h FW_SUMO_EXP_RATE_MIN): channel
 # at density 0.1 is 0.6 ships an hour per stream, which SUMO's exp() period
 # turned into a flood of ships and bad_alloc
@@ -23,6 +24,6 @@ fw_cli_test(cli_traffic_slow_flows 0 "median [0-9.]+ ms per step" traffic --netw
             --density 0.1 --ships 0 --duration 60 --every 60 --log traffic-slow.log
             --routes traffic-slow.rou.xml)
 foreach(t cli_ais_help cli_ais_bad_sub cli_ais_no_origin cli_ais_bad_columns cli_ais_bad_header
-          ais_workflow cli_traffic_slow_flows)
+          ais_workflow ais_run_counts cli_traffic_slow_flows)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
 endforeach()

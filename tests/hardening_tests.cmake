@@ -20,8 +20,10 @@ fw_cli_test(cli_helm_huge_position 2 "--target: position \\(1e\\+300, 0\\) m is 
             helm --ship c3 --own 0,0,0,12 --target 1e300,0,180,10)
 fw_cli_test(cli_sweep_db_dir 2 "--db ${CMAKE_CURRENT_BINARY_DIR}: is a directory, expected a database file"
             sweep ${CMAKE_SOURCE_DIR}/tests/data/study/small.yaml --db ${CMAKE_CURRENT_BINARY_DIR})
+# issue 28: empty names, line breaks, fw_ ids, numbers quoted as written
+fw_script_test(names_numbers 0 "ok: names and numbers refused as written" names_numbers.sh)
 # runs reach SUMO, whose own allocations the LeakSanitizer suppressions cover
-foreach(t edit_line_breaks identify_out dir_inputs)
+foreach(t edit_line_breaks identify_out dir_inputs names_numbers)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 endforeach()
 # Hardening, round two (issue 28, Files): nothing written through a planted

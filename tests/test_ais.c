@@ -93,6 +93,33 @@ static void test_long_line(void)
     unlink(path);
 }
 
+/* A byte order mark before "# Timestamp" (as an editor saves the file) is
+ * skipped; a directory named as the file is said to be one (its read failed
+ * with EISDIR, which looked like an empty file). */
+static void test_bom_and_directory(void)
+{
+    char path[] = "/tmp/fw_ais_bom_XXXXXX";
+    int fd = mkstemp(path);
+    FILE *f = fdopen(fd, "w");
+    fputs("\xEF\xBB\xBF# Timestamp,Type of mobile,MMSI,Latitude,Longitude\n"
+          "01/03/2026 12:00:00,Class A,219000001,55.0,11.0\n",
+          f);
+    fclose(f);
+    fw_ais_report r[2];
+    fw_ais_counts c;
+    fw_error err = {0};
+    int n = read_all(path, NULL, r, 2, &c, &err);
+    CHECK_MSG(n == 1 && r[0].mmsi == 219000001 && r[0].line == 2, "%d: %s", n, err.msg);
+    unlink(path);
+    char dir[] = "/tmp/fw_ais_dir_XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    CHECK(read_all(dir, NULL, r, 2, &c, &err) < 0 && err.status == FW_EINPUT);
+    char want[64];
+    snprintf(want, sizeof want, "%s: is a directory", dir);
+    CHECK_CONTAINS(err.msg, want);
+    rmdir(dir);
+}
+
 /* Another layout (US MarineCadastre-like): mapped columns, type codes, no
  * class column (the MMSI says what is a ship). */
 static void test_columns(void)
@@ -182,6 +209,50 @@ static void test_tracks(void)
     CHECK(fw_ais_tracks_load(bad_rows, &d, &t, &err) == FW_OK);
     CHECK(t.outside_window == 1 && t.points == 4 && t.t0 == 1772366406.0);
     fw_ais_tracks_free(&t);
+}
+
+/* A report the plane cannot hold (90 deg of longitude from the origin: PROJ
+ * fails) is skipped and counted with FILE:LINE (it stopped the whole read,
+ * naming neither); two reports of one MMSI at one instant 5.5 km apart are
+ * two ships, counted apart from a mere repeat (both were "duplicates"). */
+static void test_unprojected_and_clash(void)
+{
+    char path[] = "/tmp/fw_ais_clash_XXXXXX";
+    int fd = mkstemp(path);
+    FILE *f = fdopen(fd, "w");
+    fputs("Timestamp,MMSI,Latitude,Longitude\n"
+          "2026-03-01 12:00:00,219000001,55.00,11.00\n"
+          "2026-03-01 12:00:00,219000001,55.00,11.00\n" /* a repeat */
+          "2026-03-01 12:00:10,219000001,55.00,11.01\n"
+          "2026-03-01 12:00:05,219000002,0.0,101.0\n" /* line 5: 90 deg east */
+          "2026-03-01 12:00:00,219000003,55.02,11.00\n"
+          "2026-03-01 12:00:00,219000003,55.07,11.00\n" /* another ship, 5.5 km north */
+          "2026-03-01 12:00:06,219000002,0.0,-79.0\n",
+          f);
+    fclose(f);
+    fw_ais_track_def d = fw_default_ais_track_def();
+    d.origin_lat = 55.0;
+    d.origin_lon = 11.0;
+    fw_ais_tracks t;
+    fw_error err = {0};
+    fw_status st = fw_ais_tracks_load(path, &d, &t, &err);
+    CHECK_MSG(st == FW_OK, "%s", err.msg);
+    CHECK_MSG(t.unprojected == 2 && t.points == 3 && t.n == 2, "%ld %ld %d", t.unprojected,
+              t.points, t.n);
+    char want[64];
+    snprintf(want, sizeof want, "%s:5", path);
+    CHECK_MSG(strcmp(t.unprojected_at, want) == 0, "'%s'", t.unprojected_at);
+    CHECK(t.duplicates == 2 && t.clashes == 1 && t.clash_ships == 1 &&
+          t.clash_first == 219000003);
+    char out[2048] = "";
+    FILE *m = fmemopen(out, sizeof out - 1, "w");
+    fw_ais_tracks_print(m, &t);
+    fclose(m);
+    CHECK_CONTAINS(out, "cannot be projected into the plane: 2 (the first at /tmp/fw_ais_clash_");
+    CHECK_CONTAINS(out, "two ships on one MMSI (reports at one instant more than 50 m apart, one "
+                        "dropped): 1 on 1 MMSIs, the first 219000003");
+    fw_ais_tracks_free(&t);
+    unlink(path);
 }
 
 /* The reports of one ship in the plane, sorted by time (the test's own
@@ -306,9 +377,11 @@ int main(void)
     snprintf(bad_rows, sizeof bad_rows, "%s/tests/data/ais/bad-rows.csv", root ? root : ".");
     TEST_RUN(test_bad_rows);
     TEST_RUN(test_long_line);
+    TEST_RUN(test_bom_and_directory);
     TEST_RUN(test_columns);
     TEST_RUN(test_times);
     TEST_RUN(test_tracks);
+    TEST_RUN(test_unprojected_and_clash);
     TEST_RUN(test_replay);
     return TEST_EXIT();
 }

@@ -37,6 +37,12 @@ static void test_plane_against_the_ellipsoid(void)
     CHECK_NEAR(e, 701.98, 0.1);
     CHECK(fw_geo_convergence(g, 51.0, 1.8, &gamma, &err) == FW_OK);
     CHECK_NEAR(fw_rad_to_deg(gamma), 0.3 * sin(fw_deg_to_rad(51.0)), 0.002);
+    /* at the pole, one-sided (a step past it was refused as "latitude 90.0001",
+     * a number not in the file): gamma = dlon sin(90 deg) */
+    CHECK_MSG(fw_geo_convergence(g, 90.0, 1.8, &gamma, &err) == FW_OK, "%s", err.msg);
+    CHECK_NEAR(fw_rad_to_deg(gamma), 0.3, 0.002);
+    CHECK(fw_geo_convergence(g, -90.0, 1.8, &gamma, &err) == FW_OK);
+    CHECK_NEAR(fw_rad_to_deg(gamma), -0.3, 0.002);
     /* round trip 30 km out: a millionth of a metre */
     CHECK(fw_geo_to_latlon(g, 30000.0, -20000.0, &lat, &lon, &err) == FW_OK);
     CHECK(fw_geo_to_plane(g, lat, lon, &e, &n, &err) == FW_OK);

@@ -107,6 +107,16 @@ static void test_sumo_args(void)
     CHECK_CONTAINS(line, "--remote-port 9999 ");
     CHECK(strstr(line, "--additional-files") == NULL);
     CHECK(fw_traffic_sumo_args(&d, "sumo", 0, argv, 8, buf, sizeof buf, &err) == FW_ERUN);
+    /* a comma in a file SUMO reads: it would split the path into two files */
+    d.net_file = "/data/a,b/n.net.xml";
+    CHECK(fw_traffic_sumo_args(&d, "sumo", 0, argv, 48, buf, sizeof buf, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "the network file: '/data/a,b' has a comma: SUMO splits");
+    d.net_file = "n.net.xml";
+    d.log_file = "x,y.log";
+    CHECK(fw_traffic_sumo_args(&d, "sumo", 0, argv, 48, buf, sizeof buf, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "the SUMO log: 'x,y.log' has a comma");
+    CHECK(fw_sumo_path_check("FAIRWAY_DATA", "/a/b", &err) == FW_OK);
+    CHECK(fw_sumo_path_check("FAIRWAY_DATA", NULL, &err) == FW_OK);
 }
 
 static void test_demand(void)

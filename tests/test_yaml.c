@@ -14,7 +14,9 @@ static const char *doc_text = "a: 1.5\n"
                               "e: hello\n"
                               "f: .nan\n"
                               "g: 12abc\n"
-                              "h: '3'\n";
+                              "h: '3'\n"
+                              "i: 80.000001\n"
+                              "j: 0300\n";
 
 static void test_lines_and_values(void)
 {
@@ -50,12 +52,18 @@ static void test_errors(void)
     CHECK_CONTAINS(err.msg, "expected a number");
     CHECK(yt_req_number(doc, doc->root, "", "a", 2, 3, &v, &err) == FW_EINPUT);
     CHECK_CONTAINS(err.msg, "t.yaml:1: a: 1.5 is out of range");
+    /* the number as the file has it: %g said "80 is out of range [-80, 80]" */
+    CHECK(yt_req_number(doc, doc->root, "", "i", -80, 80, &v, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "t.yaml:9: i: 80.000001 is out of range [-80, 80]");
+    long k;
+    CHECK(yt_req_int(doc, doc->root, "", "j", 0, 100, &k, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "t.yaml:10: j: 0300 is out of range [0, 100]");
     CHECK(yt_req_number(doc, doc->root, "", "zz", 0, 1, &v, &err) == FW_EINPUT);
     CHECK_CONTAINS(err.msg, "zz: required field is missing");
     const yt_node *b = yt_get(doc->root, "b");
     CHECK(yt_req_number(doc, b, "b", "d", 0, 1, &v, &err) == FW_EINPUT);
     CHECK_CONTAINS(err.msg, "t.yaml:4: b.d: expected a number");
-    static const char *const allowed[] = {"a", "b", "e", "f", "g", NULL};
+    static const char *const allowed[] = {"a", "b", "e", "f", "g", "i", "j", NULL};
     CHECK(yt_check_keys(doc, doc->root, "", allowed, &err) == FW_EINPUT);
     CHECK_CONTAINS(err.msg, "t.yaml:8: h: unknown field");
     yt_free(doc);

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "core/units.h"
 
@@ -193,10 +194,13 @@ static fw_status header(fw_ais_reader *rd, const fw_ais_columns *cols, fw_error 
     char *h = rd->buf, *f[MAX_FIELDS];
     if (got < 0)
         return fw_fail_at(err, rd->file, 1, "header", "longer than %d bytes", LINE_MAX_BYTES);
+    /* a UTF-8 byte order mark, before the '#' (as editors write it) or after */
+    if (strncmp(h, "\xEF\xBB\xBF", 3) == 0)
+        h += 3;
     if (h[0] == '#')
         h += 1 + (h[1] == ' ');
     if (strncmp(h, "\xEF\xBB\xBF", 3) == 0)
-        h += 3; /* a byte order mark */
+        h += 3;
     int n = split(h, f, MAX_FIELDS);
     if (n < 0)
         return fw_fail_at(err, rd->file, 1, "header", "unterminated quote");
@@ -229,8 +233,13 @@ fw_status fw_ais_open(const char *path, const fw_ais_columns *cols, fw_ais_reade
     }
     snprintf(rd->file, sizeof rd->file, "%s", path);
     rd->c.t_first = rd->c.t_last = NAN;
-    if (!(rd->f = fopen(path, "rb"))) {
-        fw_status st = fw_fail(err, FW_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+    struct stat sb = {0};
+    if (!(rd->f = fopen(path, "rb")) || fstat(fileno(rd->f), &sb) != 0 || S_ISDIR(sb.st_mode)) {
+        /* fopen opens a directory; its first read fails (EISDIR), which
+         * looked like an empty file */
+        fw_status st = rd->f && S_ISDIR(sb.st_mode)
+                           ? fw_fail(err, FW_EINPUT, "%s: is a directory", path)
+                           : fw_fail(err, FW_EINPUT, "%s: cannot open: %s", path, strerror(errno));
         fw_ais_close(rd);
         return st;
     }

@@ -17,7 +17,8 @@
  * stations, aids to navigation, SAR aircraft and other non-ships; broken lines
  * (too few fields, an unterminated quote, over 64 KiB); a time, MMSI or
  * position that is missing or wrong (91/181 = not available).  Fields may be
- * quoted ("a, b" and "" inside quotes), lines may end in CRLF.
+ * quoted ("a, b" and "" inside quotes), lines may end in CRLF; a UTF-8 byte
+ * order mark before the header (or after its "#") is skipped.
  *
  * Units: the report is SI (m/s, rad) with NAN for "not available" (empty,
  * `Unknown`, Heading 511, COG 360, SOG 102.3); lat/lon stay degrees (geo.h
@@ -26,7 +27,7 @@
  * A + B and breadth C + D when given, else the Length and Width columns.
  *
  * Fatal (FW_EINPUT, "FILE:LINE: FIELD: problem"): a file that cannot be
- * opened, no header, a required column (time, mmsi, lat, lon) absent.
+ * opened or is a directory, no header, a required column (time, mmsi, lat, lon) absent.
  */
 #ifndef FW_AIS_H
 #define FW_AIS_H

@@ -36,6 +36,7 @@ typedef struct collect {
     fw_geo *geo;
     double lo, hi;  /* s UTC, the points kept (the window widened by max_gap) */
     double radius;
+    const char *file;
 } collect;
 
 static fw_status new_ship(collect *c, const fw_ais_report *r, int idx, fw_error *err)
@@ -65,15 +66,18 @@ static fw_status add(collect *c, const fw_ais_report *r, fw_error *err)
         return FW_OK;
     }
     double e, n, gamma;
-    fw_status st;
-    if ((st = fw_geo_to_plane(c->geo, r->lat, r->lon, &e, &n, err)))
-        return st;
+    fw_status st = FW_OK;
+    fw_error perr = {0}; /* why PROJ failed: the count says it, not the read */
+    if (fw_geo_to_plane(c->geo, r->lat, r->lon, &e, &n, &perr) ||
+        (hypot(e, n) <= c->radius && fw_geo_convergence(c->geo, r->lat, r->lon, &gamma, &perr))) {
+        if (t->unprojected++ == 0)
+            snprintf(t->unprojected_at, sizeof t->unprojected_at, "%s:%d", c->file, r->line);
+        return FW_OK;
+    }
     if (!(hypot(e, n) <= c->radius)) {
         t->outside_area++;
         return FW_OK;
     }
-    if ((st = fw_geo_convergence(c->geo, r->lat, r->lon, &gamma, err)))
-        return st;
     char id[24];
     snprintf(id, sizeof id, "%ld", r->mmsi);
     int idx;
@@ -141,13 +145,18 @@ static void finish(fw_ais_tracks *t, double max_gap)
         fw_rec_track *tr = &t->v[i];
         qsort(tr->p, (size_t)tr->n, sizeof *tr->p, cmp_point);
         int k = 0;
+        long clashes = t->clashes;
         for (int j = 0; j < tr->n; j++) {
-            if (k > 0 && tr->p[j].t == tr->p[k - 1].t) {
+            const fw_rec_point *p = &tr->p[j], *q = &tr->p[k > 0 ? k - 1 : 0];
+            if (k > 0 && p->t == q->t) {
                 t->duplicates++;
+                t->clashes += hypot(p->east - q->east, p->north - q->north) > FW_AIS_CLASH_M;
                 continue;
             }
-            tr->p[k++] = tr->p[j];
+            tr->p[k++] = *p;
         }
+        if (t->clashes > clashes && t->clash_ships++ == 0)
+            t->clash_first = t->ships[i].mmsi;
         tr->n = k;
         fill_motion(tr, max_gap);
         for (int j = 0; j < tr->n; j++)
@@ -209,7 +218,8 @@ fw_status fw_ais_tracks_load(const char *path, const fw_ais_track_def *def, fw_a
     if (st)
         return st;
     collect c = {.t = out, .lo = isnan(start) ? -INFINITY : start - def->max_gap,
-                 .hi = isnan(end) ? INFINITY : end + def->max_gap, .radius = def->area_radius};
+                 .hi = isnan(end) ? INFINITY : end + def->max_gap, .radius = def->area_radius,
+                 .file = path};
     fw_ais_reader *rd = NULL;
     if ((st = def->proj ? fw_geo_create_proj(def->proj, def->off_e, def->off_n, &c.geo, err)
                         : fw_geo_create(def->origin_lat, def->origin_lon, &c.geo, err)) ||
@@ -290,4 +300,11 @@ void fw_ais_tracks_print(FILE *out, const fw_ais_tracks *t)
                  "outside the area: %ld\nships: %d, %ld points from %s UTC (t = 0) to t = %.0f s\n",
             t->out_of_order, t->duplicates, t->outside_window, t->outside_area, t->n, t->points,
             a, t->t_end);
+    if (t->unprojected > 0)
+        fprintf(out, "cannot be projected into the plane: %ld (the first at %s)\n", t->unprojected,
+                t->unprojected_at);
+    if (t->clashes > 0)
+        fprintf(out, "two ships on one MMSI (reports at one instant more than %.0f m apart, one "
+                     "dropped): %ld on %d MMSIs, the first %ld\n",
+                FW_AIS_CLASH_M, t->clashes, t->clash_ships, t->clash_first);
 }

@@ -5,7 +5,13 @@
  * MMSI; each ship's points are then sorted by time.  What the sorting meets
  * is counted: rows that came earlier than their ship's previous row (out of
  * order: kept, in their place) and a second report of a ship at a time it
- * already has (a duplicate: dropped).
+ * already has (a duplicate: dropped).  A second report at that time more than
+ * FW_AIS_CLASH_M from the first is not a repeat but two ships sending one
+ * MMSI (a misconfigured transponder, a copied MMSI): it is dropped too (one
+ * id, one ship in the replay) but counted apart, with the MMSIs it hit and
+ * the first of them.  A report the plane cannot hold (PROJ fails: e.g. 90
+ * deg of longitude from the origin) is skipped and counted, with FILE:LINE of
+ * the first, like the reader's bad rows.
  *
  * A point's course is the report's COG, else its heading, turned from true
  * to grid course (minus the meridian convergence there); its speed the SOG.
@@ -26,6 +32,12 @@
 
 #include "ais/ais.h"
 #include "traffic/source_track.h"
+
+/* m: two reports of one MMSI at one instant farther apart are two ships.  A
+ * repeat of one report (two base stations) is at the same place; a ship at
+ * 30 kn moves 15 m in the second a DMA timestamp rounds to; two ships on one
+ * MMSI are typically kilometres apart. */
+#define FW_AIS_CLASH_M 50.0
 
 typedef struct fw_ais_track_def {
     double origin_lat, origin_lon; /* deg: the plane, a transverse Mercator about it ... */
@@ -61,6 +73,11 @@ typedef struct fw_ais_tracks {
     double max_gap;       /* s, the def's */
     fw_ais_counts counts; /* the reader's */
     long out_of_order, duplicates, outside_window, outside_area;
+    long clashes;         /* of the duplicates: another ship at that instant (FW_AIS_CLASH_M) */
+    int clash_ships;      /* MMSIs with clashes */
+    long clash_first;     /* the first such MMSI (in id order), 0: none */
+    long unprojected;     /* reports the plane cannot hold: skipped */
+    char unprojected_at[560]; /* "FILE:LINE" of the first, "" when none */
     long points;          /* in the tracks */
 } fw_ais_tracks;
 

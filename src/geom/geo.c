@@ -136,9 +136,11 @@ fw_status fw_geo_convergence(const fw_geo *g, double lat_deg, double lon_deg, do
     /* set though every path that reads them writes them first: gcc -O3
      * cannot see through trans() and would stop a Release build */
     double e0 = 0.0, n0 = 0.0, e1 = 0.0, n1 = 0.0;
-    fw_status st = fw_geo_to_plane(g, lat_deg - d, lon_deg, &e0, &n0, err);
+    /* one-sided at a pole: a step past it is no latitude (90.0001 was
+     * reported as the file's) */
+    fw_status st = fw_geo_to_plane(g, fmax(lat_deg - d, -90.0), lon_deg, &e0, &n0, err);
     if (!st)
-        st = fw_geo_to_plane(g, lat_deg + d, lon_deg, &e1, &n1, err);
+        st = fw_geo_to_plane(g, fmin(lat_deg + d, 90.0), lon_deg, &e1, &n1, err);
     if (!st)
         *gamma = -atan2(e1 - e0, n1 - n0); /* true north is at grid bearing -gamma */
     return st;

@@ -244,6 +244,11 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
                 s->n_traffic_own);
     else
         fprintf(f, "%s  \"survey\": null,\n", ind);
+    if (s->ais)
+        fprintf(f, "%s  \"ais\": {\"duplicates_dropped\": %ld, \"two_ships_one_mmsi\": %ld, "
+                   "\"mmsis_shared\": %d, \"first_mmsi_shared\": %ld, \"not_projected\": %ld},\n",
+                ind, s->ais_duplicates, s->ais_clashes, s->ais_clash_ships, s->ais_clash_first,
+                s->ais_unprojected);
     const fw_monitor_counts *m = &s->monitors;
     fprintf(f, "%s  \"monitors\": {\"sideways\": %d, \"teleport\": %d, \"overlap\": %d, "
                "\"appear\": %d, \"vanish\": %d, \"start_close\": %d, \"stopped\": %d, "

@@ -91,6 +91,14 @@ typedef struct fw_run_summary {
     double own_length, own_breadth; /* m, hull outline (for plots) */
     double domain, domain_ratio;    /* m, transverse semi-axis; fore-aft / transverse */
     const char *domain_reading;     /* "ellipse" or "transverse" (geom.h): the run's judge too */
+    /* AIS traffic (ais_track.h): reports at an instant their MMSI already had
+     * (dropped), of which more than FW_AIS_CLASH_M away (two ships on one
+     * MMSI: in how many MMSIs, the first), and reports the plane cannot hold.
+     * In summary.json only when ais. */
+    bool ais;
+    long ais_duplicates, ais_clashes, ais_unprojected;
+    int ais_clash_ships;
+    long ais_clash_first;
     /* The traffic survey (all zero without one). */
     bool survey;
     double traffic_ship_s;          /* ship-seconds in the survey area */

@@ -51,6 +51,7 @@ struct fw_run {
     double t_setup, t_observe, t_loop; /* CPU s (--profile) */
     uint32_t branch;         /* branch.h: 0 unless restored from a snapshot as another */
     void *branch_box;        /* branch.h: where a restored branch leaves its result */
+    fw_ais_tracks ais;       /* AIS traffic: what the reading counted (no arrays) */
 };
 
 /* The CPU clock with --profile, else 0 (no system calls). */
@@ -369,6 +370,15 @@ static void log_start(fw_run *R)
         note(R,     "traffic: the AIS reports of %s replayed, ids the MMSIs (a ship absent between "
                 "reports more than %.0f s apart; `fairway ais summary` counts what was read)\n",
                 s->ais.file, s->ais.max_gap);
+    if (R->ais.clashes > 0)
+        note(R,     "traffic: %ld AIS reports at an instant their MMSI already had, more than %.0f "
+                "m from it, dropped: two ships on one MMSI (%d MMSIs, the first %ld); one of each "
+                "is replayed\n",
+                R->ais.clashes, FW_AIS_CLASH_M, R->ais.clash_ships, R->ais.clash_first);
+    if (R->ais.unprojected > 0)
+        note(R,     "traffic: %ld AIS reports skipped: the plane cannot hold them (the first at "
+                "%s)\n",
+                R->ais.unprojected, R->ais.unprojected_at);
     if (cleared > 0)
         note(R,     "traffic: %d ships the fill put within 2 nm of the own ship or on a collision "
                 "course with it taken out at the start\n",
@@ -388,10 +398,18 @@ static fw_status set_up(fw_run *R, fw_error *err)
         fw_controller_destroy(R->def.controller);
         return st;
     }
-    if ((st = fw_run_make_world(&R->def, &R->w, &R->own, err))) {
+    if ((st = fw_run_make_world(&R->def, &R->w, &R->own, &R->ais, err))) {
         fw_world_destroy(R->w); /* the world holds the controller if it was made */
         R->w = NULL;
         R->own = NULL;
+    }
+    if (!st && s->ais.file[0]) {
+        R->sum.ais = true;
+        R->sum.ais_duplicates = R->ais.duplicates;
+        R->sum.ais_clashes = R->ais.clashes;
+        R->sum.ais_clash_ships = R->ais.clash_ships;
+        R->sum.ais_clash_first = R->ais.clash_first;
+        R->sum.ais_unprojected = R->ais.unprojected;
     }
     return st;
 }

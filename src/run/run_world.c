@@ -122,11 +122,16 @@ fw_status fw_run_ais_tracks(const fw_scenario *s, fw_ais_tracks *t, fw_error *er
 /* AIS reports replayed (ais/ais_track.h), the run's t = 0 the window's
  * start; with SUMO traffic also shown in SUMO (traffic/source_mirror.h). */
 static fw_status ais_source(const fw_run_def *def, const fw_replay_def *td, fw_source **src,
-                            fw_error *err)
+                            fw_ais_tracks *info, fw_error *err)
 {
     const fw_scenario *s = def->scenario;
     fw_ais_tracks t;
     fw_status st = fw_run_ais_tracks(s, &t, err);
+    if (!st) {
+        *info = t; /* the counts only */
+        info->v = NULL;
+        info->ships = NULL;
+    }
     fw_replay_def d = *td;
     d.max_gap = s->ais.max_gap;
     bool sumo = def->traffic == FW_RUN_TRAFFIC_SUMO;
@@ -150,8 +155,10 @@ static fw_status ais_source(const fw_run_def *def, const fw_replay_def *td, fw_s
 
 /* The world: the source and the own ship (MMG, the avoidance policy or the
  * caller's controller, which is destroyed here if the world is not made). */
-fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own, fw_error *err)
+fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own,
+                            fw_ais_tracks *ais, fw_error *err)
 {
+    memset(ais, 0, sizeof *ais);
     const fw_scenario *s = def->scenario;
     fw_controller *ctl = def->controller;
     fw_source *src = NULL;
@@ -161,7 +168,7 @@ fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     td.radius = s->radius;
     /* recorded tracks replay without SUMO, whatever the run asked for */
     fw_status st = s->tracks[0]     ? fw_replay_source_create(&td, &src, err)
-                   : s->ais.file[0] ? ais_source(def, &td, &src, err)
+                   : s->ais.file[0] ? ais_source(def, &td, &src, ais, err)
                    : def->traffic == FW_RUN_TRAFFIC_KINEMATIC
                        ? fw_run_kinematic_source(s, s->step, s->radius, &src, err)
                        : sumo_source(def, &src, err);

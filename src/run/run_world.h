@@ -9,10 +9,14 @@
 #ifndef FW_RUN_WORLD_H
 #define FW_RUN_WORLD_H
 
+#include "ais/ais_track.h"
 #include "run/run.h"
 
 /* def->controller is taken over: held by the world, or destroyed if the world
- * is not made.  On failure *w may hold a world for the caller to destroy. */
-fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own, fw_error *err);
+ * is not made.  On failure *w may hold a world for the caller to destroy.
+ * With AIS traffic, *ais gets what the reading counted (ais_track.h; its
+ * arrays NULL), for run.log and summary.json; else it is zeroed. */
+fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own,
+                            fw_ais_tracks *ais, fw_error *err);
 
 #endif

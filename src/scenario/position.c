@@ -92,7 +92,7 @@ fw_status fw_scn_load_position(const yt_doc *doc, const yt_node *map, const char
         st = fw_geo_convergence(g, lat, lon, gamma, &gerr);
     fw_geo_destroy(g);
     if (!st && (fabs(*east) > 1e6 || fabs(*north) > 1e6))
-        st = fw_fail(&gerr, FW_EINPUT, "%.6f, %.6f is more than 1000 km from the origin", lat,
-                     lon);
+        st = fw_fail(&gerr, FW_EINPUT, "%s, %s is more than 1000 km from the origin",
+                     yt_get(map, "lat_deg")->str, yt_get(map, "lon_deg")->str);
     return st ? yt_fail_key(doc, map, path, "lat_deg", err, "%s", gerr.msg) : FW_OK;
 }

@@ -13,14 +13,6 @@
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
 
-static bool name_ok(const char *s)
-{
-    size_t n = strlen(s);
-    return n > 0 && n < 64 &&
-           strspn(s, "abcdefghijklmnopqrstuvwxyz"
-                     "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;
-}
-
 static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"ship", "east_m", "north_m", "lat_deg", "lon_deg",
@@ -109,12 +101,11 @@ static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *pa
         (st = yt_req_number(doc, t, path, "length_m", 5, 500, &o->length, err)) ||
         (st = yt_req_number(doc, t, path, "breadth_m", 1, 80, &o->breadth, err)))
         return st;
-    if (!name_ok(o->id) || strlen(o->id) > 24)
-        return yt_fail_key(doc, t, path, "id", err, "'%s': use up to 24 letters, digits, '-' or '_'",
-                           o->id);
-    if (!name_ok(o->type))
-        return yt_fail_key(doc, t, path, "type", err, "'%s': use letters, digits, '-' or '_'",
-                           o->type);
+    char msg[200];
+    if (!yt_name_ok(o->id, 24, true, "up to 24 letters, digits, '-' or '_'", msg, sizeof msg))
+        return yt_fail_key(doc, t, path, "id", err, "%s", msg);
+    if (!yt_name_ok(o->type, 63, true, "letters, digits, '-' or '_'", msg, sizeof msg))
+        return yt_fail_key(doc, t, path, "type", err, "%s", msg);
     if (o->breadth > o->length)
         return yt_fail_key(doc, t, path, "breadth_m", err, "%g m exceeds the length %g m",
                            o->breadth, o->length);
@@ -410,10 +401,11 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
     if ((st = yt_top_map(doc, keys, "name, own_ship, traffic, run", s->name, sizeof s->name,
                          s->description, sizeof s->description, err)))
         goto out;
-    if (!name_ok(s->name)) {
-        st = fw_fail_at(err, doc->file, yt_key_line(root, "name"), "name",
-                        "'%s': use letters, digits, '-' or '_' (it names the output directory)",
-                        s->name);
+    char msg[200];
+    if (!yt_name_ok(s->name, 63, false,
+                    "letters, digits, '-' or '_' (it names the output directory)", msg,
+                    sizeof msg)) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "name"), "name", "%s", msg);
         goto out;
     }
     if ((st = fw_scn_load_origin(doc, root, s, err)) || (st = load_own(doc, root, s, err)) ||

@@ -329,10 +329,10 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
         (st = yt_opt_number(doc, root, "", "near_miss_m", 0.0, 1e6, &s->near_miss, err)) ||
         (st = yt_opt_map(doc, root, "", "start", &start, err)))
         goto out;
-    if (strspn(s->name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
-        strlen(s->name)) {
-        st = fw_fail_at(err, doc->file, yt_key_line(root, "name"), "name",
-                        "'%s': use letters, digits, '-' or '_'", s->name);
+    char msg[200];
+    if (!yt_name_ok(s->name, sizeof s->name - 1, false,
+                    "letters, digits, '-' or '_' (it names the runs)", msg, sizeof msg)) {
+        st = fw_fail_at(err, doc->file, yt_key_line(root, "name"), "name", "%s", msg);
         goto out;
     }
     if (start) {

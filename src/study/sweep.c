@@ -10,6 +10,7 @@
 #include "core/files.h"
 #include "study/store.h"
 #include "study/sweep.h"
+#include "traffic/traffic.h"
 
 fw_sweep_def fw_default_sweep_def(void)
 {
@@ -91,14 +92,25 @@ out:
     return r;
 }
 
+/* The work directory, refused (and removed) when SUMO would split its path. */
+static fw_status work_dir(const fw_sweep_def *def, char *work, size_t n, fw_error *err)
+{
+    fw_status r = fw_sweep_workdir(def, work, n, err);
+    if (!r && (r = fw_sumo_path_check("the work directory (TMPDIR)", work, err)) &&
+        !def->keep_dir)
+        fw_remove_tree(work);
+    return r;
+}
+
 fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error *err)
 {
     memset(res, 0, sizeof *res);
     double t0 = fw_sweep_now();
     const fw_study *s = def->study;
     fw_store *st = NULL;
-    fw_status r = fw_store_open(def->db, s, &st, err);
-    if (r)
+    /* every run would fail on it in SUMO: refused once, before any */
+    fw_status r = fw_sumo_path_check("--keep", def->keep_dir, err);
+    if (r || (r = fw_store_open(def->db, s, &st, err)))
         return r;
     int *pending = NULL, n_pending = 0;
     if ((r = pending_runs(st, def, res, &pending, &n_pending, err))) {
@@ -106,7 +118,7 @@ fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error
         return r;
     }
     char work[1024];
-    if ((r = fw_sweep_workdir(def, work, sizeof work, err))) {
+    if ((r = work_dir(def, work, sizeof work, err))) {
         free(pending);
         fw_store_close(st);
         return r;

@@ -185,8 +185,10 @@ static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *e
      * ship anywhere): the built network is used as it is, which spares a
      * netconvert per run in a sweep. */
     bool tracks = d->n_targets > 0 || !has_net;
-    fw_status st = tracks ? write_tracks(d, err) : FW_OK;
-    if (st)
+    /* the lists below are joined with commas: none may be in a path */
+    fw_status st = fw_sumo_path_check("the run directory", d->dir, err);
+    if (st || (has_net && (st = fw_sumo_path_check("FAIRWAY_DATA", fw_data_root(), err))) ||
+        (tracks && (st = write_tracks(d, err))))
         return st;
     char nodes[2400] = "tracks.nod.xml", edges[2400] = "tracks.edg.xml", nlog[1200], typ[1100];
     const char *types = NULL;

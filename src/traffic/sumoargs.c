@@ -1,6 +1,7 @@
 /* sumoargs.c - SUMO's side of a run in words: the --sumo mode strings, the
  * display check for sumo-gui, and the command line fairway gives sumo
  * (traffic.h). */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,6 +53,17 @@ fw_status fw_traffic_gui_check(const char *opt, fw_error *err)
     return FW_OK;
 }
 
+fw_status fw_sumo_path_check(const char *what, const char *path, fw_error *err)
+{
+    const char *comma = path ? strchr(path, ',') : NULL;
+    if (comma) /* up to the name with the comma: what the user gave, not a temporary below */
+        return fw_fail(err, FW_EINPUT, "%s: '%.*s' has a comma: SUMO splits its file options at "
+                                       "commas (it would look for two files); use a path "
+                                       "without one", what,
+                       (int)(comma - path + (ptrdiff_t)strcspn(comma, "/")), path);
+    return FW_OK;
+}
+
 fw_status fw_traffic_sumo_args(const fw_traffic_def *def, const char *program, int remote_port,
                                const char **argv, int max, char *buf, size_t bufsz,
                                fw_error *err)
@@ -71,6 +83,11 @@ fw_status fw_traffic_sumo_args(const fw_traffic_def *def, const char *program, i
         ARG(buf + used);                                                                    \
         used += (size_t)k_ + 1;                                                             \
     } while (0)
+    fw_status st;
+    if ((st = fw_sumo_path_check("the network file", def->net_file, err)) ||
+        (st = fw_sumo_path_check("the types file", def->add_file, err)) ||
+        (st = fw_sumo_path_check("the SUMO log", def->log_file, err)))
+        return st;
     ARG(program);
     ARG("--net-file");
     ARG(def->net_file);

@@ -193,6 +193,12 @@ fw_status fw_traffic_all(fw_traffic *t, const fw_target **ships, int *n, fw_erro
 /* One ship by id through the getters. */
 fw_status fw_traffic_get(fw_traffic *t, const char *id, fw_target *ship, fw_error *err);
 
+/* FW_EINPUT when path (named by what: "the run directory", "FAIRWAY_DATA",
+ * ...) holds a comma: SUMO and netconvert split every file option at commas
+ * (fairway joins route files so), and there is no quoting that stops them,
+ * so such a path would be read as two files that do not exist. */
+fw_status fw_sumo_path_check(const char *what, const char *path, fw_error *err);
+
 /* The command line fairway gives sumo for def (program name first, NULL
  * terminated, at most max entries); extra remote_port > 0 adds --remote-port.
  * Used for the embedded start, for sumo-gui and by tests starting a sumo. */

@@ -399,7 +399,9 @@ fw_status yt_opt_number(const yt_doc *doc, const yt_node *map, const char *path,
     if (st)
         return st;
     if (v < lo || v > hi)
-        return fw_fail_at(err, doc->file, n->line, field, "%g is out of range [%g, %g]", v, lo, hi);
+        /* the number as the file has it: %g rounds 80.000001 to "80" */
+        return fw_fail_at(err, doc->file, n->line, field, "%s is out of range [%g, %g]", n->str,
+                          lo, hi);
     *out = v;
     return FW_OK;
 }
@@ -429,8 +431,8 @@ fw_status yt_opt_int(const yt_doc *doc, const yt_node *map, const char *path, co
     if (end == n->str || *end != '\0' || errno == ERANGE)
         return fw_fail_at(err, doc->file, n->line, field, "'%s' is not an integer", n->str);
     if (v < lo || v > hi)
-        return fw_fail_at(err, doc->file, n->line, field, "%ld is out of range [%ld, %ld]", v, lo,
-                          hi);
+        return fw_fail_at(err, doc->file, n->line, field, "%s is out of range [%ld, %ld]", n->str,
+                          lo, hi);
     *out = v;
     return FW_OK;
 }
@@ -533,4 +535,25 @@ fw_status yt_fail_key(const yt_doc *doc, const yt_node *map, const char *path, c
     va_end(ap);
     return fw_fail_at(err, doc->file, yt_key_line(map, key), yt_path(field, sizeof field, path, key),
                       "%s", msg);
+}
+
+bool yt_name_ok(const char *v, size_t max, bool reserved, const char *use, char *msg, size_t n)
+{
+    size_t len = strlen(v);
+    bool ctrl = false;
+    for (size_t i = 0; i < len; i++)
+        ctrl |= (unsigned char)v[i] < 0x20 || v[i] == 0x7f;
+    if (len == 0)
+        snprintf(msg, n, "is empty: use %s", use);
+    else if (ctrl)
+        snprintf(msg, n, "contains a line break or other control character: use %s", use);
+    else if (strspn(v, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != len ||
+             len > max)
+        snprintf(msg, n, "'%.*s%s': use %s", 64, v, len > 64 ? "..." : "", use);
+    else if (reserved && strncmp(v, "fw_", 3) == 0)
+        snprintf(msg, n, "'%s': names beginning 'fw_' are fairway's own (its SUMO objects: fw_own, "
+                         "fw_t_ID)", v);
+    else
+        return true;
+    return false;
 }

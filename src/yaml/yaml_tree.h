@@ -99,4 +99,13 @@ fw_status yt_top_map(const yt_doc *doc, const char *const *keys, const char *wha
 fw_status yt_fail_key(const yt_doc *doc, const yt_node *map, const char *path, const char *key,
                       fw_error *err, const char *fmt, ...) __attribute__((format(printf, 6, 7)));
 
+/* A name the file gives that names things (a scenario, a study, a target's
+ * id): true when it is 1 to max characters of letters, digits, '-' and '_'
+ * and, with reserved, does not begin "fw_" (the prefix of fairway's own SUMO
+ * objects: fw_own, fw_t_ID, fw_placed_ID).  Else false and the problem in
+ * msg: "is empty", a line break or control character (said, not quoted: it
+ * would break the one-line message), too long, a reserved id, or "'V': use
+ * " followed by `use` (what to write instead). */
+bool yt_name_ok(const char *v, size_t max, bool reserved, const char *use, char *msg, size_t n);
+
 #endif
