@@ -226,3 +226,20 @@ int sdb_only_failed(const char *path)
     sqlite3_close(db);
     return rc ? -1 : 0;
 }
+
+int sdb_zeros(const char *path)
+{
+    sqlite3 *db = sdb_create(path, FW_SCHEMA_VERSION);
+    if (!db)
+        return -1;
+    int rc = sdb_exec(db, "BEGIN");
+    for (int r = 0; r < 40 && !rc; r++) {
+        double domain = r < 20 ? 100 : 300;
+        rc |= run_row(db, r, domain, 1.0, r % 20, "ok", "", 3600.0, 1, 1, 900.0, 0, 0, 10, 0, 0,
+                      2, 3600.0);
+        rc |= enc_row(db, r, 0, "crossing give-way", 900.0, 0, 0, 0);
+    }
+    rc |= sdb_exec(db, "COMMIT");
+    sqlite3_close(db);
+    return rc ? -1 : 0;
+}

@@ -21,6 +21,9 @@ int sdb_hand(const char *path);
 /* 4 domain sizes x 2 densities x 6 replications with random encounters and
  * traffic, and two failed runs. */
 int sdb_random(const char *path, unsigned long long seed);
+/* 20 one-hour runs at each of 100 and 300 m, one crossing give-way encounter
+ * in each and no other event: the zero counts' exact intervals. */
+int sdb_zeros(const char *path);
 /* Two runs, both failed. */
 int sdb_only_failed(const char *path);
 

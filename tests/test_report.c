@@ -134,9 +134,12 @@ static void test_hand_summary(void)
     CHECK_NEAR(csv_get(p, w, "ci_high"), 10.0 + t2 * 2.0 / sqrt(3.0), 1e-7);
     /* by type: head-on 4, 2, 0; overtaking (either way) 2, 4, 0; crossing 2, 6, 10 */
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=head_on_per_h", "mean"), 2.0, 1e-9);
-    /* 4, 2, 0: the t interval would reach -2.97; a rate cannot, it is cut at 0 */
-    CHECK(csv_get(p, "domain_m=100,measure=head_on_per_h", "ci_low") == 0.0);
-    CHECK_NEAR(csv_get(p, "domain_m=100,measure=head_on_per_h", "ci_high"), 2.0 + t2 * 2.0 / sqrt(3.0), 1e-7);
+    /* 4, 2, 0 per hour: 3 events in 1.5 h, fewer than 5, so not the t interval (which
+     * reached -2.97 and was cut at 0) but Garwood's: [0.6187, 8.767] / 1.5 */
+    CHECK_NEAR(csv_get(p, "domain_m=100,measure=head_on_per_h", "ci_low"), 0.61869 / 1.5, 5e-5);
+    CHECK_NEAR(csv_get(p, "domain_m=100,measure=head_on_per_h", "ci_high"), 8.7673 / 1.5, 5e-4);
+    /* crossing: 1, 3, 5 events, 9 in all: the t interval over the replications */
+    CHECK_NEAR(csv_get(p, "domain_m=100,measure=crossing_per_h", "ci_high"), 6.0 + t2 * 4.0 / sqrt(3.0), 1e-7);
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=overtaking_per_h", "mean"), 2.0, 1e-9);
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=being_overtaken_per_h", "mean"), 4.0 / 3.0, 1e-9);
     CHECK_NEAR(csv_get(p, "domain_m=100,measure=crossing_per_h", "mean"), 6.0, 1e-9);
@@ -249,6 +252,39 @@ static void test_hand_traffic_cpa(void)
     CHECK_NEAR(csv_get(p, "run_id=2", "collisions_per_h"), 2.0, 1e-9);
     CHECK_NEAR(csv_get(p, "run_id=2", "sim_h"), 0.5, 1e-12);
     CHECK(csv_get(p, "run_id=4", "min_cpa_m") != csv_get(p, "run_id=4", "min_cpa_m")); /* NaN */
+}
+
+/* Zero events in 20 one-hour runs: the exact interval [0, 0.184] per hour
+ * (chi-square(0.975, 2) / 2 / 20 = 3.6889 / 20), never the t interval's
+ * [0, 0]; and the paired difference of two zero counts is not [0, 0]
+ * either, but within minus and plus that bound. */
+static void test_zero_counts(void)
+{
+    char db[400], out[400], p[500];
+    snprintf(db, sizeof db, "%s/zeros.db", dir);
+    snprintf(out, sizeof out, "%s/zeros", dir);
+    CHECK(sdb_zeros(db) == 0);
+    fw_error err = {0};
+    fw_study_report_result res;
+    CHECK(report(db, out, 100.0, false, &res, &err) == FW_OK);
+    snprintf(p, sizeof p, "%s/summary.csv", out);
+    const char *zero[] = {"head_on_per_h", "overtaking_per_h", "overtaking_own_per_h",
+                          "being_overtaken_per_h", "crossing_stand_on_per_h",
+                          "near_misses_per_h", "collisions_per_h"};
+    for (size_t i = 0; i < sizeof zero / sizeof zero[0]; i++) {
+        char w[120];
+        snprintf(w, sizeof w, "domain_m=100,measure=%s", zero[i]);
+        CHECK(csv_get(p, w, "mean") == 0.0);
+        CHECK(csv_get(p, w, "ci_low") == 0.0);
+        CHECK_NEAR(csv_get(p, w, "ci_high"), 0.184444, 5e-6);
+    }
+    /* 20 give-way encounters: the t interval, of zero width since every run had one */
+    CHECK(csv_get(p, "domain_m=100,measure=crossing_give_way_per_h", "ci_high") == 1.0);
+    snprintf(p, sizeof p, "%s/paired.csv", out);
+    CHECK_NEAR(csv_get(p, "domain_m=300,measure=head_on_per_h", "ci_low"), -0.184444, 5e-6);
+    CHECK_NEAR(csv_get(p, "domain_m=300,measure=head_on_per_h", "ci_high"), 0.184444, 5e-6);
+    CHECK_NEAR(csv_get(p, "domain_m=300,measure=collisions_per_h", "ci_high"), 0.184444, 5e-6);
+    CHECK(csv_get(p, "domain_m=300,measure=collisions_per_h", "significant") == 0);
 }
 
 static void test_hand_md(void)
@@ -532,8 +568,9 @@ static void test_warnings(void)
     if (md) {
         CHECK_CONTAINS(md, "Warning: 1 run with runs.n_encounters different from its encounter rows");
         CHECK_CONTAINS(md, "Warning: density 2 has no finished runs with the reference domain");
-        /* one run: no t interval for the encounters; 0 domain violations in 1 h: [0, 3.69] */
-        CHECK_CONTAINS(md, "| 2 | - | 500 | 1 | 0 | 0 [0, 3.69] |");
+        /* one run, no encounters in its hour: no t interval can be had, but 0
+         * encounters and 0 domain violations in 1 h are both [0, 3.69] exactly */
+        CHECK_CONTAINS(md, "| 2 | - | 500 | 1 | 0 [0, 3.69] | 0 [0, 3.69] |");
     }
     free(md);
     /* the counts still come from the rows */
@@ -605,6 +642,7 @@ int main(void)
     TEST_RUN(test_hand_paired);
     TEST_RUN(test_hand_traffic_cpa);
     TEST_RUN(test_hand_md);
+    TEST_RUN(test_zero_counts);
     TEST_RUN(test_reference);
     TEST_RUN(test_refusals);
     TEST_RUN(test_warnings);

@@ -83,11 +83,12 @@ static void setting(FILE *f, const fw_rep_group *G)
     num(f, G->ratio);
 }
 
-/* The name of a measure's interval method in the CSVs. */
-static const char *method_name(fw_measure_id m)
+/* The name of a measure's interval method in the CSVs: a count measure
+ * with few events pooled was given the exact Poisson interval instead. */
+static const char *method_name(const fw_rep_group *G, fw_measure_id m)
 {
     static const char *const names[] = {"t", "poisson_exact", "wilson", "bootstrap_ratio"};
-    return names[fw_measures[m].method];
+    return G->exact[m] ? "poisson_exact" : names[fw_measures[m].method];
 }
 
 static fw_status write_runs(const fw_study_report *rep, const char *dir, fw_error *err)
@@ -127,7 +128,7 @@ static fw_status write_summary(const fw_study_report *rep, const char *dir, fw_e
             setting(c.f, G);
             fprintf(c.f, ",%s", fw_measures[m].name);
             estimate(c.f, &G->est[m]);
-            fprintf(c.f, ",%s\n", method_name((fw_measure_id)m));
+            fprintf(c.f, ",%s\n", method_name(G, (fw_measure_id)m));
         }
     return csv_close(&c, err);
 }
@@ -137,7 +138,7 @@ static fw_status write_traffic(const fw_study_report *rep, const char *dir, fw_e
     csv c;
     if (csv_open(&c, dir, "traffic.csv",
                  SETTING "type,n,encounters,traffic_ship_h,"
-                 "mean_per_1000_ship_h,sd,ci_low,ci_high",
+                 "mean_per_1000_ship_h,sd,ci_low,ci_high,method",
                  err))
         return err->status;
     for (int g = 0; g < rep->n_groups; g++)
@@ -151,7 +152,7 @@ static fw_status write_traffic(const fw_study_report *rep, const char *dir, fw_e
             num(c.f, e->sd);
             num(c.f, e->lo);
             num(c.f, e->hi);
-            fputc('\n', c.f);
+            fprintf(c.f, ",%s\n", method_name(G, FW_M_TRAFFIC_ALL + t));
         }
     return csv_close(&c, err);
 }
@@ -172,9 +173,8 @@ static fw_status write_pairs(const fw_study_report *rep, const fw_rep_pair *pair
         fprintf(c.f, ",%.12g,%s,%s", R->domain, R->behaviour, fw_measures[p->measure].name);
         estimate(c.f, &p->est);
         /* the interval excludes zero: the difference is significant at the level */
-        fw_ci_method m = fw_measures[p->measure].method;
         fprintf(c.f, ",%d,%s\n", p->est.lo > 0.0 || p->est.hi < 0.0,
-                m == FW_CI_POISSON || m == FW_CI_WILSON ? "conditional_binomial" : "paired_t");
+                p->exact ? "conditional_binomial" : "paired_t");
     }
     return csv_close(&c, err);
 }

@@ -68,11 +68,29 @@ typedef enum fw_ci_method { FW_CI_T, FW_CI_POISSON, FW_CI_WILSON, FW_CI_RATIO } 
 
 extern const char *const fw_ci_method_text[];  /* for people, by fw_ci_method */
 
+/* Whether a T measure is a count of events per unit of exposure, and which:
+ * such a measure gets the exact Poisson interval instead of the t interval
+ * when its group pooled fewer than FW_REP_FEW_EVENTS events (see
+ * fw_rep_group.exact). */
+typedef enum fw_count_kind {
+    FW_COUNT_NONE,
+    FW_COUNT_OWN_H,   /* events per own-ship hour */
+    FW_COUNT_KSHIP_H  /* events per 1000 traffic ship-hours */
+} fw_count_kind;
+
+/* Below this many events pooled over a group's runs, a t interval over
+ * replications of counts is not to be trusted: with every run at 0 it is
+ * [0, 0], a certainty no finite study has, and with one event in twenty runs
+ * it is cut at 0 and far too short.  The usual rule of thumb for a normal
+ * approximation to counts asks for at least 5 expected events. */
+enum { FW_REP_FEW_EVENTS = 5 };
+
 typedef struct fw_measure {
     const char *name;     /* CSV name, unit in it */
     const char *label;    /* for people */
     fw_ci_method method;
     bool traffic;         /* traffic.csv rather than summary.csv */
+    fw_count_kind count;  /* FW_CI_T measures that count events */
 } fw_measure;
 
 /* Bootstrap resamples and the seed every bootstrap of a report starts from:
@@ -126,6 +144,8 @@ typedef struct fw_rep_group {
     char behaviour[16];
     int n_runs;
     fw_estimate est[FW_NMEASURES];
+    bool exact[FW_NMEASURES];                       /* a count measure given Garwood's
+                                                       interval: fewer than FW_REP_FEW_EVENTS */
     fw_estimate cpa_median;                         /* own-ship CPA, bootstrap interval */
     fw_rep_values cpa[FW_REP_NSET][FW_REP_NTYPE];  /* sorted after loading */
     long long traffic_count[FW_REP_NTYPE];          /* pooled over the runs */
@@ -142,6 +162,7 @@ typedef struct fw_rep_pair {
     int group, ref_group;
     fw_measure_id measure;
     fw_estimate est;
+    bool exact;   /* the conditional binomial (counts), not the paired t */
 } fw_rep_pair;
 
 typedef struct fw_rep_count {

@@ -143,8 +143,12 @@ static void md_key_table(FILE *f, const fw_study_report *rep)
     fprintf(f, "- CPA median: the median of the pooled encounters' closest centre distances, "
                "percentile bootstrap over encounters (%d resamples, fixed seed; encounters of one "
                "run share its traffic, so it is somewhat narrow)\n\n"
-               "Rates are per own-ship hour. A t interval's lower end below 0 is cut at 0.\n\n",
-            FW_REP_BOOT_REPS);
+               "Rates are per own-ship hour. A t interval's lower end below 0 is cut at 0. A count "
+               "per hour (encounters, manoeuvres, helm orders, traffic encounters) with fewer than "
+               "%d events pooled over a setting's runs gets the exact Poisson (Garwood) interval over "
+               "the pooled hours instead of the t interval, which for replications of zeros would "
+               "be [0, 0]: no study of finite length can rule out a rate above 0.\n\n",
+            FW_REP_BOOT_REPS, FW_REP_FEW_EVENTS);
     fprintf(f, "| density | traffic | domain (m) | runs |");
     for (int k = 0; k < NKEY; k++)
         fprintf(f, " %s |", key_head[k]);
@@ -161,7 +165,8 @@ static void md_key_table(FILE *f, const fw_study_report *rep)
     }
     (void)m;
     fprintf(f, "\nTraffic level (all ships in the survey area), encounters per 1000 ship-hours "
-               "(Student t over replications):\n\n| density | traffic | domain (m) |");
+               "(Student t over replications; exact Poisson below %d events):\n\n"
+               "| density | traffic | domain (m) |", FW_REP_FEW_EVENTS);
     for (int t = 0; t < FW_REP_NTYPE; t++)
         fprintf(f, " %s |", fw_rep_type_names[t]);
     fprintf(f, "\n|---|---|---|---|---|---|---|\n");

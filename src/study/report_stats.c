@@ -28,14 +28,14 @@ const char *const fw_ci_method_text[] = {
 };
 
 const fw_measure fw_measures[FW_NMEASURES] = {
-    [FW_M_ENCOUNTERS] = {"encounters_per_h", "own-ship encounters per hour", FW_CI_T, false},
-    [FW_M_HEAD_ON] = {"head_on_per_h", "head-on encounters per hour", FW_CI_T, false},
-    [FW_M_OVERTAKING] = {"overtaking_per_h", "overtaking encounters (either way) per hour", FW_CI_T, false},
-    [FW_M_CROSSING] = {"crossing_per_h", "crossing encounters (give-way or stand-on) per hour", FW_CI_T, false},
-    [FW_M_SIT_OVERTAKING] = {"overtaking_own_per_h", "own ship overtaking per hour", FW_CI_T, false},
-    [FW_M_SIT_OVERTAKEN] = {"being_overtaken_per_h", "own ship being overtaken per hour", FW_CI_T, false},
-    [FW_M_SIT_GIVE_WAY] = {"crossing_give_way_per_h", "crossing, own ship gives way, per hour", FW_CI_T, false},
-    [FW_M_SIT_STAND_ON] = {"crossing_stand_on_per_h", "crossing, own ship stands on, per hour", FW_CI_T, false},
+    [FW_M_ENCOUNTERS] = {"encounters_per_h", "own-ship encounters per hour", FW_CI_T, false, FW_COUNT_OWN_H},
+    [FW_M_HEAD_ON] = {"head_on_per_h", "head-on encounters per hour", FW_CI_T, false, FW_COUNT_OWN_H},
+    [FW_M_OVERTAKING] = {"overtaking_per_h", "overtaking encounters (either way) per hour", FW_CI_T, false, FW_COUNT_OWN_H},
+    [FW_M_CROSSING] = {"crossing_per_h", "crossing encounters (give-way or stand-on) per hour", FW_CI_T, false, FW_COUNT_OWN_H},
+    [FW_M_SIT_OVERTAKING] = {"overtaking_own_per_h", "own ship overtaking per hour", FW_CI_T, false, FW_COUNT_OWN_H},
+    [FW_M_SIT_OVERTAKEN] = {"being_overtaken_per_h", "own ship being overtaken per hour", FW_CI_T, false, FW_COUNT_OWN_H},
+    [FW_M_SIT_GIVE_WAY] = {"crossing_give_way_per_h", "crossing, own ship gives way, per hour", FW_CI_T, false, FW_COUNT_OWN_H},
+    [FW_M_SIT_STAND_ON] = {"crossing_stand_on_per_h", "crossing, own ship stands on, per hour", FW_CI_T, false, FW_COUNT_OWN_H},
     [FW_M_DOMAIN] = {"domain_violations_per_h", "domain violations per hour", FW_CI_POISSON, false},
     [FW_M_DOMAIN_FRACTION] = {"domain_violation_fraction", "share of encounters entering the domain", FW_CI_RATIO, false},
     [FW_M_NEAR_MISS] = {"near_misses_per_h", "near misses per hour", FW_CI_POISSON, false},
@@ -43,15 +43,15 @@ const fw_measure fw_measures[FW_NMEASURES] = {
     [FW_M_NEAR_MISS_RUNS] = {"near_miss_run_fraction", "share of runs with a near miss", FW_CI_WILSON, false},
     [FW_M_COLLISION_RUNS] = {"collision_run_fraction", "share of runs with a collision", FW_CI_WILSON, false},
     [FW_M_MIN_CPA] = {"min_cpa_m", "closest approach of the run (m)", FW_CI_T, false},
-    [FW_M_MANOEUVRES] = {"manoeuvres_per_h", "avoidance manoeuvres per hour", FW_CI_T, false},
+    [FW_M_MANOEUVRES] = {"manoeuvres_per_h", "avoidance manoeuvres per hour", FW_CI_T, false, FW_COUNT_OWN_H},
     [FW_M_MAX_HELM] = {"max_helm_deg", "largest helm (deg)", FW_CI_T, false},
-    [FW_M_HELM_ORDERS] = {"helm_orders_per_h", "helm orders per hour", FW_CI_T, false},
+    [FW_M_HELM_ORDERS] = {"helm_orders_per_h", "helm orders per hour", FW_CI_T, false, FW_COUNT_OWN_H},
     [FW_M_PATH] = {"path_lengthening_m_per_h", "path lengthening (m per hour)", FW_CI_T, false},
     [FW_M_TIME_LOST] = {"time_lost_s_per_h", "time lost (s per hour)", FW_CI_T, false},
-    [FW_M_TRAFFIC_ALL] = {"traffic_encounters_per_1000_ship_h", "traffic encounters per 1000 ship-hours", FW_CI_T, true},
-    [FW_M_TRAFFIC_HEAD_ON] = {"traffic_head_on_per_1000_ship_h", "traffic head-on per 1000 ship-hours", FW_CI_T, true},
-    [FW_M_TRAFFIC_OVERTAKING] = {"traffic_overtaking_per_1000_ship_h", "traffic overtaking per 1000 ship-hours", FW_CI_T, true},
-    [FW_M_TRAFFIC_CROSSING] = {"traffic_crossing_per_1000_ship_h", "traffic crossing per 1000 ship-hours", FW_CI_T, true},
+    [FW_M_TRAFFIC_ALL] = {"traffic_encounters_per_1000_ship_h", "traffic encounters per 1000 ship-hours", FW_CI_T, true, FW_COUNT_KSHIP_H},
+    [FW_M_TRAFFIC_HEAD_ON] = {"traffic_head_on_per_1000_ship_h", "traffic head-on per 1000 ship-hours", FW_CI_T, true, FW_COUNT_KSHIP_H},
+    [FW_M_TRAFFIC_OVERTAKING] = {"traffic_overtaking_per_1000_ship_h", "traffic overtaking per 1000 ship-hours", FW_CI_T, true, FW_COUNT_KSHIP_H},
+    [FW_M_TRAFFIC_CROSSING] = {"traffic_crossing_per_1000_ship_h", "traffic crossing per 1000 ship-hours", FW_CI_T, true, FW_COUNT_KSHIP_H},
 };
 
 static double flag(double v)
@@ -99,14 +99,53 @@ static int run_encounters(const fw_rep_run *r)
     return n;
 }
 
-/* The events of a POISSON measure in run r: its rate times its hours. */
+/* The exposure a rate of run r is per: own-ship hours, or thousands of
+ * traffic ship-hours for the traffic counts (NAN when not recorded). */
+static double run_exposure(const fw_rep_run *r, fw_measure_id id)
+{
+    if (fw_measures[id].count == FW_COUNT_KSHIP_H)
+        return r->traffic_ship_s > 0.0 ? r->traffic_ship_s / 3600.0 / 1000.0 : NAN;
+    return r->sim_s / 3600.0;
+}
+
+/* The events of a count measure in run r: its rate times its exposure. */
 static long long run_count(const fw_rep_run *r, fw_measure_id id)
 {
-    return llround(r->m[id] * r->sim_s / 3600.0);
+    return llround(r->m[id] * run_exposure(r, id));
+}
+
+/* A count measure's group: the t interval over replications, or, with
+ * fewer than FW_REP_FEW_EVENTS events pooled, Garwood's over the pooled
+ * exposure (*exact set).  Zero events in 20 h: [0, 0.184] per hour. */
+static fw_estimate count_estimate(const fw_study_report *rep, int g, fw_measure_id id,
+                                  const double *buf, int n, bool *exact)
+{
+    long long events = 0;
+    double exposure = 0.0;
+    int ok = 0;
+    for (int i = 0; i < rep->n_runs; i++) {
+        const fw_rep_run *r = &rep->runs[i];
+        double x = run_exposure(r, id);
+        if (r->group != g || isnan(r->m[id]) || isnan(x))
+            continue;
+        ok++;
+        events += run_count(r, id);
+        exposure += x;
+    }
+    fw_estimate e = fw_mean_ci(buf, n, rep->level);
+    if (e.lo < 0.0)
+        e.lo = 0.0;
+    if (ok == 0 || events >= FW_REP_FEW_EVENTS)
+        return e;
+    fw_estimate p = fw_poisson_exact(events, exposure, rep->level);
+    p.n = ok;
+    p.sd = e.sd;
+    *exact = true;
+    return p;
 }
 
 static fw_estimate group_estimate(const fw_study_report *rep, int g, fw_measure_id id, double *buf,
-                                  double *buf2)
+                                  double *buf2, bool *exact)
 {
     int n = 0, k = 0, ok = 0;
     long long events = 0;
@@ -140,6 +179,8 @@ static fw_estimate group_estimate(const fw_study_report *rep, int g, fw_measure_
         return e;
     case FW_CI_T:
     default:
+        if (fw_measures[id].count != FW_COUNT_NONE)
+            return count_estimate(rep, g, id, buf, n, exact);
         e = fw_mean_ci(buf, n, rep->level);
         if (e.lo < 0.0)
             e.lo = 0.0;
@@ -187,7 +228,7 @@ static fw_status histograms(fw_study_report *rep, fw_error *err)
  * replication: the runs of one replication sailed the same traffic.  a, b,
  * ha, hb: n_reps values each (scratch). */
 static fw_estimate pair_estimate(const fw_study_report *rep, int g, int ref, fw_measure_id m,
-                                 double *a, double *b, double *ha, double *hb)
+                                 double *a, double *b, double *ha, double *hb, bool *exact)
 {
     int nr = rep->n_reps;
     for (int i = 0; i < nr; i++)
@@ -196,20 +237,22 @@ static fw_estimate pair_estimate(const fw_study_report *rep, int g, int ref, fw_
         const fw_rep_run *r = &rep->runs[i];
         if (r->group == g || r->group == ref) {
             (r->group == g ? a : b)[r->replication] = r->m[m];
-            (r->group == g ? ha : hb)[r->replication] = r->sim_s / 3600.0;
+            (r->group == g ? ha : hb)[r->replication] = run_exposure(r, m);
         }
     }
     fw_estimate t = fw_paired_ci(a, b, nr, rep->level);
     fw_ci_method method = fw_measures[m].method;
-    if (method != FW_CI_POISSON && method != FW_CI_WILSON)
+    bool counted = fw_measures[m].count != FW_COUNT_NONE;
+    if (method != FW_CI_POISSON && method != FW_CI_WILSON && !counted)
         return t;
-    /* counts: the conditional binomial, on the events (POISSON) or on the
-     * discordant pairs (WILSON), over the replications both sides have */
+    /* counts: the conditional binomial, on the events (POISSON, and a
+     * counted T measure with few events) or on the discordant pairs
+     * (WILSON), over the replications both sides have */
     long long x = 0, y = 0;
-    double hours = 0.0;
+    double hours = 0.0, hx = 0.0, hy = 0.0;
     int pairs = 0;
     for (int i = 0; i < nr; i++) {
-        if (isnan(a[i]) || isnan(b[i]))
+        if (isnan(a[i]) || isnan(b[i]) || isnan(ha[i]) || isnan(hb[i]))
             continue;
         pairs++;
         if (method == FW_CI_WILSON) {
@@ -219,16 +262,27 @@ static fw_estimate pair_estimate(const fw_study_report *rep, int g, int ref, fw_
             x += llround(a[i] * ha[i]);
             y += llround(b[i] * hb[i]);
             hours += 0.5 * (ha[i] + hb[i]);
+            hx += ha[i];
+            hy += hb[i];
         }
     }
-    if (pairs == 0)
+    if (pairs == 0 || (method == FW_CI_T && x + y >= FW_REP_FEW_EVENTS))
         return t;
+    *exact = true;
     fw_estimate e = fw_count_difference(x, y, method == FW_CI_WILSON ? 1.0 / pairs : 1.0 / hours,
                                         rep->level);
     e.n = pairs;
     e.sd = t.sd;
-    if (x + y == 0) /* no events on either side in any pair: exactly no difference seen */
+    if (x + y == 0 && method == FW_CI_WILSON) /* no discordant pair: no difference seen */
         e.lo = e.hi = 0.0;
+    else if (x + y == 0) {
+        /* no event on either side: each rate is below its exact upper bound
+         * for 0 events, so their difference lies between minus the one and
+         * the other; no study of finite length can say it is exactly 0 */
+        e.mean = 0.0;
+        e.lo = -fw_poisson_exact(0, hy, rep->level).hi;
+        e.hi = fw_poisson_exact(0, hx, rep->level).hi;
+    }
     return e;
 }
 
@@ -244,8 +298,9 @@ static fw_status add_pairs(fw_study_report *rep, fw_rep_pair *out, int *n_out, i
         p->group = g;
         p->ref_group = ref;
         p->measure = (fw_measure_id)m;
+        p->exact = false;
         p->est = pair_estimate(rep, g, ref, (fw_measure_id)m, buf, buf + nr, buf + 2 * nr,
-                               buf + 3 * nr);
+                               buf + 3 * nr, &p->exact);
     }
     free(buf);
     return FW_OK;
@@ -338,7 +393,7 @@ fw_status fw_rep_compute(fw_study_report *rep, double reference_m, fw_error *err
     for (int g = 0; g < rep->n_groups; g++) {
         fw_rep_group *G = &rep->groups[g];
         for (int m = 0; m < FW_NMEASURES; m++)
-            G->est[m] = group_estimate(rep, g, (fw_measure_id)m, buf, buf + rep->n_runs);
+            G->est[m] = group_estimate(rep, g, (fw_measure_id)m, buf, buf + rep->n_runs, &G->exact[m]);
         for (int s = 0; s < FW_REP_NSET; s++)
             for (int t = 0; t < FW_REP_NTYPE; t++)
                 fw_sort(G->cpa[s][t].v, G->cpa[s][t].n);
