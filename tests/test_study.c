@@ -4,6 +4,7 @@
 #include <math.h>
 #include <sqlite3.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 #include "study/outcome.h"
@@ -233,6 +234,38 @@ static fw_encounter full_encounter(void)
     return e;
 }
 
+/* Near misses are hull to hull (issue 25): for the 333 m own ship a pass
+ * 10 m between the hulls has its centres 200 m apart, which the old
+ * centre-to-centre reading called no near miss; a 175 m hull-to-hull pass is
+ * one too; the centre reading is kept as the secondary flag.  Closeness is
+ * 1 at contact, 1 - d / 1852 within a mile, 0 beyond. */
+static void test_near_miss_hull(void)
+{
+    fw_study *s = load("tests/data/study/small.yaml");
+    CHECK(s->near_miss == 185.2);
+    fw_encounter e[3] = {full_encounter(), full_encounter(), full_encounter()};
+    e[0].min_dist = 200.0, e[0].min_hull = 10.0, e[0].domain_entered = false;
+    e[1].min_dist = 350.0, e[1].min_hull = 175.0, e[1].domain_entered = false;
+    e[2].min_dist = 900.0, e[2].min_hull = INFINITY, e[2].domain_entered = false;
+    fw_run_summary sum = {.t_end = 3600.0, .min_dist = 200.0, .min_hull = 10.0};
+    fw_outcome o;
+    fw_error err = {0};
+    CHECK(fw_outcome_from_run(&o, s, 1, &sum, e, 3, NULL, 0, &err) == FW_OK);
+    CHECK(o.near_miss == 1 && o.near_miss_centre == 0);
+    CHECK_NEAR(o.closeness, 1.0 - 10.0 / 1852.0, 1e-12);
+    CHECK(o.n_enc == 3);
+    CHECK(o.enc[0].v.near_miss == 1 && o.enc[0].v.near_miss_centre == 0);
+    CHECK(strcmp(o.enc[0].v.outcome, "near miss") == 0);
+    CHECK(o.enc[1].v.near_miss == 1 && strcmp(o.enc[1].v.outcome, "near miss") == 0);
+    CHECK(o.enc[2].v.near_miss == 0 && o.enc[2].v.closeness == 0.0);
+    CHECK(strcmp(o.enc[2].v.outcome, "passed") == 0);
+    fw_outcome_free(&o);
+    CHECK(fw_closeness(0.0) == 1.0);
+    CHECK(fw_closeness(1852.0) == 0.0 && fw_closeness(NAN) == 0.0);
+    CHECK_NEAR(fw_closeness(926.0), 0.5, 1e-15);
+    free(s);
+}
+
 /* The CSV row's cell under `name` in the header. */
 static const char *cell(char *const *head, char *const *row, int n, const char *name)
 {
@@ -296,7 +329,8 @@ static void test_encounter_record(void)
     fw_error err = {0};
     CHECK_MSG(fw_store_open(path, s, &st, &err) == FW_OK, "%s", err.msg);
     fw_outcome o = sample(6);
-    o.enc[0] = (fw_outcome_encounter){.e = e, .v = {.near_miss = 0, .outcome = "domain"}};
+    o.enc[0] = (fw_outcome_encounter){
+        .e = e, .v = {.near_miss = 0, .near_miss_centre = 1, .closeness = 0.25, .outcome = "domain"}};
     CHECK_MSG(fw_store_commit(st, s, &o, &err) == FW_OK, "%s", err.msg);
     fw_store_close(st);
     sqlite3 *db = NULL;
@@ -331,7 +365,7 @@ static void test_encounter_record(void)
         checked++;
         sqlite3_finalize(q);
     }
-    CHECK(checked == 34);
+    CHECK(checked == 36);
     /* the database's helm is signed, the audit's course change in degrees */
     CHECK(count(db, "SELECT COUNT(*) FROM encounters WHERE act_helm_deg < -19.99 AND "
                     "act_helm_deg > -20.01 AND compliant IS NULL AND candidate = 1 AND "
@@ -355,5 +389,6 @@ int main(void)
     TEST_RUN(test_outcome_bytes);
     TEST_RUN(test_store);
     TEST_RUN(test_encounter_record);
+    TEST_RUN(test_near_miss_hull);
     return TEST_EXIT();
 }

@@ -2,6 +2,7 @@
  * known answers (head-on, overtaking, crossing, none, episodes, absences, the
  * own flag), bad input, the cell grid against all pairs, and the independence
  * of the input order.  No SUMO (see test_survey_run for the run). */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -178,6 +179,17 @@ static void test_none(void)
     fw_survey_def wide_def = def;
     wide_def.dcpa = 1200.0;
     fw_survey_destroy(run_lines(&wide_def, wide, 2, 1.0, 800.0, &tot));
+    CHECK(tot.n == 1);
+    /* parallel reciprocal routes the threshold apart to a nanometre, as
+     * Dover's ferry routes, whose DCPA came out at 999.999999... m, which a
+     * bare "< 1000" counted; a decimetre's margin does not (geom.h) */
+    line_ship par[2] = {{.id = "A", .e = 0.0, .n = -2000, .course_deg = 0, .speed = 5},
+                        {.id = "B", .e = 1000.0 - 1e-9, .n = 2000, .course_deg = 180, .speed = 5}};
+    fw_survey_destroy(run_lines(&def, par, 2, 1.0, 800.0, &tot));
+    CHECK(tot.n == 0);
+    /* a real pass half a metre inside the threshold is one */
+    par[1].e = 999.8;
+    fw_survey_destroy(run_lines(&def, par, 2, 1.0, 800.0, &tot));
     CHECK(tot.n == 1);
     /* same course and speed 500 m apart: no relative motion */
     line_ship convoy[2] = {{.id = "A", .e = 0, .n = 0, .course_deg = 45, .speed = 6},

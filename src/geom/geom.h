@@ -24,6 +24,20 @@
 
 #include "geom/target.h"
 
+/* A counting threshold on a distance is passed only when the distance lies
+ * below it by more than FW_DIST_RESOLUTION.  Positions are not known to a
+ * decimetre (SUMO writes its networks to 0.01 m, AIS to about 0.2 m), and a
+ * test that rounding can decide counts ships by accident: Dover's two ferry
+ * routes lie exactly 1000 m apart, and three in four of the default study's
+ * traffic encounters were ferry pairs whose DCPA came out as 999.99999...
+ * against the survey's 1000 m.  With the margin, ships on parallel routes a
+ * threshold apart are not encounters, and a real pass 999.5 m off still is. */
+#define FW_DIST_RESOLUTION 0.1
+static inline bool fw_clearly_below(double d, double threshold)
+{
+    return d < threshold - FW_DIST_RESOLUTION;
+}
+
 /* Offset (de, dn) east/north seen from a ship whose heading has sine s and
  * cosine c: x ahead, y to starboard. */
 static inline void fw_to_body(double de, double dn, double s, double c, double *x, double *y)

@@ -41,6 +41,8 @@ GET(g_t_min, o->num = e->t_min)
 GET(g_min_lambda, o->num = e->min_lambda)
 GET(g_domain_entered, o->num = e->domain_entered)
 GET(g_near_miss, o->num = v->near_miss)
+GET(g_near_miss_centre, o->num = v->near_miss_centre)
+GET(g_closeness, o->num = v->closeness)
 GET(g_collision, o->num = e->collision)
 GET(g_colregs_ok, o->num = e->colregs_ok)
 GET(g_min_hull, o->num = e->min_hull)
@@ -83,9 +85,11 @@ static const fw_enc_field kFields[] = {
     {"min_domain_ratio", "min_lambda", FW_ENC_REAL, "", 3, ALL, g_min_lambda},
     {"domain_entered", "domain_entered", FW_ENC_FLAG, "", 0, ALL, g_domain_entered},
     {NULL, "near_miss", FW_ENC_FLAG, "", 0, FW_ENC_SQL, g_near_miss},
+    {NULL, "near_miss_centre", FW_ENC_FLAG, "", 0, FW_ENC_SQL, g_near_miss_centre},
     {"collision", "collision", FW_ENC_FLAG, "", 0, ALL, g_collision},
     {"colregs_ok", "colregs_ok", FW_ENC_FLAG, "", 0, ALL, g_colregs_ok},
     {"min_hull_m", "min_hull_m", FW_ENC_REAL, "m", 1, ALL | FW_ENC_NULLABLE, g_min_hull},
+    {NULL, "closeness", FW_ENC_REAL, "", 4, FW_ENC_SQL, g_closeness},
     {NULL, "candidate", FW_ENC_FLAG, "", 0, FW_ENC_SQL, g_candidate},
     {NULL, "cand_miss_m", FW_ENC_REAL, "m", 1, FW_ENC_SQL, g_cand_miss},
     {NULL, "outcome", FW_ENC_TEXT, "", 0, FW_ENC_SQL, g_outcome},

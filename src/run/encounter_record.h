@@ -8,7 +8,7 @@
  * its type, unit, decimals, and how its value is had from the encounter.  The
  * two shapes differ where they always did: the files carry the hull size and
  * the "primary" flag and print the helm unsigned; the database carries the
- * study's verdicts (near miss, candidate, outcome: fw_enc_verdict), the
+ * study's verdicts (near miss, closeness, candidate, outcome: fw_enc_verdict), the
  * signed helm (NULL when it never acted) and the COLREGs audit.
  *
  * Numbers in the files are "%.Nf" with the field's decimals (no %g, so the
@@ -25,8 +25,10 @@
 
 /* What a study judges of an encounter with its own thresholds (outcome.h). */
 typedef struct fw_enc_verdict {
-    int near_miss;     /* centre distance below the study's near_miss */
-    char outcome[16];  /* collision, near miss, domain, passed */
+    int near_miss;        /* hull to hull below the study's near_miss */
+    int near_miss_centre; /* centre to centre below it: a secondary measure */
+    double closeness;     /* study/outcome.h fw_closeness of the least hull distance */
+    char outcome[16];     /* collision, near miss, domain, passed */
 } fw_enc_verdict;
 
 typedef enum fw_enc_type {

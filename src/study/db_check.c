@@ -54,6 +54,7 @@ static const rule runs_rules[] = {
     {"min_dist_m", K_NUM, DIST, 0, "a distance"},
     {"domain_entered", K_FLAG, 0, 1, 0, "a flag"},
     {"near_miss", K_FLAG, 0, 1, 0, "a flag"},
+    {"near_miss_centre", K_FLAG, 0, 1, 0, "a flag"},
     {"collision", K_FLAG, 0, 1, 0, "a flag"},
     {"colregs_ok", K_FLAG, 0, 1, 0, "a flag"},
     {"max_helm_deg", K_NUM, ANY, 0, "an angle"},
@@ -75,6 +76,7 @@ static const rule runs_rules[] = {
     {"mon_stopped", K_INT, COUNT, 0, "a count"},
     {"max_lateral_mps", K_NUM, NONNEG, 0, "a speed"},
     {"min_hull_m", K_NUM, DIST, 0, "a distance"},
+    {"closeness", K_NUM, 0, 1, 0, "a closeness (0-1)"},
 };
 
 static const rule traffic_rules[] = {
@@ -102,6 +104,7 @@ static const rule enc_ranges[] = {
     {"compliant", K_FLAG, 0, 1, 0, "a flag"},
     {"rule17_phase", K_INT, 0, 3, 0, "a rule 17 phase (0-3)"},
     {"rule", K_INT, 0, 99, 0, "a COLREGs rule"},
+    {"closeness", K_NUM, 0, 1, 0, "a closeness (0-1)"},
 };
 
 /* Text columns whose values are names the readers know (the same lists they count by). */

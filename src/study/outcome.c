@@ -25,6 +25,13 @@ void fw_outcome_free(fw_outcome *o)
     o->n_enc = o->n_traffic = 0;
 }
 
+double fw_closeness(double min_hull)
+{
+    if (!(min_hull < FW_CLOSENESS_RANGE)) /* NAN too: no hull within the range */
+        return 0.0;
+    return 1.0 - fmax(min_hull, 0.0) / FW_CLOSENESS_RANGE;
+}
+
 const char *fw_outcome_ended(bool collision, double min_hull, double near_miss, bool domain)
 {
     if (collision || min_hull == 0.0)
@@ -55,7 +62,11 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
     o->time_lost = sum->time_lost;
     o->rudder_work_deg_s = fw_rad_to_deg(sum->rudder_work);
     o->helm_orders = sum->helm_orders;
-    o->near_miss = isfinite(sum->min_dist) && sum->min_dist < s->near_miss;
+    /* hull to hull, as the outcome of each encounter; the centre distance
+     * is the secondary reading */
+    o->near_miss = isfinite(sum->min_hull) && sum->min_hull < s->near_miss;
+    o->near_miss_centre = isfinite(sum->min_dist) && sum->min_dist < s->near_miss;
+    o->closeness = fw_closeness(sum->min_hull);
     o->traffic_ship_s = sum->survey ? sum->traffic_ship_s : NAN;
     snprintf(o->behaviour, sizeof o->behaviour, "%s", fw_behaviour_name(sum->behaviour));
     o->give_way = sum->n_give_way;
@@ -95,7 +106,9 @@ fw_status fw_outcome_from_run(fw_outcome *o, const fw_study *s, int run_id,
             continue;
         fw_outcome_encounter *y = &o->enc[o->n_enc++];
         y->e = *x;
-        y->v.near_miss = x->min_dist < s->near_miss;
+        y->v.near_miss = x->min_hull < s->near_miss; /* false when NAN: never within 1 nm */
+        y->v.near_miss_centre = x->min_dist < s->near_miss;
+        y->v.closeness = fw_closeness(x->min_hull);
         snprintf(y->v.outcome, sizeof y->v.outcome, "%s",
                  fw_outcome_ended(x->collision, x->min_hull, s->near_miss, x->domain_entered));
     }

@@ -40,6 +40,16 @@ typedef struct fw_outcome_traffic {
     char outcome[16];
 } fw_outcome_traffic;
 
+/* The closeness of a pass: 1 - d / FW_CLOSENESS_RANGE for a least hull
+ * distance d (m) within that range, 0 beyond it or when no hull came within
+ * it (NAN).  1 exactly at contact, continuous, and the same for every domain
+ * size: the per-run and per-encounter score that adaptive multilevel
+ * splitting climbs (issue 25), and a measure of how close a study came that
+ * does not depend on where its thresholds lie.  The range is the hull watch
+ * of the own ship (1 nm), beyond which no hull distance is kept. */
+#define FW_CLOSENESS_RANGE 1852.0
+double fw_closeness(double min_hull);
+
 /* How an encounter ended, the worst that happened: "collision" (the hulls
  * touched), "near miss" (hull to hull closer than near_miss), "domain" (the
  * own domain entered; own-ship encounters only) or "passed". */
@@ -52,7 +62,10 @@ typedef struct fw_outcome {
     double sim_s, wall_s, sumo_s;
     int n_actions;
     double min_dist;   /* m, NAN when no target was met */
-    int domain_entered, near_miss, collision, colregs_ok;
+    int domain_entered, collision, colregs_ok;
+    int near_miss;        /* the least hull distance below the study's near_miss */
+    int near_miss_centre; /* the least centre distance below it: secondary */
+    double closeness;     /* fw_closeness(min_hull) */
     double max_helm_deg, path_length, path_lengthening, time_lost, rudder_work_deg_s;
     int helm_orders;
     double traffic_ship_s;

@@ -16,7 +16,13 @@
  *
  * Distances: min_dist_m are centre to centre (the paper's and the domain's
  * measure), min_hull_m hull to hull (the rectangles' closest points; 0 when
- * they touched); near_miss is centre to centre below the study's near_miss_m.
+ * they touched).  near_miss is hull to hull below the study's near_miss_m
+ * (schema 4; in schema 3 it was centre to centre, which for the 333 m own
+ * ship left a 9.9 m pass between the hulls "no near miss");
+ * near_miss_centre keeps the centre-to-centre reading as a named secondary
+ * measure.  closeness (study/outcome.h fw_closeness) is 1 - min_hull_m /
+ * 1852 m, 1 at contact and 0 when no hull came within 1 nm: continuous, the
+ * score a rare-event method climbs.
  *
  * Collision candidates (candidate, cand_miss_m, outcome): an encounter is a
  * geometric candidate when both ships' straight tracks from its first
@@ -46,7 +52,7 @@
 
 #include "run/encounter_record.h"
 
-#define FW_SCHEMA_VERSION "3"
+#define FW_SCHEMA_VERSION "4"
 
 #define FW_SCHEMA_SQL_RUNS                                                              \
     "CREATE TABLE IF NOT EXISTS meta(\n"                                                \
@@ -68,7 +74,8 @@
     "  n_actions INTEGER,\n"             /* avoidance manoeuvres begun */               \
     "  min_dist_m REAL,\n"               /* NULL: no target met */                      \
     "  domain_entered INTEGER,\n"                                                       \
-    "  near_miss INTEGER,\n"                                                            \
+    "  near_miss INTEGER,\n"             /* hull to hull below near_miss_m */            \
+    "  near_miss_centre INTEGER,\n"      /* centre to centre below it (secondary) */     \
     "  collision INTEGER,\n"                                                            \
     "  colregs_ok INTEGER,\n"                                                           \
     "  max_helm_deg REAL,\n"                                                            \
@@ -90,14 +97,16 @@
     "  mon_stopped INTEGER,\n"                                                          \
     "  max_lateral_mps REAL,\n"                                                         \
     "  min_hull_m REAL,\n"               /* hull to hull; NULL: none within 1 nm */      \
+    "  closeness REAL,\n"                /* 1 - min_hull_m / 1852, 0 beyond 1 nm */      \
     "  UNIQUE(domain_m, fore_aft_ratio, density, behaviour, replication));\n"
 
 /* The encounters table: made from the encounter record's field table
  * (run/encounter_record.h fw_enc_sql_table): target, target_type, situation;
  * t_detect_s, dcpa0_m, tcpa0_s; threat, acted; t_act_s, act_side,
  * act_helm_deg (signed, + starboard; NULL: never acted); min_dist_m, t_min_s,
- * min_lambda; domain_entered, near_miss, collision, colregs_ok; min_hull_m
- * (hull to hull; NULL: never within 1 nm); candidate, cand_miss_m (hull to
+ * min_lambda; domain_entered, near_miss (hull to hull), near_miss_centre,
+ * collision, colregs_ok; min_hull_m (hull to hull; NULL: never within 1 nm),
+ * closeness; candidate, cand_miss_m (hull to
  * hull on the straight tracks), outcome (collision, near miss, domain,
  * passed); the COLREGs audit (below): rule, role, t_risk_s, tcpa_risk_s,
  * tcpa_act_s, course_change_deg, speed_change, early, substantial,

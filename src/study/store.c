@@ -226,11 +226,11 @@ static const char kRunSql[] =
     "INSERT INTO runs(run_id, domain_m, fore_aft_ratio, density, replication, seed, behaviour, "
     "status, reason, "
     "sim_s, wall_s, sumo_s, n_encounters, n_actions, min_dist_m, domain_entered, near_miss, "
-    "collision, colregs_ok, max_helm_deg, path_length_m, path_lengthening_m, time_lost_s, "
+    "near_miss_centre, collision, colregs_ok, max_helm_deg, path_length_m, path_lengthening_m, time_lost_s, "
     "rudder_work_deg_s, helm_orders, traffic_ship_s, give_way, give_way_short, "
     "mon_sideways, mon_teleport, mon_overlap, mon_appear, mon_vanish, mon_start_close, "
-    "mon_stopped, max_lateral_mps, min_hull_m) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
-    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
+    "mon_stopped, max_lateral_mps, min_hull_m, closeness) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
+    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 /* INSERT INTO encounters(run_id, ...): the columns of the encounter record's
  * table (run/encounter_record.h), in its order. */
 static fw_status enc_sql(char *sql, size_t n, fw_error *err)
@@ -435,6 +435,7 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
     bind_num(q, i++, o->min_dist);
     sqlite3_bind_int(q, i++, o->domain_entered);
     sqlite3_bind_int(q, i++, o->near_miss);
+    sqlite3_bind_int(q, i++, o->near_miss_centre);
     sqlite3_bind_int(q, i++, o->collision);
     sqlite3_bind_int(q, i++, o->colregs_ok);
     bind_num(q, i++, o->max_helm_deg);
@@ -453,6 +454,7 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
         sqlite3_bind_int(q, i++, mon[k]);
     bind_num(q, i++, m->max_lateral);
     bind_num(q, i++, o->min_hull);
+    bind_num(q, i++, o->closeness);
     return sqlite3_step(q);
 }
 

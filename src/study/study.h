@@ -29,7 +29,7 @@
  *   # no behaviours or densities; replications need some spread to differ)
  *   start: {time_s: 43200, along_m: 1000}
  *   encounter_m: 1852            # optional: a target passing closer is an encounter
- *   near_miss_m: 185.2           # optional: closer is a near miss
+ *   near_miss_m: 185.2           # optional: hulls closer than this (hull to hull) are a near miss
  *   audit: {risk_dcpa_m: 926, risk_tcpa_s: 1200, course_change_deg: 30,
  *           speed_change: 0.25, early_tcpa_s: 480, prompt_s: 60, rule17_may_tcpa_s: 600,
  *           rule17_must_tcpa_s: 240}  # optional: the COLREGs audit (audit/audit.h)
@@ -78,7 +78,7 @@ typedef struct fw_study {
     double start_across;     /* m, and across it */
     double start_time;       /* s, spread of the AIS window's start (0..start_time) */
     double encounter_range;  /* m */
-    double near_miss;        /* m */
+    double near_miss;        /* m, hull to hull (the centre-to-centre reading is secondary) */
     uint64_t digest;         /* of the settings and the scenario file: resume guard */
     int n_inputs;            /* every file a run reads: study, scenario, ship, network */
     fw_study_input inputs[FW_STUDY_MAX_INPUTS];

@@ -199,7 +199,7 @@ static void on_pair(void *ctx, int i, int j, double d2)
     fw_cpa(dx, dy, ux, uy, &tcpa, &dcpa);
     if (!(tcpa > 0.0 && tcpa < sv->def.tcpa))
         return;
-    if (!(dcpa < sv->def.dcpa))
+    if (!fw_clearly_below(dcpa, sv->def.dcpa)) /* not by rounding: geom.h */
         return;
     /* a new episode: named and classified from the smaller id's side */
     int a = i, b = j;

@@ -3,7 +3,9 @@
  * What AIS near-collision studies count and waterway risk studies compare with
  * IWRAP-style collision candidates: a pair of ships is an encounter when their
  * centres are closer than `range`, and, both keeping course and speed, their
- * closest point of approach is nearer than `dcpa` and 0 < TCPA < `tcpa`.  One
+ * closest point of approach is nearer than `dcpa` (by more than
+ * FW_DIST_RESOLUTION, geom.h: ships on parallel routes exactly `dcpa` apart
+ * are not encounters by rounding) and 0 < TCPA < `tcpa`.  One
  * record per pair and episode: an episode opens at the first step the test
  * holds and is classified then (head-on, overtaking or crossing: fw_classify
  * from the smaller id's side, its roles folded into the pair's type, its
