@@ -36,13 +36,18 @@ import pandas as pd  # noqa: E402
 RATES = [
     ("encounters_per_h", "Own-ship encounters", "encounters per ship-hour"),
     ("domain_violations_per_h", "Domain violations", "violations per ship-hour"),
-    ("near_misses_per_h", "Near misses", "near misses per ship-hour"),
+    ("near_misses_per_h", "Near misses (hull to hull)", "near misses per ship-hour"),
+    ("min_hull_m", "Least hull distance of a run", "metres, hull to hull"),
     ("collisions_per_h", "Collisions (hull contact)", "collisions per ship-hour"),
     ("collision_run_fraction", "Runs with a collision", "share of runs"),
     ("manoeuvres_per_h", "Avoidance manoeuvres", "manoeuvres per ship-hour"),
     ("path_lengthening_m_per_h", "Path lengthening", "metres per ship-hour"),
     ("time_lost_s_per_h", "Time lost", "seconds per ship-hour"),
+    ("closeness", "Closeness (1 at contact)", "1 - least hull distance / 1 nm"),
 ]
+# Measures of the domain itself: a larger domain is broken sooner, so they are
+# not compared across domain sizes (fairway report leaves them out of paired.csv).
+PER_DOMAIN = {"domain_violations_per_h", "domain_violation_fraction"}
 TYPES = [("head_on_per_h", "head-on"), ("overtaking_per_h", "overtaking (either way)"),
          ("crossing_per_h", "crossing (give-way or stand-on)")]
 TRAFFIC_TYPES = ["all", "head-on", "overtaking", "crossing"]
@@ -145,7 +150,7 @@ def finish(fig, path):
 def plot_rates(summary, level, path, paired=None, title_override=None):
     """rates.png, or with `paired` the differences from the reference (paired.png)."""
     data = summary if paired is None else paired
-    fig, axes = plt.subplots(2, 4, figsize=(17, 7.5))
+    fig, axes = plt.subplots(2, 5, figsize=(21, 7.5))
     keys = settings(data)
     for ax, (name, title, unit) in zip(axes.flat, RATES):
         sub = data[data.measure == name]
@@ -155,7 +160,9 @@ def plot_rates(summary, level, path, paired=None, title_override=None):
                 series(ax, s, "domain_m", "mean", setting_label(key, keys), k, len(keys))
         if paired is not None:
             ax.axhline(0.0, color="k", lw=0.7)
-        if not len(sub):
+        if not len(sub) and paired is not None and name in PER_DOMAIN:
+            empty(ax, "not compared across domain sizes")
+        elif not len(sub):
             empty(ax, "no data")
         elif all_zero(sub):
             # no range to show: one tick at 0 rather than matplotlib's invented +-0.05

@@ -169,6 +169,8 @@ static fw_status write_pairs(const fw_study_report *rep, const fw_rep_pair *pair
     for (int i = 0; i < n; i++) {
         const fw_rep_pair *p = &pairs[i];
         const fw_rep_group *G = &rep->groups[p->group], *R = &rep->groups[p->ref_group];
+        if (p->not_compared) /* domain violations across domain sizes: fw_measure.per_domain */
+            continue;
         setting(c.f, G);
         fprintf(c.f, ",%.12g,%s,%s", R->domain, R->behaviour, fw_measures[p->measure].name);
         estimate(c.f, &p->est);

@@ -40,10 +40,13 @@ typedef enum fw_measure_id {
     FW_M_DOMAIN,
     FW_M_DOMAIN_FRACTION,
     FW_M_NEAR_MISS,
+    FW_M_NEAR_MISS_CENTRE,
     FW_M_COLLISION,
     FW_M_NEAR_MISS_RUNS,
     FW_M_COLLISION_RUNS,
     FW_M_MIN_CPA,
+    FW_M_MIN_HULL,
+    FW_M_CLOSENESS,
     FW_M_MANOEUVRES,
     FW_M_MAX_HELM,
     FW_M_HELM_ORDERS,
@@ -91,6 +94,11 @@ typedef struct fw_measure {
     fw_ci_method method;
     bool traffic;         /* traffic.csv rather than summary.csv */
     fw_count_kind count;  /* FW_CI_T measures that count events */
+    /* Depends on the domain size itself (domain violations): compared only
+     * between settings of one domain size, never across sizes, since
+     * breaking a 1000 m domain is a smaller intrusion than breaking a 150 m
+     * one; the least hull distance and the closeness compare instead. */
+    bool per_domain;
 } fw_measure;
 
 /* Bootstrap resamples and the seed every bootstrap of a report starts from:
@@ -111,9 +119,11 @@ typedef struct fw_rep_run {
     double n_actions, helm_orders;          /* NAN if NULL */
     double min_dist, max_helm_deg, path_lengthening, time_lost;
     double near_miss_flag, collision_flag;  /* runs columns, 0/1, NAN if NULL */
+    double min_hull, closeness;             /* runs columns, NAN if NULL */
     long long n_encounters_col;             /* runs.n_encounters, -1 if NULL */
     int n_sit[FW_REP_NSIT];
     int n_domain, n_near, n_collision;      /* encounters with the flag set */
+    int n_near_centre;                      /* ... near_miss_centre */
     int n_traffic[FW_REP_NTYPE];
     int group;
     double m[FW_NMEASURES];                 /* the per-run measures */
@@ -163,6 +173,7 @@ typedef struct fw_rep_pair {
     fw_measure_id measure;
     fw_estimate est;
     bool exact;   /* the conditional binomial (counts), not the paired t */
+    bool not_compared; /* a per_domain measure across domain sizes: no estimate */
 } fw_rep_pair;
 
 typedef struct fw_rep_count {

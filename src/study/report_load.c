@@ -199,7 +199,8 @@ static fw_status read_runs(loader *L)
     if (prepare(L,
                 "SELECT run_id, domain_m, density, replication, seed, sim_s, n_actions, "
                 "min_dist_m, near_miss, collision, max_helm_deg, path_lengthening_m, "
-                "time_lost_s, helm_orders, traffic_ship_s, n_encounters, behaviour, fore_aft_ratio "
+                "time_lost_s, helm_orders, traffic_ship_s, n_encounters, behaviour, fore_aft_ratio, "
+                "min_hull_m, closeness "
                 "FROM runs WHERE status = 'ok' ORDER BY run_id",
                 &st))
         return L->err->status;
@@ -234,6 +235,8 @@ static fw_status read_runs(loader *L)
         r->n_encounters_col = sqlite3_column_type(st, 15) == SQLITE_NULL ? -1 : sqlite3_column_int64(st, 15);
         snprintf(r->behaviour, sizeof r->behaviour, "%s", col_text(st, 16));
         r->ratio = col_num(st, 17);
+        r->min_hull = col_num(st, 18);
+        r->closeness = col_num(st, 19);
         /* without its exposure a run has no rates at all: the writer broke the
          * contract (the values themselves were checked: db_check.h) */
         if (!(r->sim_s >= 1e-3)) { /* so a count over its hours stays finite */
@@ -351,6 +354,7 @@ static fw_status encounter_row(loader *L, sqlite3_stmt *st, fw_rep_run *r)
     r->n_domain += sqlite3_column_int(st, 3) != 0;
     r->n_near += sqlite3_column_int(st, 4) != 0;
     r->n_collision += sqlite3_column_int(st, 5) != 0;
+    r->n_near_centre += sqlite3_column_int(st, 8) != 0;
     if (count_candidate(L, st, 6, r, FW_REP_OWN, sit_type[s]))
         return L->err->status;
     double d = col_num(st, 2);
@@ -366,7 +370,7 @@ static fw_status read_encounters(loader *L)
     fw_study_report *rep = L->rep;
     if (each_run_row(L,
                      "SELECT run_id, situation, min_dist_m, domain_entered, near_miss, collision, "
-                     "candidate, outcome FROM encounters",
+                     "candidate, outcome, near_miss_centre FROM encounters",
                      encounter_row))
         return L->err->status;
     /* the rows are what the report counts; a different total in runs means

@@ -36,13 +36,20 @@ const fw_measure fw_measures[FW_NMEASURES] = {
     [FW_M_SIT_OVERTAKEN] = {"being_overtaken_per_h", "own ship being overtaken per hour", FW_CI_T, false, FW_COUNT_OWN_H},
     [FW_M_SIT_GIVE_WAY] = {"crossing_give_way_per_h", "crossing, own ship gives way, per hour", FW_CI_T, false, FW_COUNT_OWN_H},
     [FW_M_SIT_STAND_ON] = {"crossing_stand_on_per_h", "crossing, own ship stands on, per hour", FW_CI_T, false, FW_COUNT_OWN_H},
-    [FW_M_DOMAIN] = {"domain_violations_per_h", "domain violations per hour", FW_CI_POISSON, false},
-    [FW_M_DOMAIN_FRACTION] = {"domain_violation_fraction", "share of encounters entering the domain", FW_CI_RATIO, false},
-    [FW_M_NEAR_MISS] = {"near_misses_per_h", "near misses per hour", FW_CI_POISSON, false},
+    [FW_M_DOMAIN] = {"domain_violations_per_h", "domain violations per hour", FW_CI_POISSON, false,
+                     FW_COUNT_NONE, true},
+    [FW_M_DOMAIN_FRACTION] = {"domain_violation_fraction", "share of encounters entering the domain",
+                              FW_CI_RATIO, false, FW_COUNT_NONE, true},
+    [FW_M_NEAR_MISS] = {"near_misses_per_h", "near misses (hull to hull) per hour", FW_CI_POISSON, false},
+    [FW_M_NEAR_MISS_CENTRE] = {"near_misses_centre_per_h",
+                               "near misses centre to centre per hour (secondary)", FW_CI_POISSON, false},
     [FW_M_COLLISION] = {"collisions_per_h", "collisions per hour", FW_CI_POISSON, false},
     [FW_M_NEAR_MISS_RUNS] = {"near_miss_run_fraction", "share of runs with a near miss", FW_CI_WILSON, false},
     [FW_M_COLLISION_RUNS] = {"collision_run_fraction", "share of runs with a collision", FW_CI_WILSON, false},
     [FW_M_MIN_CPA] = {"min_cpa_m", "closest approach of the run (m)", FW_CI_T, false},
+    [FW_M_MIN_HULL] = {"min_hull_m", "least hull-to-hull distance of the run (m; runs with no hull within 1 nm missing)",
+                       FW_CI_T, false},
+    [FW_M_CLOSENESS] = {"closeness", "closeness of the run (1 - least hull distance / 1 nm)", FW_CI_T, false},
     [FW_M_MANOEUVRES] = {"manoeuvres_per_h", "avoidance manoeuvres per hour", FW_CI_T, false, FW_COUNT_OWN_H},
     [FW_M_MAX_HELM] = {"max_helm_deg", "largest helm (deg)", FW_CI_T, false},
     [FW_M_HELM_ORDERS] = {"helm_orders_per_h", "helm orders per hour", FW_CI_T, false, FW_COUNT_OWN_H},
@@ -77,10 +84,13 @@ static void run_measures(fw_rep_run *r)
     /* a run without encounters has no share: missing, not zero */
     m[FW_M_DOMAIN_FRACTION] = n ? (double)r->n_domain / n : NAN;
     m[FW_M_NEAR_MISS] = r->n_near / h;
+    m[FW_M_NEAR_MISS_CENTRE] = r->n_near_centre / h;
     m[FW_M_COLLISION] = r->n_collision / h;
     m[FW_M_NEAR_MISS_RUNS] = flag(r->near_miss_flag);
     m[FW_M_COLLISION_RUNS] = flag(r->collision_flag);
     m[FW_M_MIN_CPA] = r->min_dist;
+    m[FW_M_MIN_HULL] = r->min_hull;
+    m[FW_M_CLOSENESS] = r->closeness;
     m[FW_M_MANOEUVRES] = r->n_actions / h;
     m[FW_M_MAX_HELM] = r->max_helm_deg;
     m[FW_M_HELM_ORDERS] = r->helm_orders / h;
@@ -299,6 +309,12 @@ static fw_status add_pairs(fw_study_report *rep, fw_rep_pair *out, int *n_out, i
         p->ref_group = ref;
         p->measure = (fw_measure_id)m;
         p->exact = false;
+        p->not_compared = fw_measures[m].per_domain &&
+                          rep->groups[g].domain != rep->groups[ref].domain;
+        if (p->not_compared) {
+            p->est = (fw_estimate){0, NAN, NAN, NAN, NAN};
+            continue;
+        }
         p->est = pair_estimate(rep, g, ref, (fw_measure_id)m, buf, buf + nr, buf + 2 * nr,
                                buf + 3 * nr, &p->exact);
     }

@@ -22,8 +22,8 @@ for f in rates encounter_types cpa_hist traffic paired; do
   grep -q "]($f.png)" "$rep/report.md" || fail "report.md does not embed $f.png"
 done
 grep -q "^density,behaviour,domain_m,fore_aft_ratio,measure,n,mean,sd,ci_low,ci_high,method$" "$rep/summary.csv" || fail "summary.csv header"
-# 4 domain sizes x 2 densities, 20 own-ship measures each
-[ "$(tail -n +2 "$rep/summary.csv" | wc -l)" -eq 160 ] || fail "summary.csv rows: $(wc -l < "$rep/summary.csv")"
+# 4 domain sizes x 2 densities, 23 own-ship measures each
+[ "$(tail -n +2 "$rep/summary.csv" | wc -l)" -eq 184 ] || fail "summary.csv rows: $(wc -l < "$rep/summary.csv")"
 grep -q "47 finished and counted, 2 failed, 49 in the database" "$rep/report.md" || fail "run counts"
 ls -a "$dir" | grep -q '\.tmp\.' && fail "temporary directory left behind"
 
