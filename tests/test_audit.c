@@ -136,6 +136,35 @@ static void test_settings(void)
     CHECK(strcmp(field, "speed_change") == 0);
 }
 
+/* The risk distance by waterway (audit.h): 0.5 nm at sea, 1.6 and 0.8 own
+ * lengths in a scheme and a channel.  Two ships passing 300 m apart with no
+ * action: a breach of rule 14 at sea, not even a risk in a channel, where
+ * for the 333 m C-3 the distance is 266 m (Fujii and Tanaka's narrow-water
+ * domain); in a scheme (533 m) still a breach. */
+static void test_waterways(void)
+{
+    fw_audit_def sea = fw_audit_def_for(FW_WATERWAY_OPEN_SEA, 333.0);
+    fw_audit_def tss = fw_audit_def_for(FW_WATERWAY_TSS, 333.0);
+    fw_audit_def ch = fw_audit_def_for(FW_WATERWAY_CHANNEL, 333.0);
+    CHECK(sea.risk_dcpa == 926.0);
+    CHECK_NEAR(tss.risk_dcpa, 532.8, 1e-9);
+    CHECK_NEAR(ch.risk_dcpa, 266.4, 1e-9);
+    CHECK(ch.risk_tcpa == sea.risk_tcpa && ch.course_change == sea.course_change);
+    const fw_audit_def *defs[3] = {&sea, &tss, &ch};
+    const int want[3] = {0, 0, -1};
+    for (int k = 0; k < 3; k++) {
+        fw_audit_obs o = observe(defs[k], 300.0, 1e9, 300.0);
+        fw_audit_history h = script(1e9, 0.0, 1.0, 1.0);
+        fw_audit_result r;
+        fw_audit_evaluate(defs[k], FW_SIT_HEAD_ON, &o, false, NAN, 0, 1000.0, &h, &r);
+        CHECK_MSG(r.compliant == want[k], "%s: compliant %d", fw_waterway_name((fw_waterway)k),
+                  r.compliant);
+    }
+    fw_waterway w;
+    CHECK(fw_waterway_parse("channel", &w) == 0 && w == FW_WATERWAY_CHANNEL);
+    CHECK(fw_waterway_parse("river", &w) == -1);
+}
+
 static char tmp_root[64];
 
 /* A scenario file of the project run with the kinematic source (no SUMO):
@@ -225,5 +254,6 @@ int main(void)
     TEST_RUN(test_head_on);
     TEST_RUN(test_stand_on);
     TEST_RUN(test_settings);
+    TEST_RUN(test_waterways);
     return TEST_EXIT();
 }

@@ -365,6 +365,8 @@ static void test_bad_files(void)
     bad_case(13, "  duration_s: [1]\n", "bad.yaml:13: run.duration_s");
     bad_case(9, "traffic:\n  behaviour: polite\n",
              "bad.yaml:10: traffic.behaviour: 'polite': expected colregs or blind");
+    bad_case(9, "traffic:\n  waterway: river\n",
+             "bad.yaml:10: traffic.waterway: 'river': expected open-sea, tss or channel");
     /* the knowledge base's range: c3's is fitted at 14.55-26.7 kn, 5-35 deg */
     bad_case(7, "  speed_kn: 5\n",
              "bad.yaml:7: own_ship.speed_kn: 5 kn is beyond c3's Nomoto knowledge base, fitted "

@@ -21,6 +21,33 @@ fw_audit_def fw_default_audit_def(void)
     return d;
 }
 
+static const char *const kWaterways[] = {"open-sea", "tss", "channel"};
+
+const char *fw_waterway_name(fw_waterway w)
+{
+    return kWaterways[w];
+}
+
+int fw_waterway_parse(const char *name, fw_waterway *w)
+{
+    for (int i = 0; i < 3; i++)
+        if (strcmp(name, kWaterways[i]) == 0) {
+            *w = (fw_waterway)i;
+            return 0;
+        }
+    return -1;
+}
+
+fw_audit_def fw_audit_def_for(fw_waterway w, double own_length)
+{
+    fw_audit_def d = fw_default_audit_def();
+    if (w == FW_WATERWAY_TSS)
+        d.risk_dcpa = 1.6 * own_length; /* Fujii and Tanaka (1971), coastal: audit.h */
+    else if (w == FW_WATERWAY_CHANNEL)
+        d.risk_dcpa = 0.8 * own_length; /* ... harbours and narrow waters */
+    return d;
+}
+
 fw_status fw_audit_check(const fw_audit_def *d, char *field, size_t fieldsz, fw_error *err)
 {
     const char *f = NULL, *why = NULL;

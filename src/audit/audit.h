@@ -30,6 +30,20 @@
  * quarter of the speed for "substantial", 8 min TCPA (or within a minute
  * of the risk appearing) for "early", 10 and
  * 4 min for the rule 17 phases.
+ *
+ * Where ships pass closer by the nature of the water, the risk distance
+ * shrinks with it (fw_audit_def_for, the scenario's traffic.waterway): a
+ * passing distance that is normal in a channel is no breach there.
+ *   open-sea  0.5 nm: within the sector radii Goodwin and Kemp (1975)
+ *             measured in the southern North Sea (0.45 nm astern, 0.7 nm to
+ *             port, 0.85 nm to starboard);
+ *   tss       1.6 own-ship lengths: the transverse semi-axis of Fujii and
+ *             Tanaka's (1971) domain (8 L x 3.2 L) in Japan's congested
+ *             coastal waters, where lanes keep ships on parallel courses;
+ *   channel   0.8 lengths: their harbour and narrow-water domain (6 L x
+ *             1.6 L).  For the 333 m C-3: 533 m and 266 m.
+ * Only the distance changes; the rules' times and the size of an action
+ * that is readily apparent do not depend on the water.
  */
 #ifndef FW_AUDIT_H
 #define FW_AUDIT_H
@@ -52,6 +66,14 @@ typedef struct fw_audit_def {
 } fw_audit_def;
 
 fw_audit_def fw_default_audit_def(void);
+
+typedef enum fw_waterway { FW_WATERWAY_OPEN_SEA, FW_WATERWAY_TSS, FW_WATERWAY_CHANNEL } fw_waterway;
+/* "open-sea", "tss", "channel". */
+const char *fw_waterway_name(fw_waterway w);
+/* 0 and *w set, or -1 for a name that is none of them. */
+int fw_waterway_parse(const char *name, fw_waterway *w);
+/* The default thresholds for a kind of water and the own ship's length (m). */
+fw_audit_def fw_audit_def_for(fw_waterway w, double own_length);
 /* FW_EINPUT naming the first setting out of range (message "FIELD: ..."). */
 fw_status fw_audit_check(const fw_audit_def *d, char *field, size_t fieldsz, fw_error *err);
 

@@ -136,7 +136,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
 {
     static const char *const keys[] = {"network", "density", "fill", "targets", "behaviour",
                                        "tracks", "ais", "ais_start", "ais_end",
-                                       "ais_max_gap_s", "ais_columns", NULL};
+                                       "ais_max_gap_s", "ais_columns", "waterway", NULL};
     const yt_node *tr, *seq = NULL;
     fw_status st;
     if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
@@ -151,6 +151,14 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     if (fw_behaviour_parse(beh, &s->reactions.behaviour))
         return fw_fail_at(err, doc->file, yt_key_line(tr, "behaviour"), "traffic.behaviour",
                           "'%s': expected colregs or blind", beh);
+    char ww[32] = "open-sea";
+    if ((st = yt_opt_string(doc, tr, "traffic", "waterway", ww, sizeof ww, err)))
+        return st;
+    if (fw_waterway_parse(ww, &s->waterway))
+        return fw_fail_at(err, doc->file, yt_key_line(tr, "waterway"), "traffic.waterway",
+                          "'%s': expected open-sea, tss or channel", ww);
+    /* the audit's risk distance for this water and this ship (audit.h) */
+    s->audit = fw_audit_def_for(s->waterway, s->ship.Loa);
     long fill = 0;
     if ((st = yt_opt_int(doc, tr, "traffic", "fill", 0, 10000, &fill, err)))
         return st;

@@ -72,7 +72,10 @@ typedef struct fw_scenario {
     fw_target targets[FW_SCN_MAX_TARGETS]; /* at t = 0; type: the label kept in the records */
     /* avoidance */
     fw_helm_def helm;
-    fw_audit_def audit;  /* the COLREGs audit's thresholds (defaults; a study sets them) */
+    /* traffic.waterway: open-sea (default), tss or channel; sets the audit's
+     * risk distance (audit.h fw_audit_def_for) */
+    fw_waterway waterway;
+    fw_audit_def audit;  /* the COLREGs audit's thresholds (by waterway; a study sets them) */
     fw_policy_def policy;
     double radius;       /* m, range within which targets are seen */
     /* traffic-level survey (src/survey): every pair of ships in the area */
