@@ -208,6 +208,16 @@ static void test_hand_paired(void)
     /* same traffic, same encounters: a zero difference with a zero-width interval, not significant */
     CHECK(csv_get(p, "domain_m=500,measure=encounters_per_h", "mean") == 0.0);
     CHECK(csv_get(p, "domain_m=500,measure=encounters_per_h", "significant") == 0);
+    /* what the comparison could have found at 80% power: (t(0.975; 2) + t(0.8; 2)) s / sqrt 3 */
+    CHECK_NEAR(csv_get(p, "domain_m=500,measure=manoeuvres_per_h", "detectable_80"),
+               (t2 + 1.0606601718) * sqrt(4.0 / 3.0) / sqrt(3.0), 1e-6);
+    CHECK(csv_get(p, "domain_m=500,measure=manoeuvres_per_h", "detectable_at_least") == 0);
+    /* near misses: 3 events in 3 h of both settings, rate 1 an hour:
+     * (z(0.975) + z(0.8)) sqrt(2 x 1 / 1.5) */
+    CHECK_NEAR(csv_get(p, "domain_m=500,measure=near_misses_per_h", "detectable_80"),
+               (1.959963985 + 0.8416212336) * sqrt(2.0 / 1.5), 1e-6);
+    /* collisions: 1 event (100 m) against 0 */
+    CHECK(csv_get(p, "domain_m=500,measure=collisions_per_h", "detectable_at_least") == 0);
     /* path lengthening 400, 400, 600 m per hour */
     CHECK_NEAR(csv_get(p, "domain_m=500,measure=path_lengthening_m_per_h", "mean"), 1400.0 / 3.0, 1e-9);
     /* only replications 0 and 2 have a closest approach at both sizes */
@@ -313,6 +323,11 @@ static void test_hand_md(void)
     CHECK_CONTAINS(md, "| 1 | - | 500 | 3 | - | not compared | - | - | - | **6.67 [3.80, 9.54]** | "
                        "**467 [180, 754]** | **137 [42.6, 231]** |");
     CHECK_CONTAINS(md, "Domain violations are not compared across domain sizes");
+    /* the first lines: 1.5 h per setting cannot show a halving of near misses, whose rate
+     * of 2 an hour at 100 m needs 6 (1.96 + 0.84)^2 / 2 = 23.5 h; the power table */
+    CHECK_CONTAINS(md, "**This study cannot tell its settings apart on near misses (hull to hull)**: "
+                       "it has 1.50 h per setting");
+    CHECK_CONTAINS(md, "| 1 | - | 100 | 1.50 | 3, 23.5 |");
     CHECK_CONTAINS(md, "- domain violations /h: pooled count / pooled hours, exact Poisson (Garwood)");
     CHECK_CONTAINS(md, "Also significant somewhere: closest approach of the run (m); largest helm "
                        "(deg); helm orders per hour.");

@@ -163,7 +163,7 @@ static fw_status write_pairs(const fw_study_report *rep, const fw_rep_pair *pair
     csv c;
     if (csv_open(&c, dir, name,
                  SETTING "reference_m,reference_behaviour,measure,n,mean,sd,"
-                 "ci_low,ci_high,significant,method",
+                 "ci_low,ci_high,significant,method,detectable_80,detectable_at_least",
                  err))
         return err->status;
     for (int i = 0; i < n; i++) {
@@ -175,8 +175,12 @@ static fw_status write_pairs(const fw_study_report *rep, const fw_rep_pair *pair
         fprintf(c.f, ",%.12g,%s,%s", R->domain, R->behaviour, fw_measures[p->measure].name);
         estimate(c.f, &p->est);
         /* the interval excludes zero: the difference is significant at the level */
-        fprintf(c.f, ",%d,%s\n", p->est.lo > 0.0 || p->est.hi < 0.0,
+        fprintf(c.f, ",%d,%s", p->est.lo > 0.0 || p->est.hi < 0.0,
                 p->exact ? "conditional_binomial" : "paired_t");
+        /* the smallest difference this comparison could have found (report_power.c) */
+        bool bound;
+        num(c.f, fw_rep_detectable(rep, p, &bound));
+        fprintf(c.f, ",%d\n", bound);
     }
     return csv_close(&c, err);
 }

@@ -163,6 +163,9 @@ typedef struct fw_rep_group {
     int audited[FW_REP_NSIT], compliant[FW_REP_NSIT]; /* the COLREGs audit, by situation */
     double traffic_ship_s;
     int *hist[FW_REP_NSET];                          /* CPA histogram of the type "all" */
+    double halving_h[FW_NMEASURES];                 /* rare measures: hours per setting to
+                                                       detect a halving (report_power.c) */
+    bool halving_bound[FW_NMEASURES];               /* ... a lower bound: no event seen */
 } fw_rep_group;
 
 /* Paired difference of one measure: group minus the reference of its density
@@ -227,6 +230,16 @@ int fw_rep_note(fw_rep_count **list, int *n, const char *text);
 
 /* report_stats.c: per-run measures, group estimates, CPA, paired differences. */
 fw_status fw_rep_compute(fw_study_report *rep, double reference_m, fw_error *err);
+
+/* report_power.c: what the study could have detected (its header says how). */
+void fw_rep_power(fw_study_report *rep);
+/* A pair's smallest difference detectable at 80% power (NAN if none can be
+ * given); *bound: a lower bound, no event seen. */
+double fw_rep_detectable(const fw_study_report *rep, const fw_rep_pair *p, bool *bound);
+/* report.md's first lines: whether the study can tell its settings apart on
+ * near misses and collisions; and the Power section. */
+void fw_rep_md_verdict(FILE *f, const fw_study_report *rep);
+void fw_rep_md_power(FILE *f, const fw_study_report *rep);
 
 /* report_csv.c */
 fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_error *err);

@@ -545,10 +545,12 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
     fprintf(f, "# Study report: %s\n\n",
             rep->study_name[0] ? rep->study_name : stem(rep->db, name, sizeof name));
     md_monitors(f, rep);
+    fw_rep_md_verdict(f, rep);
     md_settings(f, rep);
     md_runs(f, rep);
     md_key_table(f, rep);
     md_paired(f, rep);
+    fw_rep_md_power(f, rep);
     md_behaviour(f, rep);
     md_causation(f, rep);
     md_audit(f, rep);

@@ -431,5 +431,6 @@ fw_status fw_rep_compute(fw_study_report *rep, double reference_m, fw_error *err
     }
     if (histograms(rep, err) || paired(rep, err) || behaviour_paired(rep, err))
         return err->status;
+    fw_rep_power(rep);
     return FW_OK;
 }
