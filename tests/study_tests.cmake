@@ -58,3 +58,4 @@ fw_script_test(report_readonly 0 "ok: read-only database reported" report_readon
 foreach(t sweep_inputs sweep_lock sweep_paths report_readonly)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 endforeach()
+fw_test(test_ams test_ams.c ams_walk.c)

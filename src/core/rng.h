@@ -59,6 +59,7 @@ typedef enum {
     FW_PURPOSE_BEHAVIOUR = 4,   /* behaviour draws (whether and how a ship gives way) */
     FW_PURPOSE_GUST = 5,        /* wind gusts */
     FW_PURPOSE_CURRENT = 6,     /* turbulence of the current */
+    FW_PURPOSE_SPLIT = 7,       /* splitting's own draws: parents, particles' streams (study/ams.h) */
     FW_PURPOSE_TEST = 255       /* tests and benchmarks only */
 } fw_purpose;
 
