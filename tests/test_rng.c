@@ -266,6 +266,37 @@ static void test_world_seed(void)
     fw_world_destroy(w);
 }
 
+/* The world's table of streams: one stream per (vessel, purpose), pointers
+ * that survive growth, numbers those of fw_rng_make; a re-keying gives every
+ * stream, and one first asked for afterwards, the numbers fw_rng_branch
+ * gives, so when an element asks does not matter. */
+static void test_world_streams(void)
+{
+    fw_world_def wd = fw_default_world_def();
+    wd.seed = 77;
+    fw_world *w = NULL;
+    fw_error err = {0};
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    if (!w)
+        return;
+    CHECK(fw_world_streams(w) == 0);
+    fw_rng *first = fw_world_rng(w, 5, FW_PURPOSE_WATCH);
+    for (uint32_t v = 100; v < 200; v++) /* past a few blocks of the table */
+        CHECK(fw_world_rng(w, v, FW_PURPOSE_SENSING) != NULL);
+    CHECK(fw_world_rng(w, 5, FW_PURPOSE_WATCH) == first);
+    CHECK(fw_world_streams(w) == 101);
+    fw_rng ref = fw_rng_make(77, 5, FW_PURPOSE_WATCH);
+    CHECK(fw_rng_uniform(first) == fw_rng_uniform(&ref));
+    fw_rng before = *first;
+    CHECK(fw_world_rekey(w, 3));
+    fw_rng want = fw_rng_branch(&before, 3);
+    CHECK(fw_rng_uniform(first) == fw_rng_uniform(&want));
+    fw_rng late_ref = fw_rng_make(77, 9, FW_PURPOSE_GUST);
+    late_ref = fw_rng_branch(&late_ref, 3);
+    CHECK(fw_rng_uniform(fw_world_rng(w, 9, FW_PURPOSE_GUST)) == fw_rng_uniform(&late_ref));
+    fw_world_destroy(w);
+}
+
 int main(void)
 {
     TEST_RUN(test_known_answers);
@@ -276,5 +307,6 @@ int main(void)
     TEST_RUN(test_restart_at_counter);
     TEST_RUN(test_branches);
     TEST_RUN(test_world_seed);
+    TEST_RUN(test_world_streams);
     return TEST_EXIT();
 }

@@ -26,6 +26,10 @@
  * 0; branches of branches nest.  Two derived keys meet with probability 2^-64
  * per pair.
  *
+ * Where streams live: a world's elements take theirs from the world's table
+ * (world/world.h fw_world_rng, core/streams.h), never make their own, so that
+ * a split re-keys every stream of a run at once.
+ *
  * Common random numbers across a study's axes: the run seed is the
  * replication's (study.c fw_study_run_at: a mix of the study's seed and the
  * replication index, never of a domain size, shape, density or behaviour), so

@@ -58,9 +58,9 @@
  *   what it would have drawn unbranched.  A branch differs from the unbranched
  *   run only through fairway's own random streams (core/rng.h), which take the
  *   branch number restore is given: 0 keeps every stream as it is (the
- *   unbranched run's numbers), b > 0 is to replace each by fw_rng_branch(s, b).
- *   No element of the world draws yet: fw_run_branch(r) holds the number for
- *   the first that will.
+ *   unbranched run's numbers), b > 0 replaces each by fw_rng_branch(s, b):
+ *   the world's table of streams (world.h fw_world_rng, core/streams.h) is
+ *   re-keyed at the restore, streams made later included.
  * Results: a branch's summary and encounters (fw_run_close) are in the
  *   branch's memory: the owner sees the run directory's files, the exit code
  *   and the bytes the branch leaves with fw_run_result (a page shared by the

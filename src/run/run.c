@@ -540,6 +540,11 @@ void fw_run_set_branch(fw_run *R, uint32_t branch, void *box)
 {
     R->branch = branch;
     R->branch_box = box;
+    /* branch.h: a restored branch b > 0 draws fresh numbers from here on.
+     * The table grows by a word; out of memory here leaves the parent's
+     * numbers, which a caller sees as a branch no different from its parent */
+    if (branch > 0 && R->w)
+        (void)fw_world_rekey(R->w, branch);
 }
 void *fw_run_branch_box(const fw_run *R) { return R->branch_box; }
 

@@ -8,6 +8,7 @@
 
 #include "core/clock.h"
 #include "core/mem.h"
+#include "core/streams.h"
 #include "world/vessel_internal.h"
 
 /* One place a vessel can live: the vessel (NULL: free) and how many times
@@ -30,6 +31,7 @@ struct fw_world {
     bool started, broken;
     fw_reactions *react;
     fw_world_timing timing;
+    fw_streams *streams; /* every random stream of the world's elements */
 };
 
 /* The CPU clock when the def keeps timings, else 0 (no system calls). */
@@ -64,6 +66,7 @@ void fw_world_destroy(fw_world *w)
     free(w->recs);
     fw_source_destroy(w->source);
     fw_reactions_destroy(w->react);
+    fw_streams_free(w->streams);
     free(w);
 }
 
@@ -92,6 +95,11 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
     w->def = *def;
     w->source = def->source;
     w->own = -1;
+    w->streams = fw_streams_create(def->seed);
+    if (!w->streams) {
+        fw_world_destroy(w);
+        return fw_fail(err, FW_ERUN, "out of memory");
+    }
     fw_status st = fw_reactions_create(&def->reactions, &w->react, err);
     if (st) {
         fw_world_destroy(w);
@@ -471,6 +479,12 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err)
 const fw_world_timing *fw_world_timing_of(const fw_world *w) { return &w->timing; }
 double fw_world_time(const fw_world *w) { return (double)w->steps * w->def.step; }
 uint64_t fw_world_seed(const fw_world *w) { return w->def.seed; }
+fw_rng *fw_world_rng(fw_world *w, uint32_t vessel_key, fw_purpose purpose)
+{
+    return fw_streams_get(w->streams, vessel_key, purpose);
+}
+bool fw_world_rekey(fw_world *w, uint32_t branch) { return fw_streams_rekey(w->streams, branch); }
+int fw_world_streams(const fw_world *w) { return fw_streams_count(w->streams); }
 long fw_world_steps(const fw_world *w) { return w->steps; }
 int fw_world_vessel_count(const fw_world *w) { return w->nv; }
 fw_source *fw_world_source(fw_world *w) { return w->source; }

@@ -58,6 +58,7 @@
 #include <stdint.h>
 
 #include "core/error.h"
+#include "core/rng.h"
 #include "env/env.h"
 #include "traffic/source.h"
 #include "world/reactions.h"
@@ -162,6 +163,17 @@ const fw_world_timing *fw_world_timing_of(const fw_world *w);
 
 double fw_world_time(const fw_world *w);  /* s */
 uint64_t fw_world_seed(const fw_world *w); /* the def's seed */
+
+/* The world's random streams (core/streams.h): every element that draws
+ * takes its stream here once, by the vessel's key (0 for the own ship, a
+ * hash of a source ship's id: rng.h) and its purpose, and keeps the pointer
+ * (valid for the world's life).  fw_world_rekey gives every stream, made or
+ * still to be made, fresh randomness from now on (a split's branch b > 0;
+ * false when out of memory).  fw_world_streams: how many were made, 0 for a
+ * world with no randomness after its start. */
+fw_rng *fw_world_rng(fw_world *w, uint32_t vessel_key, fw_purpose purpose);
+bool fw_world_rekey(fw_world *w, uint32_t branch);
+int fw_world_streams(const fw_world *w);
 long fw_world_steps(const fw_world *w);
 
 /* Every ship in the area around the own ship, the own ship included, sorted
