@@ -78,7 +78,7 @@ static void w_drop(void *ctx, void *t)
 
 fw_ams_model walk_model(walk_def *w)
 {
-    return (fw_ams_model){w, w_start, w_branch, w_drop};
+    return (fw_ams_model){.ctx = w, .start = w_start, .branch = w_branch, .drop = w_drop};
 }
 
 double walk_exact_p(const walk_def *w)

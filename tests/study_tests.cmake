@@ -32,7 +32,11 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
             "units:5: domains_l: give domains_m or domains_l, not both"
             "aisbehaviour:6: behaviours: .*replays recorded ships, which do not react"
             "aisspread:4: replications: 4 over recorded traffic would be 4 copies of one run"
-            "timespread:6: start.time_s: only over recorded traffic")
+            "timespread:6: start.time_s: only over recorded traffic"
+            "particles:5: estimate.particles: 1 is out of range \\[2, 100000\\]"
+            "estmethod:5: estimate.method: 'importance': the one method is splitting"
+            "estbatches:7: estimate.batches: 1 is out of range \\[2, 10000\\]"
+            "norandom:6: estimate: .*base.yaml has no randomness after t = 0")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_script_test(cli_sweep_bad_${name} 0 "ok: no database" sweep_bad.sh
@@ -59,3 +63,5 @@ foreach(t sweep_inputs sweep_lock sweep_paths report_readonly)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 endforeach()
 fw_test(test_ams test_ams.c ams_walk.c)
+fw_test(test_split_run test_split_run.c)
+target_link_libraries(test_split_run PRIVATE fairway_study)

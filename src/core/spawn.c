@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -94,6 +95,29 @@ void fw_spawn_stop(pid_t pid)
     }
     kill(pid, SIGKILL);
     waitpid(pid, NULL, 0);
+}
+
+fw_status fw_fork_piped(pid_t *pid, int *fd, fw_error *err)
+{
+    int p[2];
+    if (pipe(p))
+        return fw_fail(err, FW_ERUN, "pipe: %s", strerror(errno));
+    fflush(NULL);
+    *pid = fork();
+    if (*pid < 0) {
+        close(p[0]);
+        close(p[1]);
+        return fw_fail(err, FW_ERUN, "fork: %s", strerror(errno));
+    }
+    if (*pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        close(p[0]);
+        *fd = p[1];
+    } else {
+        close(p[1]);
+        *fd = p[0];
+    }
+    return FW_OK;
 }
 
 /* The one loop behind fw_fd_read and fw_fd_write. */

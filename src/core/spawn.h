@@ -30,6 +30,13 @@ fw_status fw_spawn_run(const fw_spawn_def *def, int *exit_status, fw_error *err)
 /* SIGTERM, wait up to 3 s, then SIGKILL; always reaps.  Safe on pid <= 0. */
 void fw_spawn_stop(pid_t pid);
 
+/* fork with a pipe from the child to the parent, stdio flushed first, the
+ * child set to die with the parent (PR_SET_PDEATHSIG): in the parent *pid
+ * is the child's and *fd the pipe's read end; in the child *pid is 0 and *fd
+ * the write end.  A worker's way to hand back a result (study/split_run.c,
+ * sweep_split.c). */
+fw_status fw_fork_piped(pid_t *pid, int *fd, fw_error *err);
+
 /* All n bytes of buf read from, or written to, fd (a pipe to another process,
  * a file), through interrupted calls and short transfers: 0, or -1 at an end
  * of file or on an error (errno says which). */

@@ -483,6 +483,16 @@ long fw_run_steps(const fw_run *R) { return R->k; }
 double fw_run_time(const fw_run *R) { return R->w ? fw_world_time(R->w) : 0.0; }
 fw_world *fw_run_world(fw_run *R) { return R->w; }
 
+double fw_run_min_hull(fw_run *R)
+{
+    int n = 0;
+    const fw_encounter *e = R->rec ? fw_records_encounters(R->rec, &n) : NULL;
+    double m = INFINITY;
+    for (int i = 0; i < n; i++)
+        m = fmin(m, e[i].min_hull);
+    return m;
+}
+
 int fw_run_files(fw_run *R, FILE **files, int max)
 {
     return R->rec ? fw_records_files(R->rec, files, max) : 0;

@@ -100,6 +100,10 @@ double fw_run_time(const fw_run *r);  /* s, the world's time (0 before it exists
  * source): NULL if the set-up failed.  Stepping it other than by fw_run_step
  * leaves the records behind. */
 fw_world *fw_run_world(fw_run *r);
+/* m, the least hull-to-hull distance from the own ship to any ship so far
+ * (the encounter book's; INFINITY while none has come within the hull
+ * watch, 1 nm): what splitting scores a run by (study/split_run.h). */
+double fw_run_min_hull(fw_run *r);
 /* The run's output streams open now (own.csv, run.log, targets.csv if asked),
  * up to max of them into files; returns how many there are.  Everything else
  * (encounters.csv, traffic_encounters.csv, summary.json) is written whole by

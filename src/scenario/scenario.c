@@ -425,3 +425,12 @@ out:
     yt_free(doc);
     return st;
 }
+
+const char *fw_scenario_randomness(const fw_scenario *s)
+{
+    (void)s;
+    /* Each setting that makes a world element draw after its start belongs
+     * here as it comes (sensing noise and dropouts, watchkeeping delays and
+     * lapses, gusts); none of the scenario's settings draws yet. */
+    return "none of its settings draws: perfect sensing, flawless watchkeeping, steady wind";
+}

@@ -98,6 +98,13 @@ typedef struct fw_scenario {
 typedef struct fw_geo fw_geo;
 fw_status fw_scenario_plane(const fw_scenario *s, fw_geo **g, fw_error *err);
 
+/* Why scenario s has no randomness after t = 0 (text for an error), or NULL
+ * when something in its world draws from fairway's streams after the start
+ * (sensing noise, watchkeeping, gusts ...: what the scenario turns on).
+ * Splitting (study/split_run.h) needs such randomness: without it every
+ * branch repeats its parent. */
+const char *fw_scenario_randomness(const fw_scenario *s);
+
 /* Loads and checks path.  s is large (a ship inside): callers heap-allocate. */
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err);
 

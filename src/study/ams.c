@@ -14,6 +14,13 @@ fw_status fw_ams_check(const fw_ams_def *def, fw_error *err)
     if (def->particles < 2 || def->particles > 1000000)
         return fw_fail(err, FW_EINPUT, "particles: %d: splitting needs at least 2 (and at most 1e6)",
                        def->particles);
+    if (def->n_levels < 0 || def->n_levels > FW_AMS_MAX_LEVELS)
+        return fw_fail(err, FW_EINPUT, "levels: %d: at most %d", def->n_levels, FW_AMS_MAX_LEVELS);
+    for (int i = 0; i < def->n_levels; i++)
+        if (!(def->levels[i] > 0.0 && def->levels[i] < 1.0) ||
+            (i > 0 && !(def->levels[i] > def->levels[i - 1])))
+            return fw_fail(err, FW_EINPUT, "levels[%d]: %g: levels lie in (0, 1), increasing", i,
+                           def->levels[i]);
     if (def->max_rounds < 0)
         return fw_fail(err, FW_EINPUT, "max_rounds: %d: must be >= 0", def->max_rounds);
     return FW_OK;
@@ -99,9 +106,37 @@ static fw_status ams_start(ams *a, const fw_ams_def *def, const fw_ams_model *m,
     return FW_OK;
 }
 
+/* Share of the particles at or beyond q. */
+static double share_at(const ams *a, double q)
+{
+    int c = 0;
+    for (int i = 0; i < a->n; i++)
+        c += a->p[i].score >= q;
+    return (double)c / a->n;
+}
+
+/* The lower levels the lowest score z has reached take the product so far;
+ * at the end (z < 0) every level left takes the product times its share. */
+static void settle_levels(const fw_ams_def *def, const ams *a, double z, double p, bool *done,
+                          fw_ams_result *out)
+{
+    for (int i = 0; i < def->n_levels; i++) {
+        if (done[i])
+            continue;
+        if (z >= def->levels[i]) {
+            out->p_level[i] = p;
+            done[i] = true;
+        } else if (z < 0.0) {
+            out->p_level[i] = p * share_at(a, def->levels[i]);
+            done[i] = true;
+        }
+    }
+}
+
 fw_status fw_ams_run(const fw_ams_def *def, const fw_ams_model *m, fw_ams_result *out,
                      fw_error *err)
 {
+    bool done[FW_AMS_MAX_LEVELS] = {false};
     if (fw_ams_check(def, err))
         return err->status;
     *out = (fw_ams_result){.p = 1.0};
@@ -112,12 +147,14 @@ fw_status fw_ams_run(const fw_ams_def *def, const fw_ams_model *m, fw_ams_result
         double z = INFINITY;
         for (int i = 0; i < a.n; i++)
             z = fmin(z, a.p[i].score);
+        settle_levels(def, &a, z, out->p, done, out);
         if (z >= 1.0)
             break; /* every particle has the event */
         int k = 0;
         for (int i = 0; i < a.n; i++)
             k += a.p[i].score <= z;
         if (k == a.n) { /* extinction: no particle went beyond the lowest */
+            settle_levels(def, &a, -1.0, out->p, done, out);
             out->p = 0.0;
             break;
         }
@@ -131,12 +168,16 @@ fw_status fw_ams_run(const fw_ams_def *def, const fw_ams_model *m, fw_ams_result
         out->rounds++;
         st = round_at(&a, z, &k, err);
     }
+    if (!st)
+        settle_levels(def, &a, -1.0, out->p, done, out);
     if (!st && out->p > 0.0) {
         for (int i = 0; i < a.n; i++)
             out->reached += a.p[i].score >= 1.0;
         out->p *= (double)out->reached / a.n;
     }
     out->cost = a.cost;
+    if (!st && m->final)
+        m->final(m->ctx, a.p, a.n);
     ams_free(&a);
     return st;
 }
@@ -175,7 +216,10 @@ fw_status fw_ams_batches(const fw_ams_def *def, const fw_ams_model *m, int batch
 {
     if (batches < 2)
         return fw_fail(err, FW_EINPUT, "batches: %d: an interval needs at least 2", batches);
-    double *v = malloc((size_t)batches * sizeof *v);
+    if (fw_ams_check(def, err))
+        return err->status;
+    int nl = 1 + def->n_levels;
+    double *v = malloc((size_t)(batches * nl) * sizeof *v);
     if (!v)
         return fw_fail(err, FW_ERUN, "out of memory");
     *cost = 0.0;
@@ -189,12 +233,19 @@ fw_status fw_ams_batches(const fw_ams_def *def, const fw_ams_model *m, int batch
         fw_ams_result r;
         st = fw_ams_run(&d, m, &r, err);
         v[b] = r.p;
+        for (int i = 0; i < def->n_levels; i++)
+            v[(1 + i) * batches + b] = r.p_level[i];
         *cost += r.cost;
     }
-    if (!st)
-        *est = batch_interval(v, batches, level);
+    for (int i = 0; !st && i < nl; i++)
+        est[i] = batch_interval(v + i * batches, batches, level);
     free(v);
     return st;
+}
+
+fw_estimate fw_ams_interval(const double *v, int b, double level)
+{
+    return batch_interval(v, b, level);
 }
 
 double fw_crude_runs(double p, double re)

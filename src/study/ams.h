@@ -62,10 +62,26 @@ typedef struct fw_ams_model {
     fw_status (*branch)(void *ctx, const void *parent, double level, fw_rng rng, fw_ams_sim *out,
                         fw_error *err);
     void (*drop)(void *ctx, void *traj);
+    /* Optional: the particles as they are at the end of a run (before they
+     * are dropped), to keep what the model wants of them (the closest). */
+    void (*final)(void *ctx, const fw_ams_sim *particles, int n);
 } fw_ams_model;
+
+/* Lower levels whose probabilities one estimate gives as well (a near
+ * miss's closeness below the collision's 1): at most this many. */
+#define FW_AMS_MAX_LEVELS 4
 
 typedef struct fw_ams_def {
     int particles;   /* N >= 2 */
+    /* levels in (0, 1) whose P(score >= level) the estimate also gives, in
+     * increasing order: at the first round whose lowest score reaches one,
+     * the product so far (every particle is then at or beyond it), or, when
+     * the run ends below it, the product times the share at or beyond it.
+     * The same argument as the event's gives each estimate unbiased: the
+     * engine run with that level as its event takes the same rounds up to
+     * there. */
+    int n_levels;
+    double levels[FW_AMS_MAX_LEVELS];
     int max_rounds;  /* a bound on the rounds (FW_ERUN beyond it): 0 = 1000 N */
     uint64_t seed;
 } fw_ams_def;
@@ -79,6 +95,7 @@ typedef struct fw_ams_result {
     int rounds;      /* J */
     int reached;     /* particles with the event at the end */
     double cost;     /* trajectories simulated in all (start and branches) */
+    double p_level[FW_AMS_MAX_LEVELS]; /* P(score >= def->levels[i]) */
 } fw_ams_result;
 
 /* One splitting estimate. */
@@ -87,9 +104,15 @@ fw_status fw_ams_run(const fw_ams_def *def, const fw_ams_model *m, fw_ams_result
 
 /* `batches` independent estimates (seeds derived from def->seed): their
  * mean with its interval at `level` (est->n = batches), and the cost of all
- * of them (trajectories). */
+ * of them (trajectories).  est has room for 1 + def->n_levels: est[0] the
+ * event's, est[1 + i] level i's. */
 fw_status fw_ams_batches(const fw_ams_def *def, const fw_ams_model *m, int batches, double level,
                          fw_estimate *est, double *cost, fw_error *err);
+
+/* The mean of b independent estimates with its interval at `level`, as
+ * fw_ams_batches makes it (Cox's log-normal interval; a t interval cut at 0
+ * when an estimate is 0). */
+fw_estimate fw_ams_interval(const double *v, int b, double level);
 
 /* The crude Monte Carlo runs needed for relative error re at probability p:
  * (1 - p) / (p re^2). */

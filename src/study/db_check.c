@@ -97,6 +97,26 @@ static const rule traffic_rules[] = {
     {"outcome", K_TEXT, ANY, 0, "an outcome"},
 };
 
+static const rule split_rules[] = {
+    {"cell", K_INT, 0, 1e15, F_NN | F_RUNS, "a cell (a run id)"},
+    {"batch", K_INT, 0, 1e6, F_NN, "a batch"},
+    {"domain_m", K_NUM, NONNEG, F_NN | F_POS, "a domain size"},
+    {"fore_aft_ratio", K_NUM, NONNEG, F_POS, "a domain shape (fore-aft ratio)"},
+    {"density", K_NUM, NONNEG, F_NN, "a traffic density"},
+    {"behaviour", K_TEXT, ANY, 0, "a behaviour"},
+    {"particles", K_INT, 2, 1e6, F_NN, "a number of particles"},
+    {"status", K_TEXT, ANY, F_NN, "a status"},
+    {"reason", K_TEXT, ANY, F_NN, "a reason"},
+    {"rounds", K_INT, COUNT, 0, "a count"},
+    {"runs", K_NUM, 0, 1e12, 0, "a number of runs"},
+    {"sim_s", K_NUM, 0, 1e15, 0, "a simulated time"},
+    {"wall_s", K_NUM, NONNEG, 0, "a time"},
+    {"p_collision", K_NUM, 0, 1, 0, "a probability"},
+    {"p_near_miss", K_NUM, 0, 1, 0, "a probability"},
+    {"best_closeness", K_NUM, 0, 1, 0, "a closeness (0-1)"},
+    {"best_path", K_TEXT, ANY, 0, "a path"},
+};
+
 /* The encounter field table's INT columns whose range its type does not say. */
 static const rule enc_ranges[] = {
     {"early", K_FLAG, 0, 1, 0, "a flag"},
@@ -357,5 +377,8 @@ fw_status fw_db_check(sqlite3 *db, const char *file, fw_error *err)
     if (!s)
         s = check_table(&C, "traffic_encounters", traffic_rules,
                         (int)(sizeof traffic_rules / sizeof *traffic_rules));
+    if (!s)
+        s = check_table(&C, "splits", split_rules,
+                        (int)(sizeof split_rules / sizeof *split_rules));
     return s;
 }

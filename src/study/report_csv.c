@@ -280,7 +280,7 @@ fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_erro
         write_pairs(rep, rep->bpairs, rep->n_bpairs, dir, "behaviour.csv", err) ||
         write_cpa(rep, dir, err) || write_causation(rep, dir, err) ||
         write_audit(rep, dir, err) ||
-        write_hist(rep, dir, err))
+        write_hist(rep, dir, err) || fw_rep_write_splits_csv(rep, dir, err))
         return err->status;
     return FW_OK;
 }

@@ -184,6 +184,24 @@ typedef struct fw_rep_count {
     int count;
 } fw_rep_count;
 
+/* One cell's splitting estimates (report_split.c): the batches' mean with
+ * its interval, beside the same cell's crude counts of runs. */
+typedef struct fw_rep_split {
+    int cell;
+    double domain, ratio, density;
+    char behaviour[16];
+    int batches, failed;                /* ok batches; failed ones */
+    int particles;
+    fw_estimate p_collision, p_near_miss;
+    double duration_s;                  /* of one trajectory */
+    double runs, sim_h, wall_s;         /* spent in all */
+    double re;                          /* relative error of p_collision's mean (sd / sqrt B / mean) */
+    double crude_h;                     /* crude Monte Carlo hours for that error: (1-p)/(p re^2) runs */
+    int crude_n, crude_collisions, crude_near;  /* the cell's runs and their events */
+    double best_closeness;
+    char best_path[256];
+} fw_rep_split;
+
 struct fw_study_report {
     char db[1024];
     double level;
@@ -221,6 +239,8 @@ struct fw_study_report {
     fw_rep_count *audit_notes;     /* why encounters were not compliant, tallied */
     int n_audit_notes;
     long long give_way;            /* their speed orders */
+    fw_rep_split *splits;          /* estimate: (splitting), by cell */
+    int n_splits;
 };
 
 /* report_load.c */
@@ -242,6 +262,13 @@ void fw_rep_md_verdict(FILE *f, const fw_study_report *rep);
 void fw_rep_md_power(FILE *f, const fw_study_report *rep);
 
 /* report_csv.c */
+/* report_split.c: the splits table (if any) by cell; its report.md section
+ * and splits.csv. */
+typedef struct sqlite3 sqlite3;
+fw_status fw_rep_load_splits(fw_study_report *rep, sqlite3 *db, const char *file, fw_error *err);
+void fw_rep_md_splits(FILE *f, const fw_study_report *rep);
+fw_status fw_rep_write_splits_csv(const fw_study_report *rep, const char *dir, fw_error *err);
+
 fw_status fw_rep_write_csvs(const fw_study_report *rep, const char *dir, fw_error *err);
 
 /* report_md.c */

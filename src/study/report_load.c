@@ -489,7 +489,7 @@ static fw_status read_all(loader *L)
         return fw_fail(L->err, FW_EINPUT, "%s: no finished runs", L->file);
     }
     if (make_groups(L) || read_encounters(L) || read_traffic(L) || read_monitors(L) ||
-        read_audit(L))
+        read_audit(L) || fw_rep_load_splits(L->rep, L->db, L->file, L->err))
         return L->err->status;
     return FW_OK;
 }

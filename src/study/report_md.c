@@ -551,6 +551,7 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
     md_key_table(f, rep);
     md_paired(f, rep);
     fw_rep_md_power(f, rep);
+    fw_rep_md_splits(f, rep);
     md_behaviour(f, rep);
     md_causation(f, rep);
     md_audit(f, rep);

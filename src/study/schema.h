@@ -127,6 +127,31 @@
     "  outcome TEXT,\n"                  /* collision, near miss, passed */              \
     "  PRIMARY KEY(run_id, ship_a, ship_b, t_first_s));\n"
 
+/* The splitting estimates (a study with estimate:, study/split_run.h): one
+ * row per cell and batch, each an independent estimate of the probability
+ * that a run of that cell has a collision (hulls touch) and a near miss (hull
+ * to hull below the study's near_miss_m) within duration_s.  best_path is
+ * the closest trajectory the batch found, replayable: "draw:STEP/B,STEP/B"
+ * (its start's draw and its re-keyings, split_run.h). */
+#define FW_SCHEMA_SQL_SPLITS                                                            \
+    "CREATE TABLE IF NOT EXISTS splits(\n"                                              \
+    "  cell INTEGER NOT NULL,\n"         /* the cell's run of replication 0 */          \
+    "  batch INTEGER NOT NULL,\n"                                                       \
+    "  domain_m REAL NOT NULL, fore_aft_ratio REAL, density REAL NOT NULL,\n"           \
+    "  behaviour TEXT,\n"                                                               \
+    "  particles INTEGER NOT NULL,\n"                                                   \
+    "  status TEXT NOT NULL CHECK(status IN ('ok','failed')),\n"                        \
+    "  reason TEXT NOT NULL DEFAULT '',\n"                                              \
+    "  rounds INTEGER,\n"                /* levels climbed */                           \
+    "  runs REAL,\n"                     /* trajectories simulated (replays included) */\
+    "  sim_s REAL,\n"                    /* their simulated time */                     \
+    "  wall_s REAL,\n"                                                                  \
+    "  p_collision REAL,\n"              /* the estimates */                            \
+    "  p_near_miss REAL,\n"                                                             \
+    "  best_closeness REAL,\n"                                                          \
+    "  best_path TEXT,\n"                                                               \
+    "  PRIMARY KEY(cell, batch));\n"
+
 /* The whole schema into buf, as snprintf (returns the length it needs). */
 static inline int fw_schema_sql(char *buf, size_t n)
 {
@@ -134,7 +159,7 @@ static inline int fw_schema_sql(char *buf, size_t n)
     size_t k = (size_t)a < n ? (size_t)a : n;
     a += fw_enc_sql_table(buf + k, n - k);
     k = (size_t)a < n ? (size_t)a : n;
-    return a + snprintf(buf + k, n - k, "%s", FW_SCHEMA_SQL_TRAFFIC);
+    return a + snprintf(buf + k, n - k, "%s%s", FW_SCHEMA_SQL_TRAFFIC, FW_SCHEMA_SQL_SPLITS);
 }
 
 #endif

@@ -30,6 +30,9 @@ struct fw_store {
  * a run's process never holds it (see fw_store_child). */
 static int g_lock_fd = -1;
 
+sqlite3 *fw_store_sqlite(fw_store *st) { return st->db; }
+const char *fw_store_path(const fw_store *st) { return st->path; }
+
 static fw_status db_fail(fw_store *st, fw_error *err, const char *what)
 {
     return fw_fail(err, FW_ERUN, "%s: %s: %s", st->path, what, sqlite3_errmsg(st->db));

@@ -37,4 +37,32 @@ fw_status fw_store_forget_failed(fw_store *st, fw_error *err);
 /* Commits one run and its rows in one transaction. */
 fw_status fw_store_commit(fw_store *st, const fw_study *s, const fw_outcome *o, fw_error *err);
 
+/* The splitting estimates (schema.h's splits table; store_split.c). */
+typedef struct fw_split_row {
+    int cell, batch;
+    double domain, ratio, density;
+    const char *behaviour;
+    int particles;
+    bool ok;
+    const char *reason;         /* why it failed ("" when ok) */
+    int rounds;
+    double runs, sim_s, wall_s;
+    double p_collision, p_near_miss, best_closeness;
+    const char *best_path;
+} fw_split_row;
+
+/* Commits one batch's estimate in one transaction. */
+fw_status fw_store_split(fw_store *st, const fw_split_row *r, fw_error *err);
+/* done[cell * batches + batch] = that estimate is in the database (ok, or
+ * failed when count_failed); done has n entries. */
+fw_status fw_store_splits_done(fw_store *st, bool count_failed, int batches, bool *done, int n,
+                               fw_error *err);
+/* Deletes the failed estimates so they are made again (--retry-failed). */
+fw_status fw_store_forget_failed_splits(fw_store *st, fw_error *err);
+
+/* The connection and the file, for store_split.c. */
+typedef struct sqlite3 sqlite3;
+sqlite3 *fw_store_sqlite(fw_store *st);
+const char *fw_store_path(const fw_store *st);
+
 #endif

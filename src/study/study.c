@@ -8,6 +8,7 @@
 #include "core/files.h"
 #include "core/units.h"
 #include "ship/ship.h"
+#include "scenario/scenario.h"
 #include "study/study.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
@@ -141,6 +142,39 @@ static fw_status read_audit(const yt_doc *doc, const yt_node *root, fw_study *s,
         return fw_fail_at(err, doc->file, line > 0 ? line : m->line, path, "%s",
                           strchr(e2.msg, ':') ? strchr(e2.msg, ':') + 2 : e2.msg);
     }
+    return FW_OK;
+}
+
+/* estimate: {method: splitting, particles, batches, seed}: refused for a
+ * scenario nothing in which draws after t = 0 (scenario.h fw_scenario_randomness). */
+static fw_status read_estimate(const yt_doc *doc, const yt_node *root, fw_study *s, fw_error *err)
+{
+    static const char *const keys[] = {"method", "particles", "batches", "seed", NULL};
+    const yt_node *m = NULL;
+    fw_status st;
+    if ((st = yt_opt_map(doc, root, "", "estimate", &m, err)) || !m)
+        return st;
+    char method[32] = "";
+    long particles = 50, batches = 8, seed = 1;
+    if ((st = yt_check_keys(doc, m, "estimate", keys, err)) ||
+        (st = yt_req_string(doc, m, "estimate", "method", method, sizeof method, err)))
+        return st;
+    if (strcmp(method, "splitting") != 0)
+        return fw_fail_at(err, doc->file, yt_key_line(m, "method"), "estimate.method",
+                          "'%s': the one method is splitting (adaptive multilevel splitting)",
+                          method);
+    if ((st = yt_opt_int(doc, m, "estimate", "particles", 2, 100000, &particles, err)) ||
+        (st = yt_opt_int(doc, m, "estimate", "batches", 2, 10000, &batches, err)) ||
+        (st = yt_opt_int(doc, m, "estimate", "seed", 0, 2147483647L, &seed, err)))
+        return st;
+    const char *why = fw_scenario_randomness(&s->base);
+    if (why)
+        return fw_fail_at(err, doc->file, m->line, "estimate",
+                          "%s has no randomness after t = 0 (%s): every branch would repeat its "
+                          "parent; count the runs instead (crude Monte Carlo)",
+                          s->scenario_file, why);
+    s->estimate = (fw_study_estimate){.on = true, .particles = (int)particles,
+                                      .batches = (int)batches, .seed = (unsigned long)seed};
     return FW_OK;
 }
 
@@ -293,6 +327,10 @@ static uint64_t digest(const fw_study *s)
     /* only when set: the studies from before it keep their digests */
     if (s->start_time > 0.0)
         k += snprintf(text + k, sizeof text - (size_t)k, "t%.17g|", s->start_time);
+    const fw_study_estimate *e = &s->estimate;
+    if (e->on)
+        k += snprintf(text + k, sizeof text - (size_t)k, "e%d,%d,%lu|", e->particles, e->batches,
+                      e->seed);
     uint64_t h = fw_fnv1a(FW_FNV_INIT, text, strlen(text));
     h = file_digest(h, s->scenario_file);
     return file_digest(h, s->base.ship.file);
@@ -303,7 +341,8 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
     static const char *const keys[] = {"name", "description", "scenario", "replications", "seed",
                                        "domains_m", "domains_l", "fore_aft_ratios", "densities",
                                        "behaviours", "duration_s",
-                                       "start", "encounter_m", "near_miss_m", "audit", NULL};
+                                       "start", "encounter_m", "near_miss_m", "audit", "estimate",
+                                       NULL};
     memset(s, 0, sizeof *s);
     if (fw_path_copy(s->file, sizeof s->file, path, err))
         return err->status;
@@ -356,6 +395,7 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
         goto out;
     }
     if ((st = load_base(doc, root, path, scen, s, err)) || (st = read_audit(doc, root, s, err)) ||
+        (st = read_estimate(doc, root, s, err)) ||
         (st = check_recorded(doc, root, start, s, err)))
         goto out;
     if (s->n_behaviours == 0) {
@@ -397,6 +437,16 @@ int fw_study_run_count(const fw_study *s)
     return s->n_densities * s->replications * s->n_behaviours * s->n_ratios * s->n_domains;
 }
 
+/* The seed and the start of a replication (or a splitting start) from its
+ * base number: the replication alone decides them (common random numbers). */
+static void draw_start(const fw_study *s, uint64_t base, fw_study_run *r)
+{
+    r->seed = 1 + (unsigned long)(base % 2147483646ull);
+    r->d_along = s->start_along * uniform_pm(mix(base ^ 0xa1a1a1a1ull));
+    r->d_across = s->start_across * uniform_pm(mix(base ^ 0xc3c3c3c3ull));
+    r->d_time = s->start_time * 0.5 * (1.0 + uniform_pm(mix(base ^ 0xe5e5e5e5ull)));
+}
+
 fw_study_run fw_study_run_at(const fw_study *s, int run_id)
 {
     fw_study_run r = {.run_id = run_id};
@@ -410,12 +460,27 @@ fw_study_run fw_study_run_at(const fw_study *s, int run_id)
     r.density = s->densities[r.density_index];
     r.behaviour = s->behaviours[r.behaviour_index];
     r.ratio = s->ratios[r.ratio_index];
-    /* the replication alone decides seed and start: common random numbers */
-    uint64_t base = mix((uint64_t)s->seed * 0x100000001b3ull + (uint64_t)r.replication);
-    r.seed = 1 + (unsigned long)(base % 2147483646ull);
-    r.d_along = s->start_along * uniform_pm(mix(base ^ 0xa1a1a1a1ull));
-    r.d_across = s->start_across * uniform_pm(mix(base ^ 0xc3c3c3c3ull));
-    r.d_time = s->start_time * 0.5 * (1.0 + uniform_pm(mix(base ^ 0xe5e5e5e5ull)));
+    draw_start(s, mix((uint64_t)s->seed * 0x100000001b3ull + (uint64_t)r.replication), &r);
+    return r;
+}
+
+int fw_study_cell_count(const fw_study *s)
+{
+    return s->n_densities * s->n_behaviours * s->n_ratios * s->n_domains;
+}
+
+fw_study_run fw_study_cell(const fw_study *s, int cell)
+{
+    int per_rep = s->n_domains * s->n_ratios * s->n_behaviours;
+    /* replication 0 of the cell's density block */
+    int run_id = (cell / per_rep) * per_rep * s->replications + cell % per_rep;
+    return fw_study_run_at(s, run_id);
+}
+
+fw_study_run fw_study_run_drawn(const fw_study *s, int cell, uint64_t draw)
+{
+    fw_study_run r = fw_study_cell(s, cell);
+    draw_start(s, mix(draw), &r);
     return r;
 }
 

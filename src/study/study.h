@@ -30,6 +30,11 @@
  *   start: {time_s: 43200, along_m: 1000}
  *   encounter_m: 1852            # optional: a target passing closer is an encounter
  *   near_miss_m: 185.2           # optional: hulls closer than this (hull to hull) are a near miss
+ *   estimate: {method: splitting, particles: 50, batches: 8, seed: 1}
+ *                                # optional: besides the runs, each cell's probability
+ *                                # of a collision and of a near miss within duration_s
+ *                                # by adaptive multilevel splitting (study/split_run.h);
+ *                                # the scenario must have randomness after t = 0
  *   audit: {risk_dcpa_m: 926, risk_tcpa_s: 1200, course_change_deg: 30,
  *           speed_change: 0.25, early_tcpa_s: 480, prompt_s: 60, rule17_may_tcpa_s: 600,
  *           rule17_must_tcpa_s: 240}  # optional: the COLREGs audit (audit/audit.h)
@@ -37,6 +42,7 @@
 #ifndef FW_STUDY_H
 #define FW_STUDY_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "core/error.h"
@@ -54,6 +60,17 @@ typedef struct fw_study_input {
     char path[1024];
     uint64_t digest;
 } fw_study_input;
+
+/* A study's splitting estimate (estimate:): `batches` independent
+ * estimates of `particles` trajectories per cell of the study (domain size,
+ * shape, density, behaviour), each from a seed of its own that every cell
+ * shares (common random numbers: the cells' batch b draw the same starts). */
+typedef struct fw_study_estimate {
+    bool on;
+    int particles;
+    int batches;
+    unsigned long seed;
+} fw_study_estimate;
 
 typedef struct fw_study {
     char file[512];
@@ -79,6 +96,7 @@ typedef struct fw_study {
     double start_time;       /* s, spread of the AIS window's start (0..start_time) */
     double encounter_range;  /* m */
     double near_miss;        /* m, hull to hull (the centre-to-centre reading is secondary) */
+    fw_study_estimate estimate;
     uint64_t digest;         /* of the settings and the scenario file: resume guard */
     int n_inputs;            /* every file a run reads: study, scenario, ship, network */
     fw_study_input inputs[FW_STUDY_MAX_INPUTS];
@@ -107,5 +125,13 @@ fw_study_run fw_study_run_at(const fw_study *s, int run_id);
 /* The scenario of one run: the base with the run's domain size and shape,
  * density, behaviour, seed, duration and start, named "<study>-<run_id>". */
 void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *out);
+
+/* Cells: the study's settings without the replications, numbered as the
+ * runs of replication 0 (cell c is the c-th such run). */
+int fw_study_cell_count(const fw_study *s);
+fw_study_run fw_study_cell(const fw_study *s, int cell);
+/* Cell `cell` with its seed and start drawn from `draw` as a replication's
+ * are from its index: a splitting start (study/split_run.h). */
+fw_study_run fw_study_run_drawn(const fw_study *s, int cell, uint64_t draw);
 
 #endif

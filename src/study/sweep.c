@@ -27,6 +27,8 @@ static void on_signal(int sig)
     g_stop = sig;
 }
 
+bool fw_sweep_stopped(void) { return g_stop != 0; }
+
 typedef struct sig_guard {
     struct sigaction old_int, old_term;
 } sig_guard;
@@ -185,6 +187,8 @@ fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error
             fw_sweep_kill(&kids[i]);
     }
     fw_progress_end(prog, res->done, res->failed);
+    if (!r && !g_stop && s->estimate.on)
+        r = fw_sweep_splits(def, st, work, default_jobs(def->jobs), res, err);
     release_signals(&guard);
 out:
     free(kids);

@@ -52,6 +52,7 @@ typedef struct fw_sweep_result {
     int failed_before; /* failed runs in the database from earlier sweeps */
     bool interrupted;
     double wall_s;
+    int split_done, split_failed; /* splitting estimates made now (estimate:) */
 } fw_sweep_result;
 
 /* Local worker processes. */
@@ -101,5 +102,15 @@ void fw_progress_count(fw_progress *p, const fw_study *s, const fw_outcome *o,
 void fw_progress_end(fw_progress *p, int done, int failed);
 
 double fw_sweep_now(void); /* s, monotonic */
+
+/* sweep_split.c: the study's pending splitting estimates (estimate:), each
+ * (cell, batch) in a worker process of its own, up to `jobs` at once,
+ * committed one by one (a resumed sweep makes only the missing ones).  Runs
+ * locally: under mpirun, rank 0 makes them after the runs. */
+typedef struct fw_store fw_store;
+fw_status fw_sweep_splits(const fw_sweep_def *def, fw_store *st, const char *work, int jobs,
+                          fw_sweep_result *res, fw_error *err);
+/* A SIGINT or SIGTERM has asked the sweep to stop. */
+bool fw_sweep_stopped(void);
 
 #endif

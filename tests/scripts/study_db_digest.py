@@ -3,7 +3,7 @@
 The result tables' rows (runs, encounters, traffic_encounters; not meta,
 which holds the input files' digest), in a fixed order, without the wall-clock columns (wall_s,
 sumo_s), which differ from machine to machine by nature.  The sweep tests
-compare it with tests/data/digests/study-small.txt, so a redesign that should
+compare it with tests/data/digests/study-small.txt (empty tables left out), so a redesign that should
 not change results is checked to the byte.
 """
 import hashlib
@@ -21,6 +21,8 @@ def main():
     for table in tables:
         cols = [r[1] for r in db.execute(f"PRAGMA table_info({table})") if r[1] not in TIMING]
         rows = db.execute(f"SELECT {','.join(cols)} FROM {table}").fetchall()
+        if not rows:
+            continue  # a table a study did not use (splits without estimate:) changes no result
         h.update(f"{table}:{','.join(cols)}\n".encode())
         for row in sorted(rows, key=repr):
             h.update((repr(row) + "\n").encode())
