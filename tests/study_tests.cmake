@@ -36,7 +36,11 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
             "particles:5: estimate.particles: 1 is out of range \\[2, 100000\\]"
             "estmethod:5: estimate.method: 'importance': the one method is splitting"
             "estbatches:7: estimate.batches: 1 is out of range \\[2, 10000\\]"
-            "norandom:6: estimate: .*base.yaml has no randomness after t = 0")
+            "norandom:6: estimate: .*base.yaml has no randomness after t = 0"
+            "axheld:6: axes.traffic.density: not an axis: use densities:"
+            "axvalue:6: axes.own_ship.speed_kn\\[1\\]: .*base.yaml:9: own_ship.speed_kn: -3 is out of range"
+            "axkey:6: axes.avoidance.horizon\\[0\\]: .*avoidance.horizon: unknown field"
+            "axform:6: axes.own_ship.speed_kn\\[1\\]: 12 is listed twice")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_script_test(cli_sweep_bad_${name} 0 "ok: no database" sweep_bad.sh
@@ -44,6 +48,9 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
   list(APPEND fw_sweep_tests cli_sweep_bad_${name})
 endforeach()
 fw_script_test(cli_sweep_not_db 0 "ok: refused" sweep_not_db.sh)
+# a study with an axis over a scenario key, swept and reported
+fw_script_test(sweep_axes 0 "ok: axes swept, recorded, reported" sweep_axes.sh)
+list(APPEND fw_sweep_tests sweep_axes)
 # a study over recorded traffic: domains swept over an AIS replay
 fw_script_test(sweep_ais 0 "ok: AIS study swept, paired, guarded" sweep_ais.sh)
 list(APPEND fw_sweep_tests sweep_ais)

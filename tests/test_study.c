@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/units.h"
 #include "study/outcome.h"
 #include "study/store.h"
 #include "study/study.h"
@@ -103,6 +104,42 @@ static void test_run_list_shapes(void)
         fw_study_scenario(s, &r, &scn);
         CHECK(scn.helm.domain.fore_aft_ratio == r.ratio && scn.helm.domain.size == r.domain);
     }
+    free(s);
+}
+
+/* Two scenario keys as axes: four settings, outermost in the run list (after
+ * the replications), each sailing its own values over the base scenario and
+ * the same seeds and starts as the others (paired); the labels name them. */
+static void test_run_list_axes(void)
+{
+    fw_study *s = load("tests/data/study/axes.yaml");
+    CHECK(s->n_axes == 2 && s->n_settings == 4);
+    CHECK(fw_study_run_count(s) == 16 && fw_study_cell_count(s) == 8);
+    static const double speed[] = {12, 12, 16, 16}, act[] = {4, 6, 4, 6};
+    for (int id = 0; id < 16; id++) {
+        fw_study_run r = fw_study_run_at(s, id), r0 = fw_study_run_at(s, id % 4);
+        CHECK(r.setting_index == id / 4);
+        CHECK(r.replication == (id / 2) % 2);
+        CHECK(r.seed == r0.seed && r.d_along == r0.d_along && r.d_across == r0.d_across);
+        fw_scenario scn;
+        fw_study_scenario(s, &r, &scn);
+        CHECK_NEAR(scn.speed, fw_kn_to_ms(speed[r.setting_index]), 1e-12);
+        CHECK_NEAR(scn.policy.act_range, fw_nm_to_m(act[r.setting_index]), 1e-9);
+        CHECK(scn.helm.domain.size == r.domain && scn.seed == r.seed);
+        /* everything else is the base's */
+        CHECK(scn.course == s->base.course && scn.density == s->base.density);
+    }
+    char label[128];
+    CHECK(strcmp(fw_study_setting_label(s, 2, label, sizeof label),
+                 "own_ship.speed_kn=16, avoidance.act_range_nm=4") == 0);
+    /* cell 5 is setting 2's second domain */
+    fw_study_run c = fw_study_cell(s, 5);
+    CHECK(c.setting_index == 2 && c.domain == s->domains[1] && c.replication == 0);
+    /* the axes are part of the study: another digest than without them */
+    fw_study *t = load("tests/data/study/small.yaml");
+    CHECK(t->n_axes == 0 && t->n_settings == 1 && t->digest != s->digest);
+    CHECK(fw_study_setting_label(t, 0, label, sizeof label)[0] == '\0');
+    free(t);
     free(s);
 }
 
@@ -386,6 +423,7 @@ int main(void)
     TEST_RUN(test_run_list);
     TEST_RUN(test_run_list_behaviours);
     TEST_RUN(test_run_list_shapes);
+    TEST_RUN(test_run_list_axes);
     TEST_RUN(test_outcome_bytes);
     TEST_RUN(test_store);
     TEST_RUN(test_encounter_record);

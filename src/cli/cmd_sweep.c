@@ -50,13 +50,16 @@ static void dry_run(const fw_study *s)
     /* over recorded traffic the window's later start too */
     bool ais = s->base.ais.file[0] != '\0';
     printf("run_id,density,replication,behaviour,domain_m,fore_aft_ratio,seed,start_along_m,"
-           "start_across_m%s\n", ais ? ",ais_later_s" : "");
+           "start_across_m%s%s\n", ais ? ",ais_later_s" : "", s->n_axes ? ",setting" : "");
     for (int i = 0; i < fw_study_run_count(s); i++) {
         fw_study_run r = fw_study_run_at(s, i);
         printf("%d,%g,%d,%s,%.1f,%g,%lu,%.1f,%.1f", i, r.density, r.replication,
                fw_behaviour_name(r.behaviour), r.domain, r.ratio, r.seed, r.d_along, r.d_across);
         if (ais)
             printf(",%.1f", r.d_time);
+        char label[256];
+        if (s->n_axes) /* quoted: it lists its keys with commas */
+            printf(",\"%s\"", fw_study_setting_label(s, r.setting_index, label, sizeof label));
         printf("\n");
     }
 }

@@ -385,6 +385,12 @@ static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s
 
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
 {
+    return fw_scenario_load_with(path, NULL, 0, s, err);
+}
+
+fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, int n,
+                                fw_scenario *s, fw_error *err)
+{
     static const char *const keys[] = {"name", "description", "origin", "own_ship", "traffic",
                                        "avoidance", "survey", "run", "outputs", NULL};
     memset(s, 0, sizeof *s);
@@ -405,6 +411,10 @@ fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
     fw_status st = yt_load_file(path, &doc, err);
     if (st)
         return st;
+    for (int i = 0; i < n && !st; i++)
+        st = yt_set(doc, settings[i].key, settings[i].value, err);
+    if (st)
+        goto out;
     const yt_node *root = doc->root;
     if ((st = yt_top_map(doc, keys, "name, own_ship, traffic, run", s->name, sizeof s->name,
                          s->description, sizeof s->description, err)))

@@ -108,4 +108,18 @@ const char *fw_scenario_randomness(const fw_scenario *s);
 /* Loads and checks path.  s is large (a ship inside): callers heap-allocate. */
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err);
 
+/* One setting laid over a scenario file: `key` a dotted path into it
+ * ("sensing.visibility_nm", "traffic.behaviour"), `value` a YAML scalar. */
+typedef struct fw_setting {
+    const char *key;
+    const char *value;
+} fw_setting;
+
+/* fw_scenario_load with settings[0..n-1] laid over the file first (yaml_tree.h
+ * yt_set), each then read and checked as if the file had it: a study's axes
+ * make one scenario per setting this way, so any key of a scenario can be
+ * swept and every value is checked by the one reader of that key. */
+fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, int n,
+                                fw_scenario *s, fw_error *err);
+
 #endif

@@ -77,6 +77,7 @@ void fw_study_report_free(fw_study_report *rep)
     free(rep->runs);
     free(rep->pairs);
     free(rep->bpairs);
+    free(rep->spairs);
     free(rep->splits);
     free_counts(rep->meta, rep->n_meta);
     free_counts(rep->audit_notes, rep->n_audit_notes);
@@ -139,7 +140,7 @@ static bool report_file(const char *name)
                                       "traffic.csv", "cpa.csv",      "cpa_hist.csv",
                                       "causation.csv", "audit.csv",  "paired.csv",
                                       "behaviour.csv", "behaviour.png", "plot.log",
-                                      "splits.csv"};
+                                      "splits.csv", "settings.csv"};
     for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
         if (strcmp(name, own[i]) == 0)
             return true;

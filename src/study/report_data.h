@@ -108,11 +108,16 @@ enum { FW_REP_BOOT_REPS = 2000 };
 
 extern const fw_measure fw_measures[FW_NMEASURES];
 
+/* Room for a setting of a study's axes, "key=value, ..." (runs.setting). */
+enum { FW_REP_SETTING = 160 };
+
 /* One finished run: its columns and its encounter counts. */
 typedef struct fw_rep_run {
     long long run_id, seed;
     double domain, density;
     char behaviour[16];                     /* the background ships': colregs, blind */
+    char setting[FW_REP_SETTING];           /* the study's axes' values; "" without */
+    int setting_index;                      /* settings in the run list's order */
     double ratio;                           /* the domain's fore-aft ratio, NAN if not recorded */
     int replication;
     double sim_s, traffic_ship_s;           /* exposure; traffic NAN if not recorded */
@@ -152,6 +157,8 @@ typedef struct fw_rep_group {
     double density, domain;
     double ratio;                                   /* fore-aft, NAN if not recorded */
     char behaviour[16];
+    char setting[FW_REP_SETTING];                   /* "" without axes */
+    int setting_index;                              /* 0: the reference setting */
     int n_runs;
     fw_estimate est[FW_NMEASURES];
     bool exact[FW_NMEASURES];                       /* a count measure given Garwood's
@@ -190,6 +197,7 @@ typedef struct fw_rep_split {
     int cell;
     double domain, ratio, density;
     char behaviour[16];
+    char setting[FW_REP_SETTING];
     int batches, failed;                /* ok batches; failed ones */
     int particles;
     fw_estimate p_collision, p_near_miss;
@@ -216,13 +224,18 @@ struct fw_study_report {
     fw_rep_run *runs;              /* finished runs, sorted by run_id */
     int n_runs;
     int n_reps;                    /* largest replication + 1 */
-    fw_rep_group *groups;          /* sorted by density, then domain */
+    fw_rep_group *groups;          /* sorted by setting, density, behaviour, shape, domain */
     int n_groups;
     double reference_m;
     fw_rep_pair *pairs;
     int n_pairs;
     fw_rep_pair *bpairs;           /* colregs - blind, FW_NMEASURES per (density, domain) */
     int n_bpairs;
+    bool has_settings;             /* the study swept axes: (runs.setting) */
+    int n_settings;                /* 1 without axes */
+    fw_rep_pair *spairs;           /* each setting - the first, FW_NMEASURES per
+                                      (density, behaviour, domain) */
+    int n_spairs;
     double bin_w[FW_REP_NSET];     /* CPA histogram bins [k w, (k + 1) w) */
     int n_bins[FW_REP_NSET];
     /* the traffic monitors (survey/monitor.h) summed over the finished runs,
@@ -277,6 +290,10 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
 /* A group's domain for people: "300", or "300 (2.5:1)" for a shape other
  * than the circle. */
 const char *fw_rep_domain(char *buf, size_t sz, const fw_rep_group *G);
+/* A group's traffic cell: its behaviour ("-" without) and its setting of the
+ * axes, if any; and the column's head ("traffic; setting" with axes). */
+const char *fw_rep_traffic(char *buf, size_t sz, const fw_rep_group *G);
+const char *fw_rep_traffic_head(const fw_study_report *rep);
 /* Same shape (fore-aft ratio; two missing ones are the same). */
 bool fw_rep_same_shape(const fw_rep_group *a, const fw_rep_group *b);
 /* Numbers for people: about three significant figures, "-" for NaN. */

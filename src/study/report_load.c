@@ -92,6 +92,8 @@ static fw_rep_run *find_run(fw_study_report *rep, long long id)
 static int cmp_group(const void *pa, const void *pb)
 {
     const fw_rep_group *a = pa, *b = pb;
+    if (a->setting_index != b->setting_index)
+        return a->setting_index < b->setting_index ? -1 : 1;
     if (a->density != b->density)
         return a->density < b->density ? -1 : 1;
     int c = strcmp(a->behaviour, b->behaviour);
@@ -200,7 +202,7 @@ static fw_status read_runs(loader *L)
                 "SELECT run_id, domain_m, density, replication, seed, sim_s, n_actions, "
                 "min_dist_m, near_miss, collision, max_helm_deg, path_lengthening_m, "
                 "time_lost_s, helm_orders, traffic_ship_s, n_encounters, behaviour, fore_aft_ratio, "
-                "min_hull_m, closeness "
+                "min_hull_m, closeness, setting "
                 "FROM runs WHERE status = 'ok' ORDER BY run_id",
                 &st))
         return L->err->status;
@@ -237,6 +239,9 @@ static fw_status read_runs(loader *L)
         r->ratio = col_num(st, 17);
         r->min_hull = col_num(st, 18);
         r->closeness = col_num(st, 19);
+        snprintf(r->setting, sizeof r->setting, "%s", col_text(st, 20));
+        if (r->setting[0])
+            rep->has_settings = true;
         /* without its exposure a run has no rates at all: the writer broke the
          * contract (the values themselves were checked: db_check.h) */
         if (!(r->sim_s >= 1e-3)) { /* so a count over its hours stays finite */
@@ -256,11 +261,13 @@ static fw_status read_runs(loader *L)
     return step_done(L, st, rc);
 }
 
-/* The group a run belongs to: its (density, behaviour, domain). */
+/* The group a run belongs to: its (setting, density, behaviour, domain). */
 static fw_rep_group group_key(const fw_rep_run *r)
 {
     fw_rep_group key = {.density = r->density, .domain = r->domain, .ratio = r->ratio};
     snprintf(key.behaviour, sizeof key.behaviour, "%s", r->behaviour);
+    snprintf(key.setting, sizeof key.setting, "%s", r->setting);
+    key.setting_index = r->setting_index;
     return key;
 }
 
@@ -270,6 +277,21 @@ static fw_status make_groups(loader *L)
     rep->groups = calloc((size_t)rep->n_runs, sizeof *rep->groups);
     if (!rep->groups)
         return oom(L);
+    /* settings numbered in the order of the run list (the first finished run
+     * of each): the study's own order, whose first is the reference */
+    int *first = malloc((size_t)rep->n_runs * sizeof *first); /* run of each setting */
+    if (!first)
+        return oom(L);
+    for (int i = 0; i < rep->n_runs; i++) {
+        fw_rep_run *r = &rep->runs[i];
+        int k = 0;
+        while (k < rep->n_settings && strcmp(rep->runs[first[k]].setting, r->setting) != 0)
+            k++;
+        if (k == rep->n_settings)
+            first[rep->n_settings++] = i;
+        r->setting_index = k;
+    }
+    free(first);
     for (int i = 0; i < rep->n_runs; i++) {
         fw_rep_group key = group_key(&rep->runs[i]);
         int g = 0;

@@ -35,6 +35,18 @@ bool fw_rep_same_shape(const fw_rep_group *a, const fw_rep_group *b)
     return (isnan(a->ratio) && isnan(b->ratio)) || a->ratio == b->ratio;
 }
 
+const char *fw_rep_traffic(char *buf, size_t sz, const fw_rep_group *G)
+{
+    snprintf(buf, sz, "%s%s%s", G->behaviour[0] ? G->behaviour : "-", G->setting[0] ? "; " : "",
+             G->setting);
+    return buf;
+}
+
+const char *fw_rep_traffic_head(const fw_study_report *rep)
+{
+    return rep->has_settings ? "traffic; setting" : "traffic";
+}
+
 const char *fw_rep_domain(char *buf, size_t sz, const fw_rep_group *G)
 {
     if (isnan(G->ratio) || G->ratio == 1.0)
@@ -90,11 +102,9 @@ static bool is_share(fw_measure_id m)
 /* A group's domain cell (a compound literal: valid to the end of the statement). */
 #define DOM(G) fw_rep_domain((char[48]){0}, 48, (G))
 
-/* The background behaviour of a group, "-" for a database without it. */
-static const char *beh(const fw_rep_group *G)
-{
-    return G->behaviour[0] ? G->behaviour : "-";
-}
+/* The background behaviour of a group, "-" for a database without it, and
+ * the setting of the study's axes when it has them. */
+#define beh(G) fw_rep_traffic((char[FW_REP_SETTING + 24]){0}, FW_REP_SETTING + 24, (G))
 
 static const char *stem(const char *path, char *buf, size_t sz)
 {
@@ -150,7 +160,7 @@ static void md_key_table(FILE *f, const fw_study_report *rep)
                "the pooled hours instead of the t interval, which for replications of zeros would "
                "be [0, 0]: no study of finite length can rule out a rate above 0.\n\n",
             FW_REP_BOOT_REPS, FW_REP_FEW_EVENTS);
-    fprintf(f, "| density | traffic | domain (m) | runs |");
+    fprintf(f, "| density | %s | domain (m) | runs |", fw_rep_traffic_head(rep));
     for (int k = 0; k < NKEY; k++)
         fprintf(f, " %s |", key_head[k]);
     fprintf(f, " CPA median (m) |\n|---|---|---|---|");
@@ -167,7 +177,7 @@ static void md_key_table(FILE *f, const fw_study_report *rep)
     (void)m;
     fprintf(f, "\nTraffic level (all ships in the survey area), encounters per 1000 ship-hours "
                "(Student t over replications; exact Poisson below %d events):\n\n"
-               "| density | traffic | domain (m) |", FW_REP_FEW_EVENTS);
+               "| density | %s | domain (m) |", FW_REP_FEW_EVENTS, fw_rep_traffic_head(rep));
     for (int t = 0; t < FW_REP_NTYPE; t++)
         fprintf(f, " %s |", fw_rep_type_names[t]);
     fprintf(f, "\n|---|---|---|---|---|---|---|\n");
@@ -193,7 +203,7 @@ static void pair_table(FILE *f, const fw_study_report *rep, const fw_rep_pair *p
                        bool all)
 {
     char c[96];
-    fprintf(f, "| density | traffic | domain (m) | pairs |");
+    fprintf(f, "| density | %s | domain (m) | pairs |", fw_rep_traffic_head(rep));
     for (int k = 0; k < NKEY; k++)
         fprintf(f, " %s |", key_head[k]);
     fprintf(f, "\n|---|---|---|---|");
@@ -241,6 +251,27 @@ static void md_behaviour(FILE *f, const fw_study_report *rep)
     fprintf(f, "\n");
 }
 
+/* Each setting of the axes - the first, when the study swept axes. */
+static void md_axes(FILE *f, const fw_study_report *rep)
+{
+    if (!rep->has_settings)
+        return;
+    const char *first = "";
+    for (int g = 0; g < rep->n_groups; g++)
+        if (rep->groups[g].setting_index == 0)
+            first = rep->groups[g].setting;
+    fprintf(f, "## Axes: each setting - the first (%s)\n\n"
+               "The study swept these settings of its scenario (axes:); replication i of "
+               "every setting sailed the same seed and start, so each difference from the "
+               "first setting at the same density, traffic, domain size and shape is paired, "
+               "with the intervals of the behaviour section's kinds (exact conditional for "
+               "rare counts, exact McNemar for runs with a collision, paired t otherwise). "
+               "Bold: the %.0f%% interval excludes 0; settings.csv has every measure.\n\n",
+            first, 100 * rep->level);
+    pair_table(f, rep, rep->spairs, rep->n_spairs, true);
+    fprintf(f, "\n");
+}
+
 /* "k/n = p [lo, hi]" of collisions among candidates, Clopper-Pearson. */
 static const char *cf_cell(char *out, size_t sz, const long long *c, double level)
 {
@@ -255,12 +286,13 @@ static const char *cf_cell(char *out, size_t sz, const long long *c, double leve
 
 /* The candidates of a set summed over the groups of one behaviour (density
  * too): what a causation factor needs is many candidates. */
-static void cf_pool(const fw_study_report *rep, int set, const char *behaviour,
+static void cf_pool(const fw_study_report *rep, int set, const fw_rep_group *of,
                     long long out[FW_REP_NTYPE][FW_CAND_NSLOT])
 {
     memset(out, 0, sizeof(long long) * FW_REP_NTYPE * FW_CAND_NSLOT);
     for (int g = 0; g < rep->n_groups; g++)
-        if (strcmp(rep->groups[g].behaviour, behaviour) == 0)
+        if (strcmp(rep->groups[g].behaviour, of->behaviour) == 0 &&
+            rep->groups[g].setting_index == of->setting_index)
             for (int t = 0; t < FW_REP_NTYPE; t++)
                 for (int k = 0; k < FW_CAND_NSLOT; k++)
                     out[t][k] += rep->groups[g].cand[set][t][k];
@@ -277,10 +309,12 @@ static void cf_row(FILE *f, const char *lead, const long long c[FW_REP_NTYPE][FW
             c[0][FW_CAND_PASSED], c[0][FW_CAND_OTHER_COLL]);
 }
 
+/* The first group of its behaviour (and setting of the axes, if any). */
 static bool first_of_behaviour(const fw_study_report *rep, int g)
 {
     for (int h = 0; h < g; h++)
-        if (strcmp(rep->groups[h].behaviour, rep->groups[g].behaviour) == 0)
+        if (strcmp(rep->groups[h].behaviour, rep->groups[g].behaviour) == 0 &&
+            rep->groups[h].setting_index == rep->groups[g].setting_index)
             return false;
     return true;
 }
@@ -296,7 +330,7 @@ static void md_causation_note(FILE *f, const fw_study_report *rep)
     for (int set = 0; set < FW_REP_NSET; set++)
         for (int g = 0; g < rep->n_groups; g++)
             if (first_of_behaviour(rep, g)) {
-                cf_pool(rep, set, rep->groups[g].behaviour, pool);
+                cf_pool(rep, set, &rep->groups[g], pool);
                 fprintf(f, " %s with %s traffic",
                         set == FW_REP_OWN ? "the own ship" : "background pairs",
                         beh(&rep->groups[g]));
@@ -337,7 +371,7 @@ static void md_causation(FILE *f, const fw_study_report *rep)
 {
     if (!rep->candidates)
         return;
-    char b[96], x[32], y[32], z[32];
+    char b[FW_REP_SETTING + 160], x[32], y[32], z[32];
     fprintf(f, "## Measured causation factor\n\n"
                "A geometric collision candidate is an encounter whose two straight tracks from "
                "its first detection (own ship: first seen within the avoidance radius; traffic "
@@ -354,9 +388,9 @@ static void md_causation(FILE *f, const fw_study_report *rep)
                "change (or the own ship's manoeuvre) brought them together.\n\n",
             100 * rep->level, fw_rep_fmt(x, fw_iwrap_causation[1]),
             fw_rep_fmt(y, fw_iwrap_causation[2]), fw_rep_fmt(z, fw_iwrap_causation[3]));
-    fprintf(f, "| set | density | traffic | domain (m) | head-on | overtaking | crossing | "
+    fprintf(f, "| set | density | %s | domain (m) | head-on | overtaking | crossing | "
                "near miss / domain / passed | non-candidate collisions |\n"
-               "|---|---|---|---|---|---|---|---|---|\n");
+               "|---|---|---|---|---|---|---|---|---|\n", fw_rep_traffic_head(rep));
     for (int set = 0; set < FW_REP_NSET; set++)
         for (int g = 0; g < rep->n_groups; g++) {
             const fw_rep_group *G = &rep->groups[g];
@@ -369,7 +403,7 @@ static void md_causation(FILE *f, const fw_study_report *rep)
     for (int set = 0; set < FW_REP_NSET; set++)
         for (int g = 0; g < rep->n_groups; g++)
             if (first_of_behaviour(rep, g)) {
-                cf_pool(rep, set, rep->groups[g].behaviour, pool);
+                cf_pool(rep, set, &rep->groups[g], pool);
                 snprintf(b, sizeof b, "| %s | all | %s | all |", fw_rep_set_names[set],
                          beh(&rep->groups[g]));
                 cf_row(f, b, (const long long(*)[FW_CAND_NSLOT])pool, rep->level);
@@ -393,8 +427,8 @@ static void md_audit(FILE *f, const fw_study_report *rep)
                "17): course and speed kept while TCPA > audit_rule17_may_tcpa_s, acted when the "
                "risk was still there at audit_rule17_must_tcpa_s, crossing not to port. Shares "
                "compliant with the Wilson %.0f%% interval; the thresholds are in the settings "
-               "above.\n\n| density | traffic | domain (m) |",
-            100 * rep->level);
+               "above.\n\n| density | %s | domain (m) |",
+            100 * rep->level, fw_rep_traffic_head(rep));
     for (int k = 0; k < FW_REP_NSIT; k++)
         fprintf(f, " %s |", fw_rep_situation_names[k]);
     fprintf(f, "\n|---|---|---|---|---|---|---|---|\n");
@@ -553,6 +587,7 @@ fw_status fw_rep_write_md(const fw_study_report *rep, const fw_study_report_resu
     fw_rep_md_power(f, rep);
     fw_rep_md_splits(f, rep);
     md_behaviour(f, rep);
+    md_axes(f, rep);
     md_causation(f, rep);
     md_audit(f, rep);
     fprintf(f, "## Plots\n\n");
@@ -597,6 +632,15 @@ static void jest(FILE *f, const fw_estimate *e)
     fputs("}", f);
 }
 
+/* ", "setting": "..."" when the study swept axes. */
+static void json_setting(FILE *f, const fw_study_report *rep, const fw_rep_group *G)
+{
+    if (!rep->has_settings)
+        return;
+    fputs(", \"setting\": ", f);
+    jstr(f, G->setting);
+}
+
 static void json_pairs(FILE *f, const fw_study_report *rep, const char *name,
                        const fw_rep_pair *pairs, int n)
 {
@@ -606,6 +650,7 @@ static void json_pairs(FILE *f, const fw_study_report *rep, const char *name,
         const fw_rep_group *G = &rep->groups[p->group];
         fprintf(f, "%s\n  {\"density\": %.10g, \"behaviour\": ", i ? "," : "", G->density);
         jstr(f, G->behaviour);
+        json_setting(f, rep, G);
         fprintf(f, ", \"domain_m\": %.10g, \"measure\": ", G->domain);
         jstr(f, fw_measures[p->measure].name);
         fputs(", \"diff\": ", f);
@@ -637,6 +682,7 @@ static void print_json(FILE *f, const fw_study_report *rep, const fw_study_repor
         const fw_rep_group *G = &rep->groups[g];
         fprintf(f, "%s\n  {\"density\": %.10g, \"behaviour\": ", g ? "," : "", G->density);
         jstr(f, G->behaviour);
+        json_setting(f, rep, G);
         fprintf(f, ", \"domain_m\": %.10g, \"fore_aft_ratio\": ", G->domain);
         jnum(f, G->ratio);
         fprintf(f, ", \"runs\": %d", G->n_runs);
@@ -650,6 +696,8 @@ static void print_json(FILE *f, const fw_study_report *rep, const fw_study_repor
     }
     json_pairs(f, rep, "paired", rep->pairs, rep->n_pairs);
     json_pairs(f, rep, "behaviour_paired", rep->bpairs, rep->n_bpairs);
+    if (rep->has_settings)
+        json_pairs(f, rep, "settings_paired", rep->spairs, rep->n_spairs);
     fputs("]}\n", f);
 }
 
@@ -664,13 +712,16 @@ void fw_study_report_print(FILE *f, const fw_study_report *rep, const fw_study_r
     fprintf(f, "%d runs counted, %d failed; reference domain %g m; mean [%.0f%% CI] across "
                "replications\n",
             rep->n_runs, rep->n_failed, rep->reference_m, 100 * rep->level);
-    fprintf(f, "%-8s %-8s %8s %5s", "density", "traffic", "domain_m", "runs");
+    int w = 8; /* the traffic column: as wide as its widest cell */
+    for (int g = 0; g < rep->n_groups; g++)
+        w = (int)fmax(w, (double)strlen(beh(&rep->groups[g])));
+    fprintf(f, "%-8s %-*s %8s %5s", "density", w, fw_rep_traffic_head(rep), "domain_m", "runs");
     for (int k = 0; k < NKEY; k++)
         fprintf(f, "  %-22.22s", key_head[k]);
     fprintf(f, "  %s\n", "CPA p50 m");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        fprintf(f, "%-8g %-8s %8s %5d", G->density, beh(G), DOM(G), G->n_runs);
+        fprintf(f, "%-8g %-*s %8s %5d", G->density, w, beh(G), DOM(G), G->n_runs);
         for (int k = 0; k < NKEY; k++)
             fprintf(f, "  %-22s", cell(c, sizeof c, &G->est[key[k]], is_share(key[k])));
         fprintf(f, "  %s\n", fw_rep_fmt(m, cpa_median(G)));

@@ -170,8 +170,8 @@ void fw_rep_md_power(FILE *f, const fw_study_report *rep)
                "%.0f%% confidence and 80%% power, 6 (z + z)^2 / rate with the setting's own "
                "rate (\"at least\": no event seen, the rate at its exact upper bound). Each "
                "compared pair's smallest detectable difference is in paired.csv "
-               "(detectable_80).\n\n| density | traffic | domain (m) | hours |",
-            100 * rep->level);
+               "(detectable_80).\n\n| density | %s | domain (m) | hours |",
+            100 * rep->level, fw_rep_traffic_head(rep));
     for (size_t k = 0; k < sizeof rare / sizeof rare[0]; k++)
         fprintf(f, " %s: events, h for a halving |", fw_measures[rare[k]].name);
     fprintf(f, "\n|---|---|---|---|");
@@ -180,9 +180,9 @@ void fw_rep_md_power(FILE *f, const fw_study_report *rep)
     fprintf(f, "\n");
     for (int g = 0; g < rep->n_groups; g++) {
         const fw_rep_group *G = &rep->groups[g];
-        char d[48], h[32], n[32];
+        char d[48], h[32], n[32], b[FW_REP_SETTING + 24];
         double hours = group_hours(rep, g);
-        fprintf(f, "| %g | %s | %s | %s |", G->density, G->behaviour[0] ? G->behaviour : "-",
+        fprintf(f, "| %g | %s | %s | %s |", G->density, fw_rep_traffic(b, sizeof b, G),
                 fw_rep_domain(d, sizeof d, G), fw_rep_fmt(h, hours));
         for (size_t k = 0; k < sizeof rare / sizeof rare[0]; k++) {
             fw_measure_id m = rare[k];

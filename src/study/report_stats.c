@@ -332,6 +332,7 @@ static fw_status paired(fw_study_report *rep, fw_error *err)
         for (int h = 0; h < rep->n_groups; h++)
             if (rep->groups[h].density == G->density && rep->groups[h].domain == rep->reference_m &&
                 strcmp(rep->groups[h].behaviour, G->behaviour) == 0 &&
+                rep->groups[h].setting_index == G->setting_index &&
                 fw_rep_same_shape(&rep->groups[h], G))
                 ref = h;
         if (ref < 0) {
@@ -365,7 +366,32 @@ static fw_status behaviour_paired(fw_study_report *rep, fw_error *err)
             const fw_rep_group *H = &rep->groups[h];
             if (H->density == G->density && H->domain == G->domain &&
                 fw_rep_same_shape(H, G) && strcmp(H->behaviour, "blind") == 0 &&
+                H->setting_index == G->setting_index &&
                 add_pairs(rep, rep->bpairs, &rep->n_bpairs, g, h, err))
+                return err->status;
+        }
+    }
+    return FW_OK;
+}
+
+/* The axes: each setting against the first of the study's list (the
+ * reference) at the same density, behaviour, domain size and shape; the same
+ * replications sailed the same seeds and starts in both, so the pairs are
+ * paired like the domain sizes'. */
+static fw_status setting_paired(fw_study_report *rep, fw_error *err)
+{
+    rep->spairs = malloc((size_t)rep->n_groups * FW_NMEASURES * sizeof *rep->spairs);
+    if (!rep->spairs)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    for (int g = 0; g < rep->n_groups && rep->has_settings; g++) {
+        const fw_rep_group *G = &rep->groups[g];
+        if (G->setting_index == 0)
+            continue;
+        for (int h = 0; h < rep->n_groups; h++) {
+            const fw_rep_group *H = &rep->groups[h];
+            if (H->setting_index == 0 && H->density == G->density && H->domain == G->domain &&
+                fw_rep_same_shape(H, G) && strcmp(H->behaviour, G->behaviour) == 0 &&
+                add_pairs(rep, rep->spairs, &rep->n_spairs, g, h, err))
                 return err->status;
         }
     }
@@ -425,7 +451,8 @@ fw_status fw_rep_compute(fw_study_report *rep, double reference_m, fw_error *err
         for (int t = 0; t < FW_REP_NTYPE; t++)
             G->traffic_count[t] += r->n_traffic[t];
     }
-    if (histograms(rep, err) || paired(rep, err) || behaviour_paired(rep, err))
+    if (histograms(rep, err) || paired(rep, err) || behaviour_paired(rep, err) ||
+        setting_paired(rep, err))
         return err->status;
     fw_rep_power(rep);
     return FW_OK;

@@ -1,8 +1,8 @@
 /* schema.h - the SQLite schema of a study database (fairway sweep writes it,
  * fairway report and analysis/ read it).
  *
- * One row in `runs` per (domain size and shape, density, behaviour, replication) of the study's run
- * list; a run and all its rows are committed in one transaction, so a run is
+ * One row in `runs` per (domain size and shape, density, behaviour, setting of
+ * the study's axes, replication) of the study's run list; a run and all its rows are committed in one transaction, so a run is
  * either wholly in the database or not at all.  Units are in the column names
  * (m, s, deg); flags are 0/1.  `meta` holds the study's settings as text
  * (schema_version, study_name, study_file, study_digest, scenario, duration_s,
@@ -42,6 +42,9 @@
  * substantial (rules 8, 16); rule17_phase of a stand-on action (1 keep, 2
  * may, 3 must; 0 none); compliant 1/0 and audit_note saying why not.
  *
+ * Schema 5 added the splits table and runs.setting (a study's `axes:`, study.h:
+ * "sensing.visibility_nm=1, ..."; NULL for a study without axes).
+ *
  * Exposure: the own ship sails sim_s seconds per run; traffic_ship_s is the
  * sum over steps of the ships in the survey area times the step (ship-seconds).
  */
@@ -52,7 +55,7 @@
 
 #include "run/encounter_record.h"
 
-#define FW_SCHEMA_VERSION "4"
+#define FW_SCHEMA_VERSION "5"
 
 #define FW_SCHEMA_SQL_RUNS                                                              \
     "CREATE TABLE IF NOT EXISTS meta(\n"                                                \
@@ -98,7 +101,8 @@
     "  max_lateral_mps REAL,\n"                                                         \
     "  min_hull_m REAL,\n"               /* hull to hull; NULL: none within 1 nm */      \
     "  closeness REAL,\n"                /* 1 - min_hull_m / 1852, 0 beyond 1 nm */      \
-    "  UNIQUE(domain_m, fore_aft_ratio, density, behaviour, replication));\n"
+    "  setting TEXT,\n"                  /* the axes' values, "key=v, ..."; NULL: none */  \
+    "  UNIQUE(domain_m, fore_aft_ratio, density, behaviour, replication, setting));\n"
 
 /* The encounters table: made from the encounter record's field table
  * (run/encounter_record.h fw_enc_sql_table): target, target_type, situation;
@@ -139,6 +143,7 @@
     "  batch INTEGER NOT NULL,\n"                                                       \
     "  domain_m REAL NOT NULL, fore_aft_ratio REAL, density REAL NOT NULL,\n"           \
     "  behaviour TEXT,\n"                                                               \
+    "  setting TEXT,\n"                  /* the axes' values, as runs.setting */         \
     "  particles INTEGER NOT NULL,\n"                                                   \
     "  status TEXT NOT NULL CHECK(status IN ('ok','failed')),\n"                        \
     "  reason TEXT NOT NULL DEFAULT '',\n"                                              \

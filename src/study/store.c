@@ -87,6 +87,19 @@ static fw_status write_meta(fw_store *st, const fw_study *s, const char *digest,
                  fw_behaviour_name(s->behaviours[i]));
     if ((r = meta_put(st, "behaviours", beh, err)))
         return r;
+    if (s->n_axes) { /* "key: v1, v2; key: ..." (values have no ',' or ';': study_axes.c) */
+        char axes[1024] = "";
+        size_t len = 0;
+        for (int i = 0; i < s->n_axes && len < sizeof axes; i++) {
+            len += (size_t)snprintf(axes + len, sizeof axes - len, "%s%s: ", i ? "; " : "",
+                                    s->axes[i].key);
+            for (int j = 0; j < s->axes[i].n && len < sizeof axes; j++)
+                len += (size_t)snprintf(axes + len, sizeof axes - len, "%s%s", j ? ", " : "",
+                                        s->axes[i].values[j]);
+        }
+        if ((r = meta_put(st, "axes", axes, err)))
+            return r;
+    }
     const char *levels[4] = {"domains_m", "densities", "fore_aft_ratios", "domains_l"};
     const double *values[4] = {s->domains, s->densities, s->ratios, s->domain_lengths};
     const int counts[4] = {s->n_domains, s->n_densities, s->n_ratios,
@@ -232,8 +245,9 @@ static const char kRunSql[] =
     "near_miss_centre, collision, colregs_ok, max_helm_deg, path_length_m, path_lengthening_m, time_lost_s, "
     "rudder_work_deg_s, helm_orders, traffic_ship_s, give_way, give_way_short, "
     "mon_sideways, mon_teleport, mon_overlap, mon_appear, mon_vanish, mon_start_close, "
-    "mon_stopped, max_lateral_mps, min_hull_m, closeness) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
-    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
+    "mon_stopped, max_lateral_mps, min_hull_m, closeness, setting) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,"
+    "?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
+enum { kRunSettingParam = 40 }; /* setting, last: bound for failed runs too */
 /* INSERT INTO encounters(run_id, ...): the columns of the encounter record's
  * table (run/encounter_record.h), in its order. */
 static fw_status enc_sql(char *sql, size_t n, fw_error *err)
@@ -426,6 +440,11 @@ static int run_row(sqlite3_stmt *q, const fw_study *s, const fw_outcome *o)
     sqlite3_bind_int64(q, i++, (sqlite3_int64)r.seed);
     /* the study's level, also for a failed run: the pair (domain, behaviour) is its key */
     sqlite3_bind_text(q, i++, fw_behaviour_name(r.behaviour), -1, SQLITE_STATIC);
+    if (s->n_axes) { /* ... and the setting: NULL without axes */
+        char label[256];
+        fw_study_setting_label(s, r.setting_index, label, sizeof label);
+        sqlite3_bind_text(q, kRunSettingParam, label, -1, SQLITE_TRANSIENT);
+    }
     sqlite3_bind_text(q, i++, ok ? "ok" : "failed", -1, SQLITE_STATIC);
     sqlite3_bind_text(q, i++, ok ? "" : o->reason, -1, SQLITE_STATIC);
     bind_num(q, i++, o->sim_s);

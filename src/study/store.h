@@ -42,6 +42,7 @@ typedef struct fw_split_row {
     int cell, batch;
     double domain, ratio, density;
     const char *behaviour;
+    const char *setting;        /* the axes' values; NULL or "" without axes */
     int particles;
     bool ok;
     const char *reason;         /* why it failed ("" when ok) */

@@ -23,8 +23,8 @@ fw_status fw_store_split(fw_store *st, const fw_split_row *r, fw_error *err)
 {
     static const char sql[] =
         "INSERT OR REPLACE INTO splits(cell, batch, domain_m, fore_aft_ratio, density, behaviour, "
-        "particles, status, reason, rounds, runs, sim_s, wall_s, p_collision, p_near_miss, "
-        "best_closeness, best_path) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
+        "setting, particles, status, reason, rounds, runs, sim_s, wall_s, p_collision, "
+        "p_near_miss, best_closeness, best_path) VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
     sqlite3 *db = fw_store_sqlite(st);
     sqlite3_stmt *q = NULL;
     if (sqlite3_prepare_v2(db, sql, -1, &q, NULL) != SQLITE_OK)
@@ -36,6 +36,9 @@ fw_status fw_store_split(fw_store *st, const fw_split_row *r, fw_error *err)
     bind_num(q, i++, r->ratio);
     sqlite3_bind_double(q, i++, r->density);
     sqlite3_bind_text(q, i++, r->behaviour, -1, SQLITE_STATIC);
+    if (r->setting && r->setting[0])
+        sqlite3_bind_text(q, i, r->setting, -1, SQLITE_STATIC);
+    i++;
     sqlite3_bind_int(q, i++, r->particles);
     sqlite3_bind_text(q, i++, r->ok ? "ok" : "failed", -1, SQLITE_STATIC);
     sqlite3_bind_text(q, i++, r->reason ? r->reason : "", -1, SQLITE_STATIC);

@@ -10,6 +10,7 @@
 #include "ship/ship.h"
 #include "scenario/scenario.h"
 #include "study/study.h"
+#include "study/study_axes.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
 
@@ -167,12 +168,16 @@ static fw_status read_estimate(const yt_doc *doc, const yt_node *root, fw_study 
         (st = yt_opt_int(doc, m, "estimate", "batches", 2, 10000, &batches, err)) ||
         (st = yt_opt_int(doc, m, "estimate", "seed", 0, 2147483647L, &seed, err)))
         return st;
-    const char *why = fw_scenario_randomness(&s->base);
-    if (why)
-        return fw_fail_at(err, doc->file, m->line, "estimate",
-                          "%s has no randomness after t = 0 (%s): every branch would repeat its "
-                          "parent; count the runs instead (crude Monte Carlo)",
-                          s->scenario_file, why);
+    for (int k = 0; k < s->n_settings; k++) {
+        const char *why = fw_scenario_randomness(s->n_axes ? &s->settings[k] : &s->base);
+        char label[256];
+        if (why)
+            return fw_fail_at(err, doc->file, m->line, "estimate",
+                              "%s%s%s has no randomness after t = 0 (%s): every branch would "
+                              "repeat its parent; count the runs instead (crude Monte Carlo)",
+                              s->scenario_file, s->n_axes ? " with " : "",
+                              fw_study_setting_label(s, k, label, sizeof label), why);
+    }
     s->estimate = (fw_study_estimate){.on = true, .particles = (int)particles,
                                       .batches = (int)batches, .seed = (unsigned long)seed};
     return FW_OK;
@@ -331,6 +336,13 @@ static uint64_t digest(const fw_study *s)
     if (e->on)
         k += snprintf(text + k, sizeof text - (size_t)k, "e%d,%d,%lu|", e->particles, e->batches,
                       e->seed);
+    for (int i = 0; i < s->n_axes && k < (int)sizeof text - 400; i++) {
+        k += snprintf(text + k, sizeof text - (size_t)k, "x%s", s->axes[i].key);
+        for (int j = 0; j < s->axes[i].n; j++)
+            k += snprintf(text + k, sizeof text - (size_t)k, "%c%s", j ? ',' : '=',
+                          s->axes[i].values[j]);
+        k += snprintf(text + k, sizeof text - (size_t)k, "|");
+    }
     uint64_t h = fw_fnv1a(FW_FNV_INIT, text, strlen(text));
     h = file_digest(h, s->scenario_file);
     return file_digest(h, s->base.ship.file);
@@ -342,12 +354,13 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
                                        "domains_m", "domains_l", "fore_aft_ratios", "densities",
                                        "behaviours", "duration_s",
                                        "start", "encounter_m", "near_miss_m", "audit", "estimate",
-                                       NULL};
+                                       "axes", NULL};
     memset(s, 0, sizeof *s);
     if (fw_path_copy(s->file, sizeof s->file, path, err))
         return err->status;
     s->encounter_range = 1852.0;
     s->near_miss = 185.2;
+    s->n_settings = 1;
     yt_doc *doc = NULL;
     fw_status st = yt_load_file(path, &doc, err);
     if (st)
@@ -363,7 +376,7 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
         (st = read_domains(doc, root, s, err)) ||
         (st = read_levels(doc, root, "densities", 0.0, 100.0, false, s->densities,
                           &s->n_densities, err)) ||
-        (st = read_behaviours(doc, root, s, err)) ||
+        (st = read_behaviours(doc, root, s, err)) || (st = fw_study_read_axes(doc, root, s, err)) ||
         (st = yt_opt_number(doc, root, "", "encounter_m", 1.0, 1e6, &s->encounter_range, err)) ||
         (st = yt_opt_number(doc, root, "", "near_miss_m", 0.0, 1e6, &s->near_miss, err)) ||
         (st = yt_opt_map(doc, root, "", "start", &start, err)))
@@ -388,14 +401,15 @@ fw_status fw_study_load(const char *path, fw_study *s, fw_error *err)
     s->replications = (int)reps;
     s->seed = (unsigned long)seed;
     if ((long)s->replications * s->n_domains * (s->n_densities ? s->n_densities : 1) *
-            (s->n_behaviours ? s->n_behaviours : 1) * (s->n_ratios ? s->n_ratios : 1) >
+            (s->n_behaviours ? s->n_behaviours : 1) * (s->n_ratios ? s->n_ratios : 1) *
+            s->n_settings >
         10000000L) {
         st = fw_fail_at(err, doc->file, yt_key_line(root, "replications"), "replications",
                         "more than 10 million runs");
         goto out;
     }
     if ((st = load_base(doc, root, path, scen, s, err)) || (st = read_audit(doc, root, s, err)) ||
-        (st = read_estimate(doc, root, s, err)) ||
+        (st = fw_study_load_settings(doc, s, err)) || (st = read_estimate(doc, root, s, err)) ||
         (st = check_recorded(doc, root, start, s, err)))
         goto out;
     if (s->n_behaviours == 0) {
@@ -434,7 +448,8 @@ out:
 
 int fw_study_run_count(const fw_study *s)
 {
-    return s->n_densities * s->replications * s->n_behaviours * s->n_ratios * s->n_domains;
+    return s->n_settings * s->n_densities * s->replications * s->n_behaviours * s->n_ratios *
+           s->n_domains;
 }
 
 /* The seed and the start of a replication (or a splitting start) from its
@@ -455,7 +470,8 @@ fw_study_run fw_study_run_at(const fw_study *s, int run_id)
     r.ratio_index = (run_id / s->n_domains) % s->n_ratios;
     r.behaviour_index = (run_id / (s->n_domains * s->n_ratios)) % s->n_behaviours;
     r.replication = (run_id / per_rep) % s->replications;
-    r.density_index = run_id / (per_rep * s->replications);
+    r.density_index = (run_id / (per_rep * s->replications)) % s->n_densities;
+    r.setting_index = run_id / (per_rep * s->replications * s->n_densities);
     r.domain = s->domains[r.domain_index];
     r.density = s->densities[r.density_index];
     r.behaviour = s->behaviours[r.behaviour_index];
@@ -466,13 +482,13 @@ fw_study_run fw_study_run_at(const fw_study *s, int run_id)
 
 int fw_study_cell_count(const fw_study *s)
 {
-    return s->n_densities * s->n_behaviours * s->n_ratios * s->n_domains;
+    return s->n_settings * s->n_densities * s->n_behaviours * s->n_ratios * s->n_domains;
 }
 
 fw_study_run fw_study_cell(const fw_study *s, int cell)
 {
     int per_rep = s->n_domains * s->n_ratios * s->n_behaviours;
-    /* replication 0 of the cell's density block */
+    /* replication 0 of the cell's (setting, density) block */
     int run_id = (cell / per_rep) * per_rep * s->replications + cell % per_rep;
     return fw_study_run_at(s, run_id);
 }
@@ -486,7 +502,7 @@ fw_study_run fw_study_run_drawn(const fw_study *s, int cell, uint64_t draw)
 
 void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *out)
 {
-    *out = s->base;
+    *out = s->n_axes ? s->settings[r->setting_index] : s->base;
     snprintf(out->name, sizeof out->name, "%.40s-%06d", s->name, r->run_id);
     out->helm.domain.size = r->domain;
     out->helm.domain.fore_aft_ratio = r->ratio;

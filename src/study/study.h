@@ -6,7 +6,8 @@
  * differences between domain sizes, shapes and behaviours are paired.  The
  * run list is ordered replication-major (all domains of shape 0 and
  * behaviour 0 of replication 0, then of shape 1, ..., then behaviour 1, then
- * replication 1, ...), so
+ * replication 1, ...; densities, then the settings of `axes:`, are the
+ * outermost blocks), so
  * a sweep cut short still holds complete paired sets.  run_id is the index in
  * that list; with one shape and one behaviour it is the list of a study
  * without those axes.
@@ -30,6 +31,13 @@
  *   start: {time_s: 43200, along_m: 1000}
  *   encounter_m: 1852            # optional: a target passing closer is an encounter
  *   near_miss_m: 185.2           # optional: hulls closer than this (hull to hull) are a near miss
+ *   axes:                        # optional: any other scenario key, swept
+ *     sensing.visibility_nm: [10, 1]   # a dotted key of the scenario file: values
+ *     watchkeeping.lapse: [0, 0.05]    # laid over it (scenario.h fw_scenario_load_with)
+ *                                # every combination is a setting (the last axis fastest),
+ *                                # checked by the scenario's own reader; keys the study
+ *                                # sweeps or holds fixed itself (density, behaviour,
+ *                                # domain, seed, duration, ship, network) are refused
  *   estimate: {method: splitting, particles: 50, batches: 8, seed: 1}
  *                                # optional: besides the runs, each cell's probability
  *                                # of a collision and of a near miss within duration_s
@@ -43,6 +51,7 @@
 #define FW_STUDY_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "core/error.h"
@@ -52,6 +61,9 @@
 #define FW_STUDY_MAX_LEVELS 32
 #define FW_STUDY_MAX_INPUTS 12
 #define FW_STUDY_MAX_BEHAVIOURS 2
+#define FW_STUDY_MAX_AXES 4
+#define FW_STUDY_MAX_AXIS_LEVELS 8
+#define FW_STUDY_MAX_SETTINGS 16
 
 /* One file a run of the study reads, and the digest of its bytes: a resumed
  * sweep refuses when any of them changed, naming it. */
@@ -71,6 +83,16 @@ typedef struct fw_study_estimate {
     int batches;
     unsigned long seed;
 } fw_study_estimate;
+
+/* One axis of `axes:`: a dotted scenario key and the values it takes (YAML
+ * scalars as written). */
+typedef struct fw_study_axis {
+    char key[64];
+    int n;
+    char values[FW_STUDY_MAX_AXIS_LEVELS][32];
+    int line;                /* of the key in the study file */
+    int value_line[FW_STUDY_MAX_AXIS_LEVELS];
+} fw_study_axis;
 
 typedef struct fw_study {
     char file[512];
@@ -97,6 +119,12 @@ typedef struct fw_study {
     double encounter_range;  /* m */
     double near_miss;        /* m, hull to hull (the centre-to-centre reading is secondary) */
     fw_study_estimate estimate;
+    int n_axes;              /* 0: no axes: */
+    int n_settings;          /* 1, and every run sails `base` */
+    fw_study_axis axes[FW_STUDY_MAX_AXES];
+    /* with axes, setting k's scenario (the base file with the axes' values
+     * of combination k laid over it); unused without */
+    fw_scenario settings[FW_STUDY_MAX_SETTINGS];
     uint64_t digest;         /* of the settings and the scenario file: resume guard */
     int n_inputs;            /* every file a run reads: study, scenario, ship, network */
     fw_study_input inputs[FW_STUDY_MAX_INPUTS];
@@ -106,6 +134,7 @@ typedef struct fw_study_run {
     int run_id;
     int replication;
     int domain_index, density_index, behaviour_index, ratio_index;
+    int setting_index;       /* the combination of the axes' values; 0 without axes */
     double domain;           /* m */
     double ratio;            /* fore-aft / transverse semi-axis */
     double density;
@@ -125,6 +154,9 @@ fw_study_run fw_study_run_at(const fw_study *s, int run_id);
 /* The scenario of one run: the base with the run's domain size and shape,
  * density, behaviour, seed, duration and start, named "<study>-<run_id>". */
 void fw_study_scenario(const fw_study *s, const fw_study_run *r, fw_scenario *out);
+
+/* "key=value, key=value" of setting k (0 <= k < n_settings); "" without axes. */
+const char *fw_study_setting_label(const fw_study *s, int k, char *buf, size_t n);
 
 /* Cells: the study's settings without the replications, numbered as the
  * runs of replication 0 (cell c is the c-th such run). */

@@ -141,8 +141,11 @@ static fw_status collect(const fw_sweep_def *def, fw_store *st, worker *w, int s
                  WIFSIGNALED(status) ? strsignal(WTERMSIG(status)) : "ended without its result");
     }
     fw_study_run c = fw_study_cell(s, cell);
+    char setting[256];
     fw_split_row row = {.cell = cell, .batch = batch, .domain = c.domain, .ratio = c.ratio,
                         .density = c.density, .behaviour = fw_behaviour_name(c.behaviour),
+                        .setting = fw_study_setting_label(s, c.setting_index, setting,
+                                                          sizeof setting),
                         .particles = s->estimate.particles, .ok = m->ok, .reason = m->reason,
                         .rounds = m->rounds, .runs = m->runs, .sim_s = m->sim_s,
                         .wall_s = m->wall_s, .p_collision = m->p_collision,
@@ -153,9 +156,9 @@ static fw_status collect(const fw_sweep_def *def, fw_store *st, worker *w, int s
     if (!r && def->progress != FW_PROGRESS_NONE) {
         if (m->ok)
             fprintf(out,
-                    "splitting: cell %d (domain %g m, %s) batch %d: P(collision) %.3g, "
+                    "splitting: cell %d (domain %g m, %s%s%s) batch %d: P(collision) %.3g, "
                     "P(near miss) %.3g, %.0f runs, %.0f s\n",
-                    cell, c.domain, row.behaviour, batch, m->p_collision, m->p_near_miss, m->runs,
+                    cell, c.domain, row.behaviour, setting[0] ? ", " : "", setting, batch, m->p_collision, m->p_near_miss, m->runs,
                     m->wall_s);
         else
             fprintf(out, "splitting: cell %d batch %d failed: %s\n", cell, batch, m->reason);

@@ -557,3 +557,72 @@ bool yt_name_ok(const char *v, size_t max, bool reserved, const char *use, char 
         return true;
     return false;
 }
+
+static yt_node *new_node(yt_kind kind, int line)
+{
+    yt_node *n = calloc(1, sizeof *n);
+    if (n) {
+        n->kind = kind;
+        n->line = line;
+    }
+    return n;
+}
+
+/* The value of `key` (n bytes) in map, made (an empty map) when absent.
+ * NULL when out of memory. */
+static yt_node **map_slot(yt_node *map, const char *key, size_t n)
+{
+    for (size_t i = 0; i < map->n; i++)
+        if (strlen(map->keys[i]) == n && !memcmp(map->keys[i], key, n))
+            return &map->items[i];
+    int line = map->line;
+    yt_node *child = new_node(YT_MAP, line);
+    char *k = strndup(key, n);
+    if (!child || !k || grow(map, true)) {
+        free(child);
+        free(k);
+        return NULL;
+    }
+    map->keys[map->n] = k;
+    map->key_lines[map->n] = line;
+    map->items[map->n] = child;
+    return &map->items[map->n++];
+}
+
+fw_status yt_set(yt_doc *doc, const char *key, const char *value, fw_error *err)
+{
+    if (!doc->root)
+        doc->root = new_node(YT_MAP, 1);
+    if (!doc->root)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    yt_node **at = &doc->root;
+    const char *p = key;
+    for (;;) {
+        const char *dot = strchr(p, '.');
+        size_t n = dot ? (size_t)(dot - p) : strlen(p);
+        if (n == 0)
+            return fw_fail(err, FW_EINPUT, "'%s' is not a dotted key (an empty step)", key);
+        if ((*at)->kind != YT_MAP) {
+            int done = p > key ? (int)(p - key - 1) : 0;
+            return fw_fail(err, FW_EINPUT, "%s:%d: %.*s%s is not a map, so '%s' names no place in it",
+                           doc->file, (*at)->line, done, key, done ? "" : "the top", key);
+        }
+        at = map_slot(*at, p, n);
+        if (!at)
+            return fw_fail(err, FW_ERUN, "out of memory");
+        if (!dot)
+            break;
+        p = dot + 1;
+    }
+    yt_node *leaf = new_node(YT_SCALAR, (*at)->line);
+    char *s = strdup(value);
+    if (!leaf || !s) {
+        free(leaf);
+        free(s);
+        return fw_fail(err, FW_ERUN, "out of memory");
+    }
+    leaf->str = s;
+    node_free(*at);
+    *at = leaf;
+    return FW_OK;
+}

@@ -80,6 +80,17 @@ fw_status yt_child(const yt_doc *doc, const yt_node *map, const char *path, cons
 #define yt_opt_seq(doc, map, path, key, out, err) \
     yt_child(doc, map, path, key, YT_SEQ, false, out, err)
 
+/* Sets the scalar at dotted path `key` ("sensing.visibility_nm") to `value`
+ * (read as an unquoted YAML scalar: "1" is a number, "ais" a word), making
+ * the maps along the path that the document does not have, and replacing
+ * whatever was there.  The new scalar keeps the line of what it replaces (a
+ * new map, that of the map it is made in), so that a reader's message about
+ * it points where the key is, or would be, in the file.  FW_EINPUT when a step of the path is a scalar or a sequence
+ * in the document (the key cannot name a place in it) or the key is empty;
+ * the message says which step.  Used by a study's axes (study.h) to make a
+ * scenario of each setting from one file. */
+fw_status yt_set(yt_doc *doc, const char *key, const char *value, fw_error *err);
+
 /* Parses a scalar node as a finite number; fails with a located error. */
 fw_status yt_number(const yt_doc *doc, const yt_node *node, const char *field, double *out,
                     fw_error *err);
