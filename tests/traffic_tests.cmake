@@ -7,6 +7,11 @@ fw_test(test_traffic test_traffic.c)
 target_link_libraries(test_traffic PRIVATE fairway_traffic)
 set_tests_properties(test_traffic PROPERTIES TIMEOUT 30
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+# a SUMO peer that answers wrongly (traffic/traci_guard.h): errors, no abort, no hang
+fw_test(test_traci_guard test_traci_guard.c)
+target_link_libraries(test_traci_guard PRIVATE fairway_traffic)
+set_tests_properties(test_traci_guard PROPERTIES TIMEOUT 60
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 foreach(case embedded remote badnet noport dies)
   add_test(NAME test_traffic_${case} COMMAND test_traffic ${case})
   set_tests_properties(test_traffic_${case} PROPERTIES TIMEOUT 90

@@ -22,6 +22,7 @@
 #include "core/units.h"
 #include "traffic/backend.h"
 #include "traffic/fcd.h"
+#include "traffic/traci_guard.h"
 #include "traffic/traffic_internal.h"
 
 
@@ -36,6 +37,7 @@ fw_traffic_def fw_default_traffic_def(void)
     d.seed = 1;
     d.sumo_gui = "sumo-gui";
     d.connect_timeout = 10.0;
+    d.reply_timeout = 60.0;
     d.own_id = "own";
     d.own_length = 100.0;
     d.own_width = 16.0;
@@ -133,13 +135,33 @@ static fw_status prefix(fw_error *err, const char *fmt, const char *a, int b)
  * run's table: fairway retries itself, quietly, every 0.1 s until the
  * connect timeout, and gives up at once when the sumo-gui started here has
  * exited (a bad settings file, no display). */
-static fw_status connect_quietly(fw_traffic *t, const char *host, int port, fw_error *err)
+static fw_status connect_quietly(fw_traffic *t, const char *host, int port, bool *broken,
+                                 fw_error *err)
 {
+    *broken = false;
     double deadline = fw_clock_s() + t->def.connect_timeout;
     for (;;) {
-        fw_status st = t->be->connect(host, port, 0, err);
-        if (!st)
-            return FW_OK;
+        /* libtraci talks to the peer through the checking relay only
+         * (traci_guard.h): no byte from the wire can crash or hang fairway */
+        fw_traci_guard_def gd = {.host = host, .port = port,
+                                 .connect_timeout = fmax(0.1, deadline - fw_clock_s()),
+                                 .reply_timeout = t->def.mode.kind == FW_TRAFFIC_GUI
+                                                      ? 0.0 : t->def.reply_timeout};
+        int local;
+        fw_status st = fw_traci_guard_start(&gd, &t->guard, &local, err);
+        if (!st) {
+            st = t->be->connect("127.0.0.1", local, 0, err);
+            if (!st)
+                return FW_OK;
+            *broken = fw_traci_guard_reason(t->guard)[0] != '\0';
+            if (*broken) /* a peer that answered wrongly: no retry mends it */
+                st = fw_fail(err, FW_ERUN, "%s", fw_traci_guard_reason(t->guard));
+            t->be->close();
+            fw_traci_guard_stop(t->guard);
+            t->guard = NULL;
+            if (*broken || fw_clock_s() >= deadline)
+                return st;
+        }
         int status;
         if (t->child > 0 && waitpid(t->child, &status, WNOHANG) == t->child) {
             t->child = 0;
@@ -194,8 +216,11 @@ static fw_status start_gui(fw_traffic *t, fw_error *err)
     fw_spawn_def sp = {.argv = argv, .log = d->log_file ? out : NULL};
     if ((st = fw_spawn(&sp, &t->child, err)))
         return st;
-    if ((st = connect_quietly(t, "localhost", port, err)))
-        return prefix(err, "%s did not accept a connection on port %d", d->sumo_gui, port);
+    bool broken;
+    if ((st = connect_quietly(t, "localhost", port, &broken, err)))
+        return prefix(err, broken ? "%s on port %d answered wrongly"
+                                  : "%s did not accept a connection on port %d",
+                      d->sumo_gui, port);
     return FW_OK;
 }
 
@@ -230,9 +255,12 @@ static fw_status start(fw_traffic *t, fw_error *err)
          * errors below */
         if ((st = fw_traffic_write_remote_command(d, err)))
             return st;
-        if ((st = connect_quietly(t, d->mode.host, d->mode.port, err)))
-            return prefix(err, "no SUMO at %s:%d (start it with the run's "
-                               "sumo/remote-command.txt)", d->mode.host, d->mode.port);
+        bool broken;
+        if ((st = connect_quietly(t, d->mode.host, d->mode.port, &broken, err)))
+            return prefix(err, broken ? "the peer at %s:%d is not a SUMO fairway can use"
+                                      : "no SUMO at %s:%d (start it with the run's "
+                                        "sumo/remote-command.txt)",
+                          d->mode.host, d->mode.port);
         char where[300];
         snprintf(where, sizeof where, "%s:%d", d->mode.host, d->mode.port);
         return fw_traffic_net_check(t->be, d->net_file, where, err);
@@ -282,6 +310,7 @@ void fw_traffic_close(fw_traffic *t)
         if (t->def.mode.kind == FW_TRAFFIC_EMBEDDED)
             embedded_open = false;
     }
+    fw_traci_guard_stop(t->guard);
     if (t->child > 0 && t->def.mode.gui.keep && !t->dead) {
         fprintf(stderr, "fairway: the sumo-gui window stays open: close it to go on\n");
         fw_spawn_wait(t->child);
@@ -476,6 +505,9 @@ fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
     if (!t->placed)
         return fw_fail(err, FW_ERUN, "own ship not placed before the first step");
     fw_status st = t->be->step(&t->time, err);
+    if (st && t->guard && fw_traci_guard_reason(t->guard)[0])
+        st = fw_fail(err, FW_ERUN, "SUMO at %s:%d: %s", t->def.mode.host, t->def.mode.port,
+                     fw_traci_guard_reason(t->guard));
     if (st)
         t->dead = true;
     else

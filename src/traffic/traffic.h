@@ -88,6 +88,10 @@ typedef struct fw_traffic_def {
     unsigned long seed;
     const char *sumo_gui;    /* program for gui mode */
     double connect_timeout;  /* s, libtraci connection attempts (about 1 per s) */
+    /* s, remote mode: the longest a request may wait for the start of its
+     * answer, or between two parts of it (traci_guard.h), 60 s; a sumo-gui
+     * started here has none (its user may pause it) */
+    double reply_timeout;
     /* The own ship. */
     const char *own_id;
     double own_length;       /* m, Loa */

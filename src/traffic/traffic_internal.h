@@ -23,6 +23,7 @@ struct fw_traffic {
     char own_id[64];
     char log_file[1024];
     pid_t child; /* sumo-gui started here, or 0 */
+    struct fw_traci_guard *guard; /* libtraci's relay to the peer (traci_guard.h), or NULL */
     char screenshot[1024]; /* gui: the PNG taken at the end ("" none) */
     bool zoomed;           /* gui: the view is zoomed on the own ship */
     bool placed, dead;
