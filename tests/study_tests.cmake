@@ -63,10 +63,13 @@ set_tests_properties(sweep_parallel sweep_kill sweep_fail PROPERTIES TIMEOUT 300
 
 # Hardening (issue 14): inputs of a resumed sweep, one writer, paths checked first
 fw_script_test(sweep_inputs 0 "ok: every changed input refused by name" sweep_inputs.sh)
+# Hardening (issue 28 item 7): nothing outlives a SIGKILL; leftovers removed by the next command
+fw_script_test(kill_leftovers 0 "ok: nothing outlives a SIGKILL, leftovers removed" kill_leftovers.sh)
+set_tests_properties(kill_leftovers PROPERTIES TIMEOUT 120)
 fw_script_test(sweep_lock 0 "ok: second sweep refused at once" sweep_lock.sh)
 fw_script_test(sweep_paths 0 "ok: bad paths refused, nothing created" sweep_paths.sh)
 fw_script_test(report_readonly 0 "ok: read-only database reported" report_readonly.sh)
-foreach(t sweep_inputs sweep_lock sweep_paths report_readonly)
+foreach(t sweep_inputs sweep_lock sweep_paths report_readonly kill_leftovers)
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 endforeach()
 fw_test(test_ams test_ams.c ams_walk.c)

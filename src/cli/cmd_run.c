@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,6 +25,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "core/files.h"
+#include "core/leftover.h"
 #include "core/units.h"
 #include "run/run.h"
 #include "scenario/scenario.h"
@@ -252,6 +254,8 @@ static int run_one(run_opts *o, int i, bool first, bool *fatal, fw_error *err)
     fw_remove_tree(tmp);
     if (mkdir(tmp, 0777) != 0)
         return fw_report((fw_fail(err, FW_ERUN, "cannot create %s", tmp), err));
+    if (fw_leftover_mark(tmp, err)) /* a SIGKILL leaves it: the next run removes it */
+        return fw_report(err);
     o->def.scenario = o->scn[i];
     o->def.dir = tmp;
     char shot[1100];
@@ -366,7 +370,10 @@ static int supervise(run_opts *o, fw_error *err)
     int fds[2];
     if (pipe(fds) != 0)
         return fw_report((fw_fail(err, FW_ERUN, "pipe: %s", strerror(errno)), err));
+    /* what a SIGKILLed run before left in the output */
+    fw_leftover_clean(o->out, ".", "an interrupted fairway run");
     fflush(NULL);
+    pid_t parent = getpid();
     pid_t pid = fork();
     if (pid < 0)
         return fw_report((fw_fail(err, FW_ERUN, "fork: %s", strerror(errno)), err));
@@ -374,6 +381,11 @@ static int supervise(run_opts *o, fw_error *err)
         /* a background job starts with SIGINT ignored: the child must die of it */
         signal(SIGINT, SIG_DFL);
         signal(SIGTERM, SIG_DFL);
+        /* and of this process's death (a SIGKILL it cannot forward): an
+         * orphan would finish its run and write it into the output later */
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent)
+            _exit(1);
         close(fds[0]);
         exit(run_all(o, fds[1], err));
     }

@@ -15,6 +15,9 @@
  * the pipe and leave. */
 static void child(const fw_spawn_def *d, int report)
 {
+    /* nothing fairway starts outlives it: a sumo-gui, netconvert or plot of a
+     * SIGKILLed fairway dies with it (the flag survives exec) */
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
     int flags = O_WRONLY | O_CREAT | (d->append ? O_APPEND : O_TRUNC);
     int fd = open(d->log ? d->log : "/dev/null", flags, 0644);
     if (fd >= 0) {

@@ -4,6 +4,8 @@
  * file (or /dev/null), optionally in another working directory.  A pipe that
  * exec closes tells the parent whether the program started at all, so "no
  * such program" is an error of fw_spawn itself, not an exit status later.
+ * The child dies with fairway (PR_SET_PDEATHSIG): no program it started
+ * outlives a SIGKILL of fairway.
  */
 #ifndef FW_SPAWN_H
 #define FW_SPAWN_H

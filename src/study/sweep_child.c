@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "core/files.h"
+#include "core/leftover.h"
 #include "study/store.h"
 #include "study/sweep.h"
 
@@ -37,13 +38,15 @@ fw_status fw_sweep_workdir(const fw_sweep_def *def, char *out, size_t outsz, fw_
         return FW_OK;
     }
     const char *tmp = getenv("TMPDIR");
-    if ((size_t)snprintf(out, outsz, "%s/fairway-sweep-XXXXXX", tmp && tmp[0] ? tmp : "/tmp") >=
-        outsz)
+    const char *parent = tmp && tmp[0] ? tmp : "/tmp";
+    if ((size_t)snprintf(out, outsz, "%s/fairway-sweep-XXXXXX", parent) >= outsz)
         return fw_fail(err, FW_EINPUT, "TMPDIR %s: path too long", tmp);
+    /* what a SIGKILLed sweep before left there (leftover.h) */
+    fw_leftover_clean(parent, "fairway-sweep-", "an interrupted sweep");
     if (!mkdtemp(out))
         return fw_fail(err, FW_ERUN, "cannot create a work directory %s: %s", out,
                        strerror(errno));
-    return FW_OK;
+    return fw_leftover_mark(out, err);
 }
 
 static bool summary_finite(const fw_run_summary *s)
