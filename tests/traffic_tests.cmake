@@ -7,6 +7,9 @@ fw_test(test_traffic test_traffic.c)
 target_link_libraries(test_traffic PRIVATE fairway_traffic)
 set_tests_properties(test_traffic PROPERTIES TIMEOUT 30
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+# a SUMO ship's hull on its bow's track (traffic/hull_track.h)
+fw_test(test_hull_track test_hull_track.c)
+target_link_libraries(test_hull_track PRIVATE fairway_traffic)
 # a SUMO peer that answers wrongly (traffic/traci_guard.h): errors, no abort, no hang
 fw_test(test_traci_guard test_traci_guard.c)
 target_link_libraries(test_traci_guard PRIVATE fairway_traffic)
@@ -58,3 +61,7 @@ set_tests_properties(netcache PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 300)
 fw_test(test_track test_track.c)
 fw_script_test(worst_replay 0 "ok: worst cases replayed within 10 m" worst_replay.sh)
 set_tests_properties(worst_replay PROPERTIES TIMEOUT 300 ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
+# ships on a bent channel (networks/bend) never move sideways like no ship can
+fw_script_test(bend_traffic 0 "ok: no ship jumps on the bend" bend_traffic.sh)
+set_tests_properties(bend_traffic PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)

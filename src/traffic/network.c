@@ -12,7 +12,7 @@
 
 fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err)
 {
-    static const char *const known = "channel, crossing, strait, sea, dover, geo-channel";
+    static const char *const known = "channel, crossing, strait, sea, dover, geo-channel, bend";
     size_t n = strlen(name);
     bool ok = n > 0 && n < 64 && strspn(name, "abcdefghijklmnopqrstuvwxyz"
                                               "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;

@@ -322,8 +322,11 @@ void fw_traffic_close(fw_traffic *t)
         fprintf(stderr, "fairway: warning: %s\n", ferr.msg);
     fw_free_each(5, t->raw.v, t->ctx.v, t->ships, t->area, t->near);
     fw_idmap_free(&t->ids);
-    fw_free_each(8, t->conv, t->last_e, t->last_n, t->last_step, t->last_angle, t->last_sin,
-                 t->last_cos, t);
+    for (int i = 0; i < t->last_cap; i++)
+        fw_hull_track_free(&t->tracks[i]);
+    fw_free_each(15, t->conv, t->last_e, t->last_n, t->last_step, t->last_angle, t->last_sin,
+                 t->last_cos, t->tracks, t->seed_heading, t->last_bx, t->last_by, t->off_x,
+                 t->off_y, t->last_k, t);
 }
 
 fw_status fw_traffic_load(fw_traffic_kind kind, fw_error *err)
@@ -473,8 +476,10 @@ fw_status fw_traffic_give_back(fw_traffic *t, const char *id, double x, double y
     /* its last position (SUMO's stale one while fairway had it) is no base
      * for the direction of its motion in the first step back */
     int i = fw_idmap_find(&t->ids, id);
-    if (!st && i >= 0 && i < t->last_cap)
+    if (!st && i >= 0 && i < t->last_cap) {
         t->last_step[i] = -2;
+        t->seed_heading[i] = heading; /* its hull as fairway left it, not turned to the lane */
+    }
     return st;
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/idmap.h"
 #include "traffic/backend.h"
+#include "traffic/hull_track.h"
 #include "traffic/fcd.h"
 #include "traffic/traffic.h"
 
@@ -44,14 +45,19 @@ struct fw_traffic {
     int near_cap;
     fw_target *conv;       /* the context results converted (and motion followed) */
     int conv_cap;
-    /* the hull centre of every ship at its last context step, by id: the
-     * direction of motion of a ship changing lanes */
+    /* the hull centre of every ship at its last context step, by id: its
+     * motion over a step on a bend or across a lane change */
     fw_idmap ids;
     double *last_e, *last_n;
     long *last_step;
     /* and SUMO's angle then (NAN: none yet) with its sine and cosine, reused
      * while the angle stays (a ship on a straight lane) */
     double *last_angle, *last_sin, *last_cos;
+    fw_hull_track *tracks;  /* each ship's bow track (hull_track.h) */
+    double *seed_heading;   /* rad, a given-back ship's heading for its new track; NAN: none */
+    double *last_bx, *last_by; /* m, SUMO's bumper at the last context step */
+    double *off_x, *off_y;  /* m, the track's bow less SUMO's bumper (traffic_query.c) */
+    int *last_k;            /* its index in the context results of its last step */
     int last_cap;
 };
 

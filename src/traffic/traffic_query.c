@@ -44,28 +44,58 @@ static fw_status room(fw_target **v, int *cap, int n, fw_error *err)
     return FW_OK;
 }
 
+/* A ship's hull as this step's range query placed it (on its bow's track:
+ * below), or NULL when the query did not see it this step. */
+static const fw_target *tracked(const fw_traffic *t, const fw_sumo_raw *r)
+{
+    if (t->ctx_step != t->steps)
+        return NULL;
+    int i = fw_idmap_find_keyed(&t->ids, r->key, r->id);
+    if (i < 0 || i >= t->last_cap || t->last_step[i] != t->steps)
+        return NULL;
+    int k = t->last_k[i];
+    return k >= 0 && k < t->ctx.n && strcmp(t->conv[k].id, r->id) == 0 ? &t->conv[k] : NULL;
+}
+
 static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     fw_status st = room(&t->ships, &t->ships_cap, t->raw.n, err);
     if (st)
         return st;
-    for (int i = 0; i < t->raw.n; i++)
-        convert_one(&t->raw.v[i], t->own_id, &t->ships[i]);
+    /* every list gives a ship the same hull: the range query's where it has
+     * one, SUMO's own geometry for the ships beyond it */
+    for (int i = 0; i < t->raw.n; i++) {
+        const fw_target *c = tracked(t, &t->raw.v[i]);
+        if (c)
+            t->ships[i] = *c;
+        else
+            convert_one(&t->raw.v[i], t->own_id, &t->ships[i]);
+    }
     *ships = t->ships;
     *n = t->raw.n;
     return FW_OK;
 }
 
-/* SUMO's angle is its lane's: a ship changing lanes moves across it (at up
- * to the lane width over lane_change_s) with its angle unchanged.  Such a
- * ship gets the direction and speed of its hull centre's motion since the
- * last step instead, so its heading follows its lateral motion and a
- * constant-velocity prediction points where it goes.  Its hull centre stays
- * where SUMO's own geometry puts it (behind the bumper along the lane): a
- * hull turned about its bow would jump sideways.  Ships on their lane's line
- * move along it exactly and keep SUMO's values (kMinLateral: far below any
- * lane change, far above rounding). */
-static const double kMinLateral = 0.05; /* m/s */
+/* A hull is placed on the track its bow has sailed (hull_track.h), not
+ * turned about its bow with SUMO's angle.  Where the track behind the bow is
+ * straight along SUMO's angle (kStraight: far below any bend or lane change,
+ * far above rounding), the hull is SUMO's own geometry and its values are
+ * kept exactly; elsewhere (a bend, a lane change) the hull is the chord's,
+ * and its course and speed are those of its centre's motion over the step.
+ *
+ * SUMO's bumper itself jumps where a ship crosses a junction: an internal
+ * lane's length is not its shape's (a bow moving 7 m a step at 4.4 m/s),
+ * and the next edge starts elsewhere than the internal lane ends (14 m back
+ * at a 30 deg bend of 250 m lanes).  The track's bow is SUMO's bumper plus
+ * an offset: a step's motion beyond what the ship's speed along SUMO's angle
+ * explains, by more than kSlack, goes into the offset, and the offset decays
+ * as the ship sails one hull length (exp(-v dt / L)), so a jump of SUMO's is
+ * spread over that distance instead of thrown at the hull.  A lane change
+ * (0.3 m/s sideways at the default 900 s) is within kSlack and stays real
+ * motion; a jump of more than a hull length (a teleport) starts the track
+ * anew, where the monitors see it. */
+static const double kStraight = 1e-7; /* rad */
+static const double kSlack = 1.0;     /* m a step, and 10% of the step's run */
 
 /* The index of the ship of context result r, its arrays grown to hold it. */
 static fw_status ship_index(fw_traffic *t, const fw_sumo_raw *r, int *out, fw_error *err)
@@ -75,16 +105,25 @@ static fw_status ship_index(fw_traffic *t, const fw_sumo_raw *r, int *out, fw_er
         return fw_fail(err, FW_ERUN, "out of memory for ship ids");
     if (i >= t->last_cap) {
         int cap = fw_grown_cap(t->last_cap, i + 1);
-        if (!fw_resize_each((size_t)cap, 6, (void **)&t->last_e, sizeof *t->last_e,
+        if (!fw_resize_each((size_t)cap, 13, (void **)&t->last_e, sizeof *t->last_e,
                             (void **)&t->last_n, sizeof *t->last_n,
                             (void **)&t->last_step, sizeof *t->last_step,
                             (void **)&t->last_angle, sizeof *t->last_angle,
                             (void **)&t->last_sin, sizeof *t->last_sin,
-                            (void **)&t->last_cos, sizeof *t->last_cos))
+                            (void **)&t->last_cos, sizeof *t->last_cos,
+                            (void **)&t->tracks, sizeof *t->tracks,
+                            (void **)&t->seed_heading, sizeof *t->seed_heading,
+                            (void **)&t->last_bx, sizeof *t->last_bx,
+                            (void **)&t->last_by, sizeof *t->last_by,
+                            (void **)&t->off_x, sizeof *t->off_x,
+                            (void **)&t->off_y, sizeof *t->off_y,
+                            (void **)&t->last_k, sizeof *t->last_k))
             return fw_fail(err, FW_ERUN, "out of memory for ship ids");
         for (int j = t->last_cap; j < cap; j++) {
             t->last_step[j] = -2;
             t->last_angle[j] = NAN;
+            t->tracks[j] = (fw_hull_track){0};
+            t->seed_heading[j] = NAN;
         }
         t->last_cap = cap;
     }
@@ -107,25 +146,63 @@ static void convert_ship(fw_traffic *t, int k, int i)
     t->conv[k].key = i + 1; /* the ship's key for the run (geom/target.h) */
 }
 
-static void follow_motion(fw_traffic *t, int k, int i)
+/* Ship i's hull from its bow's track; the track started anew for a ship
+ * not seen at the last step (first seen, back after a gap or given back by
+ * fairway: then along the heading it had).  false when out of memory. */
+static bool follow_track(fw_traffic *t, int k, int i)
 {
     fw_target *c = &t->conv[k];
-    if (t->last_step[i] == t->steps - 1 && !c->own) {
-        double dx = c->east - t->last_e[i], dy = c->north - t->last_n[i];
-        /* the heading is SUMO's angle unless wrapped into [0, 2 pi) */
-        double h = fw_deg_to_rad(t->ctx.v[k].angle_deg);
-        double sc = c->course == h ? t->last_sin[i] : sin(c->course);
-        double cc = c->course == h ? t->last_cos[i] : cos(c->course);
-        double lat = fabs(dx * cc - dy * sc) / t->def.step;
-        if (lat > kMinLateral) {
-            c->course = fw_wrap_2pi(atan2(dx, dy));
-            c->speed = hypot(dx, dy) / t->def.step;
-            /* a lane change is SUMO's sideways jump, not a hull drifting:
-             * the hull turns with the motion, as the record always had it */
-            c->heading = c->course, c->stw = c->speed;
+    const fw_sumo_raw *r = &t->ctx.v[k];
+    fw_hull_track *tr = &t->tracks[i];
+    bool seen = t->last_step[i] == t->steps - 1;
+    if (c->own) {
+        t->last_step[i] = t->steps;
+        t->last_k[i] = k;
+        return true;
+    }
+    if (seen) {
+        /* the step's motion against what the ship's speed explains */
+        double run = r->speed * t->def.step;
+        double ex = r->x - t->last_bx[i] - run * t->last_sin[i];
+        double ey = r->y - t->last_by[i] - run * t->last_cos[i];
+        double e = hypot(ex, ey);
+        if (e > r->length) {
+            seen = false; /* a teleport: a new track, the jump where it is */
+        } else {
+            if (e > kSlack + 0.1 * run)
+                t->off_x[i] -= ex, t->off_y[i] -= ey;
+            double f = exp(-fmax(r->speed, 0.1) * t->def.step / r->length);
+            t->off_x[i] *= f, t->off_y[i] *= f;
         }
     }
+    t->last_bx[i] = r->x, t->last_by[i] = r->y;
+    if (!seen) {
+        double h = isnan(t->seed_heading[i]) ? c->course : t->seed_heading[i];
+        t->seed_heading[i] = NAN;
+        t->off_x[i] = t->off_y[i] = 0.0;
+        if (!fw_hull_track_start(tr, r->x, r->y, h, r->length))
+            return false;
+    } else if (!fw_hull_track_push(tr, r->x + t->off_x[i], r->y + t->off_y[i], r->length)) {
+        return false;
+    }
+    double cx, cy, h;
+    fw_hull_track_hull(tr, r->length, &cx, &cy, &h);
+    double dh = fabs(remainder(h - c->course, 2.0 * M_PI));
+    if (dh > kStraight) {
+        c->east = cx, c->north = cy;
+        c->heading = h;
+        if (seen) {
+            double dx = cx - t->last_e[i], dy = cy - t->last_n[i];
+            c->speed = hypot(dx, dy) / t->def.step;
+            c->course = c->speed > 0.0 ? fw_wrap_2pi(atan2(dx, dy)) : h;
+        } else {
+            c->course = h;
+        }
+        c->stw = c->speed; /* SUMO knows no current: through the water as over ground */
+    }
     t->last_e[i] = c->east, t->last_n[i] = c->north, t->last_step[i] = t->steps;
+    t->last_k[i] = k;
+    return true;
 }
 
 /* The context results of the last step, asked of SUMO once per step. */
@@ -142,7 +219,8 @@ fw_status fw_traffic_context(fw_traffic *t, fw_error *err)
         if ((st = ship_index(t, &t->ctx.v[k], &i, err)))
             break;
         convert_ship(t, k, i);
-        follow_motion(t, k, i);
+        if (!follow_track(t, k, i))
+            st = fw_fail(err, FW_ERUN, "out of memory for ship tracks");
     }
     if (!st)
         t->ctx_step = t->steps;
