@@ -49,3 +49,21 @@ fw_test(test_decide_parts test_decide_parts.c decide_scenes.c)
 # the environment (src/env) in the world, the dynamics and the helm search
 fw_test(test_env test_env.c decide_scenes.c)
 target_link_libraries(test_env PRIVATE fw_helm_reference)
+
+# The environment: section of a scenario (scenario/scn_env.h) and the manoeuvres' --current
+fw_script_test(env_run 0 "ok: the current carries the own ship" env_run.sh)
+foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0, 10\\]"
+            "both:27: environment.current.tidal: give a uniform current .* or a tidal stream, not both"
+            "wind:27: environment.wind: .*no windage particulars"
+            "period:27: environment.current.tidal.period_h: 0 is out of range \\[1, 48\\]")
+  string(REGEX MATCH "^[a-z]+" name "${bad}")
+  string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
+  fw_cli_test(cli_run_env_${name} 2 "bad-${name}.yaml${pattern}" run
+              ${CMAKE_CURRENT_SOURCE_DIR}/data/env/bad-${name}.yaml --out ${CMAKE_CURRENT_BINARY_DIR}/cli-runs)
+endforeach()
+fw_cli_test(cli_manoeuvre_current 0 "drift 360 -> 720 deg  1251.3 m in 1216.2 s towards 090 deg \\(2.00 kn\\)"
+            manoeuvre turning --ship c3 --speed 12 --rudder 35 --current 2,090)
+fw_cli_test(cli_manoeuvre_bad_current 2 "--current: give KN,DEG" manoeuvre turning --ship c3
+            --speed 12 --rudder 35 --current 12,090)
+fw_cli_test(cli_manoeuvre_wind 2 "--wind: no ship has windage particulars" manoeuvre turning
+            --ship c3 --speed 12 --rudder 35 --wind 20,270)

@@ -13,6 +13,8 @@
  *   the Nomoto track prediction in a current is the calm one plus current x t
  *   the helm search in a current (its speed bound and mirror shortcut
  *     generalised) decides as the plain reference search does, to the bit
+ *   a turning circle in a uniform current: its 360 and 720 deg points
+ *     current x time apart, its IMO measures (in the water) the calm ones
  *   a world refuses a wind (no ship has windage yet) and a bad field
  */
 #include <math.h>
@@ -22,6 +24,7 @@
 #include "avoid/helm_search.h"
 #include "core/units.h"
 #include "decide_scenes.h"
+#include "dynamics/manoeuvre.h"
 #include "env/env.h"
 #include "helm_reference.h"
 #include "nomoto/track.h"
@@ -444,6 +447,33 @@ static void test_helm_search_in_current(void)
     fw_helm_ctx_destroy(ctx);
 }
 
+/* A 35 deg turning circle (c3-mmg, 12 kn) in a uniform current of 2 kn
+ * towards 090: its 720 deg point lies current x time from its 360 deg point
+ * (MSC/Circ.1053 3.4.2.5), to 1 m; in calm water the two coincide; advance,
+ * transfer and tactical diameter, measured in the water, are the calm ones. */
+static void test_turning_circle_drift(void)
+{
+    fw_error err = {0};
+    fw_turning_def d = fw_default_turning_def();
+    d.speed = fw_kn_to_ms(12.0);
+    d.rudder = fw_deg_to_rad(35.0);
+    d.max_turn = fw_deg_to_rad(730.0);
+    fw_turning_result calm, drift;
+    CHECK(fw_turning_run(&mmg, &d, &calm, NULL, &err) == FW_OK);
+    d.stepper.current = fw_current_uniform(fw_kn_to_ms(2.0), fw_deg_to_rad(90.0));
+    CHECK(fw_turning_run(&mmg, &d, &drift, NULL, &err) == FW_OK);
+    CHECK(calm.drift < 1.0);
+    CHECK_NEAR(drift.drift, fw_kn_to_ms(2.0) * drift.t_drift, 1.0);
+    CHECK_NEAR(fw_rad_to_deg(drift.drift_towards), 90.0, 0.1);
+    CHECK_NEAR(drift.t_drift, calm.t_drift, 1e-3);
+    CHECK_NEAR(drift.advance, calm.advance, 1e-6 * calm.advance);
+    CHECK_NEAR(drift.transfer, calm.transfer, 1e-6 * calm.transfer);
+    CHECK_NEAR(drift.tactical_diameter, calm.tactical_diameter, 1e-6 * calm.tactical_diameter);
+    printf("turning circle in 2 kn towards 090: 360 -> 720 deg %.1f m in %.1f s (%.3f kn); "
+           "calm %.2f m\n", drift.drift, drift.t_drift, fw_ms_to_kn(drift.drift / drift.t_drift),
+           calm.drift);
+}
+
 static void test_refusals(void)
 {
     fw_error err = {0};
@@ -495,6 +525,7 @@ int main(void)
     TEST_RUN(test_track_prediction_in_current);
     TEST_RUN(test_helm_search_in_current);
     TEST_RUN(test_avoidance_in_current);
+    TEST_RUN(test_turning_circle_drift);
     TEST_RUN(test_refusals);
     return TEST_EXIT();
 }

@@ -38,6 +38,12 @@ static void help(void)
         "          trial row's speed, and the IMO verdicts.  --csv-dir writes each\n"
         "          manoeuvre's time history there.  Default ship: c3.\n"
         "\n"
+        "--current KN,DEG  a uniform current of KN knots setting towards DEG (2,090:\n"
+        "            2 kn towards east): the track over ground drifts with it;\n"
+        "            advance, transfer and tactical diameter are measured in the water\n"
+        "            (the drift taken out), and a turn goes on to 720 deg and prints the\n"
+        "            drift between its 360 and 720 deg points (current x time).\n"
+        "            --wind is refused: no ship has windage particulars yet.\n"
         "--csv FILE  time history: t_s, east_m, north_m, heading_deg, u_mps, v_mps,\n"
         "            r_degps, rudder_deg, helm_deg, propeller_rps (midship point, one\n"
         "            row per 0.5 s, start at the origin heading north).\n"
@@ -59,6 +65,8 @@ typedef struct opts {
     const char *ship, *csv, *csv_dir, *trial, *side;
     double speed, rudder, angle;
     bool have_speed, have_rudder, have_angle, json;
+    double current[2], wind[2]; /* kn, deg: towards (current), from (wind) */
+    int n_current, n_wind;
 } opts;
 
 static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
@@ -71,7 +79,9 @@ static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
         FW_OPT("--trial", FW_OPT_TEXT, &o->trial),   FW_OPT("--side", FW_OPT_TEXT, &o->side),
         FW_OPT_SEEN("--speed", FW_OPT_DOUBLE, &o->speed, &o->have_speed),
         FW_OPT_SEEN("--rudder", FW_OPT_DOUBLE, &o->rudder, &o->have_rudder),
-        FW_OPT_SEEN("--angle", FW_OPT_DOUBLE, &o->angle, &o->have_angle), FW_OPT_END,
+        FW_OPT_SEEN("--angle", FW_OPT_DOUBLE, &o->angle, &o->have_angle),
+        FW_OPT_LISTOF("--current", o->current, 2, &o->n_current),
+        FW_OPT_LISTOF("--wind", o->wind, 2, &o->n_wind), FW_OPT_END,
     };
     fw_args a = {argc, argv, 0};
     while (a.i < argc) {
@@ -99,7 +109,22 @@ static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
                        "--rudder: give the angle's size in degrees (> 0) and the side with --side");
     if (o->have_angle && !(o->angle > 0.0))
         return fw_fail(err, FW_EINPUT, "--angle: must be positive degrees");
+    if (o->n_current && (o->n_current != 2 || !(o->current[0] >= 0.0 && o->current[0] <= 10.0) ||
+                         !(o->current[1] >= 0.0 && o->current[1] <= 360.0)))
+        return fw_fail(err, FW_EINPUT, "--current: give KN,DEG, the speed (0 to 10 kn) and the "
+                                       "direction it sets towards (0 to 360 deg), as 2,090");
+    if (o->n_wind)
+        /* a wind would be ignored: said, not done */
+        return fw_fail(err, FW_EINPUT, "--wind: no ship has windage particulars (lateral and "
+                                       "frontal areas) yet, so fairway has no wind forces to apply");
     return FW_OK;
+}
+
+/* The stepper of a manoeuvre in the --current given (calm water without). */
+static void set_current(const opts *o, fw_stepper_def *sd)
+{
+    if (o->n_current == 2)
+        sd->current = fw_current_uniform(fw_kn_to_ms(o->current[0]), fw_deg_to_rad(o->current[1]));
 }
 
 static double side_sign(const char *side) { return strcmp(side, "port") == 0 ? -1.0 : 1.0; }
@@ -189,15 +214,30 @@ static int run_turning(const fw_ship *ship, const opts *o, fw_error *err)
     fw_turning_def d = fw_default_turning_def();
     d.speed = fw_kn_to_ms(o->speed);
     d.rudder = side_sign(o->side) * fw_deg_to_rad(o->rudder);
-    d.max_turn = fw_deg_to_rad(540.0);
+    /* in a current, on to 720 deg: the drift between the 360 and 720 deg points */
+    d.max_turn = fw_deg_to_rad(o->n_current ? 730.0 : 540.0);
+    set_current(o, &d.stepper);
     fw_turning_result r;
     fw_history h = {0};
     if (csv_out(&h, o, fw_turning_run(ship, &d, &r, o->csv ? &h : NULL, err), err))
         return fw_report(err);
-    if (o->json)
-        print_turning_json(ship, d.speed, d.rudder, &r, NULL), printf("\n");
-    else
-        print_turning_text(ship, d.speed, d.rudder, &r);
+    char extra[256] = "";
+    if (o->n_current)
+        snprintf(extra, sizeof extra,
+                 ", \"current_kn\": %.3f, \"current_towards_deg\": %.1f, \"drift_m\": %.2f, "
+                 "\"drift_s\": %.2f, \"drift_towards_deg\": %.2f",
+                 o->current[0], o->current[1], r.drift, r.t_drift,
+                 fw_rad_to_deg(r.drift_towards));
+    if (o->json) {
+        print_turning_json(ship, d.speed, d.rudder, &r, extra), printf("\n");
+        return 0;
+    }
+    print_turning_text(ship, d.speed, d.rudder, &r);
+    if (o->n_current)
+        printf("  in a current of %.2f kn towards %03.0f deg (measures above: the water's)\n"
+               "  drift 360 -> 720 deg %7.1f m in %.1f s towards %03.0f deg (%.2f kn)\n",
+               o->current[0], o->current[1], r.drift, r.t_drift,
+               fw_rad_to_deg(r.drift_towards), fw_ms_to_kn(r.drift / r.t_drift));
     return 0;
 }
 
@@ -209,6 +249,7 @@ static int run_zigzag(const fw_ship *ship, const opts *o, fw_error *err)
     d.speed = fw_kn_to_ms(o->speed);
     d.angle = fw_deg_to_rad(o->angle);
     d.first_side = (int)side_sign(o->side);
+    set_current(o, &d.stepper);
     fw_zigzag_result r;
     fw_history h = {0};
     if (csv_out(&h, o, fw_zigzag_run(ship, &d, &r, o->csv ? &h : NULL, err), err))

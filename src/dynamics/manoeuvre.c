@@ -113,6 +113,34 @@ static double cross(double a0, double a1, double b0, double b1, double level)
     return b0 + f * (b1 - b0);
 }
 
+/* The ground positions at 360 and 720 deg of heading change: a current
+ * moves the steady circle by its drift in that time (MSC/Circ.1053
+ * 3.4.2.5).  One sample step (turn from prev_turn, position from pe, pn at
+ * pt) into res->drift, t_drift, drift_towards once 720 deg is reached. */
+typedef struct drift_points {
+    double e, n, t; /* at 360 deg */
+    bool got360, got720;
+} drift_points;
+
+static void circle_drift(drift_points *c, fw_turning_result *res, double prev_turn, double turn,
+                         double pe, double pn, double pt, const fw_mmg_state *x, double t)
+{
+    if (!c->got360 && turn >= 2 * FW_PI) {
+        c->e = cross(prev_turn, turn, pe, x->east, 2 * FW_PI);
+        c->n = cross(prev_turn, turn, pn, x->north, 2 * FW_PI);
+        c->t = cross(prev_turn, turn, pt, t, 2 * FW_PI);
+        c->got360 = true;
+    }
+    if (c->got360 && !c->got720 && turn >= 4 * FW_PI) {
+        double e = cross(prev_turn, turn, pe, x->east, 4 * FW_PI) - c->e;
+        double n = cross(prev_turn, turn, pn, x->north, 4 * FW_PI) - c->n;
+        res->drift = hypot(e, n);
+        res->drift_towards = fw_wrap_2pi(atan2(e, n));
+        res->t_drift = cross(prev_turn, turn, pt, t, 4 * FW_PI) - c->t;
+        c->got720 = true;
+    }
+}
+
 fw_status fw_turning_run(const fw_ship *ship, const fw_turning_def *def, fw_turning_result *res,
                          fw_history *hist, fw_error *err)
 {
@@ -130,7 +158,10 @@ fw_status fw_turning_run(const fw_ship *ship, const fw_turning_def *def, fw_turn
 
     /* Heading change, unwrapped, positive in the turning direction. */
     double prev_turn = 0.0, prev_x = 0.0, prev_y = 0.0, prev_t = 0.0;
+    double prev_e = 0.0, prev_n = 0.0; /* over ground */
+    drift_points cd = {.got360 = false};
     bool got90 = false, got180 = false;
+    res->drift = res->t_drift = res->drift_towards = NAN;
     /* For the steady values, keep the samples of the last full circle: a ring
      * of (turn, t, u) would do, but the history of one circle is short. */
     size_t cap = 0, count = 0;
@@ -150,8 +181,14 @@ fw_status fw_turning_run(const fw_ship *ship, const fw_turning_def *def, fw_turn
         if ((s = fw_stepper_advance(st, def->sample_dt, err)) || (s = history_add(hist, st, err)))
             goto free_rings;
         const fw_mmg_state *x = fw_stepper_state(st);
-        double turn = side * x->psi;
-        double adv = x->north, trans = side * x->east, t = fw_stepper_time(st);
+        double turn = side * x->psi, t = fw_stepper_time(st);
+        /* the IMO measures are the water's: a current's drift taken out
+         * (MSC/Circ.1053 3.4.2.3); none in calm water */
+        double de = 0.0, dn = 0.0;
+        fw_current_drift(&def->stepper.current, 0.0, 0.0, 0.0, t, &de, &dn);
+        double adv = x->north - dn, trans = side * (x->east - de);
+        circle_drift(&cd, res, prev_turn, turn, prev_e, prev_n, prev_t, x, t);
+        prev_e = x->east, prev_n = x->north;
         if (!got90 && turn >= FW_PI / 2) {
             res->advance = cross(prev_turn, turn, prev_x, adv, FW_PI / 2);
             res->transfer = cross(prev_turn, turn, prev_y, trans, FW_PI / 2);

@@ -45,6 +45,13 @@ typedef struct fw_turning_result {
     double steady_speed;     /* m/s, mean over the last full circle */
     double propeller;        /* rev/s, from surge balance at the approach speed */
     double L;                /* m, for the IMO ratios */
+    /* the ground track's 720 deg point from its 360 deg point (a turn of at
+     * least 720 deg: max_turn): the drift of the steady circle, zero in calm
+     * water and current x t_drift in a uniform current; NAN when not reached.
+     * advance, transfer and tactical diameter are the water's (the
+     * current's drift taken out, MSC/Circ.1053 3.4.2.3). */
+    double drift, t_drift;   /* m, s */
+    double drift_towards;    /* rad, navigational */
     bool advance_ok, tactical_ok; /* IMO: advance <= 4.5 L, tactical diameter <= 5 L */
 } fw_turning_result;
 

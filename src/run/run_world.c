@@ -178,6 +178,7 @@ fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     wd.reactions = s->reactions;
     wd.timing = def->profile;
     wd.seed = s->seed; /* the replication's: fairway's random streams (core/rng.h) */
+    wd.env = s->env;   /* the scenario's current and wind (calm by default) */
     if (st || (st = fw_world_create(&wd, w, err))) {
         fw_controller_destroy(ctl);
         return st;

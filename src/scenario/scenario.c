@@ -9,6 +9,7 @@
 #include "nomoto/nomoto.h"
 #include "scenario/position.h"
 #include "scenario/scn_ais.h"
+#include "scenario/scn_env.h"
 #include "scenario/scenario.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
@@ -392,7 +393,8 @@ fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, in
                                 fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"name", "description", "origin", "own_ship", "traffic",
-                                       "avoidance", "survey", "run", "outputs", NULL};
+                                       "avoidance", "survey", "environment", "run", "outputs",
+                                       NULL};
     memset(s, 0, sizeof *s);
     if (fw_path_copy(s->file, sizeof s->file, path, err))
         return err->status;
@@ -429,7 +431,7 @@ fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, in
     if ((st = fw_scn_load_origin(doc, root, s, err)) || (st = load_own(doc, root, s, err)) ||
         (st = load_traffic(doc, root, s, err)) ||
         (st = load_avoidance(doc, root, s, err)) || (st = load_survey(doc, root, s, err)) ||
-        (st = load_run(doc, root, s, err)))
+        (st = fw_scn_load_env(doc, root, s, err)) || (st = load_run(doc, root, s, err)))
         goto out;
 out:
     yt_free(doc);

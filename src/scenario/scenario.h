@@ -22,6 +22,7 @@
 #include "audit/audit.h"
 #include "avoid/policy.h"
 #include "core/error.h"
+#include "env/env.h"
 #include "geom/geom.h"
 #include "ship/ship.h"
 #include "survey/survey.h"
@@ -82,6 +83,8 @@ typedef struct fw_scenario {
     bool survey;         /* the file has a survey: section */
     double survey_radius;/* m, area around the own ship's hull centre */
     fw_survey_def survey_def;
+    /* environment: the current and the wind (scn_env.h; calm by default) */
+    fw_env env;
     /* run */
     double duration;     /* s */
     double step;         /* s */

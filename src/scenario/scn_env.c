@@ -1,0 +1,79 @@
+/* scn_env.c - a scenario's current and wind (scn_env.h). */
+#include "scenario/scn_env.h"
+
+#include <string.h>
+
+#include "core/units.h"
+
+/* current: {speed_kn, towards_deg} or {tidal: {rate_kn, flood_towards_deg,
+ * period_h, max_flood_s}} */
+static fw_status load_current(const yt_doc *doc, const yt_node *c, fw_current *out,
+                              fw_error *err)
+{
+    static const char *const keys[] = {"speed_kn", "towards_deg", "tidal", NULL};
+    static const char *const tkeys[] = {"rate_kn", "flood_towards_deg", "period_h",
+                                        "max_flood_s", NULL};
+    const char *P = "environment.current";
+    const yt_node *tide = NULL;
+    fw_status st;
+    if ((st = yt_check_keys(doc, c, P, keys, err)) ||
+        (st = yt_opt_map(doc, c, P, "tidal", &tide, err)))
+        return st;
+    if (tide) {
+        if (yt_get(c, "speed_kn") || yt_get(c, "towards_deg"))
+            return yt_fail_key(doc, c, P, "tidal", err,
+                               "give a uniform current (speed_kn, towards_deg) or a tidal "
+                               "stream, not both");
+        const char *T = "environment.current.tidal";
+        double rate, set, period_h = FW_M2_PERIOD_S / 3600.0, t_max = 0.0;
+        if ((st = yt_check_keys(doc, tide, T, tkeys, err)) ||
+            (st = yt_req_number(doc, tide, T, "rate_kn", 0.0, 10.0, &rate, err)) ||
+            (st = yt_req_number(doc, tide, T, "flood_towards_deg", 0.0, 360.0, &set, err)) ||
+            (st = yt_opt_number(doc, tide, T, "period_h", 1.0, 48.0, &period_h, err)) ||
+            (st = yt_opt_number(doc, tide, T, "max_flood_s", -1e7, 1e7, &t_max, err)))
+            return st;
+        *out = fw_current_tidal(fw_kn_to_ms(rate), fw_deg_to_rad(set), period_h * 3600.0, t_max);
+        return FW_OK;
+    }
+    double speed, towards;
+    if ((st = yt_req_number(doc, c, P, "speed_kn", 0.0, 10.0, &speed, err)) ||
+        (st = yt_req_number(doc, c, P, "towards_deg", 0.0, 360.0, &towards, err)))
+        return st;
+    *out = fw_current_uniform(fw_kn_to_ms(speed), fw_deg_to_rad(towards));
+    return FW_OK;
+}
+
+fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
+{
+    static const char *const keys[] = {"current", "wind", NULL};
+    static const char *const wkeys[] = {"speed_kn", "from_deg", NULL};
+    s->env = fw_default_env();
+    const yt_node *e = NULL, *c = NULL, *w = NULL;
+    fw_status st;
+    if ((st = yt_opt_map(doc, root, "", "environment", &e, err)) || !e)
+        return st;
+    if ((st = yt_check_keys(doc, e, "environment", keys, err)) ||
+        (st = yt_opt_map(doc, e, "environment", "current", &c, err)) ||
+        (st = yt_opt_map(doc, e, "environment", "wind", &w, err)) ||
+        (c && (st = load_current(doc, c, &s->env.current, err))))
+        return st;
+    if (w) {
+        double speed, from;
+        const char *P = "environment.wind";
+        if ((st = yt_check_keys(doc, w, P, wkeys, err)) ||
+            (st = yt_req_number(doc, w, P, "speed_kn", 0.0, 100.0, &speed, err)) ||
+            (st = yt_req_number(doc, w, P, "from_deg", 0.0, 360.0, &from, err)))
+            return st;
+        s->env.wind = (fw_wind){.kind = FW_FIELD_UNIFORM, .speed = fw_kn_to_ms(speed),
+                                .from = fw_deg_to_rad(from)};
+        /* said here, where the file has it, rather than when the run starts */
+        fw_error e3 = {0};
+        if (fw_env_check_vessel(&s->env, "own ship", s->ship.name, &e3))
+            return yt_fail_key(doc, e, "environment", "wind", err, "%s",
+                               strchr(e3.msg, ':') ? strchr(e3.msg, ':') + 2 : e3.msg);
+    }
+    fw_error e2 = {0};
+    if (fw_env_check(&s->env, &e2))
+        return fw_fail_at(err, doc->file, e->line, "environment", "%s", e2.msg);
+    return FW_OK;
+}

@@ -1,0 +1,28 @@
+/* scn_env.h - a scenario's environment: the current and the wind
+ * (environment:, env/env.h).  Internal to the scenario loader.
+ *
+ *   environment:
+ *     current: {speed_kn: 2, towards_deg: 90}      # uniform: the way it sets
+ *     # or a rectilinear tidal stream, flooding towards flood_towards_deg at up
+ *     # to rate_kn, greatest at max_flood_s after the start, period_h 12.42 (M2):
+ *     current: {tidal: {rate_kn: 2.5, flood_towards_deg: 45, max_flood_s: 0}}
+ *     wind: {speed_kn: 20, from_deg: 270}          # the way it blows from
+ *
+ * Knots and degrees here, converted once (core/units.h); the current sets
+ * TOWARDS its direction and the wind blows FROM its own, as charts and
+ * weather reports (and DNV's maritime-schema) give them.  Bounds: a current
+ * of 0 to 10 kn, a period of 1 to 48 h, a wind of 0 to 100 kn.  A wind that
+ * is not calm is refused here, located, while the own ship's ship has no
+ * windage particulars (env.h fw_env_check_vessel: no ship has them yet).
+ * The own ship must be loaded first (load_own).
+ */
+#ifndef FW_SCENARIO_SCN_ENV_H
+#define FW_SCENARIO_SCN_ENV_H
+
+#include "scenario/scenario.h"
+#include "yaml/yaml_tree.h"
+
+/* environment: of root into s->env (calm water and still air without it). */
+fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err);
+
+#endif
