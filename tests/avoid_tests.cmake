@@ -55,7 +55,9 @@ fw_script_test(env_run 0 "ok: the current carries the own ship" env_run.sh)
 foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0, 10\\]"
             "both:27: environment.current.tidal: give a uniform current .* or a tidal stream, not both"
             "wind:27: environment.wind: .*no windage particulars"
-            "period:27: environment.current.tidal.period_h: 0 is out of range \\[1, 48\\]")
+            "period:27: environment.current.tidal.period_h: 0 is out of range \\[1, 48\\]"
+            "sensemode:26: sensing.mode: 'radar' is not a sensing mode \\(perfect or ais\\)"
+            "dropout:26: sensing.dropout: 1.5 is out of range \\[0, 1\\]")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_cli_test(cli_run_env_${name} 2 "bad-${name}.yaml${pattern}" run
@@ -67,3 +69,5 @@ fw_cli_test(cli_manoeuvre_bad_current 2 "--current: give KN,DEG" manoeuvre turni
             --speed 12 --rudder 35 --current 12,090)
 fw_cli_test(cli_manoeuvre_wind 2 "--wind: no ship has windage particulars" manoeuvre turning
             --ship c3 --speed 12 --rudder 35 --wind 20,270)
+# The own ship deciding on AIS reports (sense/sensing.h)
+fw_script_test(sensing_run 0 "ok: the own ship decides on AIS reports" sensing_run.sh)

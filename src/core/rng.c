@@ -42,6 +42,14 @@ void fw_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2], uint32_t out
         out[i] = x[i];
 }
 
+uint32_t fw_rng_vessel_key(const char *id)
+{
+    uint32_t h = 2166136261u; /* FNV-1a, 32 bits */
+    for (const unsigned char *p = (const unsigned char *)id; *p; p++)
+        h = (h ^ *p) * 16777619u;
+    return h ? h : 1u;
+}
+
 fw_rng fw_rng_make(uint64_t run_seed, uint32_t vessel, fw_purpose purpose)
 {
     fw_rng s = {.key = {(uint32_t)run_seed, (uint32_t)(run_seed >> 32)},

@@ -80,6 +80,11 @@ typedef struct {
     uint64_t counter; /* counter words 0-1: the next draw's block */
 } fw_rng;
 
+/* The key of a vessel with this id: the FNV-1a hash of the id (never 0,
+ * which is the own ship's).  The same in every run of a replication, so the
+ * common random numbers hold (above). */
+uint32_t fw_rng_vessel_key(const char *id);
+
 /* The stream of (run_seed, vessel, purpose) at counter 0. */
 fw_rng fw_rng_make(uint64_t run_seed, uint32_t vessel, fw_purpose purpose);
 

@@ -249,6 +249,9 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
                    "\"mmsis_shared\": %d, \"first_mmsi_shared\": %ld, \"not_projected\": %ld},\n",
                 ind, s->ais_duplicates, s->ais_clashes, s->ais_clash_ships, s->ais_clash_first,
                 s->ais_unprojected);
+    if (s->sensed)
+        fprintf(f, "%s  \"sensing\": {\"mode\": \"ais\", \"reports_sent\": %ld, \"lost\": %ld, "
+                   "\"arrived\": %ld},\n", ind, s->sense_sent, s->sense_lost, s->sense_arrived);
     const fw_monitor_counts *m = &s->monitors;
     fprintf(f, "%s  \"monitors\": {\"sideways\": %d, \"teleport\": %d, \"overlap\": %d, "
                "\"appear\": %d, \"vanish\": %d, \"start_close\": %d, \"stopped\": %d, "

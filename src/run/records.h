@@ -95,6 +95,10 @@ typedef struct fw_run_summary {
      * (dropped), of which more than FW_AIS_CLASH_M away (two ships on one
      * MMSI: in how many MMSIs, the first), and reports the plane cannot hold.
      * In summary.json only when ais. */
+    /* The own ship's sensor (sense/sensing.h): AIS reports sent, lost,
+     * arrived.  In summary.json only when sensed (not perfect). */
+    bool sensed;
+    long sense_sent, sense_lost, sense_arrived;
     bool ais;
     long ais_duplicates, ais_clashes, ais_unprojected;
     int ais_clash_ships;

@@ -222,13 +222,27 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
         return st;
     const fw_mmg_state *x = fw_vessel_motion(R->own);
     const fw_decision *d = fw_vessel_decision(R->own);
-    const fw_target *tg;
-    const fw_assessment *as;
-    int n;
-    fw_vessel_view(R->own, &tg, &as, &n);
+    const fw_target *tg, *seen;
+    const fw_assessment *as, *seen_as;
+    int n, n_seen;
+    bool sensed;
+    /* the records keep what was there; with a sensor the policy decided on
+     * what it knew (seen): its actions are recorded against that */
+    fw_vessel_view(R->own, &seen, &seen_as, &n_seen);
+    fw_vessel_truth(R->own, &tg, &n, &sensed);
+    as = sensed ? NULL : seen_as;
     if ((st = assessments(R, tg, n, &as, err)) ||
         (st = fw_monitor_step(R->mon, t, fw_vessel_record(R->own), tg, n, err)))
         return st;
+    if (sensed) {
+        fw_sensing_counts c = fw_world_sensing_counts(R->w);
+        sum->sensed = true;
+        sum->sense_sent = c.sent, sum->sense_lost = c.lost, sum->sense_arrived = c.arrived;
+    }
+    if (!sensed)
+        seen = tg, seen_as = as, n_seen = n;
+    else if (!seen_as)
+        n_seen = 0; /* a controller that assesses nothing names no ship it acted for */
     bool row = k % lround(s->record_every / s->step) == 0;
     if (row)
         fw_records_own(R->rec, t, x, fw_vessel_record(R->own), d->helm,
@@ -237,7 +251,7 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
         if ((st = fw_records_target(R->rec, t, &tg[i], x, &as[i], row, err)))
             return st;
     if (d->acted)
-        record_action(R, t, d, tg, as, n, sum);
+        record_action(R, t, d, seen, seen_as, n_seen, sum);
     record_mode(R, t, d, sum);
     sum->max_helm = fmax(sum->max_helm, fabs(d->helm));
     if (fabs(d->helm - R->helm_prev) > fw_deg_to_rad(0.5)) {

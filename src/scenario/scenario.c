@@ -393,8 +393,8 @@ fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, in
                                 fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"name", "description", "origin", "own_ship", "traffic",
-                                       "avoidance", "survey", "environment", "run", "outputs",
-                                       NULL};
+                                       "avoidance", "survey", "environment", "sensing", "run",
+                                       "outputs", NULL};
     memset(s, 0, sizeof *s);
     if (fw_path_copy(s->file, sizeof s->file, path, err))
         return err->status;
@@ -431,7 +431,8 @@ fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, in
     if ((st = fw_scn_load_origin(doc, root, s, err)) || (st = load_own(doc, root, s, err)) ||
         (st = load_traffic(doc, root, s, err)) ||
         (st = load_avoidance(doc, root, s, err)) || (st = load_survey(doc, root, s, err)) ||
-        (st = fw_scn_load_env(doc, root, s, err)) || (st = load_run(doc, root, s, err)))
+        (st = fw_scn_load_env(doc, root, s, err)) ||
+        (st = fw_scn_load_sensing(doc, root, s, err)) || (st = load_run(doc, root, s, err)))
         goto out;
 out:
     yt_free(doc);
@@ -440,9 +441,9 @@ out:
 
 const char *fw_scenario_randomness(const fw_scenario *s)
 {
-    (void)s;
     /* Each setting that makes a world element draw after its start belongs
-     * here as it comes (sensing noise and dropouts, watchkeeping delays and
-     * lapses, gusts); none of the scenario's settings draws yet. */
+     * here as it comes (watchkeeping delays and lapses, gusts ...) */
+    if (s->sensing.mode != FW_SENSE_PERFECT)
+        return NULL; /* AIS reports: noise, slots, dropouts, drawn as they are sent */
     return "none of its settings draws: perfect sensing, flawless watchkeeping, steady wind";
 }

@@ -23,6 +23,7 @@
 #include "avoid/policy.h"
 #include "core/error.h"
 #include "env/env.h"
+#include "sense/sensing.h"
 #include "geom/geom.h"
 #include "ship/ship.h"
 #include "survey/survey.h"
@@ -85,6 +86,8 @@ typedef struct fw_scenario {
     fw_survey_def survey_def;
     /* environment: the current and the wind (scn_env.h; calm by default) */
     fw_env env;
+    /* sensing: what the own ship knows of the others (sense/sensing.h) */
+    fw_sensing_def sensing;
     /* run */
     double duration;     /* s */
     double step;         /* s */

@@ -77,3 +77,39 @@ fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s
         return fw_fail_at(err, doc->file, e->line, "environment", "%s", e2.msg);
     return FW_OK;
 }
+
+fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenario *s,
+                              fw_error *err)
+{
+    static const char *const keys[] = {"mode", "position_sd_m", "sog_sd_kn", "cog_sd_deg",
+                                       "heading_sd_deg", "dropout", "latency_s", "stale_s",
+                                       NULL};
+    const char *P = "sensing";
+    fw_sensing_def *d = &s->sensing;
+    *d = fw_default_sensing_def();
+    const yt_node *m = NULL;
+    fw_status st;
+    if ((st = yt_opt_map(doc, root, "", "sensing", &m, err)) || !m)
+        return st;
+    char mode[16] = "perfect";
+    double sog = fw_ms_to_kn(d->sog_sd), cog = fw_rad_to_deg(d->cog_sd),
+           hdg = fw_rad_to_deg(d->heading_sd);
+    if ((st = yt_check_keys(doc, m, P, keys, err)) ||
+        (st = yt_opt_string(doc, m, P, "mode", mode, sizeof mode, err)))
+        return st;
+    if (fw_sensing_mode_parse(mode, &d->mode))
+        return yt_fail_key(doc, m, P, "mode", err, "'%s' is not a sensing mode (perfect or ais)",
+                           mode);
+    if ((st = yt_opt_number(doc, m, P, "position_sd_m", 0.0, 1000.0, &d->position_sd, err)) ||
+        (st = yt_opt_number(doc, m, P, "sog_sd_kn", 0.0, 10.0, &sog, err)) ||
+        (st = yt_opt_number(doc, m, P, "cog_sd_deg", 0.0, 90.0, &cog, err)) ||
+        (st = yt_opt_number(doc, m, P, "heading_sd_deg", 0.0, 90.0, &hdg, err)) ||
+        (st = yt_opt_number(doc, m, P, "dropout", 0.0, 1.0, &d->dropout, err)) ||
+        (st = yt_opt_number(doc, m, P, "latency_s", 0.0, 2.0, &d->latency, err)) ||
+        (st = yt_opt_number(doc, m, P, "stale_s", 1.0, 86400.0, &d->stale, err)))
+        return st;
+    d->sog_sd = fw_kn_to_ms(sog);
+    d->cog_sd = fw_deg_to_rad(cog);
+    d->heading_sd = fw_deg_to_rad(hdg);
+    return FW_OK;
+}

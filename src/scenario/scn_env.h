@@ -22,6 +22,15 @@
 #include "scenario/scenario.h"
 #include "yaml/yaml_tree.h"
 
+/* sensing: of root into s->sensing (sense/sensing.h; perfect without it):
+ *   sensing: {mode: ais, position_sd_m: 10, sog_sd_kn: 0.1, cog_sd_deg: 1,
+ *             heading_sd_deg: 0.5, dropout: 0.1, latency_s: 1, stale_s: 360}
+ * what the own ship knows of the others (the values shown are the defaults
+ * but dropout's and latency's, 0); a probability outside [0, 1] or an unknown
+ * mode: FILE:LINE: FIELD. */
+fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenario *s,
+                              fw_error *err);
+
 /* environment: of root into s->env (calm water and still air without it). */
 fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err);
 

@@ -123,7 +123,7 @@ void fw_vessel_free(fw_vessel *v)
     fw_stepper_destroy(v->st);
     fw_track_free(&v->one);
     fw_controller_destroy(v->ctl);
-    fw_free_each(3, v->view, v->as, v->order);
+    fw_free_each(4, v->view, v->as, v->order, v->truth);
 }
 
 fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err)
@@ -161,6 +161,7 @@ fw_status fw_vessel_reserve(fw_vessel *v, int n, fw_error *err)
         return FW_OK;
     int cap = fw_grown_cap(v->cap, n);
     if (!fw_resize((void **)&v->view, sizeof *v->view, (size_t)cap) ||
+        !fw_resize((void **)&v->truth, sizeof *v->truth, (size_t)cap) ||
         !fw_resize((void **)&v->as, sizeof *v->as, (size_t)cap) ||
         !fw_resize((void **)&v->order, sizeof *v->order, 2 * (size_t)cap))
         return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
@@ -178,6 +179,13 @@ const fw_decision *fw_vessel_decision(const fw_vessel *v) { return &v->d; }
 fw_controller *fw_vessel_controller(fw_vessel *v) { return v->ctl; }
 fw_vessel_role fw_vessel_role_of(const fw_vessel *v) { return v->role; }
 bool fw_vessel_taken(const fw_vessel *v) { return v->taken; }
+
+void fw_vessel_truth(const fw_vessel *v, const fw_target **targets, int *n, bool *sensed)
+{
+    *sensed = v->sensed;
+    *targets = v->sensed ? v->truth : v->view;
+    *n = v->sensed ? v->n_truth : v->n_view;
+}
 
 void fw_vessel_view(const fw_vessel *v, const fw_target **targets, const fw_assessment **as,
                     int *n)

@@ -102,6 +102,10 @@ double fw_vessel_propeller(const fw_vessel *v); /* rev/s (MMG), 0 (Nomoto) */
 const fw_decision *fw_vessel_decision(const fw_vessel *v);
 void fw_vessel_view(const fw_vessel *v, const fw_target **targets, const fw_assessment **as,
                     int *n);
+/* The ships that were within its sight at that instant, as they were, sorted
+ * by id: the view itself, unless the vessel has a sensor (world.h
+ * own_sensing), when the view is what it knew and *sensed is true. */
+void fw_vessel_truth(const fw_vessel *v, const fw_target **targets, int *n, bool *sensed);
 fw_controller *fw_vessel_controller(fw_vessel *v);
 fw_vessel_role fw_vessel_role_of(const fw_vessel *v);
 /* Taken from the traffic source (world.h fw_world_take)? */

@@ -36,6 +36,11 @@ struct fw_vessel {
     fw_assessment *as;
     int *order;
     int n_view, cap;
+    /* with a sensor (world.h own_sensing): what was there, sorted by id,
+     * while the view is what the sensor knew of it */
+    fw_target *truth;
+    int n_truth;
+    bool sensed;
 };
 
 /* Creates the dynamics and the first state in the environment env (which

@@ -32,6 +32,7 @@ struct fw_world {
     fw_reactions *react;
     fw_world_timing timing;
     fw_streams *streams; /* every random stream of the world's elements */
+    fw_sensor *sensor;   /* the own ship's (def.own_sensing) */
 };
 
 /* The CPU clock when the def keeps timings, else 0 (no system calls). */
@@ -48,7 +49,8 @@ static void lap(const fw_world *w, double *acc, double *t)
 fw_world_def fw_default_world_def(void)
 {
     fw_world_def d = {.step = 1.0, .source = NULL, .reactions = fw_default_reactions_def(),
-                      .env = fw_default_env(), .seed = 1};
+                      .env = fw_default_env(), .seed = 1,
+                      .own_sensing = fw_default_sensing_def()};
     d.reactions.behaviour = FW_BEHAVIOUR_BLIND;
     return d;
 }
@@ -66,8 +68,15 @@ void fw_world_destroy(fw_world *w)
     free(w->recs);
     fw_source_destroy(w->source);
     fw_reactions_destroy(w->react);
+    fw_sensor_destroy(w->sensor);
     fw_streams_free(w->streams);
     free(w);
+}
+
+/* The sensor's way to the world's streams (sense/sensing.h fw_sensing_rng). */
+static fw_rng *world_rng(void *ctx, uint32_t key, fw_purpose purpose)
+{
+    return fw_world_rng(ctx, key, purpose);
 }
 
 fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err)
@@ -101,6 +110,8 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
         return fw_fail(err, FW_ERUN, "out of memory");
     }
     fw_status st = fw_reactions_create(&def->reactions, &w->react, err);
+    if (!st)
+        st = fw_sensor_create(&def->own_sensing, world_rng, w, &w->sensor, err);
     if (st) {
         fw_world_destroy(w);
         return st;
@@ -347,7 +358,20 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
     if (extra)
         qsort(v->view, (size_t)n, sizeof *v->view, cmp_id);
     v->n_view = n;
+    if (i == w->own && w->def.own_sensing.mode != FW_SENSE_PERFECT) {
+        /* the truth kept for the records; the view is what the sensor knows */
+        memcpy(v->truth, v->view, sizeof *v->view * (size_t)n);
+        v->n_truth = n;
+        v->sensed = true;
+        return fw_sensor_update(w->sensor, fw_world_time(w), v->truth, n, v->view, &v->n_view,
+                                err);
+    }
     return FW_OK;
+}
+
+fw_sensing_counts fw_world_sensing_counts(const fw_world *w)
+{
+    return fw_sensor_counts(w->sensor);
 }
 
 static fw_status decide(fw_world *w, fw_vessel *v, fw_error *err)

@@ -60,6 +60,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "env/env.h"
+#include "sense/sensing.h"
 #include "traffic/source.h"
 #include "world/reactions.h"
 #include "world/vessel.h"
@@ -81,6 +82,10 @@ typedef struct fw_world_def {
     /* the run's seed (a study's replication's): the key of the vessels'
      * random streams (core/rng.h fw_rng_make); 1 by default */
     uint64_t seed;
+    /* what the own ship knows of the others (sense/sensing.h): perfect by
+     * default; with AIS its controller decides on the ships' reports, and
+     * fw_vessel_truth still gives what was there */
+    fw_sensing_def own_sensing;
 } fw_world_def;
 
 /* step 1 s, no source, blind traffic (a world built by hand has the traffic
@@ -181,6 +186,10 @@ long fw_world_steps(const fw_world *w);
 fw_status fw_world_area(fw_world *w, const fw_target **ships, int *n, fw_error *err);
 
 fw_source *fw_world_source(fw_world *w);
+
+/* The own ship's sensor's counts (AIS reports sent, lost, arrived; all 0
+ * with perfect sensing). */
+fw_sensing_counts fw_world_sensing_counts(const fw_world *w);
 
 /* Every order given to the source's ships so far (reactions.h). */
 const fw_reaction *fw_world_reactions(const fw_world *w, int *n);

@@ -20,7 +20,8 @@ import sys
 # line means nothing.  Derived from the includes of issue 23's tree:
 #   geom, yaml       plane geometry / YAML tree: each needs only core
 #   ship             ship files (yaml)
-#   env              wind and current fields of the world (geom, ship)
+#   env, sense       wind and current fields of the world (geom, ship); what a
+#                    ship knows of the others (targets, core's streams)
 #   dynamics, nomoto, traffic
 #                    the two ship models never see each other (the cycle
 #                    calibrate/identify made is why fit exists); traffic
@@ -36,7 +37,7 @@ LAYERS = [
     ["core"],
     ["geom", "yaml"],
     ["ship"],
-    ["env"],
+    ["env", "sense"],
     ["dynamics", "nomoto", "traffic"],
     ["fit", "avoid", "ais"],
     ["audit", "survey", "world"],

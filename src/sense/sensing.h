@@ -1,0 +1,90 @@
+/* sensing.h - what a ship knows of the others: the truth, or their AIS reports.
+ *
+ * A sensor turns the ships a vessel could see (the truth, world.h) into the
+ * ships it knows of, which its controller decides on.  Modes:
+ *
+ *   perfect  every ship's exact position, course and speed every step (the
+ *            default, and all fairway had before)
+ *   ais      each ship's AIS reports (ITU-R M.1371-5, Table 1, Class A):
+ *            every 10 s at 0-14 kn (3 1/3 s while changing course), 6 s at
+ *            14-23 kn (2 s while changing course), 2 s above 23 kn, 3 min
+ *            below 3 kn; a ship changes course when its course over ground
+ *            turned more than kTurning since the last step.  Each report holds
+ *            the ship's position with GNSS noise (position_sd_m in east and in
+ *            north), SOG (sog_sd_kn) and COG (cog_sd_deg) with noise, and its
+ *            heading (heading_sd_deg, the gyro's); it is lost with probability
+ *            dropout and arrives latency_s after it was sent.  A ship is known
+ *            from its first report that arrives; between reports it is dead
+ *            reckoned from its last one (position + SOG x age along COG), and
+ *            forgotten when its last report is older than stale_s.  A ship's
+ *            first report comes at a random phase of its interval.
+ *
+ * Randomness: the noise and the phase are the transmitting ship's (its GNSS,
+ * its slot), from its own stream (FW_PURPOSE_SENSING, key: rng.h
+ * fw_rng_vessel_key of its id); a lost report is the receiver's
+ * (FW_PURPOSE_AIS_DROPOUT, the same key).  Only the own ship has a sensor
+ * (world.h), so a key names one link.
+ *
+ * What it does not model: radar and ARPA tracking (detection range, range and
+ * bearing noise, a tracking filter), Class B transponders, ships without AIS,
+ * range-dependent reception; restricted visibility (issue 24 items 4-5).
+ */
+#ifndef FW_SENSE_SENSING_H
+#define FW_SENSE_SENSING_H
+
+#include <stdbool.h>
+
+#include "core/error.h"
+#include "core/rng.h"
+#include "geom/target.h"
+
+typedef enum fw_sensing_mode { FW_SENSE_PERFECT, FW_SENSE_AIS } fw_sensing_mode;
+
+typedef struct fw_sensing_def {
+    fw_sensing_mode mode;
+    double position_sd;  /* m, 1 sigma in east and in north: 10 */
+    double sog_sd;       /* m/s, 1 sigma: 0.1 kn */
+    double cog_sd;       /* rad, 1 sigma: 1 deg */
+    double heading_sd;   /* rad, 1 sigma: 0.5 deg */
+    double dropout;      /* probability a report is lost: 0 */
+    double latency;      /* s, from sending to arriving: 0 */
+    double stale;        /* s, a ship whose last report is older is forgotten: 360 */
+} fw_sensing_def;
+
+/* perfect, with the AIS values above for when the mode is changed. */
+fw_sensing_def fw_default_sensing_def(void);
+
+/* "perfect", "ais"; parse: FW_EINPUT for anything else. */
+const char *fw_sensing_mode_name(fw_sensing_mode m);
+fw_status fw_sensing_mode_parse(const char *text, fw_sensing_mode *out);
+
+/* FW_EINPUT naming the field for a negative or non-finite value or a
+ * dropout outside [0, 1]. */
+fw_status fw_sensing_check(const fw_sensing_def *def, fw_error *err);
+
+/* The AIS Class A reporting interval (s) of a ship at speed (m/s), turning or
+ * not. */
+double fw_ais_interval(double speed, bool turning);
+
+/* Where a sensor takes a stream: the world's (world.h fw_world_rng). */
+typedef fw_rng *(*fw_sensing_rng)(void *ctx, uint32_t key, fw_purpose purpose);
+
+typedef struct fw_sensor fw_sensor;
+
+fw_status fw_sensor_create(const fw_sensing_def *def, fw_sensing_rng rng, void *rng_ctx,
+                           fw_sensor **out, fw_error *err);
+void fw_sensor_destroy(fw_sensor *s);
+
+/* At time t the ships truth[0..n-1] (sorted by id) could be seen: what the
+ * sensor knows of them into known (room for n), sorted by id, *n_known of
+ * them.  Perfect: a copy. */
+fw_status fw_sensor_update(fw_sensor *s, double t, const fw_target *truth, int n,
+                           fw_target *known, int *n_known, fw_error *err);
+
+/* Counts so far: reports sent, lost, arrived. */
+typedef struct fw_sensing_counts {
+    long sent, lost, arrived;
+} fw_sensing_counts;
+fw_sensing_counts fw_sensor_counts(const fw_sensor *s);
+
+#endif
