@@ -567,6 +567,68 @@ static void test_shapes(void)
     free(md);
 }
 
+/* A study's axes (runs.setting): the hand study sailed in a second setting
+ * whose every encounter entered the domain; the groups keep the settings
+ * apart, the first setting (the one of the first runs) is the reference of
+ * "Axes", and settings.csv pairs each group with it. */
+static void test_settings(void)
+{
+    char db_path[300], out[300], p[400];
+    if (!hand_report("axes", "UPDATE runs SET setting = 'sensing.dropout=0';"
+                             COPY_RUNS("setting = 'sensing.dropout=0.5'", ", domain_entered = 1"),
+                     db_path, out))
+        return;
+    snprintf(p, sizeof p, "%s/settings.csv", out);
+    /* 500 m: 1 violation against all 15 encounters in 1.5 h each: -14 / 1.5 h */
+    const char *w = "setting=sensing.dropout=0.5,domain_m=500,measure=domain_violations_per_h";
+    CHECK_NEAR(csv_get(p, w, "mean"), 14.0 / 1.5, 1e-9);
+    snprintf(p, sizeof p, "%s/summary.csv", out);
+    CHECK_NEAR(csv_get(p, "setting=sensing.dropout=0,domain_m=100,measure=encounters_per_h",
+                       "mean"), 10.0, 1e-9);
+    snprintf(p, sizeof p, "%s/report.md", out);
+    char *md = slurp(p);
+    CHECK(md != NULL);
+    if (md) {
+        CHECK_CONTAINS(md, "## Axes: each setting - the first (sensing.dropout=0)");
+        CHECK_CONTAINS(md, "| density | traffic; setting | domain (m) | runs |");
+        CHECK_CONTAINS(md, "| 1 | -; sensing.dropout=0.5 | 100 | 3 | 10.0 [5.03, 15.0] |");
+    }
+    free(md);
+}
+
+/* The splitting estimates (table splits) beside the crude counts: a cell
+ * with three batches (the mean and per hour: a run is half an hour), and a
+ * cell whose every batch found no path to a collision, said as such. */
+static void test_splits(void)
+{
+    char db_path[300], out[300], p[400];
+    if (!hand_report("split",
+                     "INSERT INTO splits(cell, batch, domain_m, density, particles, status, "
+                     "rounds, runs, sim_s, wall_s, p_collision, p_near_miss, best_closeness, "
+                     "best_path) VALUES"
+                     "(0, 0, 100, 1, 20, 'ok', 10, 100, 180000, 1, 0.01, 0.1, 1, '5:'),"
+                     "(0, 1, 100, 1, 20, 'ok', 10, 100, 180000, 1, 0.02, 0.2, 1, '6:'),"
+                     "(0, 2, 100, 1, 20, 'ok', 10, 100, 180000, 1, 0.03, 0.3, 1, '7:'),"
+                     "(1, 0, 500, 1, 20, 'ok', 10, 100, 180000, 1, 0, 0, 0.8, '8:'),"
+                     "(1, 1, 500, 1, 20, 'ok', 10, 100, 180000, 1, 0, 0, 0.75, '9:');",
+                     db_path, out))
+        return;
+    snprintf(p, sizeof p, "%s/report.md", out);
+    char *md = slurp(p);
+    CHECK(md != NULL);
+    if (md) {
+        CHECK_CONTAINS(md, "## Rare events by splitting");
+        CHECK_CONTAINS(md, "| 100 m |  | 3 x 20 | 0.02 [");
+        CHECK_CONTAINS(md, "| 0.04 | 0.2 [");
+        CHECK_CONTAINS(md, "| 150.0 |");
+        CHECK_CONTAINS(md, "| 500 m |  | 2 x 20 | 0: no batch reached it (closest: closeness 0.800) |");
+    }
+    free(md);
+    snprintf(p, sizeof p, "%s/splits.csv", out);
+    CHECK_NEAR(csv_get(p, "cell=0", "p_collision"), 0.02, 1e-12);
+    CHECK_NEAR(csv_get(p, "cell=0", "p_collision_per_h"), 0.04, 1e-12);
+}
+
 /* Oddities that do not stop the report are named in it. */
 static void test_warnings(void)
 {
@@ -671,6 +733,8 @@ int main(void)
     TEST_RUN(test_behaviours);
     TEST_RUN(test_causation);
     TEST_RUN(test_shapes);
+    TEST_RUN(test_settings);
+    TEST_RUN(test_splits);
     TEST_RUN(test_directory);
     int rc = TEST_EXIT();
     if (rc == 0)

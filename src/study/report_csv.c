@@ -22,6 +22,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#include <string.h>
+
 #include "core/files.h"
 #include "study/report_data.h"
 
@@ -43,13 +45,13 @@ static fw_status csv_open(csv *c, const fw_study_report *rep, const char *dir, c
     return FW_OK;
 }
 
-/* A setting of the axes, first in a row when the study has them: quoted,
- * since it lists its keys with commas ("a=1, b=2"; keys and values have no
- * quotes: study.c). */
+/* A setting of the axes, first in a row when the study has them: quoted
+ * when it lists several keys with commas ("a=1, b=2"; keys and values have
+ * no quotes: study_axes.c). */
 static void setting_cell(const csv *c, const char *setting)
 {
     if (c->settings)
-        fprintf(c->f, "\"%s\",", setting);
+        fprintf(c->f, strchr(setting, ',') ? "\"%s\"," : "%s,", setting);
 }
 
 static fw_status csv_close(csv *c, fw_error *err)

@@ -20,10 +20,11 @@ typedef struct batch_set {
 } batch_set;
 
 static bool same_cell(const fw_rep_split *c, double domain, double ratio, double density,
-                      const char *beh)
+                      const char *beh, const char *setting)
 {
     return c->domain == domain && (c->ratio == ratio || (isnan(c->ratio) && isnan(ratio))) &&
-           c->density == density && strcmp(c->behaviour, beh) == 0;
+           c->density == density && strcmp(c->behaviour, beh) == 0 &&
+           strcmp(c->setting, setting) == 0;
 }
 
 /* The cell's crude counts: its runs, and those with a collision or a near miss. */
@@ -31,7 +32,7 @@ static void crude_counts(const fw_study_report *rep, fw_rep_split *c)
 {
     for (int i = 0; i < rep->n_runs; i++) {
         const fw_rep_run *r = &rep->runs[i];
-        if (!same_cell(c, r->domain, r->ratio, r->density, r->behaviour))
+        if (!same_cell(c, r->domain, r->ratio, r->density, r->behaviour, r->setting))
             continue;
         c->crude_n++;
         c->crude_collisions += r->collision_flag == 1.0;
@@ -74,8 +75,8 @@ static fw_status add_batch(batch_set *b, double pc, double pn)
 
 static const char kSql[] =
     "SELECT cell, domain_m, fore_aft_ratio, density, COALESCE(behaviour, ''), particles, status, "
-    "runs, sim_s, wall_s, p_collision, p_near_miss, best_closeness, COALESCE(best_path, '') "
-    "FROM splits ORDER BY cell, batch";
+    "runs, sim_s, wall_s, p_collision, p_near_miss, best_closeness, COALESCE(best_path, ''), "
+    "COALESCE(setting, '') FROM splits ORDER BY cell, batch";
 
 static double col(sqlite3_stmt *q, int i)
 {
@@ -98,6 +99,7 @@ static fw_status read_row(fw_study_report *rep, sqlite3_stmt *q, batch_set *b, i
                             .density = col(q, 3), .particles = sqlite3_column_int(q, 5),
                             .best_closeness = -1.0};
         snprintf(c->behaviour, sizeof c->behaviour, "%s", (const char *)sqlite3_column_text(q, 4));
+        snprintf(c->setting, sizeof c->setting, "%s", (const char *)sqlite3_column_text(q, 14));
     }
     if (strcmp((const char *)sqlite3_column_text(q, 6), "ok") != 0) {
         c->failed++;
@@ -138,13 +140,27 @@ fw_status fw_rep_load_splits(fw_study_report *rep, sqlite3 *db, const char *file
     return st;
 }
 
-/* "1.23e-04 [5.6e-05, 2.1e-04]" */
-static const char *est(char *buf, size_t n, const fw_estimate *e)
+/* "1.23e-04 [5.6e-05, 2.1e-04]"; every batch at 0 is no estimate with an
+ * interval but a finding: no batch found a path to the event (each went
+ * extinct below it, ams.h), which bounds nothing by itself. */
+static const char *est(char *buf, size_t n, const fw_estimate *e, double best)
 {
     if (isnan(e->mean))
         snprintf(buf, n, "(one batch: no interval)");
+    else if (e->mean == 0.0)
+        snprintf(buf, n, "0: no batch reached it (closest: closeness %.3f)", best);
     else
         snprintf(buf, n, "%.3g [%.3g, %.3g]", e->mean, e->lo, e->hi);
+    return buf;
+}
+
+/* "%.3g" of x, "-" when it is not a number (no estimate to compare). */
+static const char *num_or_dash(char *buf, size_t n, double x, const char *unit)
+{
+    if (isfinite(x))
+        snprintf(buf, n, "%.3g%s", x, unit);
+    else
+        snprintf(buf, n, "-");
     return buf;
 }
 
@@ -162,19 +178,23 @@ void fw_rep_md_splits(FILE *f, const fw_study_report *rep)
                "relative error, (1 - p) / (p RE^2) runs; the speed-up is that over the hours "
                "splitting simulated (every branch replayed from t = 0 counts whole).\n\n",
             100.0 * rep->level);
-    fprintf(f, "| domain | behaviour | batches x particles | P(collision) per run | per hour | "
+    fprintf(f, "| domain | %s | batches x particles | P(collision) per run | per hour | "
                "P(near miss) per run | counted: collisions, near misses / runs | simulated h | "
                "crude h for the same error | speed-up |\n"
-               "|---:|---|---:|---|---:|---|---|---:|---:|---:|\n");
+               "|---:|---|---:|---|---:|---|---|---:|---:|---:|\n",
+            rep->has_settings ? "behaviour; setting" : "behaviour");
     for (int i = 0; i < rep->n_splits; i++) {
         const fw_rep_split *c = &rep->splits[i];
-        char a[96], b[96];
+        char a[96], b[96], h[32], ch[32], sp[32];
         double hours = c->duration_s / 3600.0;
-        fprintf(f, "| %g m | %s | %d x %d%s | %s | %.3g | %s | %d, %d / %d | %.1f | %.3g | %.3gx |\n",
-                c->domain, c->behaviour, c->batches, c->particles, c->failed ? " (some failed)" : "",
-                est(a, sizeof a, &c->p_collision), c->p_collision.mean / hours,
-                est(b, sizeof b, &c->p_near_miss), c->crude_collisions, c->crude_near, c->crude_n,
-                c->sim_h, c->crude_h, c->crude_h / c->sim_h);
+        fprintf(f, "| %g m | %s%s%s | %d x %d%s | %s | %s | %s | %d, %d / %d | %.1f | %s | %s |\n",
+                c->domain, c->behaviour, c->setting[0] ? "; " : "", c->setting, c->batches,
+                c->particles, c->failed ? " (some failed)" : "",
+                est(a, sizeof a, &c->p_collision, c->best_closeness),
+                num_or_dash(h, sizeof h, c->p_collision.mean / hours, ""),
+                est(b, sizeof b, &c->p_near_miss, c->best_closeness), c->crude_collisions,
+                c->crude_near, c->crude_n, c->sim_h, num_or_dash(ch, sizeof ch, c->crude_h, ""),
+                num_or_dash(sp, sizeof sp, c->crude_h / c->sim_h, "x"));
     }
     fprintf(f, "\nThe closest trajectory of each cell is kept as a path (splits.csv, best_path: "
                "its start's draw and re-keyings) that `fairway worst` can run again.\n\n");
@@ -193,17 +213,18 @@ fw_status fw_rep_write_splits_csv(const fw_study_report *rep, const char *dir, f
     fprintf(f, "cell,domain_m,fore_aft_ratio,density,behaviour,batches,failed,particles,"
                "p_collision,p_collision_lo,p_collision_hi,p_collision_per_h,p_near_miss,"
                "p_near_miss_lo,p_near_miss_hi,relative_error,runs,sim_h,wall_s,crude_h,speedup,"
-               "crude_runs,crude_collisions,crude_near_misses,best_closeness,best_path\n");
+               "crude_runs,crude_collisions,crude_near_misses,best_closeness,best_path,setting\n");
     for (int i = 0; i < rep->n_splits; i++) {
         const fw_rep_split *c = &rep->splits[i];
         fprintf(f, "%d,%g,%g,%g,%s,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%.0f,%.4g,"
-                   "%.1f,%.6g,%.4g,%d,%d,%d,%.6g,%s\n",
+                   "%.1f,%.6g,%.4g,%d,%d,%d,%.6g,%s,%s%s%s\n",
                 c->cell, c->domain, c->ratio, c->density, c->behaviour, c->batches, c->failed,
                 c->particles, c->p_collision.mean, c->p_collision.lo, c->p_collision.hi,
                 c->p_collision.mean * 3600.0 / c->duration_s, c->p_near_miss.mean,
                 c->p_near_miss.lo, c->p_near_miss.hi, c->re, c->runs, c->sim_h, c->wall_s,
                 c->crude_h, c->crude_h / c->sim_h, c->crude_n, c->crude_collisions, c->crude_near,
-                c->best_closeness, c->best_path);
+                c->best_closeness, c->best_path, strchr(c->setting, ',') ? "\"" : "",
+                c->setting, strchr(c->setting, ',') ? "\"" : "");
     }
     return fw_file_commit(f, tmp, path, err);
 }

@@ -35,6 +35,6 @@ grep -q "| 3 | colregs; own_ship.speed_kn=16 | 300 | 2 |" "$tmp/rep/report.md" |
   { echo "no row for the second setting's pairs"; grep -n "speed_kn" "$tmp/rep/report.md"; exit 1; }
 head -1 "$tmp/rep/settings.csv" | grep -q "^setting,density,behaviour,domain_m" ||
   { echo "settings.csv:"; head -3 "$tmp/rep/settings.csv"; exit 1; }
-grep -q '^"own_ship.speed_kn=16",3,colregs,300' "$tmp/rep/summary.csv" ||
+grep -q '^own_ship.speed_kn=16,3,colregs,300' "$tmp/rep/summary.csv" ||
   { echo "summary.csv has no row of the second setting"; head -3 "$tmp/rep/summary.csv"; exit 1; }
 echo "ok: axes swept, recorded, reported"
