@@ -324,6 +324,65 @@ static void test_traffic_reacts_to_taken(void)
     fw_world_destroy(w);
 }
 
+/* The crossing of test_traffic_reacts_to_taken (g must give way to t, taken
+ * by fairway) with g's watch as given: g's first slow-down order's time (NAN:
+ * none in 120 s), and the watch's counts. */
+static double first_give_way(fw_watch_def watch, long *pairs, long *lapsed)
+{
+    fw_error err = {0};
+    double v = fw_kn_to_ms(8);
+    fw_kin_ship ks[2] = {
+        {.start = {.id = "t", .east = 0, .north = 0, .course = 0.0, .speed = v, .length = 150,
+                   .breadth = 25}},
+        {.start = {.id = "g", .east = -3000, .north = 3000, .course = 0.5 * FW_PI, .speed = v,
+                   .length = 150, .breadth = 25}}};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ks;
+    kd.n = 2;
+    fw_world_def wd = fw_default_world_def();
+    wd.reactions = fw_default_reactions_def(); /* colregs */
+    wd.reactions.watch = watch;
+    fw_world *w = NULL;
+    CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_vessel_def own = nomoto_def("own", FW_ROLE_OWN, 0, -30000, 180, 5); /* far away */
+    CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
+    fw_vessel_def td = fw_default_vessel_def();
+    td.ship = &c3p;
+    td.dynamics = FW_DYN_NOMOTO;
+    CHECK_MSG(fw_world_take(w, "t", &td, NULL, &err) == FW_OK, "%s", err.msg);
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    for (int k = 0; k < 120; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    int n;
+    const fw_reaction *r = fw_world_reactions(w, &n);
+    double first = NAN;
+    for (int i = 0; i < n && isnan(first); i++)
+        if (strcmp(r[i].ship, "g") == 0 && r[i].kind == FW_REACT_SLOW)
+            first = r[i].t;
+    fw_world_watch_counts(w, pairs, lapsed);
+    fw_world_destroy(w);
+    return first;
+}
+
+/* The watch (world/watch.h): flawless, g gives way at its first look; with a
+ * 40 s delay, not before 40 s after it first found t a threat, and at its
+ * next look after that; with a lapse probability of 1, never. */
+static void test_watch(void)
+{
+    long pairs, lapsed;
+    double flawless = first_give_way(fw_default_watch_def(), &pairs, &lapsed);
+    CHECK(!isnan(flawless) && flawless < 10.0);
+    CHECK(pairs == 0 && lapsed == 0);
+    double late = first_give_way((fw_watch_def){.delay = 40.0}, &pairs, &lapsed);
+    printf("watch: flawless gives way at %.0f s, with a 40 s delay at %.0f s\n", flawless, late);
+    CHECK(late >= flawless + 40.0 && late <= flawless + 40.0 + 10.0);
+    CHECK(pairs == 1 && lapsed == 0);
+    double never = first_give_way((fw_watch_def){.lapse = 1.0}, &pairs, &lapsed);
+    CHECK(isnan(never));
+    CHECK(pairs == 1 && lapsed == 1);
+}
+
 /* The policy returns to the route it is given, not to the line through its
  * first position: the own ship starts 300 m west of its route's line (north,
  * x = 300), avoids a head-on ship, and ends on the route. */
@@ -553,6 +612,7 @@ int main(int argc, char **argv)
     TEST_RUN(test_no_own_ship);
     TEST_RUN(test_take_give_back_kinematic);
     TEST_RUN(test_traffic_reacts_to_taken);
+    TEST_RUN(test_watch);
     TEST_RUN(test_returns_to_given_route);
     TEST_RUN(test_track_refuses_take);
     return TEST_EXIT();

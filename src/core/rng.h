@@ -85,6 +85,11 @@ typedef struct {
  * common random numbers hold (above). */
 uint32_t fw_rng_vessel_key(const char *id);
 
+/* Where an element of the world takes its streams: the world's table
+ * (world.h fw_world_rng), handed down as a function and its context so the
+ * element needs nothing of the world. */
+typedef fw_rng *(*fw_rng_getter)(void *ctx, uint32_t vessel, fw_purpose purpose);
+
 /* The stream of (run_seed, vessel, purpose) at counter 0. */
 fw_rng fw_rng_make(uint64_t run_seed, uint32_t vessel, fw_purpose purpose);
 

@@ -252,6 +252,9 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     if (s->sensed)
         fprintf(f, "%s  \"sensing\": {\"mode\": \"ais\", \"reports_sent\": %ld, \"lost\": %ld, "
                    "\"arrived\": %ld},\n", ind, s->sense_sent, s->sense_lost, s->sense_arrived);
+    if (s->watched)
+        fprintf(f, "%s  \"watch\": {\"encounters\": %ld, \"lapsed\": %ld},\n", ind,
+                s->watch_pairs, s->watch_lapsed);
     const fw_monitor_counts *m = &s->monitors;
     fprintf(f, "%s  \"monitors\": {\"sideways\": %d, \"teleport\": %d, \"overlap\": %d, "
                "\"appear\": %d, \"vanish\": %d, \"start_close\": %d, \"stopped\": %d, "

@@ -99,6 +99,10 @@ typedef struct fw_run_summary {
      * arrived.  In summary.json only when sensed (not perfect). */
     bool sensed;
     long sense_sent, sense_lost, sense_arrived;
+    /* The background ships' watch (world/watch.h): encounters met, lapsed.
+     * In summary.json only when the watch is not flawless. */
+    bool watched;
+    long watch_pairs, watch_lapsed;
     bool ais;
     long ais_duplicates, ais_clashes, ais_unprojected;
     int ais_clash_ships;

@@ -234,6 +234,11 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
     if ((st = assessments(R, tg, n, &as, err)) ||
         (st = fw_monitor_step(R->mon, t, fw_vessel_record(R->own), tg, n, err)))
         return st;
+    const fw_watch_def *wd = &s->reactions.watch;
+    if (wd->lapse > 0.0 || wd->delay > 0.0) {
+        sum->watched = true;
+        fw_world_watch_counts(R->w, &sum->watch_pairs, &sum->watch_lapsed);
+    }
     if (sensed) {
         fw_sensing_counts c = fw_world_sensing_counts(R->w);
         sum->sensed = true;

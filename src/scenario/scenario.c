@@ -137,7 +137,8 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
 {
     static const char *const keys[] = {"network", "density", "fill", "targets", "behaviour",
                                        "tracks", "ais", "ais_start", "ais_end",
-                                       "ais_max_gap_s", "ais_columns", "waterway", NULL};
+                                       "ais_max_gap_s", "ais_columns", "waterway", "watch",
+                                       NULL};
     const yt_node *tr, *seq = NULL;
     fw_status st;
     if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
@@ -152,6 +153,8 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     if (fw_behaviour_parse(beh, &s->reactions.behaviour))
         return fw_fail_at(err, doc->file, yt_key_line(tr, "behaviour"), "traffic.behaviour",
                           "'%s': expected colregs or blind", beh);
+    if ((st = fw_scn_load_watch(doc, tr, s, err)))
+        return st;
     char ww[32] = "open-sea";
     if ((st = yt_opt_string(doc, tr, "traffic", "waterway", ww, sizeof ww, err)))
         return st;
@@ -445,5 +448,7 @@ const char *fw_scenario_randomness(const fw_scenario *s)
      * here as it comes (watchkeeping delays and lapses, gusts ...) */
     if (s->sensing.mode != FW_SENSE_PERFECT)
         return NULL; /* AIS reports: noise, slots, dropouts, drawn as they are sent */
+    if (s->reactions.behaviour == FW_BEHAVIOUR_COLREGS && s->reactions.watch.lapse > 0.0)
+        return NULL; /* lapses, drawn per encounter as it comes */
     return "none of its settings draws: perfect sensing, flawless watchkeeping, steady wind";
 }

@@ -113,3 +113,20 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
     d->heading_sd = fw_deg_to_rad(hdg);
     return FW_OK;
 }
+
+fw_status fw_scn_load_watch(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err)
+{
+    static const char *const keys[] = {"delay_s", "lapse", NULL};
+    const char *P = "traffic.watch";
+    fw_watch_def *w = &s->reactions.watch;
+    *w = fw_default_watch_def();
+    const yt_node *m = NULL;
+    fw_status st;
+    if ((st = yt_opt_map(doc, tr, "traffic", "watch", &m, err)) || !m)
+        return st;
+    if ((st = yt_check_keys(doc, m, P, keys, err)) ||
+        (st = yt_opt_number(doc, m, P, "delay_s", 0.0, 3600.0, &w->delay, err)) ||
+        (st = yt_opt_number(doc, m, P, "lapse", 0.0, 1.0, &w->lapse, err)))
+        return st;
+    return FW_OK;
+}

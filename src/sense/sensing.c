@@ -92,7 +92,7 @@ typedef struct link {
 
 struct fw_sensor {
     fw_sensing_def def;
-    fw_sensing_rng rng;
+    fw_rng_getter rng;
     void *ctx;
     fw_idmap ids;
     link *links;
@@ -100,7 +100,7 @@ struct fw_sensor {
     fw_sensing_counts counts;
 };
 
-fw_status fw_sensor_create(const fw_sensing_def *def, fw_sensing_rng rng, void *rng_ctx,
+fw_status fw_sensor_create(const fw_sensing_def *def, fw_rng_getter rng, void *rng_ctx,
                            fw_sensor **out, fw_error *err)
 {
     *out = NULL;

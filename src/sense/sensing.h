@@ -66,12 +66,9 @@ fw_status fw_sensing_check(const fw_sensing_def *def, fw_error *err);
  * not. */
 double fw_ais_interval(double speed, bool turning);
 
-/* Where a sensor takes a stream: the world's (world.h fw_world_rng). */
-typedef fw_rng *(*fw_sensing_rng)(void *ctx, uint32_t key, fw_purpose purpose);
-
 typedef struct fw_sensor fw_sensor;
 
-fw_status fw_sensor_create(const fw_sensing_def *def, fw_sensing_rng rng, void *rng_ctx,
+fw_status fw_sensor_create(const fw_sensing_def *def, fw_rng_getter rng, void *rng_ctx,
                            fw_sensor **out, fw_error *err);
 void fw_sensor_destroy(fw_sensor *s);
 

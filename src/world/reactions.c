@@ -46,6 +46,7 @@ struct fw_reactions {
     const fw_target *all;
     double *sn, *cs;
     double cos_parallel;
+    fw_watch *watch;
 };
 
 fw_reactions_def fw_default_reactions_def(void)
@@ -54,7 +55,8 @@ fw_reactions_def fw_default_reactions_def(void)
                               .horizon = 900.0, .range = 8000.0, .min_speed = 0.3,
                               .parallel = fw_deg_to_rad(30.0), .last_cpa = 0.25 * FW_NMILE,
                               .last_time = 240.0, .interval = 10.0,
-                              .colregs = fw_default_colregs_def()};
+                              .colregs = fw_default_colregs_def(),
+                              .watch = fw_default_watch_def()};
 }
 
 static const char *const kBehaviourNames[] = {"colregs", "blind"}; /* fw_behaviour order */
@@ -81,8 +83,23 @@ fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, f
         return fw_fail(err, FW_ERUN, "out of memory");
     r->def = *def;
     r->cos_parallel = cos(def->parallel);
+    fw_status st = fw_watch_create(&def->watch, &r->watch, err);
+    if (st) {
+        free(r);
+        return st;
+    }
     *out = r;
     return FW_OK;
+}
+
+void fw_reactions_set_rng(fw_reactions *r, fw_rng_getter rng, void *ctx)
+{
+    fw_watch_set_rng(r->watch, rng, ctx);
+}
+
+void fw_reactions_watch_counts(const fw_reactions *r, long *pairs, long *lapsed)
+{
+    fw_watch_counts(r ? r->watch : NULL, pairs, lapsed);
 }
 
 void fw_reactions_destroy(fw_reactions *r)
@@ -90,6 +107,7 @@ void fw_reactions_destroy(fw_reactions *r)
     if (!r)
         return;
     fw_idmap_free(&r->ids);
+    fw_watch_destroy(r->watch);
     fw_free_each(9, r->s, r->list, r->nb, r->all_buf, r->idx, r->sn, r->cs, r->log, r);
 }
 
@@ -423,6 +441,30 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
 }
 
 /* Background ship `self` of all[0..n-1] this step. */
+/* The ships in range that ship self must give way to but has not noticed
+ * (watch.h: still within its delay, or lapsed) leave its list: it acts as if
+ * they were not there.  -1 when out of memory. */
+static int unnoticed(fw_reactions *r, double t, int self, const fw_target *all, double v0)
+{
+    int m = 0;
+    for (int q = 0; q < r->nnb; q++) {
+        int j = r->nb[q];
+        fw_situation s;
+        double tc, dc;
+        if (!is_threat(r, &all[self], v0, -1.0, &all[j], r->def.cpa, NULL, &s, &tc, &dc)) {
+            r->nb[m++] = j; /* no give-way to it now: nothing to notice */
+            continue;
+        }
+        int k = fw_watch_noticed(r->watch, &all[self], &all[j], t);
+        if (k < 0)
+            return -1;
+        if (k)
+            r->nb[m++] = j;
+    }
+    r->nnb = m;
+    return m;
+}
+
 static fw_status react(fw_reactions *r, double t, int self, const fw_target *all, int n,
                        react_state *st, fw_source *src, fw_error *err)
 {
@@ -455,6 +497,8 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
             r->nb[r->nnb++] = j;
     }
     double v0 = st->v0;
+    if (fw_watch_active(r->watch) && unnoticed(r, t, self, all, v0) < 0)
+        return fw_fail(err, FW_ERUN, "out of memory for the watch's encounters");
     int nearest = -1;
     fw_situation sit = FW_SIT_GIVE_WAY;
     double dcpa = INFINITY;

@@ -33,6 +33,8 @@
  * that its action alone cannot avoid a collision: then it takes the speed,
  * down to min_speed of its own, that passes farthest (rule 17(b)), and its
  * own speed back once that is no longer so.
+ * With a watch (watch.h) a ship notices a ship it must give way to only after
+ * a delay, or not at all (a lapse); until then it treats it as not there.
  * Head-on meetings (rule 14: both alter to starboard) leave a lane-bound ship
  * nothing to do but hold its lane; the own ship's policy turns.  Every order
  * is recorded (ship, time, kind, speeds, the ship it gives way to).
@@ -44,6 +46,7 @@
 #include "core/error.h"
 #include "geom/target.h"
 #include "traffic/source.h"
+#include "world/watch.h"
 
 typedef enum fw_behaviour { FW_BEHAVIOUR_COLREGS, FW_BEHAVIOUR_BLIND } fw_behaviour;
 
@@ -63,6 +66,7 @@ typedef struct fw_reactions_def {
     double last_time;     /* s, 240: a stand-on ship this close this soon acts (rule 17(b)) */
     double interval;      /* s, 10: each ship looks round this often (0: every step) */
     fw_colregs_def colregs;
+    fw_watch_def watch;   /* its watchkeeping (watch.h): flawless by default */
 } fw_reactions_def;
 
 fw_reactions_def fw_default_reactions_def(void);
@@ -91,6 +95,11 @@ void fw_reactions_destroy(fw_reactions *r);
  * anything; orders go to src.  Does nothing with behaviour blind. */
 fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *vessels, int nv,
                             const fw_target *ships, int n, fw_source *src, fw_error *err);
+
+/* The world's streams, for a watch that draws (watch.h). */
+void fw_reactions_set_rng(fw_reactions *r, fw_rng_getter rng, void *ctx);
+/* Encounters its watch met and of them those it lapsed (0, 0: flawless). */
+void fw_reactions_watch_counts(const fw_reactions *r, long *pairs, long *lapsed);
 
 /* Does it do anything (behaviour colregs)? */
 bool fw_reactions_active(const fw_reactions *r);

@@ -73,7 +73,7 @@ void fw_world_destroy(fw_world *w)
     free(w);
 }
 
-/* The sensor's way to the world's streams (sense/sensing.h fw_sensing_rng). */
+/* The sensor's and the watch's way to the world's streams (core/rng.h fw_rng_getter). */
 static fw_rng *world_rng(void *ctx, uint32_t key, fw_purpose purpose)
 {
     return fw_world_rng(ctx, key, purpose);
@@ -110,6 +110,8 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
         return fw_fail(err, FW_ERUN, "out of memory");
     }
     fw_status st = fw_reactions_create(&def->reactions, &w->react, err);
+    if (!st)
+        fw_reactions_set_rng(w->react, world_rng, w);
     if (!st)
         st = fw_sensor_create(&def->own_sensing, world_rng, w, &w->sensor, err);
     if (st) {
@@ -367,6 +369,11 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
                                 err);
     }
     return FW_OK;
+}
+
+void fw_world_watch_counts(const fw_world *w, long *pairs, long *lapsed)
+{
+    fw_reactions_watch_counts(w->react, pairs, lapsed);
 }
 
 fw_sensing_counts fw_world_sensing_counts(const fw_world *w)

@@ -191,6 +191,9 @@ fw_source *fw_world_source(fw_world *w);
  * with perfect sensing). */
 fw_sensing_counts fw_world_sensing_counts(const fw_world *w);
 
+/* The background ships' watch (world/watch.h): encounters met, lapsed. */
+void fw_world_watch_counts(const fw_world *w, long *pairs, long *lapsed);
+
 /* Every order given to the source's ships so far (reactions.h). */
 const fw_reaction *fw_world_reactions(const fw_world *w, int *n);
 

@@ -1,0 +1,60 @@
+/* watch.h - the officer of the watch on a background ship: how soon a ship
+ * that must give way notices, and whether it does at all.
+ *
+ * The reactive traffic (reactions.h) has every give-way ship act as soon as
+ * the risk of collision is there, every time.  A real watchkeeper takes time
+ * to notice a ship and decide, and sometimes does not act at all (a lapse:
+ * no lookout, a misjudged situation, the other ship not seen).  With a watch:
+ *
+ *   delay_s  a ship acts for another only once that one has been a threat to
+ *            it (it would have to give way) for delay_s seconds
+ *   lapse    with this probability, drawn once per ship and encounter (the
+ *            pair) when the other first becomes a threat, the ship never acts
+ *            for it: it holds course and speed as if it were not there
+ *
+ * Both are zero by default: the flawless watch fairway had before, every
+ * number unchanged.  fairway gives no default with a source yet: the values
+ * are the user's (a study sweeps them as axes).  Draws come from the acting
+ * ship's stream (FW_PURPOSE_WATCH, key rng.h fw_rng_vessel_key of its id),
+ * so splitting re-keys them and a replication draws the same lapses in every
+ * setting whose encounters come in the same order.
+ */
+#ifndef FW_WORLD_WATCH_H
+#define FW_WORLD_WATCH_H
+
+#include <stdbool.h>
+
+#include "core/error.h"
+#include "core/rng.h"
+#include "geom/target.h"
+
+typedef struct fw_watch_def {
+    double delay;  /* s, >= 0 */
+    double lapse;  /* probability, [0, 1] */
+} fw_watch_def;
+
+/* Flawless: no delay, no lapse. */
+fw_watch_def fw_default_watch_def(void);
+
+/* FW_EINPUT naming the field: a negative or non-finite delay, a lapse
+ * outside [0, 1]. */
+fw_status fw_watch_check(const fw_watch_def *def, fw_error *err);
+
+typedef struct fw_watch fw_watch;
+
+fw_status fw_watch_create(const fw_watch_def *def, fw_watch **out, fw_error *err);
+void fw_watch_destroy(fw_watch *w);
+/* The world's streams (needed once the watch is not flawless). */
+void fw_watch_set_rng(fw_watch *w, fw_rng_getter rng, void *ctx);
+/* A delay or a lapse to model. */
+bool fw_watch_active(const fw_watch *w);
+
+/* Ship a finds ship b a threat at t (it would have to give way to it): has
+ * it noticed b, so that it acts?  The first call for the pair starts its
+ * clock and draws its lapse.  -1 when out of memory or without streams. */
+int fw_watch_noticed(fw_watch *w, const fw_target *a, const fw_target *b, double t);
+
+/* Encounters met so far, and of them those lapsed. */
+void fw_watch_counts(const fw_watch *w, long *pairs, long *lapsed);
+
+#endif
