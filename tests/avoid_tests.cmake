@@ -52,6 +52,7 @@ target_link_libraries(test_env PRIVATE fw_helm_reference)
 
 # The environment: section of a scenario (scenario/scn_env.h) and the manoeuvres' --current
 fw_script_test(env_run 0 "ok: the current carries the own ship" env_run.sh)
+set_tests_properties(env_run PROPERTIES ENVIRONMENT "${fw_lsan}")
 foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0, 10\\]"
             "both:27: environment.current.tidal: give a uniform current .* or a tidal stream, not both"
             "wind:27: environment.wind: .*no windage particulars"
@@ -72,3 +73,4 @@ fw_cli_test(cli_manoeuvre_wind 2 "--wind: no ship has windage particulars" manoe
             --ship c3 --speed 12 --rudder 35 --wind 20,270)
 # The own ship deciding on AIS reports (sense/sensing.h)
 fw_script_test(sensing_run 0 "ok: the own ship decides on AIS reports" sensing_run.sh)
+set_tests_properties(sensing_run PROPERTIES ENVIRONMENT "${fw_lsan}")

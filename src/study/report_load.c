@@ -279,7 +279,7 @@ static fw_status make_groups(loader *L)
         return oom(L);
     /* settings numbered in the order of the run list (the first finished run
      * of each): the study's own order, whose first is the reference */
-    int *first = malloc((size_t)rep->n_runs * sizeof *first); /* run of each setting */
+    int *first = malloc(((size_t)rep->n_runs + 1) * sizeof *first); /* run of each setting */
     if (!first)
         return oom(L);
     for (int i = 0; i < rep->n_runs; i++) {

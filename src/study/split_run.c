@@ -241,7 +241,8 @@ static fw_status branch(void *ctx, const void *parent, double level, fw_rng rng,
         return fw_fail(err, FW_ERUN, "out of memory");
     }
     t->draw = p->draw;
-    memcpy(t->rekeys, p->rekeys, (size_t)kept * sizeof *t->rekeys);
+    if (kept > 0) /* a parent with no re-keys yet may have no array */
+        memcpy(t->rekeys, p->rekeys, (size_t)kept * sizeof *t->rekeys);
     t->rekeys[kept] = (rekey){at, (uint32_t)draw64(&rng) | 1u};
     t->n_rekey = kept + 1;
     fw_status st = simulate(ctx, t, err);
