@@ -113,4 +113,13 @@ fw_status fw_sweep_splits(const fw_sweep_def *def, fw_store *st, const char *wor
 /* A SIGINT or SIGTERM has asked the sweep to stop. */
 bool fw_sweep_stopped(void);
 
+/* A study cell's trajectories for splitting (split_run.h's scenario maker;
+ * ctx an fw_split_cell): the cell's setting with its start drawn from draw
+ * (study.h fw_study_run_drawn). */
+typedef struct fw_split_cell {
+    const fw_study *s;
+    int cell;
+} fw_split_cell;
+void fw_split_cell_scenario(void *ctx, uint64_t draw, fw_scenario *out);
+
 #endif

@@ -27,14 +27,9 @@ typedef struct split_msg {
     char path[2048];
 } split_msg;
 
-typedef struct cell_ctx {
-    const fw_study *s;
-    int cell;
-} cell_ctx;
-
-static void cell_scenario(void *ctx, uint64_t draw, fw_scenario *out)
+void fw_split_cell_scenario(void *ctx, uint64_t draw, fw_scenario *out)
 {
-    const cell_ctx *c = ctx;
+    const fw_split_cell *c = ctx;
     fw_study_run r = fw_study_run_drawn(c->s, c->cell, draw);
     fw_study_scenario(c->s, &r, out);
 }
@@ -60,8 +55,8 @@ static void estimate(const fw_sweep_def *def, const char *work, int cell, int ba
     /* SUMO loaded once here and inherited by every trajectory's process
      * (loading costs a process 0.2 s of CPU); a failure is the runs' to say */
     fw_traffic_load(def->mode.kind, NULL);
-    cell_ctx cc = {s, cell};
-    fw_split_run_def sd = {.scenario = cell_scenario, .ctx = &cc, .work_dir = dir};
+    fw_split_cell cc = {s, cell};
+    fw_split_run_def sd = {.scenario = fw_split_cell_scenario, .ctx = &cc, .work_dir = dir};
     sd.run = fw_default_run_def();
     sd.run.mode = def->mode;
     fw_split_run *S = NULL;

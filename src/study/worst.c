@@ -30,13 +30,13 @@ static double col_num(sqlite3_stmt *q, int i)
 }
 
 /* meta's study file and digest, and the closest encounters, one per run. */
-static fw_status select_cases(const fw_worst_def *def, char *study, size_t sz, char *digest,
-                              fw_worst_case *cases, int *n, fw_error *err)
+fw_status fw_worst_open(const fw_worst_def *def, sqlite3 **dbp, char *study, size_t sz,
+                        char *digest, fw_error *err)
 {
     sqlite3 *db = NULL;
     sqlite3_stmt *q = NULL;
-    *n = 0;
     fw_status st = FW_OK;
+    *dbp = NULL;
     if (sqlite3_open_v2(def->db, &db, SQLITE_OPEN_READONLY, NULL) != SQLITE_OK ||
         sqlite3_prepare_v2(db, "SELECT key, value FROM meta WHERE key IN ('study_file', "
                                "'study_digest')", -1, &q, NULL) != SQLITE_OK) {
@@ -56,7 +56,24 @@ static fw_status select_cases(const fw_worst_def *def, char *study, size_t sz, c
         else
             snprintf(digest, 32, "%s", v ? v : "");
     }
+out:
     sqlite3_finalize(q);
+    if (st)
+        sqlite3_close(db);
+    else
+        *dbp = db;
+    return st;
+}
+
+static fw_status select_cases(const fw_worst_def *def, char *study, size_t sz, char *digest,
+                              fw_worst_case *cases, int *n, fw_error *err)
+{
+    sqlite3 *db = NULL;
+    sqlite3_stmt *q = NULL;
+    *n = 0;
+    fw_status st = fw_worst_open(def, &db, study, sz, digest, err);
+    if (st)
+        return st;
     /* hull to hull first (it is what touches); runs that failed do not count */
     if (sqlite3_prepare_v2(db, "SELECT e.run_id, e.target, e.min_dist_m, e.min_hull_m FROM "
                                "encounters e JOIN runs r USING(run_id) WHERE r.status = 'ok' AND "
@@ -346,6 +363,22 @@ static fw_status export_case(const fw_worst_def *def, const fw_study *s, fw_wors
     return sail(scn, replay, c->target, def->mode, &c->replay_min, err);
 }
 
+fw_status fw_worst_study(const fw_worst_def *def, const char *study_file, const char *digest,
+                         fw_study *s, fw_error *err)
+{
+    const char *file = def->study ? def->study : study_file;
+    fw_status st = fw_study_load(file, s, err);
+    if (st)
+        return st;
+    char now[32];
+    snprintf(now, sizeof now, "%016" PRIx64, s->digest);
+    if (strcmp(now, digest) != 0)
+        return fw_fail(err, FW_EINPUT,
+                       "%s: not the study of %s (its settings or scenario changed since the "
+                       "sweep): its runs cannot be sailed again", file, def->db);
+    return FW_OK;
+}
+
 fw_status fw_worst_export(const fw_worst_def *def, fw_worst_case *cases, int *n, fw_error *err)
 {
     char study_file[1024] = "", digest[32] = "";
@@ -360,16 +393,8 @@ fw_status fw_worst_export(const fw_worst_def *def, fw_worst_case *cases, int *n,
         return fw_fail(err, FW_ERUN, "out of memory");
     }
     const char *file = def->study ? def->study : study_file;
-    if ((st = fw_study_load(file, s, err)))
+    if ((st = fw_worst_study(def, study_file, digest, s, err)))
         goto out;
-    char now[32];
-    snprintf(now, sizeof now, "%016" PRIx64, s->digest);
-    if (strcmp(now, digest) != 0) {
-        st = fw_fail(err, FW_EINPUT,
-                     "%s: not the study of %s (its settings or scenario changed since the "
-                     "sweep): its runs cannot be sailed again", file, def->db);
-        goto out;
-    }
     /* a database without meta's runs was not bounded by db_check: the study is */
     for (int k = 0; k < *n && !st; k++)
         if (cases[k].run_id < 0 || cases[k].run_id >= fw_study_run_count(s))

@@ -44,6 +44,30 @@ typedef struct fw_worst_case {
     char dir[1100];
 } fw_worst_case;
 
+/* The database opened read-only and checked (db_check.h), with its study's
+ * file and digest from meta; the caller closes *db. */
+typedef struct sqlite3 sqlite3;
+fw_status fw_worst_open(const fw_worst_def *def, sqlite3 **db, char *study, size_t sz,
+                        char *digest, fw_error *err);
+/* The database's study (def->study, or the file meta names) loaded into s
+ * and checked against the digest: FW_EINPUT when it changed since. */
+typedef struct fw_study fw_study;
+fw_status fw_worst_study(const fw_worst_def *def, const char *study_file, const char *digest,
+                         fw_study *s, fw_error *err);
+
+/* The closest trajectory splitting found in each cell of a study with
+ * estimate: (table splits), run again from its path into DIR/split-cell-K
+ * (study/split_run.h fw_split_run_replay): its closeness as the database has
+ * it and as the replay gives it (the same: a path names every draw). */
+typedef struct fw_worst_split {
+    int cell;
+    double db_closeness, replay_closeness, replay_hull; /* replay_hull m, INFINITY: none */
+    char path[2048];
+    char dir[1100];
+} fw_worst_split;
+fw_status fw_worst_splits(const fw_worst_def *def, fw_worst_split *out, int max, int *n,
+                          fw_error *err);
+
 /* Fills cases[0..*n-1] (room for def->n).  FW_EINPUT for a database or
  * study that cannot be used, FW_ERUN when a run fails. */
 fw_status fw_worst_export(const fw_worst_def *def, fw_worst_case *cases, int *n, fw_error *err);
