@@ -59,7 +59,9 @@ foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0,
             "period:27: environment.current.tidal.period_h: 0 is out of range \\[1, 48\\]"
             "sensemode:26: sensing.mode: 'radar' is not a sensing mode \\(perfect or ais\\)"
             "dropout:26: sensing.dropout: 1.5 is out of range \\[0, 1\\]"
-            "lapse:15: traffic.watch.lapse: 1.5 is out of range \\[0, 1\\]")
+            "lapse:15: traffic.watch.lapse: 1.5 is out of range \\[0, 1\\]"
+            "detect:15: traffic.watch.detect_s: -5 is out of range \\[0, 3600\\]"
+            "laterange:15: traffic.watch.late_range_nm: a late action .* needs the range")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_cli_test(cli_run_env_${name} 2 "bad-${name}.yaml${pattern}" run

@@ -28,6 +28,7 @@
 #include "traffic/source_sumo.h"
 #include "traffic/source_track.h"
 #include "world/controllers.h"
+#include "world/watch.h"
 #include "world/world.h"
 
 static fw_ship c3, c3p;
@@ -327,7 +328,7 @@ static void test_traffic_reacts_to_taken(void)
 /* The crossing of test_traffic_reacts_to_taken (g must give way to t, taken
  * by fairway) with g's watch as given: g's first slow-down order's time (NAN:
  * none in 120 s), and the watch's counts. */
-static double first_give_way(fw_watch_def watch, long *pairs, long *lapsed)
+static double first_give_way_seed(fw_watch_def watch, uint64_t seed, long *pairs, long *lapsed)
 {
     fw_error err = {0};
     double v = fw_kn_to_ms(8);
@@ -342,6 +343,7 @@ static double first_give_way(fw_watch_def watch, long *pairs, long *lapsed)
     fw_world_def wd = fw_default_world_def();
     wd.reactions = fw_default_reactions_def(); /* colregs */
     wd.reactions.watch = watch;
+    wd.seed = seed;
     fw_world *w = NULL;
     CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
     CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
@@ -365,6 +367,11 @@ static double first_give_way(fw_watch_def watch, long *pairs, long *lapsed)
     return first;
 }
 
+static double first_give_way(fw_watch_def watch, long *pairs, long *lapsed)
+{
+    return first_give_way_seed(watch, fw_default_world_def().seed, pairs, lapsed);
+}
+
 /* The watch (world/watch.h): flawless, g gives way at its first look; with a
  * 40 s delay, not before 40 s after it first found t a threat, and at its
  * next look after that; with a lapse probability of 1, never. */
@@ -381,6 +388,79 @@ static void test_watch(void)
     double never = first_give_way((fw_watch_def){.lapse = 1.0}, &pairs, &lapsed);
     CHECK(isnan(never));
     CHECK(pairs == 1 && lapsed == 1);
+}
+
+/* The rest of the watch: a time to detect drawn per encounter (the same seed,
+ * the same time; another seed, another), and a late action at the range it
+ * is given: the crossing closes at sqrt(2) x 8 kn from 4243 m, so within
+ * 3800 m from 76 s on. */
+static void test_watch_detect_late(void)
+{
+    long pairs, lapsed;
+    fw_watch_def d = fw_default_watch_def();
+    d.detect = 30.0;
+    double a = first_give_way_seed(d, 11, &pairs, &lapsed);
+    double b = first_give_way_seed(d, 11, &pairs, &lapsed);
+    double flawless = first_give_way(fw_default_watch_def(), &pairs, &lapsed);
+    printf("watch: detection (mean 30 s) at seed 11: gives way at %.0f s (flawless %.0f s)\n", a,
+           flawless);
+    CHECK(!isnan(a) && a == b && a >= flawless);
+    bool differs = false;
+    for (uint64_t seed = 12; seed < 20 && !differs; seed++)
+        differs = first_give_way_seed(d, seed, &pairs, &lapsed) != a;
+    CHECK(differs);
+    fw_watch_def l = fw_default_watch_def();
+    l.late = 1.0;
+    l.late_range = 3800.0;
+    double late = first_give_way(l, &pairs, &lapsed);
+    printf("watch: acting only within 3800 m: gives way at %.0f s\n", late);
+    CHECK(late >= 76.0 - 1.0 && late <= 76.0 + 11.0);
+    CHECK(pairs == 1 && lapsed == 0);
+}
+
+/* One stream for every ship (the law of the draws, not whose they are). */
+static fw_rng *one_stream(void *ctx, uint32_t key, fw_purpose purpose)
+{
+    (void)key;
+    (void)purpose;
+    return ctx;
+}
+
+/* The time to detect is exponential with the mean given (watch.h): of 4000
+ * encounters met at t = 0 with a mean of 100 s, 1 - 1/e are noticed at
+ * 100 s and 1 - 1/e^3 at 300 s, each to within 4 standard errors; none at
+ * 0 s.  A lapse of 0.25 leaves a quarter never noticed. */
+static void test_watch_detect_law(void)
+{
+    fw_error err = {0};
+    fw_rng s = fw_rng_make(7, 0, FW_PURPOSE_WATCH);
+    fw_watch_def d = fw_default_watch_def();
+    d.detect = 100.0;
+    d.lapse = 0.25;
+    fw_watch *w = NULL;
+    CHECK(fw_watch_create(&d, &w, &err) == FW_OK);
+    fw_watch_set_rng(w, one_stream, &s);
+    enum { N = 4000 };
+    fw_target b = {.id = "other", .east = 1000.0};
+    int at0 = 0, at1 = 0, at3 = 0, never = 0;
+    for (int i = 0; i < N; i++) {
+        fw_target a = {.east = 0.0};
+        snprintf(a.id, sizeof a.id, "s%d", i);
+        at0 += fw_watch_noticed(w, &a, &b, 0.0);
+        at1 += fw_watch_noticed(w, &a, &b, 100.0);
+        at3 += fw_watch_noticed(w, &a, &b, 300.0);
+        never += !fw_watch_noticed(w, &a, &b, 1e6);
+    }
+    long pairs, lapsed;
+    fw_watch_counts(w, &pairs, &lapsed);
+    fw_watch_destroy(w);
+    double kept = N - lapsed, p1 = 1.0 - exp(-1.0), p3 = 1.0 - exp(-3.0);
+    printf("watch: of %ld encounters %ld lapsed; of the rest %.4f noticed at the mean (%.4f), "
+           "%.4f at 3x (%.4f)\n", pairs, lapsed, at1 / kept, p1, at3 / kept, p3);
+    CHECK(pairs == N && at0 == 0 && never == lapsed);
+    CHECK(fabs(lapsed / (double)N - 0.25) < 4.0 * sqrt(0.25 * 0.75 / N));
+    CHECK(fabs(at1 / kept - p1) < 4.0 * sqrt(p1 * (1 - p1) / kept));
+    CHECK(fabs(at3 / kept - p3) < 4.0 * sqrt(p3 * (1 - p3) / kept));
 }
 
 /* The policy returns to the route it is given, not to the line through its
@@ -613,6 +693,8 @@ int main(int argc, char **argv)
     TEST_RUN(test_take_give_back_kinematic);
     TEST_RUN(test_traffic_reacts_to_taken);
     TEST_RUN(test_watch);
+    TEST_RUN(test_watch_detect_late);
+    TEST_RUN(test_watch_detect_law);
     TEST_RUN(test_returns_to_given_route);
     TEST_RUN(test_track_refuses_take);
     return TEST_EXIT();

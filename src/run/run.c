@@ -235,7 +235,7 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
         (st = fw_monitor_step(R->mon, t, fw_vessel_record(R->own), tg, n, err)))
         return st;
     const fw_watch_def *wd = &s->reactions.watch;
-    if (wd->lapse > 0.0 || wd->delay > 0.0) {
+    if (fw_watch_def_active(wd)) {
         sum->watched = true;
         fw_world_watch_counts(R->w, &sum->watch_pairs, &sum->watch_lapsed);
     }

@@ -448,7 +448,7 @@ const char *fw_scenario_randomness(const fw_scenario *s)
      * here as it comes (watchkeeping delays and lapses, gusts ...) */
     if (s->sensing.mode != FW_SENSE_PERFECT)
         return NULL; /* AIS reports: noise, slots, dropouts, drawn as they are sent */
-    if (s->reactions.behaviour == FW_BEHAVIOUR_COLREGS && s->reactions.watch.lapse > 0.0)
-        return NULL; /* lapses, drawn per encounter as it comes */
+    if (s->reactions.behaviour == FW_BEHAVIOUR_COLREGS && fw_watch_def_draws(&s->reactions.watch))
+        return NULL; /* lapses, times to detect, late actions: drawn per encounter as it comes */
     return "none of its settings draws: perfect sensing, flawless watchkeeping, steady wind";
 }

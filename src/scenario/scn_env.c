@@ -116,7 +116,8 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
 
 fw_status fw_scn_load_watch(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err)
 {
-    static const char *const keys[] = {"delay_s", "lapse", NULL};
+    static const char *const keys[] = {"delay_s", "lapse", "detect_s", "late", "late_range_nm",
+                                       NULL};
     const char *P = "traffic.watch";
     fw_watch_def *w = &s->reactions.watch;
     *w = fw_default_watch_def();
@@ -126,7 +127,16 @@ fw_status fw_scn_load_watch(const yt_doc *doc, const yt_node *tr, fw_scenario *s
         return st;
     if ((st = yt_check_keys(doc, m, P, keys, err)) ||
         (st = yt_opt_number(doc, m, P, "delay_s", 0.0, 3600.0, &w->delay, err)) ||
-        (st = yt_opt_number(doc, m, P, "lapse", 0.0, 1.0, &w->lapse, err)))
+        (st = yt_opt_number(doc, m, P, "lapse", 0.0, 1.0, &w->lapse, err)) ||
+        (st = yt_opt_number(doc, m, P, "detect_s", 0.0, 3600.0, &w->detect, err)) ||
+        (st = yt_opt_number(doc, m, P, "late", 0.0, 1.0, &w->late, err)))
         return st;
+    double range_nm = 0.0;
+    if ((st = yt_opt_number(doc, m, P, "late_range_nm", 0.01, 20.0, &range_nm, err)))
+        return st;
+    if (w->late > 0.0 && range_nm == 0.0)
+        return fw_fail_at(err, doc->file, yt_key_line(m, "late"), "traffic.watch.late_range_nm",
+                          "a late action (late > 0) needs the range it happens at");
+    w->late_range = fw_nm_to_m(range_nm);
     return FW_OK;
 }

@@ -33,11 +33,14 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
 
 /* traffic.watch (tr: the traffic map) into s->reactions.watch (world/watch.h;
  * flawless without it):
- *   traffic: {watch: {delay_s: 60, lapse: 0.05}}
- * how long a background ship takes to notice a ship it must give way to,
- * and the probability it never does, per encounter; no defaults with a
- * source yet: the user's values.  A lapse outside [0, 1], a negative delay:
- * FILE:LINE: FIELD. */
+ *   traffic: {watch: {detect_s: 120, delay_s: 60, lapse: 0.05,
+ *                     late: 0.1, late_range_nm: 1}}
+ * the mean time a background ship takes to detect a ship it must give way to
+ * (exponential, per encounter), the time it then takes to decide, the
+ * probability it never acts, and the probability it acts only within
+ * late_range_nm; no defaults with a source yet: the user's values.  A
+ * probability outside [0, 1], a negative time, a late action without its
+ * range: FILE:LINE: FIELD. */
 fw_status fw_scn_load_watch(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err);
 
 /* environment: of root into s->env (calm water and still air without it). */

@@ -10,8 +10,9 @@
 
 /* One ship and one other it had to give way to. */
 typedef struct pair {
-    double t_first; /* s, when the other first was a threat */
+    double t_act; /* s, when it may act at the earliest: detected + decided */
     bool lapsed;
+    bool late;    /* acts only within the late range */
 } pair;
 
 struct fw_watch {
@@ -24,15 +25,36 @@ struct fw_watch {
     long n_pairs, n_lapsed;
 };
 
-fw_watch_def fw_default_watch_def(void) { return (fw_watch_def){.delay = 0.0, .lapse = 0.0}; }
+fw_watch_def fw_default_watch_def(void)
+{
+    return (fw_watch_def){.delay = 0.0, .lapse = 0.0, .detect = 0.0, .late = 0.0,
+                          .late_range = 0.0};
+}
 
 fw_status fw_watch_check(const fw_watch_def *d, fw_error *err)
 {
     if (!(d->delay >= 0.0 && isfinite(d->delay)))
         return fw_fail(err, FW_EINPUT, "watch delay %g s: must be 0 or more", d->delay);
+    if (!(d->detect >= 0.0 && isfinite(d->detect)))
+        return fw_fail(err, FW_EINPUT, "watch detect %g s: must be 0 or more", d->detect);
     if (!(d->lapse >= 0.0 && d->lapse <= 1.0))
         return fw_fail(err, FW_EINPUT, "watch lapse %g: a probability, in [0, 1]", d->lapse);
+    if (!(d->late >= 0.0 && d->late <= 1.0))
+        return fw_fail(err, FW_EINPUT, "watch late %g: a probability, in [0, 1]", d->late);
+    if (d->late > 0.0 && !(d->late_range > 0.0 && isfinite(d->late_range)))
+        return fw_fail(err, FW_EINPUT, "watch late range %g m: must be more than 0",
+                       d->late_range);
     return FW_OK;
+}
+
+bool fw_watch_def_draws(const fw_watch_def *d)
+{
+    return d->lapse > 0.0 || d->detect > 0.0 || d->late > 0.0;
+}
+
+bool fw_watch_def_active(const fw_watch_def *d)
+{
+    return d->delay > 0.0 || fw_watch_def_draws(d);
 }
 
 fw_status fw_watch_create(const fw_watch_def *def, fw_watch **out, fw_error *err)
@@ -66,7 +88,7 @@ void fw_watch_set_rng(fw_watch *w, fw_rng_getter rng, void *ctx)
 
 bool fw_watch_active(const fw_watch *w)
 {
-    return w && (w->def.delay > 0.0 || w->def.lapse > 0.0);
+    return w && fw_watch_def_active(&w->def);
 }
 
 int fw_watch_noticed(fw_watch *w, const fw_target *a, const fw_target *b, double t)
@@ -83,15 +105,21 @@ int fw_watch_noticed(fw_watch *w, const fw_target *a, const fw_target *b, double
         w->cap = cap;
     }
     pair *p = &w->pairs[k];
-    if (w->ids.n > before) { /* a new encounter: its clock, its lapse */
+    if (w->ids.n > before) { /* a new encounter: its clock, its draws (watch.h) */
         fw_rng *s = w->rng ? w->rng(w->ctx, fw_rng_vessel_key(a->id), FW_PURPOSE_WATCH) : NULL;
         if (!s)
             return -1;
-        *p = (pair){.t_first = t, .lapsed = w->def.lapse > 0.0 && fw_rng_uniform(s) < w->def.lapse};
+        const fw_watch_def *d = &w->def;
+        bool lapsed = d->lapse > 0.0 && fw_rng_uniform(s) < d->lapse;
+        double detect = d->detect > 0.0 ? d->detect * fw_rng_exponential(s) : 0.0;
+        bool late = d->late > 0.0 && fw_rng_uniform(s) < d->late;
+        *p = (pair){.t_act = t + detect + d->delay, .lapsed = lapsed, .late = late};
         w->n_pairs++;
         w->n_lapsed += p->lapsed;
     }
-    return !p->lapsed && t >= p->t_first + w->def.delay - 1e-9;
+    if (p->lapsed || t < p->t_act - 1e-9)
+        return 0;
+    return !p->late || hypot(b->east - a->east, b->north - a->north) <= w->def.late_range;
 }
 
 void fw_watch_counts(const fw_watch *w, long *pairs, long *lapsed)

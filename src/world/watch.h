@@ -6,18 +6,29 @@
  * to notice a ship and decide, and sometimes does not act at all (a lapse:
  * no lookout, a misjudged situation, the other ship not seen).  With a watch:
  *
- *   delay_s  a ship acts for another only once that one has been a threat to
- *            it (it would have to give way) for delay_s seconds
+ *   detect_s the mean time to detect the other once it is a threat: drawn
+ *            per ship and encounter from an exponential law, the law of
+ *            Koopman's random search (a constant chance of detection per
+ *            second of looking: P(detected by t) = 1 - exp(-t / detect_s);
+ *            B. O. Koopman, Search and Screening, 1946/1980)
+ *   delay_s  the time to decide: a ship acts for another only once it has
+ *            detected it and delay_s seconds more have passed (fixed)
  *   lapse    with this probability, drawn once per ship and encounter (the
  *            pair) when the other first becomes a threat, the ship never acts
  *            for it: it holds course and speed as if it were not there
+ *   late     with this probability, drawn likewise, the ship acts for it only
+ *            once it is within late_range (m) of it (a late action: the other
+ *            seen or judged dangerous only close by)
  *
- * Both are zero by default: the flawless watch fairway had before, every
- * number unchanged.  fairway gives no default with a source yet: the values
- * are the user's (a study sweeps them as axes).  Draws come from the acting
+ * All are zero by default: the flawless watch fairway had before, every
+ * number unchanged.  fairway gives no default values with a source yet: the
+ * shared reference has none for detection or decision times; the values are
+ * the user's (a study sweeps them as axes).  Draws come from the acting
  * ship's stream (FW_PURPOSE_WATCH, key rng.h fw_rng_vessel_key of its id),
  * so splitting re-keys them and a replication draws the same lapses in every
- * setting whose encounters come in the same order.
+ * setting whose encounters come in the same order.  A new encounter draws, in
+ * this order and each only when its setting is not zero: the lapse (uniform),
+ * the time to detect (exponential), the late action (uniform).
  */
 #ifndef FW_WORLD_WATCH_H
 #define FW_WORLD_WATCH_H
@@ -29,16 +40,23 @@
 #include "geom/target.h"
 
 typedef struct fw_watch_def {
-    double delay;  /* s, >= 0 */
-    double lapse;  /* probability, [0, 1] */
+    double delay;      /* s, >= 0: the time to decide, after detection */
+    double lapse;      /* probability, [0, 1]: no action */
+    double detect;     /* s, >= 0: the mean time to detect (exponential) */
+    double late;       /* probability, [0, 1]: action only within late_range */
+    double late_range; /* m, > 0 when late > 0 */
 } fw_watch_def;
 
 /* Flawless: no delay, no lapse. */
 fw_watch_def fw_default_watch_def(void);
 
-/* FW_EINPUT naming the field: a negative or non-finite delay, a lapse
- * outside [0, 1]. */
+/* FW_EINPUT naming the field: a negative or non-finite time, a probability
+ * outside [0, 1], a late action without a positive range. */
 fw_status fw_watch_check(const fw_watch_def *def, fw_error *err);
+/* Not flawless: something to model (and, but for a delay alone, to draw). */
+bool fw_watch_def_active(const fw_watch_def *def);
+/* Draws random numbers (a lapse, a time to detect or a late action). */
+bool fw_watch_def_draws(const fw_watch_def *def);
 
 typedef struct fw_watch fw_watch;
 
@@ -54,7 +72,7 @@ bool fw_watch_active(const fw_watch *w);
  * clock and draws its lapse.  -1 when out of memory or without streams. */
 int fw_watch_noticed(fw_watch *w, const fw_target *a, const fw_target *b, double t);
 
-/* Encounters met so far, and of them those lapsed. */
+/* Encounters met so far, and of them those lapsed (late ones not counted). */
 void fw_watch_counts(const fw_watch *w, long *pairs, long *lapsed);
 
 #endif
