@@ -61,7 +61,8 @@ foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0,
             "dropout:26: sensing.dropout: 1.5 is out of range \\[0, 1\\]"
             "lapse:15: traffic.watch.lapse: 1.5 is out of range \\[0, 1\\]"
             "detect:15: traffic.watch.detect_s: -5 is out of range \\[0, 3600\\]"
-            "laterange:15: traffic.watch.late_range_nm: a late action .* needs the range")
+            "laterange:15: traffic.watch.late_range_nm: a late action .* needs the range"
+            "ownwatch:15: traffic.watch.own_ship: 'robot': expected perfect or human")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_cli_test(cli_run_env_${name} 2 "bad-${name}.yaml${pattern}" run

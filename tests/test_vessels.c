@@ -418,6 +418,84 @@ static void test_watch_detect_late(void)
     CHECK(pairs == 1 && lapsed == 0);
 }
 
+/* A started world of wd (its source set here): the own ship (policy, c3 on
+ * Nomoto, the route given or its own line) at the origin heading north at
+ * 10 kn, and T1 (kinematic) `north` m ahead heading south at 10 kn. */
+static fw_world *head_on_world(double north, fw_world_def *wd, const fw_route *route,
+                               fw_vessel_handle *h)
+{
+    fw_error err = {0};
+    fw_kin_ship sh = {.start = {.id = "T1", .east = 0, .north = north, .course = FW_PI,
+                                .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32}};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = &sh;
+    kd.n = 1;
+    fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
+                                   .policy = fw_default_policy_def()};
+    if (route)
+        pd.policy.route = *route;
+    fw_world *w = NULL;
+    fw_vessel_def vd = nomoto_def("own", FW_ROLE_OWN, 0, 0, 0, 10);
+    CHECK(fw_kinematic_source_create(&kd, &wd->source, &err) == FW_OK &&
+          fw_world_create(wd, &w, &err) == FW_OK &&
+          fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK &&
+          fw_world_add_vessel(w, &vd, h, &err) == FW_OK && fw_world_start(w, &err) == FW_OK);
+    return w;
+}
+
+/* The own ship (policy, c3 on Nomoto) meets T1 head-on 6 km off at 10 kn
+ * each, its watch as given, for 700 s: the first time T1 is in its view (the
+ * policy's), the time it first turns off its line by 5 m (NAN: never), and
+ * the closest approach. */
+static void own_head_on(fw_watch_def watch, double *seen, double *turned, double *closest)
+{
+    fw_error err = {0};
+    fw_world_def wd = fw_default_world_def();
+    wd.own_watch = watch;
+    fw_vessel_handle h;
+    fw_world *w = head_on_world(6000.0, &wd, NULL, &h);
+    *seen = *turned = NAN;
+    *closest = INFINITY;
+    for (int k = 0; k < 700; k++) {
+        const fw_vessel *o = fw_world_vessel(w, h);
+        const fw_target *view, *truth;
+        const fw_assessment *as;
+        int nv, nt;
+        bool sensed;
+        fw_vessel_view(o, &view, &as, &nv);
+        fw_vessel_truth(o, &truth, &nt, &sensed);
+        const fw_target *r = fw_vessel_record(o);
+        if (nv > 0 && isnan(*seen))
+            *seen = k;
+        if (fabs(r->east) > 5.0 && isnan(*turned))
+            *turned = k;
+        for (int j = 0; j < nt; j++)
+            *closest = fmin(*closest, hypot(truth[j].east - r->east, truth[j].north - r->north));
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    }
+    fw_world_destroy(w);
+}
+
+/* The own ship's watch (world.h own_watch): perfect, it sees T1 at once and
+ * turns away (at 376 s: the policy's own timing); a 420 s time to decide
+ * hides T1 from its policy for 420 s, past that, and the turn comes once
+ * it is seen, closer; a lapse of 1 hides it for good: no action, and T1 runs
+ * into it. */
+static void test_own_watch(void)
+{
+    double seen0, turned0, closest0, seen1, turned1, closest1, seen2, turned2, closest2;
+    own_head_on(fw_default_watch_def(), &seen0, &turned0, &closest0);
+    own_head_on((fw_watch_def){.delay = 420.0}, &seen1, &turned1, &closest1);
+    own_head_on((fw_watch_def){.lapse = 1.0}, &seen2, &turned2, &closest2);
+    printf("own watch: perfect sees T1 at %.0f s, turns at %.0f s, closest %.0f m; deciding in 420 s: "
+           "%.0f s, %.0f s, %.0f m; lapsed: never sees it (%g), turns %g, closest %.0f m\n",
+           seen0, turned0, closest0, seen1, turned1, closest1, seen2, turned2, closest2);
+    CHECK(seen0 == 0.0 && !isnan(turned0) && closest0 > 300.0);
+    CHECK(seen1 == seen0 + 420.0 && turned1 >= 420.0 && turned1 <= 420.0 + (turned0 - seen0));
+    CHECK(closest1 < closest0 && closest1 > closest2);
+    CHECK(isnan(seen2) && isnan(turned2) && closest2 < 50.0);
+}
+
 /* One stream for every ship (the law of the draws, not whose they are). */
 static fw_rng *one_stream(void *ctx, uint32_t key, fw_purpose purpose)
 {
@@ -471,24 +549,13 @@ static void test_returns_to_given_route(void)
     double v = fw_kn_to_ms(10), end_e[2] = {NAN, NAN};
     for (int given = 0; given < 2; given++) {
         fw_error err = {0};
-        fw_kin_ship sh = {.start = {.id = "T1", .east = 0, .north = 3000, .course = FW_PI,
-                                    .speed = v, .length = 200, .breadth = 32}};
-        fw_kinematic_def kd = fw_default_kinematic_def();
-        kd.ships = &sh;
-        kd.n = 1;
-        fw_policy_controller_def pd = {.ship = &c3, .helm = fw_default_helm_def(),
-                                       .policy = fw_default_policy_def()};
+        fw_route route;
         double we[3] = {300, 300, 300}, wn[3] = {-1000, 5000, 20000}, sp[2] = {v, v};
         if (given)
-            CHECK(fw_route_from_waypoints(we, wn, sp, 3, &pd.policy.route, &err) == FW_OK);
+            CHECK(fw_route_from_waypoints(we, wn, sp, 3, &route, &err) == FW_OK);
         fw_world_def wd = fw_default_world_def();
-        fw_world *w = NULL;
-        fw_vessel_def vd = nomoto_def("own", FW_ROLE_OWN, 0, 0, 0, 10);
         fw_vessel_handle h;
-        CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
-              fw_world_create(&wd, &w, &err) == FW_OK &&
-              fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK &&
-              fw_world_add_vessel(w, &vd, &h, &err) == FW_OK && fw_world_start(w, &err) == FW_OK);
+        fw_world *w = head_on_world(3000.0, &wd, given ? &route : NULL, &h);
         for (int k = 0; k < 2400; k++)
             CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
         const fw_vessel *o = fw_world_vessel(w, h);
@@ -695,6 +762,7 @@ int main(int argc, char **argv)
     TEST_RUN(test_watch);
     TEST_RUN(test_watch_detect_late);
     TEST_RUN(test_watch_detect_law);
+    TEST_RUN(test_own_watch);
     TEST_RUN(test_returns_to_given_route);
     TEST_RUN(test_track_refuses_take);
     return TEST_EXIT();

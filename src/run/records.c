@@ -255,6 +255,9 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     if (s->watched)
         fprintf(f, "%s  \"watch\": {\"encounters\": %ld, \"lapsed\": %ld},\n", ind,
                 s->watch_pairs, s->watch_lapsed);
+    if (s->own_watched)
+        fprintf(f, "%s  \"own_watch\": {\"ships\": %ld, \"lapsed\": %ld},\n", ind,
+                s->own_watch_pairs, s->own_watch_lapsed);
     const fw_monitor_counts *m = &s->monitors;
     fprintf(f, "%s  \"monitors\": {\"sideways\": %d, \"teleport\": %d, \"overlap\": %d, "
                "\"appear\": %d, \"vanish\": %d, \"start_close\": %d, \"stopped\": %d, "

@@ -103,6 +103,9 @@ typedef struct fw_run_summary {
      * In summary.json only when the watch is not flawless. */
     bool watched;
     long watch_pairs, watch_lapsed;
+    /* The own ship's watch likewise: ships noticed or lapsed. */
+    bool own_watched;
+    long own_watch_pairs, own_watch_lapsed;
     bool ais;
     long ais_duplicates, ais_clashes, ais_unprojected;
     int ais_clash_ships;

@@ -239,7 +239,11 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
         sum->watched = true;
         fw_world_watch_counts(R->w, &sum->watch_pairs, &sum->watch_lapsed);
     }
-    if (sensed) {
+    if (fw_watch_def_active(&s->own_watch)) {
+        sum->own_watched = true;
+        fw_world_own_watch_counts(R->w, &sum->own_watch_pairs, &sum->own_watch_lapsed);
+    }
+    if (s->sensing.mode != FW_SENSE_PERFECT) {
         fw_sensing_counts c = fw_world_sensing_counts(R->w);
         sum->sensed = true;
         sum->sense_sent = c.sent, sum->sense_lost = c.lost, sum->sense_arrived = c.arrived;

@@ -450,5 +450,7 @@ const char *fw_scenario_randomness(const fw_scenario *s)
         return NULL; /* AIS reports: noise, slots, dropouts, drawn as they are sent */
     if (s->reactions.behaviour == FW_BEHAVIOUR_COLREGS && fw_watch_def_draws(&s->reactions.watch))
         return NULL; /* lapses, times to detect, late actions: drawn per encounter as it comes */
+    if (fw_watch_def_draws(&s->own_watch))
+        return NULL; /* the own ship's, likewise */
     return "none of its settings draws: perfect sensing, flawless watchkeeping, steady wind";
 }

@@ -88,6 +88,10 @@ typedef struct fw_scenario {
     fw_env env;
     /* sensing: what the own ship knows of the others (sense/sensing.h) */
     fw_sensing_def sensing;
+    /* traffic.watch.own_ship: the own ship's watch (world/watch.h): flawless
+     * (perfect, an autonomous system) by default; human: the background
+     * ships' watch (scn_env.h) */
+    fw_watch_def own_watch;
     /* run */
     double duration;     /* s */
     double step;         /* s */

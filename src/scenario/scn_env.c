@@ -117,10 +117,11 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
 fw_status fw_scn_load_watch(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"delay_s", "lapse", "detect_s", "late", "late_range_nm",
-                                       NULL};
+                                       "own_ship", NULL};
     const char *P = "traffic.watch";
     fw_watch_def *w = &s->reactions.watch;
     *w = fw_default_watch_def();
+    s->own_watch = fw_default_watch_def();
     const yt_node *m = NULL;
     fw_status st;
     if ((st = yt_opt_map(doc, tr, "traffic", "watch", &m, err)) || !m)
@@ -138,5 +139,13 @@ fw_status fw_scn_load_watch(const yt_doc *doc, const yt_node *tr, fw_scenario *s
         return fw_fail_at(err, doc->file, yt_key_line(m, "late"), "traffic.watch.late_range_nm",
                           "a late action (late > 0) needs the range it happens at");
     w->late_range = fw_nm_to_m(range_nm);
+    char own[16] = "perfect";
+    if ((st = yt_opt_string(doc, m, P, "own_ship", own, sizeof own, err)))
+        return st;
+    if (strcmp(own, "human") == 0)
+        s->own_watch = *w;
+    else if (strcmp(own, "perfect") != 0)
+        return fw_fail_at(err, doc->file, yt_key_line(m, "own_ship"), "traffic.watch.own_ship",
+                          "'%s': expected perfect or human", own);
     return FW_OK;
 }

@@ -40,7 +40,10 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
  * probability it never acts, and the probability it acts only within
  * late_range_nm; no defaults with a source yet: the user's values.  A
  * probability outside [0, 1], a negative time, a late action without its
- * range: FILE:LINE: FIELD. */
+ * range: FILE:LINE: FIELD.  own_ship: perfect (default: the own ship sees
+ * every ship in its view at once, an autonomous system) or human (the same
+ * watch, its clock started when a ship first enters its view) into
+ * s->own_watch. */
 fw_status fw_scn_load_watch(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err);
 
 /* environment: of root into s->env (calm water and still air without it). */

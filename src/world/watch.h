@@ -1,5 +1,7 @@
 /* watch.h - the officer of the watch on a background ship: how soon a ship
- * that must give way notices, and whether it does at all.
+ * that must give way notices, and whether it does at all.  The own ship may
+ * have one too (world.h own_watch): its clock starts when a ship first
+ * enters its view, and an unnoticed ship is hidden from its policy.
  *
  * The reactive traffic (reactions.h) has every give-way ship act as soon as
  * the risk of collision is there, every time.  A real watchkeeper takes time

@@ -33,6 +33,7 @@ struct fw_world {
     fw_world_timing timing;
     fw_streams *streams; /* every random stream of the world's elements */
     fw_sensor *sensor;   /* the own ship's (def.own_sensing) */
+    fw_watch *own_watch; /* the own ship's (def.own_watch) */
 };
 
 /* The CPU clock when the def keeps timings, else 0 (no system calls). */
@@ -50,7 +51,8 @@ fw_world_def fw_default_world_def(void)
 {
     fw_world_def d = {.step = 1.0, .source = NULL, .reactions = fw_default_reactions_def(),
                       .env = fw_default_env(), .seed = 1,
-                      .own_sensing = fw_default_sensing_def()};
+                      .own_sensing = fw_default_sensing_def(),
+                      .own_watch = fw_default_watch_def()};
     d.reactions.behaviour = FW_BEHAVIOUR_BLIND;
     return d;
 }
@@ -69,6 +71,7 @@ void fw_world_destroy(fw_world *w)
     fw_source_destroy(w->source);
     fw_reactions_destroy(w->react);
     fw_sensor_destroy(w->sensor);
+    fw_watch_destroy(w->own_watch);
     fw_streams_free(w->streams);
     free(w);
 }
@@ -114,6 +117,8 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
         fw_reactions_set_rng(w->react, world_rng, w);
     if (!st)
         st = fw_sensor_create(&def->own_sensing, world_rng, w, &w->sensor, err);
+    if (!st && !(st = fw_watch_create(&def->own_watch, &w->own_watch, err)))
+        fw_watch_set_rng(w->own_watch, world_rng, w);
     if (st) {
         fw_world_destroy(w);
         return st;
@@ -332,6 +337,22 @@ static fw_status sense_source(fw_world *w, fw_vessel *v, int *n, fw_error *err)
     return st;
 }
 
+/* The own ship's watch (def.own_watch): the ships in its view v it has not
+ * noticed yet leave it. */
+static fw_status own_watch(fw_world *w, fw_vessel *v, fw_error *err)
+{
+    int m = 0;
+    for (int j = 0; j < v->n_view; j++) {
+        int k = fw_watch_noticed(w->own_watch, &v->record, &v->view[j], fw_world_time(w));
+        if (k < 0)
+            return fw_fail(err, FW_ERUN, "out of memory for the own ship's watch");
+        if (k)
+            v->view[m++] = v->view[j];
+    }
+    v->n_view = m;
+    return FW_OK;
+}
+
 /* The vessel in slot i's view: the source's ships (src, n_src: the own
  * ship's around(); the others query within()), then the other vessels within
  * its sight; sorted by id. */
@@ -360,20 +381,29 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
     if (extra)
         qsort(v->view, (size_t)n, sizeof *v->view, cmp_id);
     v->n_view = n;
-    if (i == w->own && w->def.own_sensing.mode != FW_SENSE_PERFECT) {
-        /* the truth kept for the records; the view is what the sensor knows */
+    bool sensor = i == w->own && w->def.own_sensing.mode != FW_SENSE_PERFECT;
+    bool watch = i == w->own && fw_watch_active(w->own_watch);
+    if (sensor || watch) {
+        /* the truth kept for the records; the view is what the sensor knows
+         * and the watch has noticed */
         memcpy(v->truth, v->view, sizeof *v->view * (size_t)n);
         v->n_truth = n;
         v->sensed = true;
-        return fw_sensor_update(w->sensor, fw_world_time(w), v->truth, n, v->view, &v->n_view,
-                                err);
     }
-    return FW_OK;
+    if (sensor && (st = fw_sensor_update(w->sensor, fw_world_time(w), v->truth, n, v->view,
+                                         &v->n_view, err)))
+        return st;
+    return watch ? own_watch(w, v, err) : FW_OK;
 }
 
 void fw_world_watch_counts(const fw_world *w, long *pairs, long *lapsed)
 {
     fw_reactions_watch_counts(w->react, pairs, lapsed);
+}
+
+void fw_world_own_watch_counts(const fw_world *w, long *pairs, long *lapsed)
+{
+    fw_watch_counts(w->own_watch, pairs, lapsed);
 }
 
 fw_sensing_counts fw_world_sensing_counts(const fw_world *w)

@@ -86,6 +86,11 @@ typedef struct fw_world_def {
      * default; with AIS its controller decides on the ships' reports, and
      * fw_vessel_truth still gives what was there */
     fw_sensing_def own_sensing;
+    /* the own ship's watch (world/watch.h): flawless by default (it sees
+     * every ship in its view at once); else a ship leaves its view (the
+     * policy's, after the sensor) from when it first enters it until it is
+     * noticed, and for good when the watch lapses for it */
+    fw_watch_def own_watch;
 } fw_world_def;
 
 /* step 1 s, no source, blind traffic (a world built by hand has the traffic
@@ -193,6 +198,8 @@ fw_sensing_counts fw_world_sensing_counts(const fw_world *w);
 
 /* The background ships' watch (world/watch.h): encounters met, lapsed. */
 void fw_world_watch_counts(const fw_world *w, long *pairs, long *lapsed);
+/* The own ship's watch: ships met, lapsed. */
+void fw_world_own_watch_counts(const fw_world *w, long *pairs, long *lapsed);
 
 /* Every order given to the source's ships so far (reactions.h). */
 const fw_reaction *fw_world_reactions(const fw_world *w, int *n);
