@@ -63,6 +63,8 @@ static fw_status round_at(ams *a, double z, int *k, fw_error *err)
     *k = a->n - n_alive;
     /* the branches are made from this round's survivors only, never from a
      * particle made in this round: the parents are fixed before any copy */
+    if (a->n < 1) /* fw_ams_check holds particles >= 2: here for the compiler's bounds */
+        return fw_fail(err, FW_ERUN, "splitting with %d particles", a->n);
     fw_ams_sim *made = calloc((size_t)a->n, sizeof *made);
     if (!made)
         return fw_fail(err, FW_ERUN, "out of memory");
