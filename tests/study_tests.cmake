@@ -51,6 +51,9 @@ fw_script_test(cli_sweep_not_db 0 "ok: refused" sweep_not_db.sh)
 # a study with splitting end to end, and its closest path replayed (fairway worst --splits)
 fw_script_test(split_worst 0 "ok: splitting's closest path replayed" split_worst.sh)
 list(APPEND fw_sweep_tests split_worst)
+# splitting over the own ship's watch (world/watch.h) as the only randomness
+fw_script_test(watch_split 0 "ok: splitting over the own ship's watch" watch_split.sh)
+list(APPEND fw_sweep_tests watch_split)
 # a study with an axis over a scenario key, swept and reported
 fw_script_test(sweep_axes 0 "ok: axes swept, recorded, reported" sweep_axes.sh)
 list(APPEND fw_sweep_tests sweep_axes)
