@@ -2,12 +2,12 @@
 # fuzz/run.sh [SECONDS] [TARGET...] - build the libFuzzer targets and run each
 # for SECONDS (default 60), one after the other, under ASan and UBSan.
 #
-#   targets: fuzz_yaml fuzz_ship fuzz_scenario fuzz_study fuzz_demand fuzz_ais (default all)
+#   targets: fuzz_yaml fuzz_ship fuzz_scenario fuzz_study fuzz_demand fuzz_ais fuzz_json (default all)
 #   FUZZ_BUILD  build directory (default build/fuzz, configured with clang)
 #   FUZZ_NICE   nice level of the fuzzers (default 19)
 #
 # Seeds are the shipped data files (ships, scenarios, studies, demands, AIS
-# CSVs: fuzz_ais uses fuzz/ais.dict, the others fuzz/yaml.dict); each
+# CSVs, DNV's situations: fuzz_ais uses fuzz/ais.dict, fuzz_json fuzz/json.dict, the others fuzz/yaml.dict); each
 # target keeps what it finds in FUZZ_BUILD/corpus/TARGET, so a later run
 # starts from there.  Crashes, leaks and UB stop the target, leave the input
 # in FUZZ_BUILD/artifacts/ and make this script exit 1.  Each target's
@@ -17,7 +17,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_yaml fuzz_ship fuzz_scenario fuzz_study fuzz_demand fuzz_ais)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_yaml fuzz_ship fuzz_scenario fuzz_study fuzz_demand fuzz_ais fuzz_json)
 build=${FUZZ_BUILD:-build/fuzz}
 nice_level=${FUZZ_NICE:-19}
 export SUMO_HOME=${SUMO_HOME:-/usr/share/sumo}
@@ -38,6 +38,7 @@ seed() { # seed TARGET DIR: the shipped files a target reads
                    for f in scenarios/ais/*.csv tests/data/ais/*.csv; do
                      for m in 0 2 6; do
                        { printf "\\$(printf %o $m)"; head -c 12000 "$f"; } > "$dir/$m-$(basename "$f")"; done; done ;;
+    fuzz_json)     cp scenarios/dnv/*.json "$dir"/ ;;
     fuzz_yaml)     # first byte: which edits to try (all)
                    for f in scenarios/*/*.yaml networks/*/demand.yaml; do
                      { printf '\377'; cat "$f"; } > "$dir/$(basename "$(dirname "$f")")-$(basename "$f")"; done ;;
@@ -52,6 +53,7 @@ for t in "${targets[@]}"; do
   echo "== $t: $seconds s"
   dict=fuzz/yaml.dict
   [ "$t" != fuzz_ais ] || dict=fuzz/ais.dict
+  [ "$t" != fuzz_json ] || dict=fuzz/json.dict
   rc=0
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     nice -n "$nice_level" "$build/fuzz/$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \

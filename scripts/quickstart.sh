@@ -18,7 +18,7 @@ mode=${1:-main}
 packages=(build-essential cmake pkg-config libyaml-dev libsundials-dev libsqlite3-dev sqlite3
           sumo sumo-tools python3 python3-matplotlib python3-pandas python3-numpy python3-yaml
           libopenmpi-dev openmpi-bin clang libclang-rt-14-dev xvfb xauth python3-pil
-          libproj-dev)
+          libproj-dev libjansson-dev python3-jsonschema)
 
 missing=()
 for p in "${packages[@]}"; do
