@@ -285,50 +285,10 @@ static void test_take_give_back_kinematic(void)
     fw_world_destroy(w);
 }
 
-/* The reactive traffic gives way to a taken ship: g crosses ahead of t,
- * which is on its starboard side (rule 15), on a collision course; t is a
- * vessel from t = 0, so only the world's vessels can show it to g. */
-static void test_traffic_reacts_to_taken(void)
-{
-    fw_error err = {0};
-    double v = fw_kn_to_ms(8);
-    fw_kin_ship ks[2] = {
-        {.start = {.id = "t", .east = 0, .north = 0, .course = 0.0, .speed = v, .length = 150,
-                   .breadth = 25}},
-        {.start = {.id = "g", .east = -3000, .north = 3000, .course = 0.5 * FW_PI, .speed = v,
-                   .length = 150, .breadth = 25}}};
-    fw_kinematic_def kd = fw_default_kinematic_def();
-    kd.ships = ks;
-    kd.n = 2;
-    fw_world_def wd = fw_default_world_def();
-    wd.reactions = fw_default_reactions_def(); /* colregs */
-    fw_world *w = NULL;
-    CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
-    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
-    fw_vessel_def own = nomoto_def("own", FW_ROLE_OWN, 0, -30000, 180, 5); /* far away */
-    CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
-    fw_vessel_def td = fw_default_vessel_def();
-    td.ship = &c3p;
-    td.dynamics = FW_DYN_NOMOTO;
-    fw_vessel_handle ht;
-    CHECK_MSG(fw_world_take(w, "t", &td, &ht, &err) == FW_OK, "%s", err.msg);
-    CHECK(fw_world_start(w, &err) == FW_OK);
-    for (int k = 0; k < 30; k++)
-        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
-    int n;
-    const fw_reaction *r = fw_world_reactions(w, &n);
-    CHECK_MSG(n >= 1, "%d reactions", n);
-    if (n >= 1) {
-        CHECK(strcmp(r[0].ship, "g") == 0 && strcmp(r[0].other, "t") == 0);
-        CHECK(r[0].kind == FW_REACT_SLOW && r[0].speed_to < v);
-    }
-    fw_world_destroy(w);
-}
-
-/* The crossing of test_traffic_reacts_to_taken (g must give way to t, taken
- * by fairway) with g's watch as given: g's first slow-down order's time (NAN:
- * none in 120 s), and the watch's counts. */
-static double first_give_way_seed(fw_watch_def watch, uint64_t seed, long *pairs, long *lapsed)
+/* The crossing: t (taken by fairway, a Nomoto vessel) sailing north, g
+ * (the source's) crossing ahead of it from its port side; the own ship far
+ * away; g's watch as given, the world started. */
+static fw_world *crossing_world(fw_watch_def watch, uint64_t seed)
 {
     fw_error err = {0};
     double v = fw_kn_to_ms(8);
@@ -354,6 +314,35 @@ static double first_give_way_seed(fw_watch_def watch, uint64_t seed, long *pairs
     td.dynamics = FW_DYN_NOMOTO;
     CHECK_MSG(fw_world_take(w, "t", &td, NULL, &err) == FW_OK, "%s", err.msg);
     CHECK(fw_world_start(w, &err) == FW_OK);
+    return w;
+}
+
+/* The reactive traffic gives way to a taken ship: g crosses ahead of t,
+ * which is on its starboard side (rule 15), on a collision course; t is a
+ * vessel from t = 0, so only the world's vessels can show it to g. */
+static void test_traffic_reacts_to_taken(void)
+{
+    fw_error err = {0};
+    fw_world *w = crossing_world(fw_default_watch_def(), fw_default_world_def().seed);
+    for (int k = 0; k < 30; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    int n;
+    const fw_reaction *r = fw_world_reactions(w, &n);
+    CHECK_MSG(n >= 1, "%d reactions", n);
+    if (n >= 1) {
+        CHECK(strcmp(r[0].ship, "g") == 0 && strcmp(r[0].other, "t") == 0);
+        CHECK(r[0].kind == FW_REACT_SLOW && r[0].speed_to < fw_kn_to_ms(8));
+    }
+    fw_world_destroy(w);
+}
+
+/* The crossing of test_traffic_reacts_to_taken (g must give way to t, taken
+ * by fairway) with g's watch as given: g's first slow-down order's time (NAN:
+ * none in 120 s), and the watch's counts. */
+static double first_give_way_seed(fw_watch_def watch, uint64_t seed, long *pairs, long *lapsed)
+{
+    fw_error err = {0};
+    fw_world *w = crossing_world(watch, seed);
     for (int k = 0; k < 120; k++)
         CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
     int n;
