@@ -1,7 +1,9 @@
 #include "core/rng.h"
 
 #include <math.h>
+#include <string.h>
 
+#include "core/hash.h"
 #include "core/units.h"
 
 /* Philox's multipliers and Weyl key increments (Salmon et al., SC'11, and
@@ -44,10 +46,9 @@ void fw_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2], uint32_t out
 
 uint32_t fw_rng_vessel_key(const char *id)
 {
-    uint32_t h = 2166136261u; /* FNV-1a, 32 bits */
-    for (const unsigned char *p = (const unsigned char *)id; *p; p++)
-        h = (h ^ *p) * 16777619u;
-    return h ? h : 1u;
+    uint64_t h = fw_fnv1a(FW_FNV_INIT, id, strlen(id)); /* core/hash.h's FNV-1a, folded */
+    uint32_t k = (uint32_t)(h ^ (h >> 32));
+    return k ? k : 1u;
 }
 
 fw_rng fw_rng_make(uint64_t run_seed, uint32_t vessel, fw_purpose purpose)

@@ -80,8 +80,8 @@ typedef struct {
     uint64_t counter; /* counter words 0-1: the next draw's block */
 } fw_rng;
 
-/* The key of a vessel with this id: the FNV-1a hash of the id (never 0,
- * which is the own ship's).  The same in every run of a replication, so the
+/* The key of a vessel with this id: the FNV-1a hash of the id (core/hash.h)
+ * folded to 32 bits (never 0, which is the own ship's).  The same in every run of a replication, so the
  * common random numbers hold (above). */
 uint32_t fw_rng_vessel_key(const char *id);
 
