@@ -81,8 +81,8 @@ typedef struct {
 } fw_rng;
 
 /* The key of a vessel with this id: the FNV-1a hash of the id (core/hash.h)
- * folded to 32 bits (never 0, which is the own ship's).  The same in every run of a replication, so the
- * common random numbers hold (above). */
+ * folded to 32 bits (never 0, which is the own ship's).  The same in every
+ * run of a replication, so the common random numbers hold (above). */
 uint32_t fw_rng_vessel_key(const char *id);
 
 /* Where an element of the world takes its streams: the world's table
