@@ -55,7 +55,7 @@ fw_script_test(env_run 0 "ok: the current carries the own ship" env_run.sh)
 set_tests_properties(env_run PROPERTIES ENVIRONMENT "${fw_lsan}")
 foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0, 10\\]"
             "both:27: environment.current.tidal: give a uniform current .* or a tidal stream, not both"
-            "wind:27: environment.wind: .*no windage particulars"
+            "wind:28: environment.wind: .*Nomoto dynamics have no wind force"
             "period:27: environment.current.tidal.period_h: 0 is out of range \\[1, 48\\]"
             "sensemode:26: sensing.mode: 'radar' is not a sensing mode \\(perfect or ais\\)"
             "dropout:26: sensing.dropout: 1.5 is out of range \\[0, 1\\]"
@@ -72,8 +72,13 @@ fw_cli_test(cli_manoeuvre_current 0 "drift 360 -> 720 deg  1251.3 m in 1216.2 s 
             manoeuvre turning --ship c3 --speed 12 --rudder 35 --current 2,090)
 fw_cli_test(cli_manoeuvre_bad_current 2 "--current: give KN,DEG" manoeuvre turning --ship c3
             --speed 12 --rudder 35 --current 12,090)
-fw_cli_test(cli_manoeuvre_wind 2 "--wind: no ship has windage particulars" manoeuvre turning
+fw_cli_test(cli_manoeuvre_wind 0 "in a wind of 20.00 kn from 270 deg" manoeuvre turning
             --ship c3 --speed 12 --rudder 35 --wind 20,270)
+fw_cli_test(cli_manoeuvre_bad_wind 2 "--wind: give KN,DEG, the speed \\(0 to 100 kn\\)"
+            manoeuvre zigzag --ship c3 --speed 12 --angle 10 --wind -5,270)
+fw_cli_test(cli_manoeuvre_wind_no_windage 2 "no-windage.yaml has no windage: section"
+            manoeuvre zigzag --ship ${CMAKE_CURRENT_SOURCE_DIR}/data/env/no-windage.yaml
+            --speed 12 --angle 10 --wind 20,270)
 # The own ship deciding on AIS reports (sense/sensing.h)
 fw_script_test(sensing_run 0 "ok: the own ship decides on AIS reports" sensing_run.sh)
 set_tests_properties(sensing_run PROPERTIES ENVIRONMENT "${fw_lsan}")

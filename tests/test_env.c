@@ -15,7 +15,8 @@
  *     generalised) decides as the plain reference search does, to the bit
  *   a turning circle in a uniform current: its 360 and 720 deg points
  *     current x time apart, its IMO measures (in the water) the calm ones
- *   a world refuses a wind (no ship has windage yet) and a bad field
+ *   a world refuses a wind on a ship without windage or with Nomoto
+ *     dynamics, and a bad field
  */
 #include <math.h>
 #include <stdlib.h>
@@ -487,12 +488,21 @@ static void test_refusals(void)
     fw_env still = fw_default_env();
     fw_wind_at(&still.wind, 0, 0, 0, &ws, &wf);
     CHECK(ws == 0.0);
+    fw_ship bare = mmg;
+    bare.windage.present = false;
     fw_vessel_def vd = fw_default_vessel_def();
-    vd.ship = &mmg;
+    vd.ship = &bare;
     fw_vessel *v = NULL;
     CHECK(add_vessel(w, &vd, &v, &err) == FW_EINPUT && v == NULL);
     CHECK_MSG(strstr(err.msg, "windage") && strstr(err.msg, "refused"), "%s", err.msg);
+    vd.ship = &mmg; /* with windage, but Nomoto dynamics: no wind term */
+    vd.dynamics = FW_DYN_NOMOTO;
+    CHECK(add_vessel(w, &vd, &v, &err) == FW_EINPUT && v == NULL);
+    CHECK_MSG(strstr(err.msg, "Nomoto") && strstr(err.msg, "refused"), "%s", err.msg);
+    vd.dynamics = FW_DYN_MMG; /* an MMG ship with windage sails in it */
+    CHECK_MSG(add_vessel(w, &vd, &v, &err) == FW_OK, "%s", err.msg);
     fw_world_destroy(w);
+    vd.ship = &bare;
     /* still air and a calm wind of 0 m/s are accepted */
     wd.env.wind.speed = 0.0;
     CHECK(fw_world_create(&wd, &w, &err) == FW_OK);

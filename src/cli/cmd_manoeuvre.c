@@ -43,7 +43,13 @@ static void help(void)
         "            advance, transfer and tactical diameter are measured in the water\n"
         "            (the drift taken out), and a turn goes on to 720 deg and prints the\n"
         "            drift between its 360 and 720 deg points (current x time).\n"
-        "            --wind is refused: no ship has windage particulars yet.\n"
+        "--wind KN,DEG  a uniform wind of KN knots (0 to 100) blowing FROM DEG (20,270:\n"
+        "            20 kn from the west), on the ship's windage (Blendermann 1994, the\n"
+        "            ship file's windage: section; a ship without one is refused): the\n"
+        "            ship drifts to leeward and turns; a turn goes on to 720 deg and\n"
+        "            prints the drift between its 360 and 720 deg points.  The IMO\n"
+        "            measures then include the wind's drift (only a current's is taken\n"
+        "            out).  Not with report (the trial's calm water).\n"
         "--csv FILE  time history: t_s, east_m, north_m, heading_deg, u_mps, v_mps,\n"
         "            r_degps, rudder_deg, helm_deg, propeller_rps (midship point, one\n"
         "            row per 0.5 s, start at the origin heading north).\n"
@@ -113,18 +119,22 @@ static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
                          !(o->current[1] >= 0.0 && o->current[1] <= 360.0)))
         return fw_fail(err, FW_EINPUT, "--current: give KN,DEG, the speed (0 to 10 kn) and the "
                                        "direction it sets towards (0 to 360 deg), as 2,090");
-    if (o->n_wind)
-        /* a wind would be ignored: said, not done */
-        return fw_fail(err, FW_EINPUT, "--wind: no ship has windage particulars (lateral and "
-                                       "frontal areas) yet, so fairway has no wind forces to apply");
+    if (o->n_wind && (o->n_wind != 2 || !(o->wind[0] >= 0.0 && o->wind[0] <= 100.0) ||
+                      !(o->wind[1] >= 0.0 && o->wind[1] <= 360.0)))
+        return fw_fail(err, FW_EINPUT, "--wind: give KN,DEG, the speed (0 to 100 kn) and the "
+                                       "direction it blows from (0 to 360 deg), as 20,270");
     return FW_OK;
 }
 
-/* The stepper of a manoeuvre in the --current given (calm water without). */
+/* The stepper of a manoeuvre in the --current and --wind given (calm water
+ * and still air without). */
 static void set_current(const opts *o, fw_stepper_def *sd)
 {
     if (o->n_current == 2)
         sd->current = fw_current_uniform(fw_kn_to_ms(o->current[0]), fw_deg_to_rad(o->current[1]));
+    if (o->n_wind == 2)
+        sd->wind = (fw_wind){.kind = FW_FIELD_UNIFORM, .speed = fw_kn_to_ms(o->wind[0]),
+                             .from = fw_deg_to_rad(o->wind[1])};
 }
 
 static double side_sign(const char *side) { return strcmp(side, "port") == 0 ? -1.0 : 1.0; }
@@ -215,29 +225,41 @@ static int run_turning(const fw_ship *ship, const opts *o, fw_error *err)
     d.speed = fw_kn_to_ms(o->speed);
     d.rudder = side_sign(o->side) * fw_deg_to_rad(o->rudder);
     /* in a current, on to 720 deg: the drift between the 360 and 720 deg points */
-    d.max_turn = fw_deg_to_rad(o->n_current ? 730.0 : 540.0);
+    bool drifts = o->n_current || o->n_wind;
+    d.max_turn = fw_deg_to_rad(drifts ? 730.0 : 540.0);
     set_current(o, &d.stepper);
     fw_turning_result r;
     fw_history h = {0};
     if (csv_out(&h, o, fw_turning_run(ship, &d, &r, o->csv ? &h : NULL, err), err))
         return fw_report(err);
-    char extra[256] = "";
+    char extra[384] = "";
+    size_t k = 0;
     if (o->n_current)
-        snprintf(extra, sizeof extra,
-                 ", \"current_kn\": %.3f, \"current_towards_deg\": %.1f, \"drift_m\": %.2f, "
-                 "\"drift_s\": %.2f, \"drift_towards_deg\": %.2f",
-                 o->current[0], o->current[1], r.drift, r.t_drift,
-                 fw_rad_to_deg(r.drift_towards));
+        k += (size_t)snprintf(extra, sizeof extra,
+                              ", \"current_kn\": %.3f, \"current_towards_deg\": %.1f",
+                              o->current[0], o->current[1]);
+    if (o->n_wind)
+        k += (size_t)snprintf(extra + k, sizeof extra - k,
+                              ", \"wind_kn\": %.3f, \"wind_from_deg\": %.1f", o->wind[0],
+                              o->wind[1]);
+    if (drifts)
+        snprintf(extra + k, sizeof extra - k,
+                 ", \"drift_m\": %.2f, \"drift_s\": %.2f, \"drift_towards_deg\": %.2f",
+                 r.drift, r.t_drift, fw_rad_to_deg(r.drift_towards));
     if (o->json) {
         print_turning_json(ship, d.speed, d.rudder, &r, extra), printf("\n");
         return 0;
     }
     print_turning_text(ship, d.speed, d.rudder, &r);
     if (o->n_current)
-        printf("  in a current of %.2f kn towards %03.0f deg (measures above: the water's)\n"
-               "  drift 360 -> 720 deg %7.1f m in %.1f s towards %03.0f deg (%.2f kn)\n",
-               o->current[0], o->current[1], r.drift, r.t_drift,
-               fw_rad_to_deg(r.drift_towards), fw_ms_to_kn(r.drift / r.t_drift));
+        printf("  in a current of %.2f kn towards %03.0f deg (measures above: the water's)\n",
+               o->current[0], o->current[1]);
+    if (o->n_wind)
+        printf("  in a wind of %.2f kn from %03.0f deg (its drift is in the measures above)\n",
+               o->wind[0], o->wind[1]);
+    if (drifts)
+        printf("  drift 360 -> 720 deg %7.1f m in %.1f s towards %03.0f deg (%.2f kn)\n", r.drift,
+               r.t_drift, fw_rad_to_deg(r.drift_towards), fw_ms_to_kn(r.drift / r.t_drift));
     return 0;
 }
 
@@ -506,6 +528,9 @@ int fw_cmd_manoeuvre(int argc, char **argv)
     if (o.have_angle && fw_deg_to_rad(o.angle) > ship.rudder_max * (1 + 1e-12))
         return fw_report((fw_fail(&err, FW_EINPUT, "--angle: %g deg is beyond %s's maximum rudder of %g deg",
                                   o.angle, ship.name, fw_rad_to_deg(ship.rudder_max)), &err));
+    if (report && o.n_wind)
+        return fw_report((fw_fail(&err, FW_EINPUT, "--wind: not with report, which compares "
+                                                   "with the sea trial's calm water"), &err));
     if (report)
         return run_report(&ship, &o, &err);
     if (strcmp(kind, "turning") == 0)

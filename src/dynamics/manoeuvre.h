@@ -47,7 +47,8 @@ typedef struct fw_turning_result {
     double L;                /* m, for the IMO ratios */
     /* the ground track's 720 deg point from its 360 deg point (a turn of at
      * least 720 deg: max_turn): the drift of the steady circle, zero in calm
-     * water and current x t_drift in a uniform current; NAN when not reached.
+     * water and current x t_drift in a uniform current, plus the wind's drift
+     * in a wind (stepper def); NAN when not reached.
      * advance, transfer and tactical diameter are the water's (the
      * current's drift taken out, MSC/Circ.1053 3.4.2.3). */
     double drift, t_drift;   /* m, s */

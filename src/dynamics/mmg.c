@@ -87,6 +87,12 @@ void fw_mmg_forces_eval(const fw_ship *s, const fw_mmg_state *x, double n, fw_mm
 
 void fw_mmg_derivs(const fw_ship *s, const fw_mmg_state *x, double n, double out[6])
 {
+    fw_mmg_derivs_ext(s, x, n, NULL, out);
+}
+
+void fw_mmg_derivs_ext(const fw_ship *s, const fw_mmg_state *x, double n, const double ext[3],
+                       double out[6])
+{
     fw_mmg_forces f;
     forces(s, x, n, &f, false);
     const double L = s->L, d = s->d, rho = s->rho;
@@ -101,6 +107,8 @@ void fw_mmg_derivs(const fw_ship *s, const fw_mmg_state *x, double n, double out
     double X = f.X_H + f.X_P + f.X_R;
     double Y = f.Y_H + f.Y_R;
     double N = f.N_H + f.N_R;
+    if (ext) /* only then: calm water keeps its bits */
+        X += ext[0], Y += ext[1], N += ext[2];
 
     double udot = (X + (m + my) * vm * r + xg * m * r * r) / (m + mx);
     /* [m + my, xg m; xg m, Izg + xg^2 m + Jz] [vdot; rdot] = [b1; b2] */
@@ -118,6 +126,17 @@ void fw_mmg_derivs(const fw_ship *s, const fw_mmg_state *x, double n, double out
     out[3] = u * sn + vm * c; /* east */
     out[4] = u * c - vm * sn; /* north */
     out[5] = r;
+}
+
+void fw_mmg_wind(const fw_ship *s, const fw_mmg_state *x, double ce, double cn, double speed,
+                 double from, double out[3])
+{
+    /* over ground: through the water plus the water */
+    double sp = sin(x->psi), cp = cos(x->psi);
+    double ve = x->u * sp + x->vm * cp + ce, vn = x->u * cp - x->vm * sp + cn;
+    double V, gamma;
+    fw_apparent_wind(speed, from, x->psi, ve, vn, &V, &gamma);
+    fw_windage_force(&s->windage, V, gamma, &out[0], &out[1], &out[2]);
 }
 
 fw_status fw_mmg_propeller_for_speed(const fw_ship *s, double U, double *n, fw_error *err)

@@ -8,6 +8,11 @@
  * water: in a current (dynamics/stepper.h) the forces are the same functions
  * of them and fw_mmg_derivs' east and north rates are through the water (the
  * stepper adds the current).
+ *
+ * Wind (fw_mmg_wind): Blendermann's forces and moment (ship/windage.h) from
+ * the apparent wind, the true wind less the ship's velocity OVER GROUND (the
+ * air does not move with the water), acting at midship's axes and added to
+ * the hull's, propeller's and rudder's (fw_mmg_derivs_ext).
  */
 #ifndef FW_MMG_H
 #define FW_MMG_H
@@ -41,6 +46,17 @@ void fw_mmg_forces_eval(const fw_ship *ship, const fw_mmg_state *s, double n,
  * delta is the rudder angle used) and propeller speed n; east and north
  * relative to the water. */
 void fw_mmg_derivs(const fw_ship *ship, const fw_mmg_state *s, double n, double out[6]);
+
+/* The same with external forces ext = {X, Y, N} (N, N, N m, body axes) added
+ * to the ship's; ext NULL: fw_mmg_derivs, bit for bit. */
+void fw_mmg_derivs_ext(const fw_ship *ship, const fw_mmg_state *s, double n, const double ext[3],
+                       double out[6]);
+
+/* The wind's X, Y, N on the ship (its windage must be present) in state s,
+ * in a current (ce, cn) m/s east, north at the ship, for a true wind of
+ * `speed` m/s from `from` (rad, navigational). */
+void fw_mmg_wind(const fw_ship *ship, const fw_mmg_state *s, double ce, double cn, double speed,
+                 double from, double out[3]);
 
 /* Propeller speed (rev/s) that balances surge in straight running at U (m/s):
  * X_H(U, 0, 0) + X_P = 0.  Fails (FW_ERUN) if no positive solution exists. */

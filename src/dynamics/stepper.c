@@ -44,6 +44,8 @@ struct fw_stepper {
     void *ark;
     bool started;
     bool drift;        /* a current moves the water (else the calm right-hand side) */
+    bool windy;        /* a wind blows (else no wind force, not even a zero one) */
+    double wind_speed, wind_from; /* m/s, rad: the wind now (fw_stepper_set_wind) */
 
     double t;          /* current time (the state below is at t) */
     fw_mmg_state s;
@@ -67,6 +69,7 @@ fw_stepper_def fw_default_stepper_def(void)
         .atol_pos = 1e-5,
         .max_step = 0.0,
         .current = {.kind = FW_FIELD_NONE},
+        .wind = {.kind = FW_FIELD_NONE},
     };
     return d;
 }
@@ -84,12 +87,18 @@ static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
     const sunrealtype *v = N_VGetArrayPointer(y);
     fw_mmg_state s = {.u = v[0], .vm = v[1], .r = v[2], .east = v[3], .north = v[4],
                       .psi = v[5], .delta = rudder_at(st, t)};
-    double d[NEQ];
-    fw_mmg_derivs(st->ship, &s, st->n, d);
+    double d[NEQ], ce = 0.0, cn = 0.0;
+    if (st->drift)
+        fw_current_at(&st->def.current, v[3], v[4], t, &ce, &cn);
+    if (st->windy) {
+        double wind[3];
+        fw_mmg_wind(st->ship, &s, ce, cn, st->wind_speed, st->wind_from, wind);
+        fw_mmg_derivs_ext(st->ship, &s, st->n, wind, d);
+    } else {
+        fw_mmg_derivs(st->ship, &s, st->n, d);
+    }
     if (st->drift) {
         /* over ground: through the water plus the water (stepper.h) */
-        double ce, cn;
-        fw_current_at(&st->def.current, v[3], v[4], t, &ce, &cn);
         d[3] += ce;
         d[4] += cn;
     }
@@ -135,11 +144,13 @@ fw_status fw_stepper_create(const fw_ship *ship, const fw_stepper_def *def, fw_s
         free(st);
         return fw_fail(err, FW_EINPUT, "stepper tolerances must be positive");
     }
-    fw_env env = {.current = st->def.current};
-    if (fw_env_check(&env, err)) {
+    fw_env env = {.current = st->def.current, .wind = st->def.wind};
+    if (fw_env_check(&env, err) || fw_env_check_vessel(&env, "stepper", ship, true, err)) {
         free(st);
         return FW_EINPUT;
     }
+    st->windy = !fw_wind_is_calm(&st->def.wind);
+    fw_wind_at(&st->def.wind, 0.0, 0.0, 0.0, &st->wind_speed, &st->wind_from);
     if (SUNContext_Create(NULL, &st->ctx)) {
         free(st);
         return fw_fail(err, FW_ERUN, "SUNContext_Create failed");
@@ -277,6 +288,16 @@ void fw_stepper_set_helm(fw_stepper *st, double helm)
         return;
     st->helm = helm;
     new_segment(st);
+}
+
+void fw_stepper_set_wind(fw_stepper *st, double speed, double from)
+{
+    if (!st->windy || !isfinite(speed) || speed < 0.0 || !isfinite(from) ||
+        (speed == st->wind_speed && from == st->wind_from))
+        return;
+    st->wind_speed = speed;
+    st->wind_from = from;
+    st->need_reinit = true;
 }
 
 void fw_stepper_set_propeller(fw_stepper *st, double n)

@@ -30,6 +30,13 @@
  * A field that varies in space adds (V_r . grad) V_c to what the hull sees
  * and is for the kind that brings it (env.h).  With no current the
  * right-hand side is the calm one, operation for operation.
+ *
+ * In a wind (the def's `wind`, not calm; the ship must have windage
+ * particulars, ship/windage.h) Blendermann's forces from the apparent wind
+ * (mmg.h fw_mmg_wind: true wind less the velocity over ground) are added to
+ * the ship's.  The wind's speed and direction are inputs like the helm: held
+ * between fw_stepper_set_wind calls (a gust, env.h), each change a
+ * re-initialisation.  Still air: no wind term at all, the calm bits.
  */
 #ifndef FW_STEPPER_H
 #define FW_STEPPER_H
@@ -45,6 +52,7 @@ typedef struct fw_stepper_def {
     double atol_pos;  /* m: absolute tolerance on east, north, and psi*L */
     double max_step;  /* s, 0 = no limit */
     fw_current current; /* the water's motion (none: calm water) */
+    fw_wind wind;       /* the air's (none: still air; needs the ship's windage) */
 } fw_stepper_def;
 
 fw_stepper_def fw_default_stepper_def(void);
@@ -64,6 +72,9 @@ fw_status fw_stepper_start(fw_stepper *st, double t0, const fw_mmg_state *s0, do
 /* Helm order (rad, clamped to +-rudder_max).  Takes effect at the current time. */
 void fw_stepper_set_helm(fw_stepper *st, double helm);
 void fw_stepper_set_propeller(fw_stepper *st, double n);
+/* The wind now (m/s, from rad), held until the next call; ignored (as is the
+ * wind) when the def's wind is calm: a wind cannot start blowing later. */
+void fw_stepper_set_wind(fw_stepper *st, double speed, double from);
 
 /* Advances by dt seconds.  FW_ERUN with a message if the integration fails. */
 fw_status fw_stepper_advance(fw_stepper *st, double dt, fw_error *err);

@@ -129,14 +129,20 @@ bool fw_wind_is_calm(const fw_wind *w)
     return w->kind == FW_FIELD_NONE || w->speed == 0.0;
 }
 
-fw_status fw_env_check_vessel(const fw_env *e, const char *vessel, const char *ship,
+fw_status fw_env_check_vessel(const fw_env *e, const char *vessel, const fw_ship *ship, bool mmg,
                               fw_error *err)
 {
-    if (fw_wind_is_calm(&e->wind))
+    if (fw_wind_is_calm(&e->wind) || (mmg && ship->windage.present))
         return FW_OK;
+    if (!mmg)
+        return fw_fail(err, FW_EINPUT,
+                       "vessel '%s' (ship '%s'): the world has a wind of %.3g m/s, but Nomoto "
+                       "dynamics have no wind force; a wind would be ignored, so it is refused "
+                       "(give the vessel MMG dynamics)",
+                       vessel, ship->name, e->wind.speed);
     return fw_fail(err, FW_EINPUT,
-                   "vessel '%s' (ship '%s'): the world has a wind of %.3g m/s, but the ship has "
-                   "no windage particulars (lateral and frontal areas) and fairway has no wind "
-                   "forces yet; a wind would be ignored, so it is refused",
-                   vessel, ship, e->wind.speed);
+                   "vessel '%s' (ship '%s'): the world has a wind of %.3g m/s, but the ship file "
+                   "%s has no windage: section (type, A_F, A_L, s_L: ship/windage.h); a wind "
+                   "would be ignored, so it is refused",
+                   vessel, ship->name, e->wind.speed, ship->file);
 }

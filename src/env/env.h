@@ -15,12 +15,15 @@
  * default; spring/neap modulation of the rate is for the next issue).
  *
  * Wind: speed (m/s) and the direction it blows FROM (navigational, rad), the
- * convention of weather reports and of the DNV schema's windDirection.  The
- * field exists and can be queried, but NO WIND FORCE ACTS ON ANY HULL YET:
- * wind forces need windage particulars (lateral and frontal areas, their
- * heights; Fujiwara/Blendermann coefficients) that ship files do not have
- * (issue 24 adds them).  So that a wind is never silently ignored, a world
- * refuses a vessel while its wind is not calm (fw_env_check_vessel).
+ * convention of weather reports and of the DNV schema's windDirection.  It
+ * acts on MMG hulls whose ship has windage particulars (ship/windage.h:
+ * Blendermann 1994, from the apparent wind; dynamics/stepper.h).  A vessel
+ * the wind could not act on -- an MMG ship without windage, or a vessel with
+ * Nomoto dynamics, which have no wind term -- is refused while the wind is
+ * not calm (fw_env_check_vessel), so that a wind is never silently ignored.
+ * Background ships of the traffic source (SUMO, a track, the kinematic
+ * lanes) are not vessels of the world: wind does nothing to them; their
+ * tracks are the source's (the current does not move them either).
  */
 #ifndef FW_ENV_H
 #define FW_ENV_H
@@ -28,6 +31,7 @@
 #include <stdbool.h>
 
 #include "core/error.h"
+#include "ship/ship.h"
 
 typedef enum fw_field_kind {
     FW_FIELD_NONE,     /* calm water / still air */
@@ -88,10 +92,11 @@ void fw_wind_at(const fw_wind *w, double east, double north, double t, double *s
 /* None, or a speed of exactly zero. */
 bool fw_wind_is_calm(const fw_wind *w);
 
-/* Can a vessel of this ship (its name, for the message) sail in e?  No ship
- * has windage particulars yet (see above): FW_EINPUT while the wind is not
- * calm, with a message that says so. */
-fw_status fw_env_check_vessel(const fw_env *e, const char *vessel, const char *ship,
+/* Can a vessel of this ship (vessel: its name, for the message) sail in e?
+ * mmg: its dynamics are MMG's (else Nomoto's, which have no wind term).
+ * FW_EINPUT, saying why, while the wind is not calm and the vessel is not an
+ * MMG ship with windage particulars. */
+fw_status fw_env_check_vessel(const fw_env *e, const char *vessel, const fw_ship *ship, bool mmg,
                               fw_error *err);
 
 #endif

@@ -68,7 +68,7 @@ fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s
                                 .from = fw_deg_to_rad(from)};
         /* said here, where the file has it, rather than when the run starts */
         fw_error e3 = {0};
-        if (fw_env_check_vessel(&s->env, "own ship", s->ship.name, &e3))
+        if (fw_env_check_vessel(&s->env, "own ship", &s->ship, !s->nomoto_plant, &e3))
             return yt_fail_key(doc, e, "environment", "wind", err, "%s",
                                strchr(e3.msg, ':') ? strchr(e3.msg, ':') + 2 : e3.msg);
     }

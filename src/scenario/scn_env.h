@@ -12,8 +12,8 @@
  * TOWARDS its direction and the wind blows FROM its own, as charts and
  * weather reports (and DNV's maritime-schema) give them.  Bounds: a current
  * of 0 to 10 kn, a period of 1 to 48 h, a wind of 0 to 100 kn.  A wind that
- * is not calm is refused here, located, while the own ship's ship has no
- * windage particulars (env.h fw_env_check_vessel: no ship has them yet).
+ * is not calm is refused here, located, when the own ship's ship file has no
+ * windage: section or its dynamics are Nomoto's (env.h fw_env_check_vessel).
  * The own ship must be loaded first (load_own).
  */
 #ifndef FW_SCENARIO_SCN_ENV_H

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/files.h" /* fw_data_root */
+#include "ship/windage.h"
 
 /* Basis terms of the Nomoto index regressions (paper equations 10 to 13).
  * U is the speed in knots and d the rudder angle magnitude in degrees. */
@@ -111,6 +112,10 @@ typedef struct fw_ship {
      * one side at small helm (c3-paper at 10 kn, 5 deg: 29 %), and `identify
      * --sides both` fits the sides apart; absent, nomoto serves both */
     fw_nomoto_kb nomoto_port;
+
+    /* above the water (ship file `windage:`, ship/windage.h); absent: a
+     * wind that is not calm is refused (env/env.h fw_env_check_vessel) */
+    fw_windage windage;
 } fw_ship;
 
 /* The knowledge base for a helm of this sign (> 0 starboard). */

@@ -169,11 +169,48 @@ static fw_status read_nomoto(const yt_doc *doc, const yt_node *root, const char 
     return FW_OK;
 }
 
+/* windage: {type: container_loaded, A_F: m^2, A_L: m^2, s_L: m} (windage.h),
+ * optional.  The areas are above the waterline: A_L at most Loa times 60 m,
+ * A_F at most B times 60 m, the centroid within half Loa of midship. */
+static fw_status read_windage(const yt_doc *doc, const yt_node *root, fw_ship *ship,
+                              fw_error *err)
+{
+    static const char *const allowed[] = {"type", "A_F", "A_L", "s_L", NULL};
+    const char *P = "windage";
+    const yt_node *map;
+    fw_status st = yt_opt_map(doc, root, "", P, &map, err);
+    if (st || !map)
+        return st;
+    fw_windage *w = &ship->windage;
+    char type[64];
+    if ((st = yt_check_keys(doc, map, P, allowed, err)) ||
+        (st = yt_req_string(doc, map, P, "type", type, sizeof type, err)))
+        return st;
+    if (!fw_windage_type_parse(type, &w->type)) {
+        char names[1024] = "";
+        for (int i = 0; i < FW_WT_COUNT; i++)
+            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", i ? ", " : "",
+                     fw_blendermann_table[i].name);
+        return yt_fail_key(doc, map, P, "type", err,
+                           "'%s' is not one of Blendermann's ship types (%s)", type, names);
+    }
+    double h = 60.0; /* m: no superstructure stands higher above the water */
+    if ((st = yt_req_number(doc, map, P, "A_F", 1e-4, ship->B * h, &w->A_F, err)) ||
+        (st = yt_req_number(doc, map, P, "A_L", 1e-4, ship->Loa * h, &w->A_L, err)) ||
+        (st = yt_req_number(doc, map, P, "s_L", -0.5 * ship->Loa, 0.5 * ship->Loa, &w->s_L,
+                            err)))
+        return st;
+    w->Loa = ship->Loa;
+    w->present = true;
+    return FW_OK;
+}
+
 static fw_status load_doc(const yt_doc *doc, fw_ship *ship, fw_error *err)
 {
     const yt_node *root = doc->root;
     static const char *const allowed[] = {"name", "description", "particulars", "hull",
-                                          "propeller", "rudder", "nomoto", "nomoto_port", NULL};
+                                          "propeller", "rudder", "nomoto", "nomoto_port",
+                                          "windage", NULL};
     fw_status st = yt_check_keys(doc, root, "", allowed, err);
     if (st)
         return st;
@@ -212,7 +249,8 @@ static fw_status load_doc(const yt_doc *doc, fw_ship *ship, fw_error *err)
         return fw_fail_at(err, doc->file, yt_key_line(rm, "A_R"), "rudder.A_R",
                           "rudder area above 10%% of L*d: check units");
     if ((st = read_nomoto(doc, root, "nomoto", &ship->nomoto, err)) ||
-        (st = read_nomoto(doc, root, "nomoto_port", &ship->nomoto_port, err)))
+        (st = read_nomoto(doc, root, "nomoto_port", &ship->nomoto_port, err)) ||
+        (st = read_windage(doc, root, ship, err)))
         return st;
     if (ship->nomoto_port.present && !ship->nomoto.present)
         return fw_fail_at(err, doc->file, yt_key_line(root, "nomoto_port"), "nomoto_port",

@@ -66,6 +66,7 @@ static fw_status init_mmg(fw_vessel *v, const fw_vessel_def *def, fw_error *err)
 {
     fw_stepper_def sd = fw_default_stepper_def();
     sd.current = v->env->current;
+    sd.wind = v->env->wind;
     fw_mmg_state x0 = fw_mmg_straight(def->speed, def->east, def->north, def->course);
     fw_status st;
     if ((st = fw_mmg_propeller_for_speed(def->ship, def->speed, &v->n_prop, err)) ||

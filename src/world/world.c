@@ -182,7 +182,8 @@ static fw_status add(fw_world *w, const fw_vessel_def *def, bool taken, int *i, 
     if (!st && !(v = calloc(1, sizeof *v)))
         st = fw_fail(err, FW_ERUN, "out of memory");
     if (!st && def->ship)
-        st = fw_env_check_vessel(&w->def.env, def->id ? def->id : "?", def->ship->name, err);
+        st = fw_env_check_vessel(&w->def.env, def->id ? def->id : "?", def->ship,
+                                 def->dynamics == FW_DYN_MMG, err);
     if (!st)
         st = fw_vessel_init(v, def, w->def.step, &w->def.env, err);
     if (st) {
