@@ -57,7 +57,7 @@ foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0,
             "both:27: environment.current.tidal: give a uniform current .* or a tidal stream, not both"
             "wind:28: environment.wind: .*Nomoto dynamics have no wind force"
             "period:27: environment.current.tidal.period_h: 0 is out of range \\[1, 48\\]"
-            "sensemode:26: sensing.mode: 'radar' is not a sensing mode \\(perfect or ais\\)"
+            "sensemode:26: sensing.mode: 'sonar' is not a sensing mode \\(perfect, ais, radar or ais\\+radar\\)"
             "dropout:26: sensing.dropout: 1.5 is out of range \\[0, 1\\]"
             "lapse:15: traffic.watch.lapse: 1.5 is out of range \\[0, 1\\]"
             "detect:15: traffic.watch.detect_s: -5 is out of range \\[0, 3600\\]"
@@ -79,6 +79,7 @@ fw_cli_test(cli_manoeuvre_bad_wind 2 "--wind: give KN,DEG, the speed \\(0 to 100
 fw_cli_test(cli_manoeuvre_wind_no_windage 2 "no-windage.yaml has no windage: section"
             manoeuvre zigzag --ship ${CMAKE_CURRENT_SOURCE_DIR}/data/env/no-windage.yaml
             --speed 12 --angle 10 --wind 20,270)
-# The own ship deciding on AIS reports (sense/sensing.h)
-fw_script_test(sensing_run 0 "ok: the own ship decides on AIS reports" sensing_run.sh)
+# The own ship deciding on AIS reports and on radar tracks (sense/sensing.h)
+fw_script_test(sensing_run 0 "ok: the own ship decides on AIS reports and on radar tracks"
+               sensing_run.sh)
 set_tests_properties(sensing_run PROPERTIES ENVIRONMENT "${fw_lsan}")

@@ -191,8 +191,14 @@ static void test_check(void)
     d.position_sd = -1.0;
     CHECK(fw_sensing_check(&d, &err) == FW_EINPUT);
     fw_sensing_mode m;
-    CHECK(fw_sensing_mode_parse("radar", &m) == FW_EINPUT);
+    CHECK(fw_sensing_mode_parse("sonar", &m) == FW_EINPUT);
     CHECK(fw_sensing_mode_parse("ais", &m) == FW_OK && m == FW_SENSE_AIS);
+    CHECK(fw_sensing_mode_parse("radar", &m) == FW_OK && m == FW_SENSE_RADAR);
+    CHECK(fw_sensing_mode_parse("ais+radar", &m) == FW_OK && m == FW_SENSE_AIS_RADAR);
+    d = fw_default_sensing_def();
+    d.radar.alpha = 0.0;
+    CHECK(fw_sensing_check(&d, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "alpha 0");
 }
 
 int main(void)

@@ -57,13 +57,15 @@ static inline uint64_t fw_splitmix64(uint64_t *s)
 /* What a stream is for: one each, named for the issues that add them.  The
  * values are part of the numbers drawn: append, never renumber. */
 typedef enum {
-    FW_PURPOSE_SENSING = 1,     /* noise on what a vessel senses (radar, AIS positions) */
+    FW_PURPOSE_SENSING = 1,     /* noise on AIS reports (sense/sensing.h) */
     FW_PURPOSE_AIS_DROPOUT = 2, /* AIS reports that do not arrive */
     FW_PURPOSE_WATCH = 3,       /* watchkeeping delay before a vessel acts */
     FW_PURPOSE_BEHAVIOUR = 4,   /* behaviour draws (whether and how a ship gives way) */
     FW_PURPOSE_GUST = 5,        /* wind gusts */
     FW_PURPOSE_CURRENT = 6,     /* turbulence of the current */
     FW_PURPOSE_SPLIT = 7,       /* splitting's own draws: parents, particles' streams (study/ams.h) */
+    FW_PURPOSE_RADAR = 8,       /* radar plots' range and bearing noise (sense/arpa.h) */
+    FW_PURPOSE_RADAR_DETECT = 9, /* whether a scan detects a ship (sense/arpa.h) */
     FW_PURPOSE_TEST = 255       /* tests and benchmarks only */
 } fw_purpose;
 

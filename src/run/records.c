@@ -182,6 +182,23 @@ static void str(FILE *f, const char *key, const char *v)
     fw_json_string(f, v);
 }
 
+/* "sensing": the own ship's sensor's counts (records.h); with a radar, its
+ * scans, plots, tracks and the rms error of the ships known, against the truth. */
+static void sensing_json(FILE *f, const fw_run_summary *s, const char *ind)
+{
+    const fw_sensing_counts *c = &s->sense;
+    fprintf(f, "%s  \"sensing\": {\"mode\": \"%s\"", ind, fw_sensing_mode_name(s->sense_mode));
+    if (s->sense_mode != FW_SENSE_RADAR)
+        fprintf(f, ", \"reports_sent\": %ld, \"lost\": %ld, \"arrived\": %ld", c->sent, c->lost,
+                c->arrived);
+    if (s->sense_mode == FW_SENSE_RADAR || s->sense_mode == FW_SENSE_AIS_RADAR)
+        fprintf(f, ", \"scanned\": %ld, \"plotted\": %ld, \"tracks\": %ld, \"tracks_lost\": %ld, "
+                   "\"position_error_rms_m\": %.1f",
+                c->scanned, c->plotted, c->tracks, c->tracks_lost,
+                c->err_n > 0 ? sqrt(c->err_sq / (double)c->err_n) : 0.0);
+    fprintf(f, "},\n");
+}
+
 /* The own speed against the knowledge base's fitted speeds (null: none). */
 static void kb_json(FILE *f, const fw_run_summary *s, const char *ind)
 {
@@ -250,8 +267,7 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
                 ind, s->ais_duplicates, s->ais_clashes, s->ais_clash_ships, s->ais_clash_first,
                 s->ais_unprojected);
     if (s->sensed)
-        fprintf(f, "%s  \"sensing\": {\"mode\": \"ais\", \"reports_sent\": %ld, \"lost\": %ld, "
-                   "\"arrived\": %ld},\n", ind, s->sense_sent, s->sense_lost, s->sense_arrived);
+        sensing_json(f, s, ind);
     if (s->watched)
         fprintf(f, "%s  \"watch\": {\"encounters\": %ld, \"lapsed\": %ld},\n", ind,
                 s->watch_pairs, s->watch_lapsed);

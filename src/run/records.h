@@ -95,10 +95,12 @@ typedef struct fw_run_summary {
      * (dropped), of which more than FW_AIS_CLASH_M away (two ships on one
      * MMSI: in how many MMSIs, the first), and reports the plane cannot hold.
      * In summary.json only when ais. */
-    /* The own ship's sensor (sense/sensing.h): AIS reports sent, lost,
-     * arrived.  In summary.json only when sensed (not perfect). */
+    /* The own ship's sensor (sense/sensing.h): its mode, AIS reports sent,
+     * lost, arrived; radar scans, plots, tracks and the error of what it
+     * knew.  In summary.json only when sensed (not perfect). */
     bool sensed;
-    long sense_sent, sense_lost, sense_arrived;
+    fw_sensing_mode sense_mode;
+    fw_sensing_counts sense;
     /* The background ships' watch (world/watch.h): encounters met, lapsed.
      * In summary.json only when the watch is not flawless. */
     bool watched;

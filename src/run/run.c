@@ -246,7 +246,8 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
     if (s->sensing.mode != FW_SENSE_PERFECT) {
         fw_sensing_counts c = fw_world_sensing_counts(R->w);
         sum->sensed = true;
-        sum->sense_sent = c.sent, sum->sense_lost = c.lost, sum->sense_arrived = c.arrived;
+        sum->sense_mode = s->sensing.mode;
+        sum->sense = c;
     }
     if (!sensed)
         seen = tg, seen_as = as, n_seen = n;

@@ -78,12 +78,31 @@ fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s
     return FW_OK;
 }
 
+/* sensing's radar keys into d->radar (arpa.h; degrees and knots converted) */
+static fw_status load_radar(const yt_doc *doc, const yt_node *m, fw_radar_def *r, fw_error *err)
+{
+    const char *P = "sensing";
+    double bearing = fw_rad_to_deg(r->bearing_sd);
+    fw_status st;
+    if ((st = yt_opt_number(doc, m, P, "range_sd_m", 0.0, 1000.0, &r->range_sd, err)) ||
+        (st = yt_opt_number(doc, m, P, "bearing_sd_deg", 0.0, 10.0, &bearing, err)) ||
+        (st = yt_opt_number(doc, m, P, "scan_s", 0.5, 10.0, &r->scan, err)) ||
+        (st = yt_opt_number(doc, m, P, "alpha", 0.01, 1.0, &r->alpha, err)) ||
+        (st = yt_opt_number(doc, m, P, "antenna_height_m", 1.0, 100.0, &r->antenna, err)))
+        return st;
+    r->bearing_sd = fw_deg_to_rad(bearing);
+    r->beta = r->alpha * r->alpha / (2.0 - r->alpha); /* Benedict-Bordner (arpa.h) */
+    return FW_OK;
+}
+
 fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenario *s,
                               fw_error *err)
 {
-    static const char *const keys[] = {"mode", "position_sd_m", "sog_sd_kn", "cog_sd_deg",
-                                       "heading_sd_deg", "dropout", "latency_s", "stale_s",
-                                       NULL};
+    static const char *const keys[] = {"mode",           "position_sd_m", "sog_sd_kn",
+                                       "cog_sd_deg",     "heading_sd_deg", "dropout",
+                                       "latency_s",      "stale_s",        "range_sd_m",
+                                       "bearing_sd_deg", "scan_s",         "alpha",
+                                       "antenna_height_m", NULL};
     const char *P = "sensing";
     fw_sensing_def *d = &s->sensing;
     *d = fw_default_sensing_def();
@@ -98,15 +117,16 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
         (st = yt_opt_string(doc, m, P, "mode", mode, sizeof mode, err)))
         return st;
     if (fw_sensing_mode_parse(mode, &d->mode))
-        return yt_fail_key(doc, m, P, "mode", err, "'%s' is not a sensing mode (perfect or ais)",
-                           mode);
+        return yt_fail_key(doc, m, P, "mode", err,
+                           "'%s' is not a sensing mode (perfect, ais, radar or ais+radar)", mode);
     if ((st = yt_opt_number(doc, m, P, "position_sd_m", 0.0, 1000.0, &d->position_sd, err)) ||
         (st = yt_opt_number(doc, m, P, "sog_sd_kn", 0.0, 10.0, &sog, err)) ||
         (st = yt_opt_number(doc, m, P, "cog_sd_deg", 0.0, 90.0, &cog, err)) ||
         (st = yt_opt_number(doc, m, P, "heading_sd_deg", 0.0, 90.0, &hdg, err)) ||
         (st = yt_opt_number(doc, m, P, "dropout", 0.0, 1.0, &d->dropout, err)) ||
         (st = yt_opt_number(doc, m, P, "latency_s", 0.0, 2.0, &d->latency, err)) ||
-        (st = yt_opt_number(doc, m, P, "stale_s", 1.0, 86400.0, &d->stale, err)))
+        (st = yt_opt_number(doc, m, P, "stale_s", 1.0, 86400.0, &d->stale, err)) ||
+        (st = load_radar(doc, m, &d->radar, err)))
         return st;
     d->sog_sd = fw_kn_to_ms(sog);
     d->cog_sd = fw_deg_to_rad(cog);

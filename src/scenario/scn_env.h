@@ -25,9 +25,13 @@
 /* sensing: of root into s->sensing (sense/sensing.h; perfect without it):
  *   sensing: {mode: ais, position_sd_m: 10, sog_sd_kn: 0.1, cog_sd_deg: 1,
  *             heading_sd_deg: 0.5, dropout: 0.1, latency_s: 1, stale_s: 360}
+ *   sensing: {mode: radar, range_sd_m: 15, bearing_sd_deg: 0.5, scan_s: 2.5,
+ *             alpha: 0.1, antenna_height_m: 15}
  * what the own ship knows of the others (the values shown are the defaults
- * but dropout's and latency's, 0); a probability outside [0, 1] or an unknown
- * mode: FILE:LINE: FIELD. */
+ * but dropout's and latency's, 0): mode perfect, ais, radar or ais+radar
+ * (sense/sensing.h; the radar's keys are arpa.h's, its beta the
+ * Benedict-Bordner alpha^2 / (2 - alpha)); a probability outside [0, 1], a
+ * value out of its bounds or an unknown mode: FILE:LINE: FIELD. */
 fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenario *s,
                               fw_error *err);
 

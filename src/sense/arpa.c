@@ -7,13 +7,14 @@
 
 fw_radar_def fw_default_radar_def(void)
 {
-    double a = 0.5;
+    double a = 0.1;
     return (fw_radar_def){
         .range_sd = 15.0,
         .bearing_sd = fw_deg_to_rad(0.5),
         .scan = 2.5,
         .alpha = a,
         .beta = a * a / (2.0 - a),
+        .antenna = 15.0,
     };
 }
 
@@ -40,12 +41,17 @@ void fw_ab_update(fw_ab_track *tr, const fw_radar_def *def, double t, double ze,
         tr->e = ze;
         tr->n = zn;
     } else {
+        /* the least-squares gains of plot k until they fall to the steady ones */
+        double k = tr->plots, g = 2.0 * (2.0 * k + 1.0) / ((k + 2.0) * (k + 1.0));
+        double h = 6.0 / ((k + 2.0) * (k + 1.0));
+        if (g <= def->alpha)
+            g = def->alpha, h = def->beta;
         double pe = tr->e + tr->ve * dt, pn = tr->n + tr->vn * dt;
         double re = ze - pe, rn = zn - pn;
-        tr->e = pe + def->alpha * re;
-        tr->n = pn + def->alpha * rn;
-        tr->ve += def->beta / dt * re;
-        tr->vn += def->beta / dt * rn;
+        tr->e = pe + g * re;
+        tr->n = pn + g * rn;
+        tr->ve += h / dt * re;
+        tr->vn += h / dt * rn;
     }
     tr->t = t;
     tr->plots++;
@@ -55,6 +61,35 @@ void fw_ab_predict(const fw_ab_track *tr, double t, double *e, double *n)
 {
     *e = tr->e + tr->ve * (t - tr->t);
     *n = tr->n + tr->vn * (t - tr->t);
+}
+
+double fw_radar_class_range(double length, double *height)
+{
+    /* MSC.192(79) Table 2 (X-band), the class by length an estimate (arpa.h) */
+    static const struct { double length, range_nm, height; } kClass[] = {
+        {100.0, 11.0, 10.0}, {45.0, 8.0, 5.0}, {15.0, 5.0, 4.0}, {0.0, 3.4, 2.0}};
+    int i = 0;
+    while (i < 3 && length < kClass[i].length)
+        i++;
+    *height = kClass[i].height;
+    return fw_nm_to_m(kClass[i].range_nm);
+}
+
+double fw_radar_horizon(double ha, double ht)
+{
+    return fw_nm_to_m(2.21 * (sqrt(fmax(ha, 0.0)) + sqrt(fmax(ht, 0.0))));
+}
+
+double fw_radar_pd(const fw_radar_def *def, double range, double length)
+{
+    static const double kPfa = 1e-4, kPd0 = 0.8; /* MSC.192(79) 5.3.1.1 */
+    double ht, r0 = fw_radar_class_range(length, &ht);
+    if (range > fw_radar_horizon(def->antenna, ht))
+        return 0.0;
+    if (range <= 0.0)
+        return 1.0;
+    double s0 = log(kPfa) / log(kPd0) - 1.0, q = r0 / range;
+    return pow(kPfa, 1.0 / (1.0 + s0 * q * q * q * q));
 }
 
 double fw_ab_position_vrr(double a, double b)

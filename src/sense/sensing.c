@@ -1,5 +1,5 @@
-/* sensing.c - the ships a vessel knows of: the truth, or their AIS reports
- * (sensing.h). */
+/* sensing.c - the ships a vessel knows of: the truth, their AIS reports, the
+ * radar's tracks (sensing.h). */
 #include "sense/sensing.h"
 
 #include <math.h>
@@ -20,19 +20,21 @@ fw_sensing_def fw_default_sensing_def(void)
     return (fw_sensing_def){.mode = FW_SENSE_PERFECT, .position_sd = 10.0,
                             .sog_sd = 0.1 * FW_KNOT, .cog_sd = fw_deg_to_rad(1.0),
                             .heading_sd = fw_deg_to_rad(0.5), .dropout = 0.0, .latency = 0.0,
-                            .stale = 360.0};
+                            .stale = 360.0, .radar = fw_default_radar_def()};
 }
 
-static const char *const kModes[] = {"perfect", "ais"}; /* fw_sensing_mode order */
+/* fw_sensing_mode order */
+static const char *const kModes[] = {"perfect", "ais", "radar", "ais+radar"};
+enum { kNModes = 4 };
 
 const char *fw_sensing_mode_name(fw_sensing_mode m)
 {
-    return (unsigned)m < 2 ? kModes[m] : "?";
+    return (unsigned)m < kNModes ? kModes[m] : "?";
 }
 
 fw_status fw_sensing_mode_parse(const char *text, fw_sensing_mode *out)
 {
-    for (int i = 0; i < 2; i++)
+    for (int i = 0; i < kNModes; i++)
         if (strcmp(text, kModes[i]) == 0) {
             *out = (fw_sensing_mode)i;
             return FW_OK;
@@ -42,9 +44,12 @@ fw_status fw_sensing_mode_parse(const char *text, fw_sensing_mode *out)
 
 fw_status fw_sensing_check(const fw_sensing_def *d, fw_error *err)
 {
-    const double v[] = {d->position_sd, d->sog_sd, d->cog_sd, d->heading_sd, d->stale};
-    const char *const name[] = {"position_sd", "sog_sd", "cog_sd", "heading_sd", "stale"};
-    for (int i = 0; i < 5; i++)
+    const fw_radar_def *r = &d->radar;
+    const double v[] = {d->position_sd, d->sog_sd,      d->cog_sd,      d->heading_sd,
+                        d->stale,       r->range_sd,    r->bearing_sd,  r->antenna};
+    const char *const name[] = {"position_sd", "sog_sd",   "cog_sd",         "heading_sd",
+                                "stale",       "range_sd", "bearing_sd", "antenna_height"};
+    for (int i = 0; i < 8; i++)
         if (!(v[i] >= 0.0 && isfinite(v[i])))
             return fw_fail(err, FW_EINPUT, "sensing %s %g: must be 0 or more", name[i], v[i]);
     if (!(d->dropout >= 0.0 && d->dropout <= 1.0))
@@ -53,7 +58,12 @@ fw_status fw_sensing_check(const fw_sensing_def *d, fw_error *err)
     if (!(d->latency >= 0.0 && d->latency <= 2.0))
         return fw_fail(err, FW_EINPUT, "sensing latency %g s: in [0, 2] s (below the shortest "
                                        "reporting interval)", d->latency);
-    if ((unsigned)d->mode > FW_SENSE_AIS)
+    if (!(r->scan > 0.0 && isfinite(r->scan)))
+        return fw_fail(err, FW_EINPUT, "sensing scan %g s: must be more than 0", r->scan);
+    if (!(r->alpha > 0.0 && r->alpha <= 1.0) || !(r->beta > 0.0 && r->beta < 2.0))
+        return fw_fail(err, FW_EINPUT, "sensing alpha %g, beta %g: alpha in (0, 1], beta in "
+                                       "(0, 2)", r->alpha, r->beta);
+    if ((unsigned)d->mode >= kNModes)
         return fw_fail(err, FW_EINPUT, "sensing mode %d: not a mode", (int)d->mode);
     return FW_OK;
 }
@@ -81,6 +91,7 @@ typedef struct report {
 enum { kInFlight = 4 };
 
 typedef struct link {
+    bool streams;        /* its streams taken */
     bool started, known;
     double t_next;       /* s, its next report */
     double t_prev, course_prev; /* its course over ground when last seen */
@@ -88,10 +99,20 @@ typedef struct link {
     report queued[kInFlight]; /* on their way, oldest first */
     int n_queued;
     fw_rng *noise, *loss;
+    /* radar */
+    fw_ab_track trk;     /* plots 0: no track */
+    double t_track;      /* s, its first plot */
+    unsigned hist;       /* its last scans, newest in bit 0: 1 plotted */
+    int n_hist;          /* scans since it began, up to 10 */
+    fw_rng *rnoise, *rdetect;
 } link;
 
 struct fw_sensor {
     fw_sensing_def def;
+    bool ais, radar;     /* the mode's parts */
+    fw_target own;       /* where the antenna is (fw_sensor_place) */
+    bool placed, scanning;
+    long next_scan;      /* the next scan's number: at next_scan x radar.scan */
     fw_rng_getter rng;
     void *ctx;
     fw_idmap ids;
@@ -114,6 +135,8 @@ fw_status fw_sensor_create(const fw_sensing_def *def, fw_rng_getter rng, void *r
     if (!s)
         return fw_fail(err, FW_ERUN, "out of memory");
     s->def = *def;
+    s->ais = def->mode == FW_SENSE_AIS || def->mode == FW_SENSE_AIS_RADAR;
+    s->radar = def->mode == FW_SENSE_RADAR || def->mode == FW_SENSE_AIS_RADAR;
     s->rng = rng;
     s->ctx = rng_ctx;
     *out = s;
@@ -145,12 +168,15 @@ static link *link_of(fw_sensor *s, const fw_target *a)
         s->cap = cap;
     }
     link *l = &s->links[k];
-    if (!l->started) {
+    if (!l->streams) {
         uint32_t key = fw_rng_vessel_key(a->id);
-        l->noise = s->rng(s->ctx, key, FW_PURPOSE_SENSING);
-        l->loss = s->rng(s->ctx, key, FW_PURPOSE_AIS_DROPOUT);
-        if (!l->noise || !l->loss)
+        if (s->ais && (!(l->noise = s->rng(s->ctx, key, FW_PURPOSE_SENSING)) ||
+                       !(l->loss = s->rng(s->ctx, key, FW_PURPOSE_AIS_DROPOUT))))
             return NULL;
+        if (s->radar && (!(l->rnoise = s->rng(s->ctx, key, FW_PURPOSE_RADAR)) ||
+                         !(l->rdetect = s->rng(s->ctx, key, FW_PURPOSE_RADAR_DETECT))))
+            return NULL;
+        l->streams = true;
     }
     return l;
 }
@@ -225,6 +251,89 @@ static void dead_reckon(const link *l, const fw_target *a, double t, fw_target *
     out->pred = NULL;
 }
 
+void fw_sensor_place(fw_sensor *s, const fw_target *own)
+{
+    s->own = *own;
+    s->placed = true;
+}
+
+/* Scans since the track began that missed it (of the last 10 at most). */
+static int misses(const link *l)
+{
+    int hits = 0;
+    for (int b = 0; b < l->n_hist; b++)
+        hits += (l->hist >> b) & 1u;
+    return l->n_hist - hits;
+}
+
+/* Ship a's scans number k0..k1, the truth at t moved back to each. */
+static void radar_step(fw_sensor *s, link *l, const fw_target *a, double t, long k0, long k1)
+{
+    const fw_radar_def *d = &s->def.radar;
+    const fw_target *o = &s->own;
+    for (long k = k0; k <= k1; k++) {
+        double ts = (double)k * d->scan, back = t - ts;
+        double te = a->east - a->speed * sin(a->course) * back;
+        double tn = a->north - a->speed * cos(a->course) * back;
+        double oe = o->east - o->speed * sin(o->course) * back;
+        double on = o->north - o->speed * cos(o->course) * back;
+        double pd = fw_radar_pd(d, hypot(te - oe, tn - on), a->length);
+        bool hit = fw_rng_uniform(l->rdetect) < pd;
+        s->counts.scanned += pd > 0.0;
+        if (l->trk.plots > 0) {
+            l->hist = ((l->hist << 1) | hit) & 0x3ffu;
+            l->n_hist += l->n_hist < 10;
+        } else if (hit) {
+            l->t_track = ts, l->hist = 1u, l->n_hist = 1;
+            s->counts.tracks++;
+        }
+        if (hit) {
+            double ze, zn;
+            fw_radar_plot(d, l->rnoise, oe, on, te, tn, &ze, &zn);
+            fw_ab_update(&l->trk, d, ts, ze, zn);
+            s->counts.plotted++;
+        } else if (l->trk.plots > 0 && misses(l) > 5) { /* MSC.192(79) 5.25.4.3 */
+            l->trk = (fw_ab_track){0};
+            l->hist = 0u, l->n_hist = 0;
+            s->counts.tracks_lost++;
+        }
+    }
+}
+
+/* s, a track is shown once this old (MSC.192(79) 5.25.4.1: the trend within
+ * one minute) */
+static const double kTrackShown = 60.0;
+
+/* What the radar's track says of ship a at t, if it shows one. */
+static bool track_target(const link *l, const fw_target *a, double t, fw_target *out)
+{
+    if (l->trk.plots < 2 || t - l->t_track < kTrackShown - 1e-9)
+        return false;
+    *out = *a; /* id, type, length, breadth, key, own */
+    fw_ab_predict(&l->trk, t, &out->east, &out->north);
+    out->course = fw_wrap_2pi(atan2(l->trk.ve, l->trk.vn));
+    out->speed = hypot(l->trk.ve, l->trk.vn);
+    out->heading = out->course; /* a radar sees no heading */
+    out->stw = out->speed;
+    out->pred = NULL;
+    return true;
+}
+
+/* The scans due by t, numbers *k0..*k1 (none: *k1 < *k0); the first update
+ * starts the scans at the first at or after it. */
+static void due_scans(fw_sensor *s, double t, long *k0, long *k1)
+{
+    double T = s->def.radar.scan;
+    if (!s->scanning) {
+        s->next_scan = (long)ceil(t / T - 1e-9);
+        s->scanning = true;
+    }
+    *k0 = s->next_scan;
+    *k1 = (long)floor(t / T + 1e-9);
+    if (*k1 >= *k0)
+        s->next_scan = *k1 + 1;
+}
+
 fw_status fw_sensor_update(fw_sensor *s, double t, const fw_target *truth, int n,
                            fw_target *known, int *n_known, fw_error *err)
 {
@@ -235,13 +344,32 @@ fw_status fw_sensor_update(fw_sensor *s, double t, const fw_target *truth, int n
         *n_known = n;
         return FW_OK;
     }
+    if (s->radar && !s->placed)
+        return fw_fail(err, FW_EINPUT, "radar sensing: where the antenna is was not given "
+                                       "(fw_sensor_place)");
+    long k0 = 0, k1 = -1;
+    if (s->radar)
+        due_scans(s, t, &k0, &k1);
     for (int j = 0; j < n; j++) {
-        link *l = link_of(s, &truth[j]);
+        const fw_target *a = &truth[j];
+        link *l = link_of(s, a);
         if (!l)
             return fw_fail(err, FW_ERUN, "out of memory for the sensor's ships");
-        ais_step(s, l, &truth[j], t);
-        if (l->known && t - l->last.t <= s->def.stale)
-            dead_reckon(l, &truth[j], t, &known[(*n_known)++]);
+        if (s->ais)
+            ais_step(s, l, a, t);
+        if (s->radar)
+            radar_step(s, l, a, t, k0, k1);
+        fw_target *out = &known[*n_known];
+        if (s->ais && l->known && t - l->last.t <= s->def.stale)
+            dead_reckon(l, a, t, out); /* AIS first (MSC.192(79) 5.29) */
+        else if (!(s->radar && track_target(l, a, t, out)))
+            continue;
+        (*n_known)++;
+        if (s->radar) {
+            double de = out->east - a->east, dn = out->north - a->north;
+            s->counts.err_sq += de * de + dn * dn;
+            s->counts.err_n++;
+        }
     }
     return FW_OK;
 }

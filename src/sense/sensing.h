@@ -1,4 +1,5 @@
-/* sensing.h - what a ship knows of the others: the truth, or their AIS reports.
+/* sensing.h - what a ship knows of the others: the truth, their AIS reports,
+ * its radar's tracks, or both.
  *
  * A sensor turns the ships a vessel could see (the truth, world.h) into the
  * ships it knows of, which its controller decides on.  Modes:
@@ -18,6 +19,28 @@
  *            reckoned from its last one (position + SOG x age along COG), and
  *            forgotten when its last report is older than stale_s.  A ship's
  *            first report comes at a random phase of its interval.
+ *   radar    the own ship's radar and its tracker (arpa.h): a scan every
+ *            radar.scan s (at multiples of it, every target at once: the
+ *            sweep's spread over the scan is not modelled), each ship within
+ *            the radar horizon detected with the probability arpa.h gives
+ *            by its length and range; a detection is a plot (range and
+ *            bearing noise) at the scan's time (the truth of the step moved
+ *            back along its velocity to it, the antenna likewise), fed to the
+ *            ship's alpha-beta track.  A track is shown (known) once it is
+ *            60 s old (MSC.192(79) 5.25.4.1: the trend of a target's motion
+ *            within one minute), and lost when more than 5 of its last 10
+ *            scans missed it (5.25.4.3: tracking continues while a target is
+ *            seen in 5 scans of 10); a ship seen again starts a new track.
+ *            The known ship: the track's position dead reckoned to now, its
+ *            course and speed over ground from the track's velocity, its
+ *            heading = its course (a radar sees no heading); its id, type
+ *            and size are the truth's (the association of a track with its
+ *            ship is perfect: no swaps, no false tracks).  Positions are the
+ *            antenna's own (own ship's GNSS) plus the plot: own navigation is
+ *            exact.  Restricted visibility does not change it (arpa.h).
+ *   ais+radar  both, fused by MSC.192(79) 5.29 (target association): a
+ *            ship with a current AIS report is shown by its AIS, else by its
+ *            radar track; AIS is VHF and is received in fog as in clear air.
  *
  * Randomness: the noise and the phase are the transmitting ship's (its GNSS,
  * its slot), from its own stream (FW_PURPOSE_SENSING, key: rng.h
@@ -25,9 +48,13 @@
  * (FW_PURPOSE_AIS_DROPOUT, the same key).  Only the own ship has a sensor
  * (world.h), so a key names one link.
  *
- * What it does not model: radar and ARPA tracking (detection range, range and
- * bearing noise, a tracking filter), Class B transponders, ships without AIS,
- * range-dependent reception; restricted visibility (issue 24 items 4-5).
+ * The radar's noise and detections draw from the target's
+ * FW_PURPOSE_RADAR and FW_PURPOSE_RADAR_DETECT streams: one uniform a scan
+ * for the detection (drawn whether or not it is within the horizon), two
+ * normals a plot.
+ *
+ * What it does not model: Class B transponders, ships without AIS,
+ * range-dependent AIS reception, radar clutter and track swaps.
  */
 #ifndef FW_SENSE_SENSING_H
 #define FW_SENSE_SENSING_H
@@ -37,8 +64,14 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "geom/target.h"
+#include "sense/arpa.h"
 
-typedef enum fw_sensing_mode { FW_SENSE_PERFECT, FW_SENSE_AIS } fw_sensing_mode;
+typedef enum fw_sensing_mode {
+    FW_SENSE_PERFECT,
+    FW_SENSE_AIS,
+    FW_SENSE_RADAR,
+    FW_SENSE_AIS_RADAR
+} fw_sensing_mode;
 
 typedef struct fw_sensing_def {
     fw_sensing_mode mode;
@@ -49,17 +82,19 @@ typedef struct fw_sensing_def {
     double dropout;      /* probability a report is lost: 0 */
     double latency;      /* s, from sending to arriving: 0 */
     double stale;        /* s, a ship whose last report is older is forgotten: 360 */
+    fw_radar_def radar;  /* the radar and its tracker (arpa.h's defaults) */
 } fw_sensing_def;
 
-/* perfect, with the AIS values above for when the mode is changed. */
+/* perfect, with the AIS and radar values above for when the mode is changed. */
 fw_sensing_def fw_default_sensing_def(void);
 
-/* "perfect", "ais"; parse: FW_EINPUT for anything else. */
+/* "perfect", "ais", "radar", "ais+radar"; parse: FW_EINPUT for anything else. */
 const char *fw_sensing_mode_name(fw_sensing_mode m);
 fw_status fw_sensing_mode_parse(const char *text, fw_sensing_mode *out);
 
-/* FW_EINPUT naming the field for a negative or non-finite value or a
- * dropout outside [0, 1]. */
+/* FW_EINPUT naming the field for a negative or non-finite value, a
+ * dropout outside [0, 1], a radar scan not positive or a gain outside
+ * (0, 1] (alpha) or (0, 2) (beta). */
 fw_status fw_sensing_check(const fw_sensing_def *def, fw_error *err);
 
 /* The AIS Class A reporting interval (s) of a ship at speed (m/s), turning or
@@ -72,15 +107,25 @@ fw_status fw_sensor_create(const fw_sensing_def *def, fw_rng_getter rng, void *r
                            fw_sensor **out, fw_error *err);
 void fw_sensor_destroy(fw_sensor *s);
 
+/* Where the sensor is (the own ship's record: position, course and speed
+ * over ground), before each update; the radar modes need it. */
+void fw_sensor_place(fw_sensor *s, const fw_target *own);
+
 /* At time t the ships truth[0..n-1] (sorted by id) could be seen: what the
  * sensor knows of them into known (room for n), sorted by id, *n_known of
  * them.  Perfect: a copy. */
 fw_status fw_sensor_update(fw_sensor *s, double t, const fw_target *truth, int n,
                            fw_target *known, int *n_known, fw_error *err);
 
-/* Counts so far: reports sent, lost, arrived. */
+/* Counts so far: AIS reports sent, lost, arrived; radar: ships scanned
+ * (within the horizon), plotted, tracks started and lost; and the squared
+ * error of what was known against the truth (m^2, summed over err_n ships
+ * known at updates), for the radar modes. */
 typedef struct fw_sensing_counts {
     long sent, lost, arrived;
+    long scanned, plotted, tracks, tracks_lost;
+    double err_sq;
+    long err_n;
 } fw_sensing_counts;
 fw_sensing_counts fw_sensor_counts(const fw_sensor *s);
 

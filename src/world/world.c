@@ -391,6 +391,8 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
         v->n_truth = n;
         v->sensed = true;
     }
+    if (sensor)
+        fw_sensor_place(w->sensor, &v->record); /* the antenna, for the radar */
     if (sensor && (st = fw_sensor_update(w->sensor, fw_world_time(w), v->truth, n, v->view,
                                          &v->n_view, err)))
         return st;
