@@ -26,6 +26,12 @@ foreach(t cli_run_paper cli_run_json cli_run_help cli_run_none cli_run_bad_mode 
   set_tests_properties(${t} PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 60)
 endforeach()
 
+# The environment's fields over time (gusts, the spring-neap tide) and the
+# scenario's environment: section (the Dover network's charted stream).
+fw_test(test_fields test_fields.c)
+target_link_libraries(test_fields PRIVATE fairway_run)
+set_tests_properties(test_fields PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
 # The world and its traffic sources; a paper case with and without SUMO.
 fw_test(test_world test_world.c)
 target_link_libraries(test_world PRIVATE fairway_run)

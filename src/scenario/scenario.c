@@ -452,5 +452,7 @@ const char *fw_scenario_randomness(const fw_scenario *s)
         return NULL; /* lapses, times to detect, late actions: drawn per encounter as it comes */
     if (fw_watch_def_draws(&s->own_watch))
         return NULL; /* the own ship's, likewise */
+    if (fw_wind_gusty(&s->env.wind))
+        return NULL; /* the wind's gusts, one draw a step */
     return "none of its settings draws: perfect sensing, flawless watchkeeping, steady wind";
 }

@@ -1,18 +1,108 @@
 /* scn_env.c - a scenario's current and wind (scn_env.h). */
 #include "scenario/scn_env.h"
 
+#include <stdio.h>
 #include <string.h>
 
+#include "core/files.h"
 #include "core/units.h"
 
-/* current: {speed_kn, towards_deg} or {tidal: {rate_kn, flood_towards_deg,
- * period_h, max_flood_s}} */
-static fw_status load_current(const yt_doc *doc, const yt_node *c, fw_current *out,
-                              fw_error *err)
+/* A tidal stream as the files give it: kn, deg, h, s. */
+typedef struct tide_in {
+    double rate, neap, set, period_h, t_max, t_spring;
+} tide_in;
+
+/* The keys of a tidal stream in map m (P its path) over *t; rate_kn and
+ * flood_towards_deg required when req.  A neap rate above the spring rate:
+ * FILE:LINE: P.neap_rate_kn. */
+static fw_status read_tide(const yt_doc *doc, const yt_node *m, const char *P, bool req,
+                           tide_in *t, fw_error *err)
+{
+    fw_status st;
+    bool has_neap = yt_get(m, "neap_rate_kn") != NULL;
+    if ((st = (req ? yt_req_number : yt_opt_number)(doc, m, P, "rate_kn", 0.0, 10.0, &t->rate,
+                                                     err)) ||
+        (st = (req ? yt_req_number : yt_opt_number)(doc, m, P, "flood_towards_deg", 0.0, 360.0,
+                                                     &t->set, err)) ||
+        (st = yt_opt_number(doc, m, P, "neap_rate_kn", 0.0, 10.0, &t->neap, err)) ||
+        (st = yt_opt_number(doc, m, P, "period_h", 1.0, 48.0, &t->period_h, err)) ||
+        (st = yt_opt_number(doc, m, P, "max_flood_s", -1e7, 1e7, &t->t_max, err)) ||
+        (st = yt_opt_number(doc, m, P, "springs_s", -1e7, 1e7, &t->t_spring, err)))
+        return st;
+    if (has_neap && t->neap > t->rate) {
+        char f[64];
+        return fw_fail_at(err, doc->file, yt_key_line(m, "neap_rate_kn"),
+                          yt_path(f, sizeof f, P, "neap_rate_kn"),
+                          "%g kn is above the spring rate rate_kn (%g kn)", t->neap, t->rate);
+    }
+    return FW_OK;
+}
+
+/* The charted stream of the scenario's network, networks/NAME/tide.yaml:
+ *   source: "where the numbers come from"
+ *   rate_kn: 2.25, neap_rate_kn: 1.25, flood_towards_deg: 85 */
+static fw_status network_tide(const yt_doc *doc, const yt_node *tide, const fw_scenario *s,
+                              tide_in *t, fw_error *err)
+{
+    static const char *const keys[] = {"source", "rate_kn", "neap_rate_kn", "flood_towards_deg",
+                                       "period_h", NULL};
+    const char *P = "environment.current.tidal.network";
+    if (!s->network[0])
+        return fw_fail_at(err, doc->file, yt_key_line(tide, "network"), P,
+                          "the scenario has no traffic.network to take a tidal stream from");
+    char path[1024];
+    snprintf(path, sizeof path, "%s/networks/%s/tide.yaml", fw_data_root(), s->network);
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return fw_fail_at(err, doc->file, yt_key_line(tide, "network"), P,
+                          "network '%s' has no charted tidal stream (no %s)", s->network, path);
+    fclose(f);
+    yt_doc *td;
+    fw_status st = yt_load_file(path, &td, err);
+    if (st)
+        return st;
+    char source[512];
+    t->neap = -1.0;
+    if (!(st = yt_check_keys(td, td->root, "", keys, err)) &&
+        !(st = yt_req_string(td, td->root, "", "source", source, sizeof source, err)))
+        st = read_tide(td, td->root, "", true, t, err);
+    if (!st && t->neap < 0.0)
+        t->neap = t->rate;
+    yt_free(td);
+    return st;
+}
+
+/* tidal: {rate_kn, neap_rate_kn, flood_towards_deg, period_h, max_flood_s,
+ * springs_s} or {network: true, ...those to override} into *out. */
+static fw_status load_tide(const yt_doc *doc, const yt_node *tide, const fw_scenario *s,
+                           fw_current *out, fw_error *err)
+{
+    static const char *const keys[] = {"rate_kn", "neap_rate_kn", "flood_towards_deg",
+                                       "period_h", "max_flood_s", "springs_s", "network", NULL};
+    const char *T = "environment.current.tidal";
+    tide_in t = {.neap = -1.0, .period_h = FW_M2_PERIOD_S / 3600.0};
+    bool net = false;
+    fw_status st;
+    if ((st = yt_check_keys(doc, tide, T, keys, err)) ||
+        (st = yt_opt_bool(doc, tide, T, "network", &net, err)) ||
+        (net && (st = network_tide(doc, tide, s, &t, err))))
+        return st;
+    if (yt_get(tide, "rate_kn") && !yt_get(tide, "neap_rate_kn"))
+        t.neap = -1.0; /* a rate of the scenario's own: no modulation unless it says */
+    if ((st = read_tide(doc, tide, T, !net, &t, err)))
+        return st;
+    if (t.neap < 0.0)
+        t.neap = t.rate;
+    *out = fw_current_tidal_sn(fw_kn_to_ms(t.rate), fw_kn_to_ms(t.neap), fw_deg_to_rad(t.set),
+                               t.period_h * 3600.0, t.t_max, t.t_spring);
+    return FW_OK;
+}
+
+/* current: {speed_kn, towards_deg} or {tidal: {...}} (load_tide) */
+static fw_status load_current(const yt_doc *doc, const yt_node *c, const fw_scenario *s,
+                              fw_current *out, fw_error *err)
 {
     static const char *const keys[] = {"speed_kn", "towards_deg", "tidal", NULL};
-    static const char *const tkeys[] = {"rate_kn", "flood_towards_deg", "period_h",
-                                        "max_flood_s", NULL};
     const char *P = "environment.current";
     const yt_node *tide = NULL;
     fw_status st;
@@ -24,16 +114,7 @@ static fw_status load_current(const yt_doc *doc, const yt_node *c, fw_current *o
             return yt_fail_key(doc, c, P, "tidal", err,
                                "give a uniform current (speed_kn, towards_deg) or a tidal "
                                "stream, not both");
-        const char *T = "environment.current.tidal";
-        double rate, set, period_h = FW_M2_PERIOD_S / 3600.0, t_max = 0.0;
-        if ((st = yt_check_keys(doc, tide, T, tkeys, err)) ||
-            (st = yt_req_number(doc, tide, T, "rate_kn", 0.0, 10.0, &rate, err)) ||
-            (st = yt_req_number(doc, tide, T, "flood_towards_deg", 0.0, 360.0, &set, err)) ||
-            (st = yt_opt_number(doc, tide, T, "period_h", 1.0, 48.0, &period_h, err)) ||
-            (st = yt_opt_number(doc, tide, T, "max_flood_s", -1e7, 1e7, &t_max, err)))
-            return st;
-        *out = fw_current_tidal(fw_kn_to_ms(rate), fw_deg_to_rad(set), period_h * 3600.0, t_max);
-        return FW_OK;
+        return load_tide(doc, tide, s, out, err);
     }
     double speed, towards;
     if ((st = yt_req_number(doc, c, P, "speed_kn", 0.0, 10.0, &speed, err)) ||
@@ -43,10 +124,33 @@ static fw_status load_current(const yt_doc *doc, const yt_node *c, fw_current *o
     return FW_OK;
 }
 
+/* wind: {speed_kn, from_deg, gust_intensity, gust_time_s} into *out. */
+static fw_status load_wind(const yt_doc *doc, const yt_node *w, fw_wind *out, fw_error *err)
+{
+    static const char *const keys[] = {"speed_kn", "from_deg", "gust_intensity", "gust_time_s",
+                                       NULL};
+    const char *P = "environment.wind";
+    double speed, from, gi = 0.0, gt = 0.0;
+    fw_status st;
+    if ((st = yt_check_keys(doc, w, P, keys, err)) ||
+        (st = yt_req_number(doc, w, P, "speed_kn", 0.0, 100.0, &speed, err)) ||
+        (st = yt_req_number(doc, w, P, "from_deg", 0.0, 360.0, &from, err)) ||
+        (st = yt_opt_number(doc, w, P, "gust_intensity", 0.0, FW_GUST_INTENSITY_MAX, &gi, err)) ||
+        (st = yt_opt_number(doc, w, P, "gust_time_s", FW_GUST_TIME_MIN_S, FW_GUST_TIME_MAX_S,
+                            &gt, err)))
+        return st;
+    if (gi > 0.0 && !yt_get(w, "gust_time_s"))
+        return yt_fail_key(doc, w, P, "gust_intensity", err,
+                           "gusts need their time scale, gust_time_s (%g to %g s)",
+                           FW_GUST_TIME_MIN_S, FW_GUST_TIME_MAX_S);
+    *out = (fw_wind){.kind = FW_FIELD_UNIFORM, .speed = fw_kn_to_ms(speed),
+                     .from = fw_deg_to_rad(from), .gust_intensity = gi, .gust_time = gt};
+    return FW_OK;
+}
+
 fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
     static const char *const keys[] = {"current", "wind", NULL};
-    static const char *const wkeys[] = {"speed_kn", "from_deg", NULL};
     s->env = fw_default_env();
     const yt_node *e = NULL, *c = NULL, *w = NULL;
     fw_status st;
@@ -55,17 +159,10 @@ fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s
     if ((st = yt_check_keys(doc, e, "environment", keys, err)) ||
         (st = yt_opt_map(doc, e, "environment", "current", &c, err)) ||
         (st = yt_opt_map(doc, e, "environment", "wind", &w, err)) ||
-        (c && (st = load_current(doc, c, &s->env.current, err))))
+        (c && (st = load_current(doc, c, s, &s->env.current, err))) ||
+        (w && (st = load_wind(doc, w, &s->env.wind, err))))
         return st;
     if (w) {
-        double speed, from;
-        const char *P = "environment.wind";
-        if ((st = yt_check_keys(doc, w, P, wkeys, err)) ||
-            (st = yt_req_number(doc, w, P, "speed_kn", 0.0, 100.0, &speed, err)) ||
-            (st = yt_req_number(doc, w, P, "from_deg", 0.0, 360.0, &from, err)))
-            return st;
-        s->env.wind = (fw_wind){.kind = FW_FIELD_UNIFORM, .speed = fw_kn_to_ms(speed),
-                                .from = fw_deg_to_rad(from)};
         /* said here, where the file has it, rather than when the run starts */
         fw_error e3 = {0};
         if (fw_env_check_vessel(&s->env, "own ship", &s->ship, !s->nomoto_plant, &e3))

@@ -4,15 +4,25 @@
  *   environment:
  *     current: {speed_kn: 2, towards_deg: 90}      # uniform: the way it sets
  *     # or a rectilinear tidal stream, flooding towards flood_towards_deg at up
- *     # to rate_kn, greatest at max_flood_s after the start, period_h 12.42 (M2):
- *     current: {tidal: {rate_kn: 2.5, flood_towards_deg: 45, max_flood_s: 0}}
- *     wind: {speed_kn: 20, from_deg: 270}          # the way it blows from
+ *     # to rate_kn at springs and neap_rate_kn at neaps (absent: rate_kn, no
+ *     # spring-neap cycle), greatest at max_flood_s after the start, springs
+ *     # at springs_s, period_h 12.42 (M2), springs to springs 14.77 days:
+ *     current: {tidal: {rate_kn: 2.25, neap_rate_kn: 1.25, flood_towards_deg: 85,
+ *                       max_flood_s: 0, springs_s: 0}}
+ *     # or the network's charted stream (networks/NAME/tide.yaml, with its
+ *     # source), any key above given here overriding it:
+ *     current: {tidal: {network: true, max_flood_s: 3600}}
+ *     wind: {speed_kn: 20, from_deg: 270,          # the way it blows from
+ *            gust_intensity: 0.1, gust_time_s: 30} # optional gusts (env.h)
  *
  * Knots and degrees here, converted once (core/units.h); the current sets
  * TOWARDS its direction and the wind blows FROM its own, as charts and
  * weather reports (and DNV's maritime-schema) give them.  Bounds: a current
- * of 0 to 10 kn, a period of 1 to 48 h, a wind of 0 to 100 kn.  A wind that
- * is not calm is refused here, located, when the own ship's ship file has no
+ * of 0 to 10 kn (a neap rate at most the spring rate), a period of 1 to 48
+ * h, times within 1e7 s, a wind of 0 to 100 kn, a gust intensity of 0 to 0.3
+ * with a time scale of 1 to 3600 s.  Any of these keys is a study axis
+ * (study_axes.h: `environment.wind.speed_kn: [0, 20, 40]`).  A wind that is
+ * not calm is refused here, located, when the own ship's ship file has no
  * windage: section or its dynamics are Nomoto's (env.h fw_env_check_vessel).
  * The own ship must be loaded first (load_own).
  */

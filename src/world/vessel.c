@@ -133,6 +133,12 @@ fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err)
     if (v->dyn == FW_DYN_MMG) {
         v->r_prev = v->motion.r;
         fw_stepper_set_helm(v->st, v->d.helm);
+        if (v->env->wind.gust_intensity > 0.0) {
+            /* the gust of this step (env.h; the world draws it) */
+            double speed, from;
+            fw_wind_at(&v->env->wind, v->motion.east, v->motion.north, v->t, &speed, &from);
+            fw_stepper_set_wind(v->st, speed, from);
+        }
         if ((st = fw_stepper_advance(v->st, dt, err)))
             return st;
         v->motion = *fw_stepper_state(v->st);

@@ -34,6 +34,7 @@ struct fw_world {
     fw_streams *streams; /* every random stream of the world's elements */
     fw_sensor *sensor;   /* the own ship's (def.own_sensing) */
     fw_watch *own_watch; /* the own ship's (def.own_watch) */
+    fw_rng *gust;        /* the wind's gusts (env.h; NULL: a steady wind) */
 };
 
 /* The CPU clock when the def keeps timings, else 0 (no system calls). */
@@ -119,6 +120,13 @@ fw_status fw_world_create(const fw_world_def *def, fw_world **out, fw_error *err
         st = fw_sensor_create(&def->own_sensing, world_rng, w, &w->sensor, err);
     if (!st && !(st = fw_watch_create(&def->own_watch, &w->own_watch, err)))
         fw_watch_set_rng(w->own_watch, world_rng, w);
+    if (!st && fw_wind_gusty(&w->def.env.wind)) {
+        /* the field's stream: key 0 (the own ship's), purpose gust */
+        if (!(w->gust = fw_world_rng(w, 0, FW_PURPOSE_GUST)))
+            st = fw_fail(err, FW_ERUN, "out of memory");
+        else
+            fw_wind_gust_start(&w->def.env.wind, w->gust);
+    }
     if (st) {
         fw_world_destroy(w);
         return st;
@@ -524,6 +532,8 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err)
     for (int i = 0; !st && i < w->n_slots; i++)
         if (w->slots[i].v)
             st = fw_vessel_advance(w->slots[i].v, w->def.step, err);
+    if (w->gust) /* the gust of the next step */
+        fw_wind_gust_step(&w->def.env.wind, w->def.step, w->gust);
     lap(w, &tm->dynamics, &t);
     if (!st && w->source) {
         st = tell_source(w, err);
