@@ -75,6 +75,7 @@ set_tests_properties(plot_run PROPERTIES ENVIRONMENT "${fw_lsan}")
 # Vessels that come and go (world.h handles, roles, take and give back); its
 # "sumo" case (a SUMO ship taken and given back) is with the traffic tests.
 fw_test(test_vessels test_vessels.c)
+fw_test(test_steer test_steer.c)
 target_link_libraries(test_vessels PRIVATE fairway_run)
 set_tests_properties(test_vessels PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

@@ -283,6 +283,11 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     fprintf(f, "%s  \"traffic_behaviour\": \"%s\", \"reactions\": {\"give_way\": %d, "
                "\"not_enough\": %d, \"resume\": %d},\n",
             ind, fw_behaviour_name(s->behaviour), s->n_give_way, s->n_give_way_short, s->n_resume);
+    if (s->steering)
+        fprintf(f, "%s  \"course_alterations\": {\"n\": %d, \"rejoined\": %d, \"min_deg\": %.1f, "
+                   "\"max_deg\": %.1f},\n",
+                ind, s->n_alter, s->n_rejoin, s->n_alter ? s->alter_deg_min : 0.0,
+                s->n_alter ? s->alter_deg_max : 0.0);
     kb_json(f, s, ind);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {

@@ -123,9 +123,14 @@ typedef struct fw_run_summary {
     fw_monitor_counts monitors;
     /* The background ships' reactions (world/reactions.h). */
     fw_behaviour behaviour;
-    int n_give_way;                 /* slow-down orders */
+    int n_give_way;                 /* give-way orders: slow-downs and course alterations */
     int n_give_way_short;           /* of which no speed kept the passing distance */
     int n_resume;
+    /* give_way course (reactions.h): written only then */
+    bool steering;
+    int n_alter;                    /* course alterations (of n_give_way) */
+    int n_rejoin;                   /* ships given back to their lanes after one */
+    double alter_deg_min, alter_deg_max; /* the alterations ordered */
     /* The own ship's speed against the speeds its Nomoto knowledge base was
      * fitted over (nomoto.h): seconds of the run it sailed outside them (its
      * predictions extrapolated), and the extremes of its speed (kn). */

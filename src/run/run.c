@@ -143,6 +143,28 @@ static void record_mode(fw_run *R, double t, const fw_decision *d, fw_run_summar
     R->mode_prev = d->mode;
 }
 
+/* A background ship's course alteration or its return to its lane: run.log
+ * and the summary. */
+static void record_course(fw_run *R, const fw_reaction *r, fw_run_summary *sum)
+{
+    if (r->kind == FW_REACT_REJOIN) {
+        sum->n_rejoin++;
+        note(R, "%9.1f  traffic: %s back on its lane, %.0f deg (given back)\n", r->t, r->ship,
+             fw_rad_to_deg(fw_wrap_2pi(r->course_to)));
+        return;
+    }
+    double alt = fw_rad_to_deg(fw_wrap_pi(r->course_to - r->course_from));
+    sum->alter_deg_min = sum->n_alter ? fmin(sum->alter_deg_min, alt) : alt;
+    sum->alter_deg_max = sum->n_alter ? fmax(sum->alter_deg_max, alt) : alt;
+    sum->n_alter++;
+    sum->n_give_way++;
+    note(R, "%9.1f  traffic: %s gives way to %s (%s): alters %.0f deg to starboard, %.0f -> "
+            "%.0f deg, CPA %.0f -> %.0f m\n",
+         r->t, r->ship, r->other, fw_situation_name(r->situation), alt,
+         fw_rad_to_deg(fw_wrap_2pi(r->course_from)), fw_rad_to_deg(r->course_to), r->dcpa_before,
+         r->dcpa_after);
+}
+
 /* The background ships' new orders: run.log and the summary. */
 static void record_reactions(fw_run *R, fw_run_summary *sum)
 {
@@ -150,6 +172,10 @@ static void record_reactions(fw_run *R, fw_run_summary *sum)
     const fw_reaction *x = fw_world_reactions(R->w, &n);
     for (; R->reactions_seen < n; R->reactions_seen++) {
         const fw_reaction *r = &x[R->reactions_seen];
+        if (r->kind == FW_REACT_ALTER || r->kind == FW_REACT_REJOIN) {
+            record_course(R, r, sum);
+            continue;
+        }
         if (r->kind == FW_REACT_RESUME) {
             sum->n_resume++;
             note(R, "%9.1f  traffic: %s resumes %.1f kn\n", r->t, r->ship,
@@ -333,6 +359,8 @@ static void init_summary(const fw_run_def *def, fw_run_summary *sum)
     sum->domain_ratio = s->helm.domain.fore_aft_ratio;
     sum->domain_reading = fw_domain_reading_name(s->helm.domain.reading);
     sum->behaviour = s->reactions.behaviour;
+    sum->steering = s->reactions.behaviour == FW_BEHAVIOUR_COLREGS &&
+                    s->reactions.give_way == FW_GIVE_WAY_COURSE;
     sum->kb_present = s->ship.nomoto.present;
     sum->kb_speed_min_kn = s->ship.nomoto.speed_min_kn;
     sum->kb_speed_max_kn = s->ship.nomoto.speed_max_kn;

@@ -138,7 +138,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     static const char *const keys[] = {"network", "density", "fill", "targets", "behaviour",
                                        "tracks", "ais", "ais_start", "ais_end",
                                        "ais_max_gap_s", "ais_columns", "waterway", "watch",
-                                       NULL};
+                                       "give_way", NULL};
     const yt_node *tr, *seq = NULL;
     fw_status st;
     if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
@@ -153,6 +153,12 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     if (fw_behaviour_parse(beh, &s->reactions.behaviour))
         return fw_fail_at(err, doc->file, yt_key_line(tr, "behaviour"), "traffic.behaviour",
                           "'%s': expected colregs or blind", beh);
+    char gw[32] = "speed";
+    if ((st = yt_opt_string(doc, tr, "traffic", "give_way", gw, sizeof gw, err)))
+        return st;
+    if (fw_give_way_parse(gw, &s->reactions.give_way))
+        return fw_fail_at(err, doc->file, yt_key_line(tr, "give_way"), "traffic.give_way",
+                          "'%s': expected speed or course", gw);
     if ((st = fw_scn_load_watch(doc, tr, s, err)))
         return st;
     char ww[32] = "open-sea";
@@ -161,6 +167,8 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     if (fw_waterway_parse(ww, &s->waterway))
         return fw_fail_at(err, doc->file, yt_key_line(tr, "waterway"), "traffic.waterway",
                           "'%s': expected open-sea, tss or channel", ww);
+    /* a channel's lanes are the water; elsewhere a ship may leave them (reactions.h) */
+    s->reactions.room_from_lanes = s->waterway == FW_WATERWAY_CHANNEL;
     /* the audit's risk distance for this water and this ship (audit.h) */
     s->audit = fw_audit_def_for(s->waterway, s->ship.Loa);
     long fill = 0;

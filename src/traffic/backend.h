@@ -79,6 +79,14 @@ typedef struct fw_sumo_backend {
      * FW_EINPUT saying how far. */
     fw_status (*rejoin)(const char *id, double fx, double fy, double angle_deg, double speed,
                         double max_off, double *off, fw_error *err);
+    /* A ship's lane (source.h fw_lane_info) in SUMO's coordinates: the centre
+     * lines of the lanes of its route from the edge it is on, each at its
+     * lane index (clamped to the edge's lanes), up to max points (xy: x, y
+     * pairs) or about 30 km; and from its line (its lateral offset in the
+     * lane counted) to the right and left sides of its edge.  FW_EINPUT when
+     * it is in a junction now. */
+    fw_status (*lane)(const char *id, double *xy, int max, int *n, double *right, double *left,
+                      fw_error *err);
 } fw_sumo_backend;
 
 /* A remote sumo (where: "HOST:PORT") must run net_file's network: the same

@@ -30,6 +30,10 @@
  *                route ahead of where it is, at its speed; FW_EINPUT (and
  *                still taken) if it is more than FW_SOURCE_REJOIN_MAX off
  *                its route: a vessel must be steered back to its route first
+ *   lane()       a ship's lane before it is taken (fw_lane_info): the centre
+ *                line it follows along its route ahead and the sea room on
+ *                either side of it (optional: a source without it has no
+ *                lanes, and its ships are never taken to steer)
  *
  * Sources:
  *   SUMO        (source_sumo.h) libsumo in-process or libtraci to a sumo or
@@ -49,6 +53,20 @@
 
 typedef struct fw_source fw_source;
 
+/* A ship's lane (source.h lane()): the centre line of the lane it is on,
+ * along its route ahead from about where it is (the plane's metres east and
+ * north, np points, at least 2), and the sea room from that line to the edge
+ * of the waterway its route uses on its starboard and port sides (m, from
+ * the ship's hull centre line; INFINITY in open water).  What a ship that
+ * alters course needs to know: whether it has the room, and where to come
+ * back to. */
+enum { FW_LANE_POINTS = 64 };
+typedef struct fw_lane_info {
+    int np;
+    double e[FW_LANE_POINTS], n[FW_LANE_POINTS];
+    double room_starboard, room_port;
+} fw_lane_info;
+
 typedef struct fw_source_ops {
     const char *name;
     fw_status (*place)(fw_source *s, const fw_target *own, fw_error *err);
@@ -66,6 +84,7 @@ typedef struct fw_source_ops {
     fw_status (*take)(fw_source *s, const char *id, fw_target *state, fw_error *err);
     fw_status (*steer)(fw_source *s, const fw_target *ship, fw_error *err);
     fw_status (*give_back)(fw_source *s, const fw_target *ship, fw_error *err);
+    fw_status (*lane)(fw_source *s, const char *id, fw_lane_info *out, fw_error *err);
     double (*time)(const fw_source *s);        /* s, after the last advance */
     double (*step_length)(const fw_source *s); /* s */
     void (*destroy)(fw_source *s);
@@ -124,6 +143,15 @@ static inline fw_status fw_source_give_back(fw_source *s, const fw_target *ship,
 {
     return s->ops->give_back(s, ship, err);
 }
+/* FW_EINPUT for a source without lanes, or a ship it cannot say (not on a
+ * lane now: in a junction, say). */
+static inline fw_status fw_source_lane(fw_source *s, const char *id, fw_lane_info *out,
+                                       fw_error *err)
+{
+    if (!s->ops->lane)
+        return fw_fail(err, FW_EINPUT, "the %s source has no lanes ('%s')", s->ops->name, id);
+    return s->ops->lane(s, id, out, err);
+}
 static inline double fw_source_time(const fw_source *s) { return s->ops->time(s); }
 static inline double fw_source_step_length(const fw_source *s) { return s->ops->step_length(s); }
 /* Safe on NULL. */
@@ -152,9 +180,12 @@ typedef struct fw_kinematic_def {
     double radius;            /* m, sight: hull centre to hull centre; INFINITY = all */
     double area_radius;       /* m, 0 = no area query */
     const char *own_id;       /* the own ship's id in area lists */
+    /* lane(): a ship's lane is its leg now (its line 10 km back to 50 km
+     * ahead) with this sea room on each side (m; INFINITY: open water) */
+    double room;
 } fw_kinematic_def;
 
-/* No ships, step 1 s, sight unlimited, no area, own id "own". */
+/* No ships, step 1 s, sight unlimited, no area, own id "own", open water. */
 fw_kinematic_def fw_default_kinematic_def(void);
 
 /* FW_EINPUT on a bad def (duplicate or empty id, non-finite value, legs out

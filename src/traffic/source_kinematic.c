@@ -47,7 +47,7 @@ typedef struct kin_source {
 fw_kinematic_def fw_default_kinematic_def(void)
 {
     return (fw_kinematic_def){.step = 1.0, .radius = INFINITY, .area_radius = 0.0,
-                              .own_id = "own"};
+                              .own_id = "own", .room = INFINITY};
 }
 
 static double kin_time(const fw_source *s)
@@ -257,6 +257,25 @@ static fw_status kin_give_back(fw_source *s, const fw_target *ship, fw_error *er
     return FW_OK;
 }
 
+/* Its lane: the line of its leg now (as its script, shifted where it was
+ * given back, has it), 10 km back to 50 km ahead, and the def's room. */
+static fw_status kin_lane(fw_source *s, const char *id, fw_lane_info *out, fw_error *err)
+{
+    kin_source *k = (kin_source *)s;
+    kin_ship *p = find(k, id);
+    if (!p || p->taken)
+        return fw_fail(err, FW_EINPUT, "kinematic source: no lane for '%s'%s", id,
+                       p ? " (taken)" : "");
+    fw_target at;
+    double ue, un;
+    scripted(p, kin_time(s), &at);
+    fw_velocity(1.0, at.course, &ue, &un);
+    *out = (fw_lane_info){.np = 2, .room_starboard = k->def.room, .room_port = k->def.room};
+    out->e[0] = at.east - 1e4 * ue, out->n[0] = at.north - 1e4 * un;
+    out->e[1] = at.east + 5e4 * ue, out->n[1] = at.north + 5e4 * un;
+    return FW_OK;
+}
+
 static void kin_destroy(fw_source *s)
 {
     kin_source *k = (kin_source *)s;
@@ -267,7 +286,7 @@ static const fw_source_ops kin_ops = {.name = "kinematic", .place = kin_place,
                                       .advance = kin_advance, .around = kin_around,
                                       .area = kin_area, .set_speed = kin_set_speed,
                                       .within = kin_within, .take = kin_take,
-                                      .steer = kin_steer, .give_back = kin_give_back,
+                                      .steer = kin_steer, .give_back = kin_give_back, .lane = kin_lane,
                                       .time = kin_time,
                                       .step_length = kin_step_length, .destroy = kin_destroy};
 
@@ -323,8 +342,9 @@ fw_status fw_kinematic_source_create(const fw_kinematic_def *def, fw_source **ou
     *out = NULL;
     if (!(def->step > 0.0 && isfinite(def->step)))
         return fw_fail(err, FW_EINPUT, "kinematic source: step %g s must be positive", def->step);
-    if (!(def->radius > 0.0) || !(def->area_radius >= 0.0) || def->n < 0)
-        return fw_fail(err, FW_EINPUT, "kinematic source: radius must be positive, area >= 0");
+    if (!(def->radius > 0.0) || !(def->area_radius >= 0.0) || def->n < 0 || !(def->room >= 0.0))
+        return fw_fail(err, FW_EINPUT,
+                       "kinematic source: radius must be positive, area and room >= 0");
     const char *own_id = def->own_id ? def->own_id : "own";
     if (!own_id[0] || strlen(own_id) >= FW_TARGET_ID_MAX)
         return fw_fail(err, FW_EINPUT, "kinematic source: own id must have 1..%d characters",

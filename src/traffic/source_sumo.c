@@ -414,6 +414,22 @@ static fw_status ss_give_back(fw_source *s, const fw_target *ship, fw_error *err
     return FW_OK;
 }
 
+static fw_status ss_lane(fw_source *s, const char *id, fw_lane_info *out, fw_error *err)
+{
+    sumo_source *k = (sumo_source *)s;
+    if (fw_target_find(k->taken, k->n_taken, id) >= 0)
+        return fw_fail(err, FW_EINPUT, "sumo source: '%s' is taken: no lane", id);
+    double xy[2 * FW_LANE_POINTS];
+    *out = (fw_lane_info){0};
+    fw_status st = fw_traffic_lane(k->tr, id, xy, FW_LANE_POINTS, &out->np, &out->room_starboard,
+                                   &out->room_port, err);
+    if (!st && out->np < 2)
+        st = fw_fail(err, FW_EINPUT, "sumo source: '%s' has no lane ahead", id);
+    for (int i = 0; !st && i < out->np; i++)
+        out->e[i] = xy[2 * i], out->n[i] = xy[2 * i + 1];
+    return st;
+}
+
 static void ss_destroy(fw_source *s)
 {
     sumo_source *k = (sumo_source *)s;
@@ -424,7 +440,7 @@ static void ss_destroy(fw_source *s)
 static const fw_source_ops sumo_ops = {.name = "sumo", .place = ss_place, .advance = ss_advance,
                                        .around = ss_around, .area = ss_area,
                                        .nearby = ss_nearby,
-                                       .set_speed = ss_set_speed, .take = ss_take,
+                                       .set_speed = ss_set_speed, .take = ss_take, .lane = ss_lane,
                                        .steer = ss_steer, .give_back = ss_give_back,
                                        .time = ss_time,
                                        .step_length = ss_step_length, .destroy = ss_destroy};

@@ -315,6 +315,51 @@ fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, doub
     return gst ? gst : st;
 }
 
+// the lane index k of edge e, clamped to the lanes it has
+std::string lane_of(const std::string &e, int k)
+{
+    const int nl = S::Edge::getLaneNumber(e);
+    return e + "_" + std::to_string(std::max(0, std::min(k, nl - 1)));
+}
+
+fw_status be_lane(const char *id, double *xy, int max, int *n, double *right, double *left,
+                  fw_error *err)
+{
+    fw_status st = FW_OK;
+    *n = 0;
+    fw_status gst = guarded("cannot read a ship's lane", err, [&] {
+        const std::string edge = S::Vehicle::getRoadID(id);
+        if (edge.empty() || edge[0] == ':') {
+            st = fw_fail(err, FW_EINPUT, "ship '%s' is in a junction, not on a lane", id);
+            return;
+        }
+        const int li = S::Vehicle::getLaneIndex(id);
+        const int nl = S::Edge::getLaneNumber(edge);
+        // SUMO counts lanes from the right (index 0) and lateral offsets to the left
+        double r = 0.0, l = 0.0, w = S::Lane::getWidth(lane_of(edge, li));
+        for (int k = 0; k < nl; k++)
+            if (k != li)
+                (k < li ? r : l) += S::Lane::getWidth(lane_of(edge, k));
+        const double lat = S::Vehicle::getLateralLanePosition(id);
+        *right = r + 0.5 * w + lat, *left = l + 0.5 * w - lat;
+        const std::vector<std::string> route = S::Vehicle::getRoute(id);
+        double length = 0.0;
+        for (size_t i = (size_t)std::max(0, S::Vehicle::getRouteIndex(id));
+             i < route.size() && *n < max && length < 3e4; i++) {
+            const libsumo::TraCIPositionVector sh = S::Lane::getShape(lane_of(route[i], li));
+            for (const libsumo::TraCIPosition &p : sh.value) {
+                if (*n >= max)
+                    break;
+                if (*n > 0)
+                    length += std::hypot(p.x - xy[2 * *n - 2], p.y - xy[2 * *n - 1]);
+                xy[2 * *n] = p.x, xy[2 * *n + 1] = p.y;
+                ++*n;
+            }
+        }
+    });
+    return gst ? gst : st;
+}
+
 fw_status be_set_speed(const char *id, double speed, fw_error *err)
 {
     return guarded("cannot set a ship's speed", err, [&] {
@@ -489,7 +534,7 @@ void be_close(void)
 extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
     be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_gui_follow,
-    be_gui_screenshot, be_net, be_close, be_add_placed, be_take, be_rejoin,
+    be_gui_screenshot, be_net, be_close, be_add_placed, be_take, be_rejoin, be_lane,
 };
 
 extern "C" __attribute__((visibility("default"))) const fw_sumo_backend *fw_sumo_backend_table(void)

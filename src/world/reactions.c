@@ -12,42 +12,7 @@
 #include "core/names.h"
 #include "core/units.h"
 #include "geom/geom.h"
-
-/* What a ship is doing, by its interned id. */
-typedef struct react_state {
-    bool seen;
-    bool holding;    /* told to hold `hold` m/s */
-    double v0;       /* m/s, its own speed: the fastest seen while not told */
-    double hold;     /* m/s */
-    char other[FW_TARGET_ID_MAX]; /* the ship it last gave way to */
-    bool rule17;     /* holding as a stand-on ship's last action (rule 17(b)) */
-    double t_next;   /* s, when it looks round again (every interval s) */
-    /* its course when last seen with that course's sine and cosine, reused
-     * while the course stays; trig_ok false: none yet */
-    double course, sin_c, cos_c;
-    bool trig_ok;
-} react_state;
-
-struct fw_reactions {
-    fw_reactions_def def;
-    fw_idmap ids;
-    react_state *s;
-    int cap;
-    fw_reaction *log;
-    int nlog, logcap;
-    int *list;       /* scratch: the ships one ship gives way to */
-    int list_cap;
-    int *nb;         /* scratch: the ships within range of the one deciding */
-    fw_target *all_buf; /* scratch: the ships and the own ship (list_cap of them) */
-    int *idx;        /* scratch: this step's ships' states (indices into s) */
-    int nnb;
-    /* this step's ships (the own ship last) and the sines and cosines of
-     * their courses, computed once: the pair loops' trigonometry */
-    const fw_target *all;
-    double *sn, *cs;
-    double cos_parallel;
-    fw_watch *watch;
-};
+#include "world/reactions_internal.h"
 
 fw_reactions_def fw_default_reactions_def(void)
 {
@@ -56,7 +21,20 @@ fw_reactions_def fw_default_reactions_def(void)
                               .parallel = fw_deg_to_rad(30.0), .last_cpa = 0.25 * FW_NMILE,
                               .last_time = 240.0, .interval = 10.0,
                               .colregs = fw_default_colregs_def(),
-                              .watch = fw_default_watch_def()};
+                              .watch = fw_default_watch_def(), .give_way = FW_GIVE_WAY_SPEED,
+                              .alter_min = fw_deg_to_rad(20.0), .alter_max = fw_deg_to_rad(60.0),
+                              .room_from_lanes = true};
+}
+
+static const char *const kGiveWayNames[] = {"speed", "course"}; /* fw_give_way order */
+
+const char *fw_give_way_name(fw_give_way g) { return fw_name_of(kGiveWayNames, 2, (int)g); }
+
+fw_status fw_give_way_parse(const char *text, fw_give_way *out)
+{
+    int k = fw_name_find(kGiveWayNames, 2, text);
+    *out = k < 0 ? *out : (fw_give_way)k;
+    return k < 0 ? FW_EINPUT : FW_OK;
 }
 
 static const char *const kBehaviourNames[] = {"colregs", "blind"}; /* fw_behaviour order */
@@ -75,9 +53,12 @@ fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, f
     *out = NULL;
     if (!(def->cpa > 0.0) || !(def->horizon > 0.0) || !(def->range > 0.0) ||
         !(def->min_speed >= 0.0 && def->min_speed < 1.0) ||
-        !(def->interval >= 0.0 && def->interval <= 60.0))
+        !(def->interval >= 0.0 && def->interval <= 60.0) ||
+        !(def->alter_min > 0.0 && def->alter_min <= def->alter_max &&
+          def->alter_max < 0.5 * FW_PI))
         return fw_fail(err, FW_EINPUT, "reactions: cpa, horizon and range must be positive, "
-                                       "min_speed in [0, 1), interval 0 to 60 s");
+                                       "min_speed in [0, 1), interval 0 to 60 s, alterations "
+                                       "0 < min <= max < 90 deg");
     fw_reactions *r = calloc(1, sizeof *r);
     if (!r)
         return fw_fail(err, FW_ERUN, "out of memory");
@@ -108,7 +89,8 @@ void fw_reactions_destroy(fw_reactions *r)
         return;
     fw_idmap_free(&r->ids);
     fw_watch_destroy(r->watch);
-    fw_free_each(9, r->s, r->list, r->nb, r->all_buf, r->idx, r->sn, r->cs, r->log, r);
+    fw_free_each(10, r->s, r->list, r->nb, r->all_buf, r->idx, r->sn, r->cs, r->log,
+                 r->takes, r);
 }
 
 bool fw_reactions_active(const fw_reactions *r)
@@ -120,6 +102,17 @@ const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n)
 {
     *n = r->nlog;
     return r->log;
+}
+
+const fw_take_order *fw_reactions_takes(const fw_reactions *r, int *n)
+{
+    *n = r->ntakes;
+    return r->takes;
+}
+
+fw_status fw_reactions_note(fw_reactions *r, const fw_reaction *x, fw_error *err)
+{
+    return fw_react_record(r, x, err);
 }
 
 static const double kResume = 1.25;
@@ -191,7 +184,8 @@ static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
         return true;
     /* one background ship overtaking another in its lane is SUMO's to keep
      * apart (car following, lane changes); the own ship is off the lanes */
-    return *sit == FW_SIT_GIVE_WAY || (*sit == FW_SIT_OVERTAKING && b->own);
+    return *sit == FW_SIT_GIVE_WAY || (*sit == FW_SIT_OVERTAKING && b->own) ||
+           (*sit == FW_SIT_HEAD_ON && b->own && r->def.give_way == FW_GIVE_WAY_COURSE);
 }
 
 /* A ship a gives way to: with a risk at its own speed va, or at vh, the
@@ -269,8 +263,8 @@ static void nearest_of(const fw_reactions *r, int self, const fw_target *all, co
  * it has to keep clear of (r->nb: in range, and not a background ship on a
  * parallel course, which SUMO keeps apart) other than skip (-1: none).  It
  * stops at the first below floor (0: never), which then is all one needs. */
-static double min_pass(const fw_reactions *r, int self, const fw_target *all, double v,
-                       int skip, double floor)
+double fw_react_min_pass(const fw_reactions *r, int self, const fw_target *all, double v,
+                         int skip, double floor)
 {
     const fw_target *a = &all[self];
     double best = INFINITY, floor2 = floor * floor; /* squared: one root at the end */
@@ -296,7 +290,7 @@ static double min_pass(const fw_reactions *r, int self, const fw_target *all, do
 static bool clears_at(const fw_reactions *r, int self, const fw_target *all, double v,
                       double *dcpa)
 {
-    *dcpa = min_pass(r, self, all, v, -1, r->def.cpa);
+    *dcpa = fw_react_min_pass(r, self, all, v, -1, r->def.cpa);
     return *dcpa >= r->def.cpa;
 }
 
@@ -334,21 +328,21 @@ static double yielding_speed(const fw_reactions *r, int self, const fw_target *a
     /* held already, it changes only for a clearly better speed (50 m):
      * between two alike it would otherwise swing from one to the other */
     double best = vh >= 0.0 ? vh : v0;
-    double dbest = min_pass(r, self, all, best, -1, 0.0) + (vh >= 0.0 ? 50.0 : 0.0);
+    double dbest = fw_react_min_pass(r, self, all, best, -1, 0.0) + (vh >= 0.0 ? 50.0 : 0.0);
     for (int k = 0; k <= 20; k++) {
         double v = v0 * (1.0 - 0.05 * k);
         if (v < r->def.min_speed * v0 - 1e-12)
             break;
         if (own && vh >= 0.0 && v > vh + 1e-9)
             continue;
-        double d = min_pass(r, self, all, v, -1, 0.0);
+        double d = fw_react_min_pass(r, self, all, v, -1, 0.0);
         if (d > dbest + 1e-6)
             best = v, dbest = d;
     }
     return best;
 }
 
-static fw_status record(fw_reactions *r, const fw_reaction *x, fw_error *err)
+fw_status fw_react_record(fw_reactions *r, const fw_reaction *x, fw_error *err)
 {
     if (r->nlog == r->logcap) {
         int cap = fw_grown_cap(r->logcap, 16);
@@ -394,13 +388,13 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
      * (slowing for one must not close on another); a speed held already
      * changes only for one clearly better (50 m), or it would swing */
     double best = vh >= 0.0 ? vh : v0;
-    double score = min_pass(r, self, all, best, -1, 0.0) + (vh >= 0.0 ? 50.0 : 0.0);
+    double score = fw_react_min_pass(r, self, all, best, -1, 0.0) + (vh >= 0.0 ? 50.0 : 0.0);
     *dcpa_best = *dcpa_now;
     for (int k = 0; k <= 20; k++) {
         double v = v0 * (1.0 - 0.05 * k), tc, dc;
         if (v < r->def.min_speed * v0 - 1e-12)
             break;
-        double s = min_pass(r, self, all, v, -1, 0.0);
+        double s = fw_react_min_pass(r, self, all, v, -1, 0.0);
         if (s > score + 1e-6) {
             cpa_at(r, a, v, &all[*j_out], &tc, &dc);
             best = v, score = s, *dcpa_best = tc <= 0.0 ? INFINITY : dc;
@@ -427,7 +421,7 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
         x.kind = FW_REACT_RESUME, x.speed_from = st->hold, x.speed_to = st->v0;
         st->holding = st->rule17 = false;
         fw_status s2 = fw_source_set_speed(src, a->id, -1.0, err);
-        return s2 ? s2 : record(r, &x, err);
+        return s2 ? s2 : fw_react_record(r, &x, err);
     }
     if (st->holding && fabs(v - st->hold) < 0.05 * st->v0)
         return FW_OK;
@@ -437,7 +431,7 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
     st->holding = st->rule17 = true;
     st->hold = v;
     fw_status s2 = fw_source_set_speed(src, a->id, v, err);
-    return s2 ? s2 : record(r, &x, err);
+    return s2 ? s2 : fw_react_record(r, &x, err);
 }
 
 /* Background ship `self` of all[0..n-1] this step. */
@@ -536,7 +530,12 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
         x.enough = true;
         st->holding = false;
         fw_status s2 = fw_source_set_speed(src, a->id, -1.0, err);
-        return s2 ? s2 : record(r, &x, err);
+        return s2 ? s2 : fw_react_record(r, &x, err);
+    }
+    if (!st->holding && r->def.give_way == FW_GIVE_WAY_COURSE) {
+        int a2 = fw_react_alter(r, t, self, all, st, r->list, m, nearest, sit, dcpa, src, err);
+        if (a2 != 0 || sit == FW_SIT_HEAD_ON) /* ordered, failed, or head-on: no speed */
+            return a2 < 0 ? err->status : FW_OK;
     }
     double after;
     /* the speed it holds still keeps every ship it gives way to at cpa (a
@@ -556,7 +555,7 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     st->holding = true;
     st->hold = v;
     fw_status s2 = fw_source_set_speed(src, a->id, v, err);
-    return s2 ? s2 : record(r, &x, err);
+    return s2 ? s2 : fw_react_record(r, &x, err);
 }
 
 /* The index of ship a's state (its id interned, the array grown to hold
@@ -604,6 +603,7 @@ static void course_trig(fw_reactions *r, const fw_target *all, int n, int m)
 fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *vessels, int nv,
                             const fw_target *ships, int n, fw_source *src, fw_error *err)
 {
+    r->ntakes = 0;
     if (r->def.behaviour == FW_BEHAVIOUR_BLIND || n == 0)
         return FW_OK;
     /* fairway's vessels join the list (last) as ships to give way to */

@@ -35,9 +35,25 @@
  * own speed back once that is no longer so.
  * With a watch (watch.h) a ship notices a ship it must give way to only after
  * a delay, or not at all (a lapse); until then it treats it as not there.
- * Head-on meetings (rule 14: both alter to starboard) leave a lane-bound ship
- * nothing to do but hold its lane; the own ship's policy turns.  Every order
- * is recorded (ship, time, kind, speeds, the ship it gives way to).
+ * Head-on meetings of two lane-bound ships are kept apart by their lanes;
+ * the own ship's policy turns.
+ *
+ * give_way: speed (the above: slowing down is a lane-bound ship's only
+ * action) or course: a give-way ship alters course to starboard (rules 8,
+ * 15, 16), by the least of alter_min, alter_min + 5 deg, ... alter_max (20
+ * and 60 deg: at least 20 deg is readily apparent to another ship, rule 8(b),
+ * by eye and on radar) at which it passes every ship near it at cpa or more
+ * on its new course at its own speed, if its lane has the sea room to
+ * starboard for it (its sideways run until the closest approach, with its
+ * half breadth and a tenth of the room to spare: source.h lane()); and a
+ * ship meeting the own ship head-on alters to starboard likewise (rule 14;
+ * nothing if it has no room).  Where no alteration clears or there is no
+ * room, or the ship is changing lanes (more than 10 m or 2 deg off its
+ * lane's line), it slows down as above.  A ship that alters course is handed to
+ * the world to steer (fw_reactions_takes; world/steer.h says how it turns,
+ * when it comes back, and how) and given back to its lane after.
+ * Every order is recorded (ship, time, kind, speeds or courses, the ship it
+ * gives way to).
  */
 #ifndef FW_WORLD_REACTIONS_H
 #define FW_WORLD_REACTIONS_H
@@ -49,6 +65,12 @@
 #include "world/watch.h"
 
 typedef enum fw_behaviour { FW_BEHAVIOUR_COLREGS, FW_BEHAVIOUR_BLIND } fw_behaviour;
+
+/* How a give-way background ship acts (above). */
+typedef enum fw_give_way { FW_GIVE_WAY_SPEED, FW_GIVE_WAY_COURSE } fw_give_way;
+/* "speed", "course"; parse: FW_EINPUT for anything else. */
+const char *fw_give_way_name(fw_give_way g);
+fw_status fw_give_way_parse(const char *text, fw_give_way *out);
 
 /* "colregs", "blind"; parse: FW_EINPUT for anything else. */
 const char *fw_behaviour_name(fw_behaviour b);
@@ -67,11 +89,26 @@ typedef struct fw_reactions_def {
     double interval;      /* s, 10: each ship looks round this often (0: every step) */
     fw_colregs_def colregs;
     fw_watch_def watch;   /* its watchkeeping (watch.h): flawless by default */
+    fw_give_way give_way; /* speed (default) or course */
+    double alter_min, alter_max; /* rad, 20 and 60 deg: the course alterations tried */
+    /* the sea room is the lanes' (true: a channel, where the edge of the
+     * lanes is the edge of the water) or unlimited (false: open sea and a
+     * separation scheme's lanes, which a ship may leave to avoid a
+     * collision, rule 10 with rule 2(b)); true by default, scenarios set it
+     * from traffic.waterway */
+    bool room_from_lanes;
 } fw_reactions_def;
 
 fw_reactions_def fw_default_reactions_def(void);
 
-typedef enum fw_reaction_kind { FW_REACT_SLOW, FW_REACT_RESUME } fw_reaction_kind;
+/* slow: a speed order; resume: its own speed back; alter: a course
+ * alteration (the ship taken to steer); rejoin: given back to its lane */
+typedef enum fw_reaction_kind {
+    FW_REACT_SLOW,
+    FW_REACT_RESUME,
+    FW_REACT_ALTER,
+    FW_REACT_REJOIN
+} fw_reaction_kind;
 
 typedef struct fw_reaction {
     double t;                        /* s */
@@ -80,9 +117,22 @@ typedef struct fw_reaction {
     fw_reaction_kind kind;
     fw_situation situation;          /* from the acting ship's side */
     double speed_from, speed_to;     /* m/s ordered: from, to (resume: to its own) */
-    double dcpa_before, dcpa_after;  /* m, the closest approach at the old and new speed */
+    double dcpa_before, dcpa_after;  /* m, the closest approach at the old and new speed
+                                        (alter: course) */
     bool enough;                     /* the new speed keeps cpa against every ship */
+    double course_from, course_to;   /* rad, alter: its course and the one ordered */
 } fw_reaction;
+
+/* A ship to take from the source and steer (give_way course): itself as it
+ * is now, its lane, the alteration (rad, to starboard), the ship it gives
+ * way to and the passing distance. */
+typedef struct fw_take_order {
+    fw_target ship;
+    fw_lane_info lane;
+    double alteration;
+    char other[FW_TARGET_ID_MAX];
+    double cpa;
+} fw_take_order;
 
 typedef struct fw_reactions fw_reactions;
 
@@ -106,5 +156,12 @@ bool fw_reactions_active(const fw_reactions *r);
 
 /* Every order so far, in time order; valid until the next step. */
 const fw_reaction *fw_reactions_list(const fw_reactions *r, int *n);
+
+/* The ships the last step decided to take and steer (give_way course), in
+ * the order decided; valid until the next step.  The world takes them. */
+const fw_take_order *fw_reactions_takes(const fw_reactions *r, int *n);
+
+/* A record of the world's (a ship given back: FW_REACT_REJOIN) added. */
+fw_status fw_reactions_note(fw_reactions *r, const fw_reaction *x, fw_error *err);
 
 #endif

@@ -3,12 +3,14 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/clock.h"
 #include "core/mem.h"
 #include "core/streams.h"
+#include "world/steer.h"
 #include "world/vessel_internal.h"
 
 /* One place a vessel can live: the vessel (NULL: free) and how many times
@@ -16,6 +18,8 @@
 typedef struct slot {
     fw_vessel *v;
     uint16_t generation;
+    fw_ship *ship; /* the vessel's model when the world made it (a steered
+                      background ship's, steer.h), freed with it */
 } slot;
 
 struct fw_world {
@@ -66,6 +70,7 @@ void fw_world_destroy(fw_world *w)
         if (w->slots[i].v)
             fw_vessel_free(w->slots[i].v);
         free(w->slots[i].v);
+        free(w->slots[i].ship);
     }
     free(w->slots);
     free(w->recs);
@@ -258,6 +263,8 @@ static void drop(fw_world *w, int i)
         w->own = -1;
     fw_vessel_free(v);
     free(v);
+    free(w->slots[i].ship);
+    w->slots[i].ship = NULL;
     w->slots[i].v = NULL;
     w->slots[i].generation++;
     w->nv--;
@@ -456,6 +463,71 @@ static fw_status vessel_records(fw_world *w, const fw_target **v, int *n, fw_err
     return FW_OK;
 }
 
+/* The ships the reactive traffic decided to steer (reactions.h give_way
+ * course) taken from the source, each with its model and helmsman (steer.h). */
+static fw_status take_orders(fw_world *w, fw_error *err)
+{
+    int n;
+    const fw_take_order *o = fw_reactions_takes(w->react, &n);
+    for (int k = 0; k < n; k++) {
+        fw_ship *ship = malloc(sizeof *ship);
+        if (!ship)
+            return fw_fail(err, FW_ERUN, "out of memory for a ship to steer");
+        fw_steer_ship(o[k].ship.length, o[k].ship.breadth, o[k].ship.type, ship);
+        fw_alter_def sd = fw_default_alter_def();
+        sd.lane = o[k].lane;
+        sd.alteration = o[k].alteration;
+        sd.cpa = o[k].cpa;
+        sd.length = o[k].ship.length;
+        /* as reactions.h decided it: a tenth of the room and its half breadth spare */
+        sd.room = fmax(0.0, 0.9 * o[k].lane.room_starboard - 0.5 * o[k].ship.breadth);
+        snprintf(sd.other, sizeof sd.other, "%s", o[k].other);
+        fw_vessel_def vd = fw_default_vessel_def();
+        vd.ship = ship;
+        vd.dynamics = FW_DYN_NOMOTO;
+        vd.radius = w->def.reactions.range;
+        fw_vessel_handle h;
+        fw_status st = fw_steer_controller_create(&sd, &vd.controller, err);
+        if (!st)
+            st = fw_world_take(w, o[k].ship.id, &vd, &h, err);
+        if (st) {
+            free(ship);
+            return st;
+        }
+        w->slots[h.index1 - 1].ship = ship;
+    }
+    return FW_OK;
+}
+
+/* The steered ships back on their lanes given back to the source (one the
+ * source finds not yet on its route's line is steered on and tried again
+ * the next step), each recorded. */
+static fw_status give_back_done(fw_world *w, fw_error *err)
+{
+    for (int i = 0; w->n_taken > 0 && i < w->n_slots; i++) {
+        fw_vessel *v = w->slots[i].v;
+        if (!v || !v->taken || !fw_steer_controller_is(v->ctl) ||
+            fw_steer_controller_phase(v->ctl) != FW_STEER_DONE)
+            continue;
+        fw_target rec = v->record;
+        fw_error e2 = {0};
+        fw_status st = fw_world_give_back(w, handle_of(w, i), &e2);
+        if (st == FW_EINPUT)
+            continue;
+        if (st) {
+            *err = e2;
+            return st;
+        }
+        fw_reaction x = {.t = fw_world_time(w), .kind = FW_REACT_REJOIN,
+                         .speed_from = rec.speed, .speed_to = rec.speed, .enough = true,
+                         .course_from = rec.course, .course_to = rec.course};
+        snprintf(x.ship, sizeof x.ship, "%s", rec.id);
+        if ((st = fw_reactions_note(w->react, &x, err)))
+            return st;
+    }
+    return FW_OK;
+}
+
 static fw_status sense_and_decide(fw_world *w, fw_error *err)
 {
     const fw_target *src = NULL;
@@ -481,13 +553,16 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
         const fw_target *vs;
         int nvs = 0;
         src = NULL, n_src = 0;
-        if (w->own >= 0)
+        st = give_back_done(w, err);
+        if (!st && w->own >= 0)
             st = fw_source_nearby(w->source, &src, &n_src, err);
         if (!st)
             st = vessel_records(w, &vs, &nvs, err);
         if (!st)
             st = fw_reactions_step(w->react, fw_world_time(w), vs, nvs, src, n_src, w->source,
                                    err);
+        if (!st)
+            st = take_orders(w, err);
         lap(w, &tm->reactions, &t);
     }
     return st;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Bad traffic input is refused before anything runs, with FILE:LINE: FIELD and
-# exit 2, and no run directory is left: an unknown behaviour, a density below
+# exit 2, and no run directory is left: an unknown behaviour or give_way, a density below
 # zero, an unknown return, domain reading or own-ship dynamics, and a network whose demand names
 # an edge the network does not have (a copy of the data root with one edge
 # renamed).
@@ -18,6 +18,9 @@ expect() { # expect PATTERN ARGS... (exit 2)
 sed 's/^  density: 1$/  density: 1\n  behaviour: polite/' "$base" > "$dir/a.yaml"
 expect "a.yaml:[0-9]+: traffic.behaviour: 'polite': expected colregs or blind" \
   "$FAIRWAY" run "$dir/a.yaml" --out "$dir/runs"
+sed 's/^  density: 1$/  density: 1\n  give_way: sideways/' "$base" > "$dir/a2.yaml"
+expect "a2.yaml:[0-9]+: traffic.give_way: 'sideways': expected speed or course" \
+  "$FAIRWAY" run "$dir/a2.yaml" --out "$dir/runs"
 sed 's/^  density: 1$/  density: -0.5/' "$base" > "$dir/b.yaml"
 expect "b.yaml:[0-9]+: traffic.density: -0.5 is out of range" "$FAIRWAY" run "$dir/b.yaml" --out "$dir/runs"
 sed 's/^  radius_nm: 6 .*/  radius_nm: 6\n  return: home/' "$base" > "$dir/c.yaml"

@@ -1,0 +1,110 @@
+/* reactions_course.c - a give-way ship that alters course (reactions.h, give_way course). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/mem.h"
+#include "core/units.h"
+#include "geom/geom.h"
+#include "world/reactions_internal.h"
+#include "world/steer.h"
+
+/* On its lane: within this of its line (m) and of its course (rad). */
+static const double kOnLine = 10.0;
+static const double kAlong = 0.035; /* 2 deg */
+
+/* Ship self on course c at speed v: the closest approach to ship j and its time. */
+static void cpa_on(const fw_reactions *r, int self, const fw_target *all, double c, double v,
+                   int j, double *tc, double *d2)
+{
+    const fw_target *a = &all[self], *b = &all[j];
+    double ae, an;
+    fw_velocity(v, c, &ae, &an);
+    double be = b->speed * r->sn[j], bn = b->speed * r->cs[j];
+    fw_cpa_sq(b->east - a->east, b->north - a->north, be - ae, bn - an, tc, d2);
+}
+
+/* The closest ship self, on course c at speed v, would pass any ship near it
+ * (r->nb) within the horizon and ahead; *t_pass: the latest time it passes
+ * one of those it gives way to (list, m), which is how long it holds the new
+ * course (until they are past). */
+static double pass_on_course(const fw_reactions *r, int self, const fw_target *all, double c,
+                             double v, const int *list, int m, double *t_pass)
+{
+    double best = INFINITY, tc, d2;
+    *t_pass = 0.0;
+    for (int q = 0; q < r->nnb; q++) {
+        cpa_on(r, self, all, c, v, r->nb[q], &tc, &d2);
+        if (tc > 0.0 && tc < r->def.horizon)
+            best = fmin(best, d2);
+    }
+    for (int q = 0; q < m; q++) {
+        cpa_on(r, self, all, c, v, list[q], &tc, &d2);
+        *t_pass = fmax(*t_pass, tc);
+    }
+    return sqrt(best);
+}
+
+static fw_status order(fw_reactions *r, const fw_target *a, const fw_lane_info *lane,
+                       double alt, const char *other, fw_error *err)
+{
+    if (!fw_reserve((void **)&r->takes, sizeof *r->takes, &r->takes_cap, r->ntakes + 1))
+        return fw_fail(err, FW_ERUN, "out of memory for the ships to steer");
+    fw_take_order *o = &r->takes[r->ntakes++];
+    *o = (fw_take_order){.ship = *a, .lane = *lane, .alteration = alt, .cpa = r->def.cpa};
+    o->ship.own = false;
+    snprintf(o->other, sizeof o->other, "%s", other);
+    return FW_OK;
+}
+
+int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, react_state *st,
+                   const int *list, int m, int nearest, fw_situation sit, double dcpa,
+                   fw_source *src, fw_error *err)
+{
+    const fw_target *a = &all[self];
+    double v0 = st->v0, step = fw_deg_to_rad(5.0);
+    fw_lane_info lane;
+    bool have_lane = false;
+    for (double alt = r->def.alter_min; alt <= r->def.alter_max + 1e-9; alt += step) {
+        double t_pass, pass = pass_on_course(r, self, all, a->course + alt, v0, list, m, &t_pass);
+        if (pass < r->def.cpa)
+            continue;
+        if (!have_lane) {
+            fw_error e2 = {0};
+            fw_status s2 = fw_source_lane(src, a->id, &lane, &e2);
+            if (s2 == FW_EINPUT)
+                return 0; /* no lane here (a junction, a source without lanes) */
+            if (s2) {
+                *err = e2;
+                return -1;
+            }
+            have_lane = true;
+            /* in the middle of a lane change (off its lane's line, or
+             * crabbing across): SUMO's manoeuvre would go on, stale, once
+             * it is given back, so it slows down instead */
+            double lc, xt;
+            int seg;
+            fw_lane_where(&lane, a->east, a->north, &lc, &xt, &seg);
+            if (fabs(xt) > kOnLine || fabs(fw_wrap_pi(a->course - lc)) > kAlong)
+                return 0;
+            if (!r->def.room_from_lanes)
+                lane.room_starboard = lane.room_port = INFINITY;
+        }
+        /* its sideways run until the last of them is past, its half
+         * breadth, and a tenth of the room to spare */
+        double run = v0 * t_pass * sin(alt) + 0.5 * a->breadth;
+        if (!(run <= 0.9 * lane.room_starboard))
+            continue;
+        fw_reaction x = {.t = t, .kind = FW_REACT_ALTER, .situation = sit, .speed_from = v0,
+                         .speed_to = v0, .dcpa_before = dcpa, .dcpa_after = pass,
+                         .enough = true, .course_from = a->course,
+                         .course_to = fw_wrap_2pi(a->course + alt)};
+        snprintf(x.ship, sizeof x.ship, "%s", a->id);
+        snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
+        snprintf(st->other, sizeof st->other, "%s", all[nearest].id);
+        if (fw_react_record(r, &x, err) || order(r, a, &lane, alt, all[nearest].id, err))
+            return -1;
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,63 @@
+/* reactions_internal.h - the reactive traffic's state, shared by reactions.c
+ * (speed orders) and reactions_course.c (course alterations).  Internal to
+ * src/world. */
+#ifndef FW_WORLD_REACTIONS_INTERNAL_H
+#define FW_WORLD_REACTIONS_INTERNAL_H
+
+#include "core/idmap.h"
+#include "world/reactions.h"
+
+/* What a ship is doing, by its interned id. */
+typedef struct react_state {
+    bool seen;
+    bool holding;    /* told to hold `hold` m/s */
+    double v0;       /* m/s, its own speed: the fastest seen while not told */
+    double hold;     /* m/s */
+    char other[FW_TARGET_ID_MAX]; /* the ship it last gave way to */
+    bool rule17;     /* holding as a stand-on ship's last action (rule 17(b)) */
+    double t_next;   /* s, when it looks round again (every interval s) */
+    /* its course when last seen with that course's sine and cosine, reused
+     * while the course stays; trig_ok false: none yet */
+    double course, sin_c, cos_c;
+    bool trig_ok;
+} react_state;
+
+struct fw_reactions {
+    fw_reactions_def def;
+    fw_idmap ids;
+    react_state *s;
+    int cap;
+    fw_reaction *log;
+    int nlog, logcap;
+    int *list;       /* scratch: the ships one ship gives way to */
+    int list_cap;
+    int *nb;         /* scratch: the ships within range of the one deciding */
+    fw_target *all_buf; /* scratch: the ships and the own ship (list_cap of them) */
+    int *idx;        /* scratch: this step's ships' states (indices into s) */
+    int nnb;
+    /* this step's ships (the own ship last) and the sines and cosines of
+     * their courses, computed once: the pair loops' trigonometry */
+    const fw_target *all;
+    double *sn, *cs;
+    double cos_parallel;
+    fw_watch *watch;
+    fw_take_order *takes; /* this step's ships to take and steer (course alterations) */
+    int ntakes, takes_cap;
+};
+
+/* The closest a, at speed v, would pass any ship near it (r->nb) other than
+ * skip (-1: none) within the horizon, stopping at the first below floor. */
+double fw_react_min_pass(const fw_reactions *r, int self, const fw_target *all, double v,
+                         int skip, double floor);
+fw_status fw_react_record(fw_reactions *r, const fw_reaction *x, fw_error *err);
+
+/* Ship self (of all, its state st) gives way to the m ships of list, the
+ * nearest in time all[nearest] (situation sit, closest approach dcpa), by
+ * altering course, if it can (reactions.h): 1 when
+ * ordered (taken: r->takes), 0 when it cannot (no alteration clears, no sea
+ * room, no lane), -1 with *err set on a failure. */
+int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, react_state *st,
+                   const int *list, int m, int nearest, fw_situation sit, double dcpa,
+                   fw_source *src, fw_error *err);
+
+#endif

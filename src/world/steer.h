@@ -1,0 +1,91 @@
+/* steer.h - a background ship that alters course: its manoeuvring model and its helmsman.
+ *
+ * A background ship that must give way and has the sea room alters course to
+ * starboard instead of slowing down (reactions.h decides when and by how
+ * much); for as long as it steers itself it is taken from the traffic source
+ * (world.h fw_world_take) and stepped by fairway as a Nomoto vessel
+ * (vessel.h FW_DYN_NOMOTO) under the controller made here, then given back.
+ *
+ * Model (fw_steer_ship): first-order Nomoto, T r' + r = K delta, with
+ *   K = K' U / L,  T = T' L / U,  K' = 0.548, T' = 0.497,
+ * the non-dimensional indices of the C-3 (the ship whose manoeuvring the
+ * project models, scenarios/ships/c3-mmg.yaml's knowledge base, identified
+ * from its MMG turning tests) at 12 kn and 15 deg of helm, the middle of
+ * that knowledge base: every background ship turns like a C-3 of its own
+ * length at its own speed (a 150 m feeder at 16 kn holds 0.45 deg/s at 15
+ * deg, a radius of about 7 ship lengths).  Fuller hulls (tankers, bulk
+ * carriers) turn more readily at small helm and steady less readily than
+ * that: not modelled.  The second-order terms are set to cancel (T2 = T3),
+ * the speed is held (no speed loss in the turn), the rudder is limited to 35
+ * deg and moves at 2.32 deg/s (SOLAS II-1/29.3.2: 35 deg on one side to 30
+ * deg on the other in 28 s).
+ *
+ * Helmsman (fw_steer_controller_create), in three phases:
+ *   alter    the course over ground of its lane at the ship plus the
+ *            alteration (to starboard), and once it is `room` to starboard
+ *            of its lane's line, that line's course at that offset (it never
+ *            leaves its waterway), held until the ship it gives way to
+ *            is past and clear: the range opening, and the course back to
+ *            its lane passing it at the passing distance or more (or no
+ *            closest approach ahead); a ship no longer in sight is past
+ *   return   back to its lane's centre line by line-of-sight guidance
+ *            (look-ahead 4 ship lengths, at least 400 m), never crossing back
+ *            at more than the alteration; while that course would bring it
+ *            within half the passing distance of a ship it sees in the next
+ *            10 minutes (a ship of its lane, another coming back) and its
+ *            lane's course would not, it sails along its lane where it is
+ *   done     on the line (hull centre and bow within 0.3 m of it, for the
+ *            source's 1 m limit on giving back) and its course along it: the
+ *            world gives it back (world.h)
+ * Headings are ordered by a proportional helm on the heading error (gain
+ * from the model so the closed loop is critically damped with its time
+ * constant L/U), at most 20 deg of helm (an officer's alteration, not a
+ * crash turn); in a current the heading allows for the set (course over
+ * ground is what is steered).
+ * While taken it does not give way to a third ship: the other ships see it
+ * as a vessel and give way to it as the rules say (reactions.h).
+ */
+#ifndef FW_WORLD_STEER_H
+#define FW_WORLD_STEER_H
+
+#include "ship/ship.h"
+#include "traffic/source.h"
+#include "world/vessel.h"
+
+/* The non-dimensional Nomoto indices every steered background ship has. */
+#define FW_STEER_K_ND 0.548
+#define FW_STEER_T_ND 0.497
+
+/* The model of a background ship of this Loa (m, > 0), breadth (m) and
+ * type name (copied, cut to fit) into *out. */
+void fw_steer_ship(double length, double breadth, const char *type, fw_ship *out);
+
+typedef struct fw_alter_def {
+    fw_lane_info lane;                 /* where it comes back to (source.h) */
+    double alteration;                 /* rad, > 0: to starboard of its lane's course */
+    char other[FW_TARGET_ID_MAX];      /* the ship it gives way to */
+    double cpa;                        /* m, the passing distance it keeps */
+    double room;                       /* m, the farthest to starboard of its line it goes */
+    double length;                     /* m, its Loa */
+    double helm_max;                   /* rad, 20 deg */
+} fw_alter_def;
+
+/* lane and other empty, alteration 30 deg, cpa 926 m, room unlimited, length 100 m,
+ * helm 20 deg. */
+fw_alter_def fw_default_alter_def(void);
+
+typedef enum fw_steer_phase { FW_STEER_ALTER, FW_STEER_RETURN, FW_STEER_DONE } fw_steer_phase;
+
+fw_status fw_steer_controller_create(const fw_alter_def *def, fw_controller **out,
+                                     fw_error *err);
+/* Is c one (and then its phase)? */
+bool fw_steer_controller_is(const fw_controller *c);
+fw_steer_phase fw_steer_controller_phase(const fw_controller *c);
+
+/* The point of the lane's line nearest (e, n): the line's course there (rad)
+ * and the cross-track distance (m, > 0 to starboard of the line), the
+ * segment's index in *seg (the last segment beyond its end). */
+void fw_lane_where(const fw_lane_info *lane, double e, double n, double *course, double *xtrack,
+                   int *seg);
+
+#endif

@@ -1,0 +1,248 @@
+/* test_steer.c - background ships that alter course (world/steer.h, reactions.h give_way course).
+ *
+ *   model: the indices steer.h states are the C-3's (c3-mmg's knowledge base
+ *     at 12 kn and 15 deg, made non-dimensional) to 0.5 %; a steered ship's
+ *     steady rate at a held helm is K' U / L x helm, its time constant T' L / U
+ *   crossing (kinematic source, open water): a ship with the own ship on its
+ *     starboard bow on a collision course alters course to starboard by at
+ *     least 20 deg (readily apparent), the own ship passes it at the passing
+ *     distance or more, it turns no faster than its model can, comes back to
+ *     its lane and is given back on its line (within the source's 1 m), and
+ *     nothing jumps: its hull centre moves at its speed every step
+ *   no sea room (the kinematic lane 100 m each side): it slows down instead
+ *   head-on with the own ship (rule 14): it alters to starboard
+ *   give_way speed (the default): no alteration, the slow-down of before
+ */
+#include <math.h>
+#include <string.h>
+
+#include "core/units.h"
+#include "nomoto/nomoto.h"
+#include "test.h"
+#include "traffic/source.h"
+#include "world/controllers.h"
+#include "world/steer.h"
+#include "world/world.h"
+
+static fw_ship own_ship;
+
+/* The C-3's indices at 12 kn and 15 deg, non-dimensional, equal steer.h's. */
+static void test_indices_are_the_c3s(void)
+{
+    fw_ship c3;
+    fw_error err = {0};
+    CHECK_MSG(fw_ship_load("c3-mmg", &c3, &err) == FW_OK, "%s", err.msg);
+    fw_nomoto_indices ix;
+    CHECK(fw_nomoto_indices_at(&c3.nomoto, 12.0, 15.0, &ix, &err) == FW_OK);
+    double U = fw_kn_to_ms(12.0);
+    double Kp = ix.K * c3.L / U, Tp = (ix.T1 + ix.T2 - ix.T3) * U / c3.L;
+    CHECK_NEAR(Kp, FW_STEER_K_ND, 0.005 * FW_STEER_K_ND);
+    CHECK_NEAR(Tp, FW_STEER_T_ND, 0.005 * FW_STEER_T_ND);
+}
+
+/* A steered 150 m ship at 12 kn, helm 15 deg held: its rate after 5 time
+ * constants is K' U / L x 15 deg (1 %), and after the rudder is over
+ * (15 deg at 2.32 deg/s) it rises as 1 - exp(-t / T) would (5 %). */
+static void test_model_turns_as_stated(void)
+{
+    fw_ship s;
+    fw_steer_ship(150.0, 25.0, "feeder", &s);
+    double U = fw_kn_to_ms(12.0), K = FW_STEER_K_ND * U / 150.0, T = FW_STEER_T_ND * 150.0 / U;
+    fw_world_def wd = fw_default_world_def();
+    fw_world *w = NULL;
+    fw_error err = {0};
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_manoeuvre_def md = {.t_act = 0.0, .helm = fw_deg_to_rad(15.0), .course = 0.0,
+                           .alteration = fw_deg_to_rad(350.0)};
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.ship = &s;
+    vd.dynamics = FW_DYN_NOMOTO;
+    vd.speed = U;
+    CHECK(fw_manoeuvre_controller_create(&md, &vd.controller, &err) == FW_OK);
+    fw_vessel_handle h;
+    CHECK(fw_world_add_vessel(w, &vd, &h, &err) == FW_OK);
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    double ramp = 15.0 / (65.0 / 28.0), r_ramp_end = NAN;
+    for (int k = 1; k <= (int)(ramp + 5.0 * T) + 1; k++) {
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+        if (k == (int)ceil(ramp))
+            r_ramp_end = fw_vessel_motion(fw_world_vessel(w, h))->r;
+        if (k == (int)ceil(ramp) + (int)round(T)) {
+            double r = fw_vessel_motion(fw_world_vessel(w, h))->r;
+            double want = K * fw_deg_to_rad(15.0) - (K * fw_deg_to_rad(15.0) - r_ramp_end) *
+                                                         exp(-round(T) / T);
+            CHECK_NEAR(r, want, 0.05 * want);
+        }
+    }
+    double r = fw_vessel_motion(fw_world_vessel(w, h))->r;
+    CHECK_NEAR(r, K * fw_deg_to_rad(15.0), 0.01 * K * fw_deg_to_rad(15.0));
+    fw_world_destroy(w);
+}
+
+/* A world: background ship g (150 x 25 m, 10 kn, going north from the
+ * origin) and the own ship (a Nomoto C-3 without a controller: it holds its
+ * course) from (e, n) on course_deg at kn; give_way as given, sea room. */
+static fw_world *scene(fw_give_way gw, double room, double e, double n, double course_deg,
+                       double kn)
+{
+    fw_error err = {0};
+    fw_kin_ship ks[1] = {{.start = {.id = "g", .east = 0, .north = 0, .course = 0.0,
+                                    .speed = fw_kn_to_ms(10), .length = 150, .breadth = 25,
+                                    .type = "container_feeder"}}};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ks;
+    kd.n = 1;
+    kd.room = room;
+    fw_world_def wd = fw_default_world_def();
+    wd.reactions = fw_default_reactions_def(); /* colregs */
+    wd.reactions.give_way = gw;
+    fw_world *w = NULL;
+    CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_vessel_def own = fw_default_vessel_def();
+    own.ship = &own_ship;
+    own.dynamics = FW_DYN_NOMOTO;
+    own.east = e, own.north = n, own.course = fw_deg_to_rad(course_deg);
+    own.speed = fw_kn_to_ms(kn);
+    CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    return w;
+}
+
+/* What happened to g in steps of 1 s for up to `steps`. */
+typedef struct track_stats {
+    int alters, rejoins, slows;
+    double alter_deg;          /* the first alteration */
+    double max_rate_degps;     /* its largest heading change in a step */
+    double max_jump_m;         /* its largest move beyond speed x step */
+    double min_range_m;        /* from the own ship, hull centres */
+    double rejoin_off_m;       /* its distance from its lane (east = 0) when given back */
+} track_stats;
+
+/* g's record: a vessel's while taken, else the source's. */
+static bool g_now(fw_world *w, fw_target *out)
+{
+    const fw_target *v;
+    int n;
+    fw_error err = {0};
+    fw_source *src = fw_world_source(w);
+    for (int i = 0; i < fw_world_vessel_count(w); i++) {
+        const fw_vessel *vs = fw_world_vessel(w, fw_world_vessel_at(w, i));
+        if (strcmp(fw_vessel_id(vs), "g") == 0) {
+            *out = *fw_vessel_record(vs);
+            return true;
+        }
+    }
+    if (src->ops->within(src, 0.0, 0.0, INFINITY, &v, &n, &err) == FW_OK)
+        for (int i = 0; i < n; i++)
+            if (strcmp(v[i].id, "g") == 0) {
+                *out = v[i];
+                return true;
+            }
+    return false;
+}
+
+static track_stats sail(fw_world *w, int steps)
+{
+    track_stats s = {.min_range_m = INFINITY, .rejoin_off_m = NAN, .alter_deg = NAN};
+    fw_error err = {0};
+    fw_target prev = {0}, now;
+    bool have = g_now(w, &prev);
+    CHECK(have);
+    for (int k = 0; k < steps; k++) {
+        CHECK_MSG(fw_world_step(w, 1.0, &err) == FW_OK, "%s", err.msg);
+        CHECK(g_now(w, &now));
+        double rate = fabs(fw_rad_to_deg(fw_wrap_pi(now.heading - prev.heading)));
+        double moved = hypot(now.east - prev.east, now.north - prev.north);
+        s.max_rate_degps = fmax(s.max_rate_degps, rate);
+        s.max_jump_m = fmax(s.max_jump_m, moved - fmax(now.speed, prev.speed));
+        const fw_target *own = fw_vessel_record(fw_world_vessel(w, fw_world_own(w)));
+        s.min_range_m = fmin(s.min_range_m, hypot(own->east - now.east, own->north - now.north));
+        prev = now;
+    }
+    int n;
+    const fw_reaction *r = fw_world_reactions(w, &n);
+    for (int i = 0; i < n; i++) {
+        if (strcmp(r[i].ship, "g") != 0)
+            continue;
+        if (r[i].kind == FW_REACT_ALTER && s.alters++ == 0)
+            s.alter_deg = fw_rad_to_deg(fw_wrap_pi(r[i].course_to - r[i].course_from));
+        s.rejoins += r[i].kind == FW_REACT_REJOIN;
+        s.slows += r[i].kind == FW_REACT_SLOW;
+    }
+    return s;
+}
+
+/* Own ship from the east going west at 12 kn, meeting g (10 kn north) at
+ * (0, 4000) in 1200 s: g has it on its starboard bow and gives way. */
+static fw_world *crossing(fw_give_way gw, double room)
+{
+    double v = fw_kn_to_ms(12.0), t = 4000.0 / fw_kn_to_ms(10.0);
+    return scene(gw, room, v * t, 4000.0, 270.0, 12.0);
+}
+
+static void test_crossing_alters_and_comes_back(void)
+{
+    fw_world *w = crossing(FW_GIVE_WAY_COURSE, INFINITY);
+    track_stats s = sail(w, 3600);
+    CHECK_MSG(s.alters == 1, "%d alterations", s.alters);
+    CHECK_MSG(s.alter_deg >= 20.0 - 1e-9 && s.alter_deg <= 60.0 + 1e-9, "%.1f deg", s.alter_deg);
+    CHECK_MSG(s.slows == 0, "%d slow-downs", s.slows);
+    /* the own ship holds on; the passing distance (926 m) less the turn's lag */
+    CHECK_MSG(s.min_range_m > 800.0, "closest %.0f m", s.min_range_m);
+    /* 35 deg of rudder at most: K' U / L x 35 deg = 0.56 deg/s */
+    double rmax = fw_rad_to_deg(FW_STEER_K_ND * fw_kn_to_ms(10) / 150.0 * fw_deg_to_rad(35.0));
+    CHECK_MSG(s.max_rate_degps <= rmax, "%.2f deg/s (at most %.2f)", s.max_rate_degps, rmax);
+    CHECK_MSG(s.max_jump_m < 0.05, "moved %.2f m beyond its speed in a step", s.max_jump_m);
+    CHECK_MSG(s.rejoins == 1, "%d rejoins", s.rejoins);
+    fw_target g;
+    CHECK(g_now(w, &g));
+    CHECK_MSG(fabs(g.east) <= FW_SOURCE_REJOIN_MAX, "given back %.2f m off its lane", g.east);
+    CHECK_NEAR(fw_rad_to_deg(fw_wrap_pi(g.course)), 0.0, 1e-6);
+    CHECK(fw_world_vessel_count(w) == 1); /* only the own ship: g is the source's again */
+    fw_world_destroy(w);
+}
+
+static void test_no_room_slows(void)
+{
+    fw_world *w = crossing(FW_GIVE_WAY_COURSE, 100.0);
+    track_stats s = sail(w, 600);
+    CHECK_MSG(s.alters == 0 && s.slows >= 1, "%d alterations, %d slow-downs", s.alters, s.slows);
+    fw_world_destroy(w);
+}
+
+static void test_speed_mode_unchanged(void)
+{
+    fw_world *w = crossing(FW_GIVE_WAY_SPEED, INFINITY);
+    track_stats s = sail(w, 600);
+    CHECK_MSG(s.alters == 0 && s.slows >= 1, "%d alterations, %d slow-downs", s.alters, s.slows);
+    fw_world_destroy(w);
+}
+
+/* The own ship 6 km ahead of g, coming south, 100 m to g's starboard side:
+ * head-on (rule 14); g alters to starboard. */
+static void test_head_on_alters(void)
+{
+    fw_world *w = scene(FW_GIVE_WAY_COURSE, INFINITY, 100.0, 6000.0, 180.0, 12.0);
+    track_stats s = sail(w, 1800);
+    CHECK_MSG(s.alters == 1 && s.alter_deg >= 20.0 - 1e-9, "%d alterations (%.1f deg)", s.alters,
+              s.alter_deg);
+    CHECK_MSG(s.min_range_m > 700.0, "closest %.0f m", s.min_range_m);
+    fw_world_destroy(w);
+}
+
+int main(void)
+{
+    fw_error err = {0};
+    if (fw_ship_load("c3-paper", &own_ship, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return 1;
+    }
+    TEST_RUN(test_indices_are_the_c3s);
+    TEST_RUN(test_model_turns_as_stated);
+    TEST_RUN(test_crossing_alters_and_comes_back);
+    TEST_RUN(test_no_room_slows);
+    TEST_RUN(test_speed_mode_unchanged);
+    TEST_RUN(test_head_on_alters);
+    return TEST_EXIT();
+}
