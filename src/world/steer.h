@@ -42,6 +42,8 @@
  * constant L/U), at most 20 deg of helm (an officer's alteration, not a
  * crash turn); in a current the heading allows for the set (course over
  * ground is what is steered).
+ * Wind acts on it no more than on SUMO's ships (neither has windage); a
+ * current carries it (vessel.h: a Nomoto vessel's step).
  * While taken it does not give way to a third ship: the other ships see it
  * as a vessel and give way to it as the rules say (reactions.h).
  */

@@ -194,7 +194,9 @@ static fw_status add(fw_world *w, const fw_vessel_def *def, bool taken, int *i, 
         st = FW_ERUN;
     if (!st && !(v = calloc(1, sizeof *v)))
         st = fw_fail(err, FW_ERUN, "out of memory");
-    if (!st && def->ship)
+    /* a ship taken from the source is a background ship: wind acts on none
+     * of them, SUMO's or fairway's (steer.h) */
+    if (!st && def->ship && !taken)
         st = fw_env_check_vessel(&w->def.env, def->id ? def->id : "?", def->ship,
                                  def->dynamics == FW_DYN_MMG, err);
     if (!st)
