@@ -62,6 +62,8 @@ foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0,
             "neap:27: environment.current.tidal.neap_rate_kn: 2 kn is above the spring rate"
             "sensemode:26: sensing.mode: 'sonar' is not a sensing mode \\(perfect, ais, radar or ais\\+radar\\)"
             "dropout:26: sensing.dropout: 1.5 is out of range \\[0, 1\\]"
+            "visibility:26: environment.visibility_nm: 0: a visibility is more than 0"
+            "visneg:26: environment.visibility_nm: -2: a visibility is more than 0"
             "lapse:15: traffic.watch.lapse: 1.5 is out of range \\[0, 1\\]"
             "detect:15: traffic.watch.detect_s: -5 is out of range \\[0, 3600\\]"
             "laterange:15: traffic.watch.late_range_nm: a late action .* needs the range"
@@ -86,3 +88,6 @@ fw_cli_test(cli_manoeuvre_wind_no_windage 2 "no-windage.yaml has no windage: sec
 fw_script_test(sensing_run 0 "ok: the own ship decides on AIS reports and on radar tracks"
                sensing_run.sh)
 set_tests_properties(sensing_run PROPERTIES ENVIRONMENT "${fw_lsan}")
+# Restricted visibility: the own ship under rule 19 (avoid/policy.h)
+fw_script_test(visibility_run 0 "ok: rule 19 in restricted visibility" visibility_run.sh)
+set_tests_properties(visibility_run PROPERTIES ENVIRONMENT "${fw_lsan}")

@@ -40,7 +40,9 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
             "axheld:6: axes.traffic.density: not an axis: use densities:"
             "axvalue:6: axes.own_ship.speed_kn\\[1\\]: .*base.yaml:9: own_ship.speed_kn: -3 is out of range"
             "axkey:6: axes.avoidance.horizon\\[0\\]: .*avoidance.horizon: unknown field"
-            "axform:6: axes.own_ship.speed_kn\\[1\\]: 12 is listed twice")
+            "axform:6: axes.own_ship.speed_kn\\[1\\]: 12 is listed twice"
+            "axvis:6: axes.environment.visibility_nm\\[1\\]: .*base.yaml:3: environment.visibility_nm: 0: a visibility is more than 0"
+            "axmode:6: axes.sensing.mode\\[1\\]: .*sensing.mode: 'lidar' is not a sensing mode")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_script_test(cli_sweep_bad_${name} 0 "ok: no database" sweep_bad.sh

@@ -141,6 +141,39 @@ static void test_more_helm_more_clearance(void)
     fw_helm_ctx_destroy(ctx);
 }
 
+/* Rule 19(d) (helm_search.h fw_permitted_sides): one target at a time at
+ * relative bearing rb, 3 km off, on a collision course (meeting the own ship
+ * 600 s on), in clear weather and with a visibility of 500 m (out of sight). */
+static int sides_for(double rb_deg, double visibility)
+{
+    fw_helm_def def = fw_default_helm_def();
+    def.colregs.visibility = visibility;
+    fw_own_state own = {.U = 6.0};
+    double rb = fw_deg_to_rad(rb_deg), T = 600.0;
+    fw_target t = {.east = 3000.0 * sin(rb), .north = 3000.0 * cos(rb)};
+    double ve = -t.east / T, vn = (own.U * T - t.north) / T;
+    t.course = t.heading = fw_wrap_2pi(atan2(ve, vn));
+    t.speed = hypot(ve, vn);
+    fw_assessment as;
+    int order[2];
+    fw_assess(&def.colregs, &def.domain, def.track.horizon, &own, &t, 1, &as, order);
+    CHECK(as.enters_domain && as.rule19 == (visibility > 0.0));
+    return fw_permitted_sides(&def, &as, 1);
+}
+
+static void test_rule19_sides(void)
+{
+    /* forward of the beam: never to port, but for a ship the own ship overtakes */
+    CHECK(sides_for(45.0, 500.0) == FW_ALLOW_STARBOARD);
+    CHECK(sides_for(315.0, 500.0) == FW_ALLOW_STARBOARD);
+    CHECK(sides_for(0.0, 500.0) == FW_ALLOW_EITHER); /* slower, ahead: overtaken by us */
+    /* abeam and abaft: not towards it */
+    CHECK(sides_for(135.0, 0.0) == FW_ALLOW_EITHER); /* clear: being overtaken, to starboard */
+    CHECK(sides_for(135.0, 500.0) == FW_ALLOW_PORT);
+    CHECK(sides_for(90.0, 500.0) == FW_ALLOW_PORT);
+    CHECK(sides_for(225.0, 500.0) == FW_ALLOW_STARBOARD);
+}
+
 static void test_only_one_side_works(void)
 {
     fw_helm_def def = fw_default_helm_def();
@@ -577,6 +610,7 @@ int main(void)
     TEST_RUN(test_assessment_and_ranking);
     TEST_RUN(test_more_helm_more_clearance);
     TEST_RUN(test_only_one_side_works);
+    TEST_RUN(test_rule19_sides);
     TEST_RUN(test_predictor_is_used);
     TEST_RUN(test_transverse_reading);
     TEST_RUN(test_policy_head_on_cycle);

@@ -107,6 +107,33 @@ static void test_run_list_shapes(void)
     free(s);
 }
 
+/* The sensing and the visibility as axes (issue 24): twelve settings, each
+ * scenario with its sensor's mode and gain (beta Benedict-Bordner's) and its
+ * visibility where the rules read it (the own ship's and the traffic's). */
+static void test_run_list_axes_fog(void)
+{
+    fw_study *s = load("tests/data/study/axes-fog.yaml");
+    CHECK(s->n_axes == 3 && s->n_settings == 12);
+    static const fw_sensing_mode mode[] = {FW_SENSE_PERFECT, FW_SENSE_RADAR, FW_SENSE_AIS_RADAR};
+    for (int k = 0; k < 12; k++) {
+        fw_study_run r = fw_study_run_at(s, k);
+        CHECK(r.setting_index == k);
+        fw_scenario scn;
+        fw_study_scenario(s, &r, &scn);
+        double vis = fw_nm_to_m((k / 2) % 2 ? 0.5 : 10.0), alpha = k % 2 ? 0.3 : 0.1;
+        CHECK(scn.sensing.mode == mode[k / 4]);
+        CHECK_NEAR(scn.visibility, vis, 1e-9);
+        CHECK(scn.helm.colregs.visibility == scn.visibility &&
+              scn.reactions.colregs.visibility == scn.visibility);
+        CHECK_NEAR(scn.sensing.radar.alpha, alpha, 1e-12);
+        CHECK_NEAR(scn.sensing.radar.beta, alpha * alpha / (2.0 - alpha), 1e-12);
+    }
+    char label[160];
+    CHECK(strcmp(fw_study_setting_label(s, 11, label, sizeof label),
+                 "sensing.mode=ais+radar, environment.visibility_nm=0.5, sensing.alpha=0.3") == 0);
+    free(s);
+}
+
 /* Two scenario keys as axes: four settings, outermost in the run list (after
  * the replications), each sailing its own values over the base scenario and
  * the same seeds and starts as the others (paired); the labels name them. */
@@ -424,6 +451,7 @@ int main(void)
     TEST_RUN(test_run_list_behaviours);
     TEST_RUN(test_run_list_shapes);
     TEST_RUN(test_run_list_axes);
+    TEST_RUN(test_run_list_axes_fog);
     TEST_RUN(test_outcome_bytes);
     TEST_RUN(test_store);
     TEST_RUN(test_encounter_record);

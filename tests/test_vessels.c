@@ -288,21 +288,26 @@ static void test_take_give_back_kinematic(void)
 /* The crossing: t (taken by fairway, a Nomoto vessel) sailing north, g
  * (the source's) crossing ahead of it from its port side; the own ship far
  * away; g's watch as given, the world started. */
-static fw_world *crossing_world(fw_watch_def watch, uint64_t seed)
+/* ... g from the side `side` (-1: from the west, t on its starboard side; 1:
+ * from the east, t on its port side) in visibility (m, 0: clear). */
+static fw_world *crossing_world_in(fw_watch_def watch, uint64_t seed, double side,
+                                   double visibility)
 {
     fw_error err = {0};
     double v = fw_kn_to_ms(8);
     fw_kin_ship ks[2] = {
         {.start = {.id = "t", .east = 0, .north = 0, .course = 0.0, .speed = v, .length = 150,
                    .breadth = 25}},
-        {.start = {.id = "g", .east = -3000, .north = 3000, .course = 0.5 * FW_PI, .speed = v,
-                   .length = 150, .breadth = 25}}};
+        {.start = {.id = "g", .east = 3000 * side, .north = 3000,
+                   .course = side < 0 ? 0.5 * FW_PI : 1.5 * FW_PI, .speed = v, .length = 150,
+                   .breadth = 25}}};
     fw_kinematic_def kd = fw_default_kinematic_def();
     kd.ships = ks;
     kd.n = 2;
     fw_world_def wd = fw_default_world_def();
     wd.reactions = fw_default_reactions_def(); /* colregs */
     wd.reactions.watch = watch;
+    wd.reactions.colregs.visibility = visibility;
     wd.seed = seed;
     fw_world *w = NULL;
     CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
@@ -315,6 +320,35 @@ static fw_world *crossing_world(fw_watch_def watch, uint64_t seed)
     CHECK_MSG(fw_world_take(w, "t", &td, NULL, &err) == FW_OK, "%s", err.msg);
     CHECK(fw_world_start(w, &err) == FW_OK);
     return w;
+}
+
+static fw_world *crossing_world(fw_watch_def watch, uint64_t seed)
+{
+    return crossing_world_in(watch, seed, -1.0, 0.0);
+}
+
+/* Rule 19 (reactions.h): g crosses from the east, t on its port side: in
+ * clear weather g is the stand-on ship and keeps its speed (120 s, far from
+ * rule 17(b)'s last moment); with a visibility of 1 km (t 4.2 km off, out
+ * of sight, forward of g's beam) g slows at once. */
+static void test_traffic_rule19(void)
+{
+    fw_error err = {0};
+    for (int fog = 0; fog < 2; fog++) {
+        fw_world *w = crossing_world_in(fw_default_watch_def(), 1, 1.0, fog ? 1000.0 : 0.0);
+        for (int k = 0; k < 120; k++)
+            CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+        int n;
+        const fw_reaction *r = fw_world_reactions(w, &n);
+        printf("g stand-on by rule 15, %s: %d orders%s\n", fog ? "fog (1 km)" : "clear", n,
+               n > 0 && r[0].kind == FW_REACT_SLOW ? ", the first slows" : "");
+        if (fog)
+            CHECK(n >= 1 && strcmp(r[0].ship, "g") == 0 && r[0].kind == FW_REACT_SLOW &&
+                  r[0].t < 10.0);
+        else
+            CHECK(n == 0);
+        fw_world_destroy(w);
+    }
 }
 
 /* The reactive traffic gives way to a taken ship: g crosses ahead of t,
@@ -749,6 +783,7 @@ int main(int argc, char **argv)
     TEST_RUN(test_take_give_back_kinematic);
     TEST_RUN(test_traffic_reacts_to_taken);
     TEST_RUN(test_watch);
+    TEST_RUN(test_traffic_rule19);
     TEST_RUN(test_watch_detect_late);
     TEST_RUN(test_watch_detect_law);
     TEST_RUN(test_own_watch);

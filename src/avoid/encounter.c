@@ -207,6 +207,7 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
         fw_cpa(dx, dy, vx, vy, &as->tcpa, &as->dcpa);
         as->t_range = time_to_range(dx, dy, vx, vy, cdef->rank_range_m);
         as->situation = classify(cdef, own, &t[i], brg);
+        as->rule19 = fw_not_in_sight(cdef, as->range);
         as->rank = 0;
         if (t[i].pred) {
             assess_path(dom, horizon, own, &t[i], as);

@@ -2,7 +2,8 @@
  *
  * Per target: range, bearings, DCPA/TCPA (constant velocities: the
  * instantaneous CPA, as a radar's), the COLREGs situation (rules 13-17) by
- * named thresholds, and whether and when it enters the own domain with the own
+ * named thresholds, whether it is out of sight in restricted visibility
+ * (rule 19 then governs: policy.h, helm_search.h), and whether and when it enters the own domain with the own
  * ship keeping course and speed and the target moving as its predictor says
  * (constant velocity without one: closed form; with one: its path sampled
  * every 5 s); then a danger ranking.
@@ -44,6 +45,11 @@ typedef struct fw_colregs_def {
      * dangerous; m, 0 = off (then earliest domain entry first).  The policy
      * sets it to its action distance. */
     double rank_range_m;
+    /* m, restricted visibility (the scenario's environment.visibility_nm):
+     * ships farther apart are not in sight of one another (rule 3(k)) and
+     * rule 19 governs them instead of rules 11-18; 0 = clear, every ship in
+     * sight (the default) */
+    double visibility;
 } fw_colregs_def;
 
 fw_colregs_def fw_default_colregs_def(void);
@@ -60,10 +66,17 @@ typedef struct fw_assessment {
     double t_range;      /* s, when the range first falls to rank_range_m at constant
                             velocities (0 if within it now or the rule is off) */
     int rank;            /* 0 = most dangerous */
+    bool rule19;         /* not in sight (range > visibility): rule 19, not 13-17 */
 } fw_assessment;
 
 fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
                          const fw_target *t);
+
+/* Is a ship at this range out of sight (rule 19 governs)? */
+static inline bool fw_not_in_sight(const fw_colregs_def *def, double range)
+{
+    return def->visibility > 0.0 && range > def->visibility;
+}
 
 /* Fills out[0..n-1].  If order is not NULL (room for 2 n ints: the second
  * half is scratch) it gets the target indices most dangerous first and each

@@ -268,12 +268,28 @@ double fw_track_min_distance(const fw_track *tr, const fw_target *t, double *t_m
     return best;
 }
 
+/* Rule 19(d), a ship not in sight: no alteration of course to port for a
+ * ship forward of the beam, other than one being overtaken (by the own
+ * ship); none towards a ship abeam or abaft the beam. */
+static int rule19_sides(const fw_assessment *a)
+{
+    double rb = a->rel_bearing; /* [0, 2 pi), clockwise from the bow */
+    bool forward = rb < 0.5 * FW_PI || rb > 1.5 * FW_PI;
+    if (forward)
+        return a->situation == FW_SIT_OVERTAKING ? FW_ALLOW_EITHER : FW_ALLOW_STARBOARD;
+    return rb <= FW_PI ? FW_ALLOW_PORT : FW_ALLOW_STARBOARD;
+}
+
 int fw_permitted_sides(const fw_helm_def *def, const fw_assessment *as, int n)
 {
     int allowed = FW_ALLOW_EITHER;
     for (int i = 0; i < n; i++) {
         if (!as[i].enters_domain)
             continue;
+        if (as[i].rule19) {
+            allowed &= rule19_sides(&as[i]);
+            continue;
+        }
         switch (as[i].situation) {
         case FW_SIT_HEAD_ON:
         case FW_SIT_GIVE_WAY:

@@ -82,7 +82,12 @@ double fw_track_min_distance(const fw_track *tr, const fw_target *t, double *t_m
 /* The sides COLREGs permit against the threats (targets whose assessment says
  * they enter the domain): starboard only for head-on and give-way crossing
  * (and for a stand-on ship against a target on its port side: rule 17 forbids
- * a port turn then); overtaking per def->overtake_side; else either. */
+ * a port turn then); overtaking per def->overtake_side; else either.  A
+ * target out of sight (assessment rule19, restricted visibility): rule
+ * 19(d) instead, whatever the situation: starboard only for one forward of
+ * the beam (either for one the own ship overtakes), away from one abeam or
+ * abaft the beam (port for one on the starboard side, starboard for one on
+ * the port side).  Sides that exclude each other: starboard. */
 int fw_permitted_sides(const fw_helm_def *def, const fw_assessment *as, int n);
 
 typedef struct fw_helm_result {

@@ -127,11 +127,13 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
     *least = 0.0;
     /* in the middle of its own manoeuvre the own ship is no stand-on ship:
      * its turn may have put the target it gives way to on its port side */
-    bool by_rule = false;
+    bool by_rule = false, fog = false;
     for (int i = 0; i < n; i++)
-        if (as[i].enters_domain && gives_way(as[i].situation))
+        if (as[i].enters_domain && gives_way(as[i].situation) && !as[i].rule19)
             by_rule = true;
-    bool give_way = by_rule || p->mode == FW_MODE_STEADY;
+        else if (as[i].enters_domain && as[i].rule19)
+            fog = true; /* rule 19(d): out of sight there is no stand-on ship */
+    bool give_way = by_rule || fog || p->mode == FW_MODE_STEADY;
     /* The reason names the ground, so that it agrees with the situation the
      * log shows beside it: a give-way ship (rules 14-16), or one still in its
      * own manoeuvre whose target now lies to port ("crossing stand-on"). */
@@ -145,7 +147,11 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
         "the minimum helm",
         "own manoeuvre under way (not a stand-on ship): minimum helm still enough later, "
         "waiting"};
-    const char *const *gw_why = by_rule ? rule_why : own_why;
+    static const char *const fog_why[3] = {
+        "rule 19, not in sight: range within the action distance",
+        "rule 19, not in sight: waiting longer would need more than the minimum helm",
+        "rule 19, not in sight: minimum helm still enough later, waiting"};
+    const char *const *gw_why = by_rule ? rule_why : fog ? fog_why : own_why;
     const fw_assessment *a = &as[primary];
     if (!give_way) {
         bool last = false;

@@ -50,6 +50,17 @@
  * action alone must then avoid it, and a 333 m ship needs minutes), with at
  * least standon_min_helm (the action that best aids, not the least that
  * clears), and never to port for a target on the port side.
+ *
+ * Restricted visibility (helm colregs.visibility > 0): a target farther than
+ * the visibility is not in sight (encounter.h rule19) and rule 19 governs it
+ * instead of rules 13-17: there is no stand-on ship (19(d): a ship that
+ * detects another by radar alone takes avoiding action in ample time), so
+ * such a threat makes the own ship act by the give-way rules above
+ * (reasons "rule 19, not in sight: ..."), and the sides are 19(d)'s
+ * (helm_search.h fw_permitted_sides): no alteration to port for a ship
+ * forward of the beam other than one being overtaken, none towards a ship
+ * abeam or abaft the beam.  Not modelled: 19(e)'s reduction of speed (the
+ * policy steers only) and sound signals (rule 35).
  */
 #ifndef FW_POLICY_H
 #define FW_POLICY_H

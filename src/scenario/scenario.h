@@ -86,6 +86,9 @@ typedef struct fw_scenario {
     fw_survey_def survey_def;
     /* environment: the current and the wind (scn_env.h; calm by default) */
     fw_env env;
+    /* environment.visibility_nm: m, restricted visibility, 0 = clear (scn_env.h);
+     * also in helm.colregs and reactions.colregs, where the rules read it */
+    double visibility;
     /* sensing: what the own ship knows of the others (sense/sensing.h) */
     fw_sensing_def sensing;
     /* traffic.watch.own_ship: the own ship's watch (world/watch.h): flawless

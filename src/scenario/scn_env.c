@@ -148,15 +148,36 @@ static fw_status load_wind(const yt_doc *doc, const yt_node *w, fw_wind *out, fw
     return FW_OK;
 }
 
+/* environment.visibility_nm (e: the environment map) into s->visibility and
+ * the rules' colregs definitions (the own ship's and the background ships') */
+static fw_status load_visibility(const yt_doc *doc, const yt_node *e, fw_scenario *s,
+                                 fw_error *err)
+{
+    double nm = 0.0;
+    fw_status st = yt_opt_number(doc, e, "environment", "visibility_nm", -1e9, 1e9, &nm, err);
+    if (st || !yt_get(e, "visibility_nm"))
+        return st;
+    if (!(nm > 0.0 && nm <= 100.0))
+        return fw_fail_at(err, doc->file, yt_key_line(e, "visibility_nm"),
+                          "environment.visibility_nm", "%g: a visibility is more than 0 and "
+                          "at most 100 nm (leave it out for clear weather)", nm);
+    s->visibility = fw_nm_to_m(nm);
+    s->helm.colregs.visibility = s->visibility;
+    s->reactions.colregs.visibility = s->visibility;
+    return FW_OK;
+}
+
 fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
 {
-    static const char *const keys[] = {"current", "wind", NULL};
+    static const char *const keys[] = {"current", "wind", "visibility_nm", NULL};
     s->env = fw_default_env();
+    s->visibility = 0.0;
     const yt_node *e = NULL, *c = NULL, *w = NULL;
     fw_status st;
     if ((st = yt_opt_map(doc, root, "", "environment", &e, err)) || !e)
         return st;
     if ((st = yt_check_keys(doc, e, "environment", keys, err)) ||
+        (st = load_visibility(doc, e, s, err)) ||
         (st = yt_opt_map(doc, e, "environment", "current", &c, err)) ||
         (st = yt_opt_map(doc, e, "environment", "wind", &w, err)) ||
         (c && (st = load_current(doc, c, s, &s->env.current, err))) ||

@@ -14,6 +14,7 @@
  *     current: {tidal: {network: true, max_flood_s: 3600}}
  *     wind: {speed_kn: 20, from_deg: 270,          # the way it blows from
  *            gust_intensity: 0.1, gust_time_s: 30} # optional gusts (env.h)
+ *     visibility_nm: 1                             # restricted visibility
  *
  * Knots and degrees here, converted once (core/units.h); the current sets
  * TOWARDS its direction and the wind blows FROM its own, as charts and
@@ -25,6 +26,13 @@
  * not calm is refused here, located, when the own ship's ship file has no
  * windage: section or its dynamics are Nomoto's (env.h fw_env_check_vessel).
  * The own ship must be loaded first (load_own).
+ * visibility_nm: ships farther apart are not in sight of one another and
+ * follow rule 19 (avoid/policy.h, world/reactions.h); more than 0, at most
+ * 100 (0 or less: FILE:LINE: FIELD); without it the weather is clear.  It is
+ * the environment's, as in DNV's maritime-schema (environment.visibility,
+ * NM), since it governs conduct and not what the sensors see (radar and AIS
+ * work in fog: sense/arpa.h); the avoidance and the traffic must be loaded
+ * first (it is set into their colregs definitions).
  */
 #ifndef FW_SCENARIO_SCN_ENV_H
 #define FW_SCENARIO_SCN_ENV_H

@@ -182,6 +182,11 @@ static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
      * bearing says now (passing ahead, it moves onto the port bow) */
     if (keep && strcmp(b->id, keep) == 0)
         return true;
+    /* rule 19 (colregs.visibility): out of sight there is no stand-on ship; a
+     * ship forward of the beam is given way to by slowing (19(e)) */
+    if (fw_not_in_sight(&r->def.colregs, sqrt(de * de + dn * dn)) &&
+        de * sin(a->heading) + dn * cos(a->heading) > 0.0)
+        return true;
     /* one background ship overtaking another in its lane is SUMO's to keep
      * apart (car following, lane changes); the own ship is off the lanes */
     return *sit == FW_SIT_GIVE_WAY || (*sit == FW_SIT_OVERTAKING && b->own) ||

@@ -33,6 +33,11 @@
  * that its action alone cannot avoid a collision: then it takes the speed,
  * down to min_speed of its own, that passes farthest (rule 17(b)), and its
  * own speed back once that is no longer so.
+ * In restricted visibility (colregs.visibility > 0) a ship farther off than
+ * it is out of sight: rule 19 replaces the roles, and a ship at risk with one
+ * forward of its beam gives way to it (slows, 19(e)) whichever side it is on;
+ * for one abeam or abaft it does nothing (its only action, slowing, would
+ * not take it away).
  * With a watch (watch.h) a ship notices a ship it must give way to only after
  * a delay, or not at all (a lapse); until then it treats it as not there.
  * Head-on meetings of two lane-bound ships are kept apart by their lanes;

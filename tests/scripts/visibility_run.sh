@@ -1,0 +1,46 @@
+# visibility_run.sh - the own ship in restricted visibility (environment:
+# visibility_nm, avoid/policy.h): a ship farther off than the visibility is not
+# in sight and rule 19 governs, not rules 13-17.  Imazu-like single crossings
+# (scenarios/imazu), visibility 0.5 nm, perfect sensing:
+#   fog-stbd   Imazu 2, a crossing ship on the starboard bow: the own ship
+#              alters to starboard, never to port (19(d)(i)), by rule 19
+#   port       the mirror, a crossing ship on the port bow: in clear weather
+#              the own ship stands on (rule 17) and acts late; in fog there is
+#              no stand-on ship and it acts earlier, to starboard
+#   abaft      a faster ship closing from abaft the starboard beam (being
+#              overtaken): in fog the own ship does not alter towards it
+#              (19(d)(ii)): to port
+# The least distances are the truth's; no collision.
+set -euo pipefail
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+im=$FAIRWAY_DATA/scenarios/imazu
+fog='s/^run:/environment: {visibility_nm: 0.5}\nrun:/'
+sed "s/^name: imazu-02/name: fog-stbd/; $fog" "$im/imazu-02.yaml" > "$tmp/a.yaml"
+sed 's/^name: imazu-02/name: clear-port/; s/east_m: 11112.0, north_m: 0.0, course_deg: 270.000/east_m: -11112.0, north_m: 0.0, course_deg: 90.000/' \
+  "$im/imazu-02.yaml" > "$tmp/b.yaml"
+sed "s/^name: clear-port/name: fog-port/; $fog" "$tmp/b.yaml" > "$tmp/c.yaml"
+sed "s/^name: imazu-04/name: fog-abaft/; $fog; s/east_m: -7858.0, north_m: -7858.0, course_deg: 45.000, speed_kn: 12.001/east_m: 9623.0, north_m: -16668.0, course_deg: 330.000, speed_kn: 20.78/" \
+  "$im/imazu-04.yaml" > "$tmp/d.yaml"
+for x in a b c d; do "$FAIRWAY" run "$tmp/$x.yaml" --out "$tmp/o" > /dev/null; done
+"$PYTHON" - "$tmp/o" <<'PY'
+import json, sys
+o = sys.argv[1]
+def enc(name):
+    e = json.load(open("%s/%s/summary.json" % (o, name)))["encounters"][0]
+    log = open("%s/%s/run.log" % (o, name)).read()
+    print("%-10s %-18s acts at %6.0f s to %-9s least distance %4.0f m%s"
+          % (name, e["situation"], e["t_act_s"], e["act_side"], e["min_distance_m"],
+             ", by rule 19" if "rule 19, not in sight" in log else ""))
+    assert not e["collision"], e
+    return e, "rule 19, not in sight" in log
+e, r19 = enc("fog-stbd")
+assert e["act_side"] == "starboard" and r19, e
+clear, r19c = enc("clear-port")
+fogp, r19 = enc("fog-port")
+assert not r19c and r19 and fogp["act_side"] == "starboard", fogp
+assert fogp["t_act_s"] < clear["t_act_s"] - 30, (fogp["t_act_s"], clear["t_act_s"])
+e, r19 = enc("fog-abaft")
+assert e["act_side"] == "port" and r19, e
+PY
+echo "ok: rule 19 in restricted visibility"
