@@ -77,7 +77,7 @@ fw_cli_test(cli_manoeuvre_current 0 "drift 360 -> 720 deg  1251.3 m in 1216.2 s 
             manoeuvre turning --ship c3 --speed 12 --rudder 35 --current 2,090)
 fw_cli_test(cli_manoeuvre_bad_current 2 "--current: give KN,DEG" manoeuvre turning --ship c3
             --speed 12 --rudder 35 --current 12,090)
-fw_cli_test(cli_manoeuvre_wind 0 "in a wind of 20.00 kn from 270 deg" manoeuvre turning
+fw_cli_test(cli_manoeuvre_wind 0 "drift 360 -> 720 deg   374.1 m in 1224.0 s towards 089 deg" manoeuvre turning
             --ship c3 --speed 12 --rudder 35 --wind 20,270)
 fw_cli_test(cli_manoeuvre_bad_wind 2 "--wind: give KN,DEG, the speed \\(0 to 100 kn\\)"
             manoeuvre zigzag --ship c3 --speed 12 --angle 10 --wind -5,270)

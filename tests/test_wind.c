@@ -12,12 +12,17 @@
  *     the centre of gravity says, and after 10 minutes it has luffed up
  *     (turned into the wind) under the hull's own moment
  *   a calm wind (speed 0) is still air, bit for bit
+ *   Froude similarity in a wind: kvlcc2 and its L7 model (windage scaled by
+ *     1/lambda^2, wind by 1/sqrt(lambda)) turn the same in ship lengths:
+ *     advance and tactical diameter to 0.5%, the circle's drift to 2% and 1
+ *     deg, towards leeward
  *   a ship without windage, in a wind, is refused
  */
 #include <math.h>
 #include <string.h>
 
 #include "core/units.h"
+#include "dynamics/manoeuvre.h"
 #include "dynamics/mmg.h"
 #include "dynamics/stepper.h"
 #include "ship/windage.h"
@@ -166,6 +171,45 @@ static void test_calm_wind_is_still_air(void)
     CHECK(memcmp(d1, d2, sizeof d1) == 0);
 }
 
+/* A 35 deg starboard turn at U kn in a wind of W kn from 090 (on to 720 deg). */
+static fw_turning_result windy_turn(const fw_ship *s, double U, double W)
+{
+    fw_turning_def d = fw_default_turning_def();
+    d.speed = fw_kn_to_ms(U);
+    d.rudder = fw_deg_to_rad(35.0);
+    d.max_turn = fw_deg_to_rad(730.0);
+    d.stepper.wind = (fw_wind){.kind = FW_FIELD_UNIFORM, .speed = fw_kn_to_ms(W),
+                               .from = FW_PI / 2};
+    fw_turning_result r;
+    fw_error err = {0};
+    CHECK_MSG(fw_turning_run(s, &d, &r, NULL, &err) == FW_OK, "%s", err.msg);
+    return r;
+}
+
+/* Froude similarity with wind: the L7 model's windage is the full-scale
+ * ship's scaled by 1/lambda^2, so in a wind scaled by 1/sqrt(lambda) (air
+ * and water forces both then scale by lambda^3) the turn is the same in
+ * ship lengths: advance, tactical diameter and the circle's drift. */
+static void test_froude_with_wind(void)
+{
+    fw_ship m = test_load_ship("kvlcc2-l7"), f = test_load_ship("kvlcc2");
+    double root = sqrt(320.0 / 7.0);
+    fw_turning_result a = windy_turn(&m, 15.5 / root, 30.0 / root);
+    fw_turning_result b = windy_turn(&f, 15.5, 30.0);
+    printf("  kvlcc2 35 deg at 15.5 kn in 30 kn from 090 (L7 at 1/sqrt(lambda)): advance "
+           "%.4f L / %.4f L, tactical diameter %.4f L / %.4f L, drift %.4f L / %.4f L towards "
+           "%.1f / %.1f deg\n",
+           b.advance / f.L, a.advance / m.L, b.tactical_diameter / f.L,
+           a.tactical_diameter / m.L, b.drift / f.L, a.drift / m.L,
+           fw_rad_to_deg(b.drift_towards), fw_rad_to_deg(a.drift_towards));
+    CHECK_REL(b.advance / f.L, a.advance / m.L, 0.005);
+    CHECK_REL(b.tactical_diameter / f.L, a.tactical_diameter / m.L, 0.005);
+    CHECK_REL(b.drift / f.L, a.drift / m.L, 0.02);
+    CHECK_NEAR(b.drift_towards, a.drift_towards, fw_deg_to_rad(1.0));
+    /* to leeward: west, give or take the turn's own asymmetry */
+    CHECK(fabs(fw_rad_to_deg(b.drift_towards) - 270.0) < 20.0);
+}
+
 static void test_no_windage_refused(void)
 {
     fw_ship bare = c3;
@@ -189,6 +233,7 @@ int main(void)
     TEST_RUN(test_apparent_wind);
     TEST_RUN(test_beam_wind);
     TEST_RUN(test_calm_wind_is_still_air);
+    TEST_RUN(test_froude_with_wind);
     TEST_RUN(test_no_windage_refused);
     return TEST_EXIT();
 }

@@ -46,7 +46,9 @@
  * not calm (fw_env_check_vessel), so that a wind is never silently ignored.
  * Background ships of the traffic source (SUMO, a track, the kinematic
  * lanes) are not vessels of the world: wind does nothing to them; their
- * tracks are the source's.
+ * tracks are the source's.  Nor to a ship the world takes from the source to
+ * steer (world/steer.h): a background ship still, Nomoto-stepped, not
+ * checked (world.c).
  */
 #ifndef FW_ENV_H
 #define FW_ENV_H
