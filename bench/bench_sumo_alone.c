@@ -39,6 +39,7 @@
 #include "bench_proc.h"
 #include "core/files.h"
 #include "traffic/backend.h"
+#include "traffic/demand.h"
 
 enum { RUNS = 7 };
 
@@ -185,7 +186,12 @@ int main(int argc, char **argv)
     }
     char scn[1200], out[64], net[1200], rou[128], types[1200];
     snprintf(scn, sizeof scn, "%s/scenarios/traffic/dover-crossing.yaml", fw_data_root());
-    snprintf(net, sizeof net, "%s/dover/dover.net.xml", fw_net_dir());
+    fw_network_files nf;
+    if (fw_network_find("dover", &nf, NULL)) {
+        fprintf(stderr, "bench_sumo_alone: network dover cannot be built\n");
+        return 1;
+    }
+    snprintf(net, sizeof net, "%s", nf.net);
     snprintf(types, sizeof types, "%s/networks/ships.add.xml", fw_data_root());
     snprintf(rou, sizeof rou, "%s/r0/dover-crossing/sumo/demand.rou.xml", dir);
     const char *sumo[] = {"sumo", "--net-file", net, "--route-files", rou, "--additional-files",

@@ -92,7 +92,9 @@ static void test_demand(void)
     CHECK(has_stream(&d, "east_ferry_ropax", "ferry_ropax"));
     CHECK(has_stream(&d, "west_tanker_aframax", "tanker_aframax"));
     CHECK(has_stream(&d, "west_small_craft", "small_craft"));
-    CHECK(fw_network_check_demand("channel", &d, &err) == FW_OK);
+    fw_network_files nf;
+    CHECK(fw_network_find("channel", &nf, &err) == FW_OK);
+    CHECK(fw_network_check_demand(&nf, &d, &err) == FW_OK);
     /* a tolerance too tight for the lanes 200-500 m off the centre line:
      * nothing matches, each route keeps its own stream at rate 0 */
     dd.tolerance = 100;

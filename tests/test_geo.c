@@ -17,6 +17,7 @@
 #include "core/units.h"
 #include "geom/geo.h"
 #include "scenario/scenario.h"
+#include "traffic/demand.h"
 #include "test.h"
 
 static void test_plane_against_the_ellipsoid(void)
@@ -213,7 +214,9 @@ static void test_geo_network(void)
     write_file(path, text);
     fw_scenario *s = load(path);
     double x = NAN, y = NAN;
-    snprintf(net, sizeof net, "%s/geo-channel/geo-channel.net.xml", fw_net_dir());
+    fw_network_files nf;
+    CHECK(fw_network_find("geo-channel", &nf, NULL) == FW_OK);
+    snprintf(net, sizeof net, "%s", nf.net);
     CHECK(junction_xy(net, "W", &x, &y));
     if (s) {
         CHECK(s->has_origin);

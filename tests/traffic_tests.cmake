@@ -55,6 +55,9 @@ set_tests_properties(range_read PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 300)
 # Networks built at run time are kept by their inputs' content (netcache.h).
 fw_script_test(netcache 0 "ok: networks reused byte for byte" netcache.sh)
 set_tests_properties(netcache PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 300)
+# A network of the user's own: built on first use, again when edited.
+fw_script_test(network_user 0 "ok: a network of the user's own built on first use" network_user.sh)
+set_tests_properties(network_user PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 300)
 
 # Recorded tracks as a traffic source (traffic/source_track.h), and a study's
 # worst encounters exported as scenarios that replay them (fairway worst).

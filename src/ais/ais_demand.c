@@ -204,12 +204,12 @@ static fw_status write_file(FILE *f, const fw_ais_tracks *t, const fw_net_routes
 static fw_status check_written(const char *tmp, const char *network, fw_error *err)
 {
     fw_demand *d = malloc(sizeof *d);
-    if (!d)
-        return fw_fail(err, FW_ERUN, "out of memory");
-    fw_status st = fw_demand_load(tmp, d, err);
-    if (!st)
-        st = fw_network_check_demand(network, d, err);
+    fw_network_files *nf = malloc(sizeof *nf);
+    fw_status st = d && nf ? FW_OK : fw_fail(err, FW_ERUN, "out of memory");
+    if (!st && !(st = fw_demand_load(tmp, d, err)) && !(st = fw_network_find(network, nf, err)))
+        st = fw_network_check_demand(nf, d, err);
     free(d);
+    free(nf);
     return st;
 }
 

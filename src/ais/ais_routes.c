@@ -142,19 +142,17 @@ double fw_route_distance(const fw_route_line *r, double x, double y, double *alo
     return best;
 }
 
-static fw_status read_sources(const char *name, char **nodes, char **edges, char **typ,
+/* The network's plain XML (its types "" when it has none). */
+static fw_status read_sources(const fw_network_files *nf, char **nodes, char **edges, char **typ,
                               fw_error *err)
 {
-    char path[1200];
-    const char *root = fw_data_root();
     fw_status st;
-    if ((st = fw_path(path, sizeof path, err, "%s/networks/%s/%s.nod.xml", root, name, name)) ||
-        (st = fw_read_text(path, nodes, NULL, err)) ||
-        (st = fw_path(path, sizeof path, err, "%s/networks/%s/%s.edg.xml", root, name, name)) ||
-        (st = fw_read_text(path, edges, NULL, err)) ||
-        (st = fw_path(path, sizeof path, err, "%s/networks/%s/%s.typ.xml", root, name, name)))
+    if ((st = fw_read_text(nf->nodes, nodes, NULL, err)) ||
+        (st = fw_read_text(nf->edges, edges, NULL, err)))
         return st;
-    return fw_read_text(path, typ, NULL, err);
+    if (!nf->typ[0])
+        return (*typ = calloc(1, 1)) ? FW_OK : fw_fail(err, FW_ERUN, "out of memory");
+    return fw_read_text(nf->typ, typ, NULL, err);
 }
 
 fw_status fw_net_routes_load(const char *name, fw_net_routes *out, fw_error *err)
@@ -165,7 +163,7 @@ fw_status fw_net_routes_load(const char *name, fw_net_routes *out, fw_error *err
     char *nodes = NULL, *edges = NULL, *typ = NULL, *types = NULL;
     fw_status st;
     if ((st = fw_network_find(name, &nf, err)) || (st = fw_demand_load(nf.demand, &out->demand, err)) ||
-        (st = read_sources(name, &nodes, &edges, &typ, err)) ||
+        (st = read_sources(&nf, &nodes, &edges, &typ, err)) ||
         (st = fw_read_text(nf.types, &types, NULL, err)))
         goto out;
     for (int i = 0; !st && i < out->demand.n; i++) {

@@ -20,7 +20,8 @@ static void help(void)
            "ship) moved straight along a fairway, and prints per-step timing and the\n"
            "ships within range.\n"
            "\n"
-           "  --network NAME   channel, crossing, strait or sea (default channel)\n"
+           "  --network NAME   a network under FAIRWAY_DATA/networks (channel, crossing, strait,\n"
+           "                   sea, ...) or a network directory's path (default channel)\n"
            "  --ships N        ships placed along the routes at the start (default 50)\n"
            "  --density F      arrival rates times F (default 1; 0: no arrivals)\n"
            "  --duration S     simulated seconds (default 600)\n"
@@ -76,7 +77,7 @@ static int run(const char *network, long ships, double density, double duration,
     /* --demand: another demand of the network (one written from AIS, say) */
     if (fw_traffic_mode_parse(mode, &d.mode, &err) || fw_network_find(network, &nf, &err) ||
         fw_demand_load(demand ? demand : nf.demand, &dm, &err) ||
-        fw_network_check_demand(network, &dm, &err))
+        fw_network_check_demand(&nf, &dm, &err))
         return fw_report(&err);
     dd.density = density;
     dd.fill = (int)ships;

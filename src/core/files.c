@@ -329,7 +329,7 @@ int fw_csv_split(char *line, char **f, int max)
 }
 
 /* Where the data are, worked out once (fw_data_root in files.h). */
-static char g_root[PATH_MAX], g_net[PATH_MAX], g_mod[PATH_MAX];
+static char g_root[PATH_MAX], g_mod[PATH_MAX];
 static pthread_once_t g_located = PTHREAD_ONCE_INIT;
 
 /* Is path inside dir (both resolved)? */
@@ -358,12 +358,10 @@ static void locate(void)
     bool installed = access(marker, R_OK) == 0;
     if (!installed && have_exe && inside(exe, FAIRWAY_BUILD_DIR)) {
         snprintf(g_root, sizeof g_root, "%s", FAIRWAY_DATA_DIR);
-        snprintf(g_net, sizeof g_net, "%s", FAIRWAY_NET_DIR);
         snprintf(g_mod, sizeof g_mod, "%s", FAIRWAY_MODULE_DIR);
         return;
     }
     snprintf(g_root, sizeof g_root, "%.*s", PATH_MAX - 1, share);
-    snprintf(g_net, sizeof g_net, "%.*s/networks", PATH_MAX - 16, share);
     snprintf(g_mod, sizeof g_mod, "%.*s/lib/fairway", PATH_MAX - 16, prefix);
 }
 
@@ -392,12 +390,6 @@ const char *fw_data_root(void)
         return absolute_env(env);
     pthread_once(&g_located, locate);
     return g_root;
-}
-
-const char *fw_net_dir(void)
-{
-    pthread_once(&g_located, locate);
-    return g_net;
 }
 
 const char *fw_module_dir(void)

@@ -93,10 +93,6 @@ fw_status fw_path(char *buf, size_t size, fw_error *err, const char *fmt, ...)
  *   else PREFIX/share/fairway all the same: a copied executable says which
  *     files it misses instead of quietly reading a source tree. */
 const char *fw_data_root(void);
-/* Where the built networks are (NAME/NAME.net.xml): DATA/networks of an
- * install, the build tree's networks/ for a build-tree program.  Not moved
- * by $FAIRWAY_DATA: the nets belong to the binary that built them. */
-const char *fw_net_dir(void);
 /* The whole of a (small) file as text: *text malloc'd, NUL-terminated, its
  * length in *len (may be NULL).  FW_EINPUT "PATH: cannot read: reason". */
 fw_status fw_read_text(const char *path, char **text, size_t *len, fw_error *err);

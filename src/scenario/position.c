@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "geom/geo.h"
+#include "scenario/scn_ais.h"
 #include "traffic/demand.h"
 
 fw_status fw_scenario_plane(const fw_scenario *s, fw_geo **g, fw_error *err)
@@ -26,7 +27,9 @@ static fw_status network_plane(const yt_doc *doc, const yt_node *root, const yt_
     const yt_node *tr = yt_get(root, "traffic"), *net = tr ? yt_get(tr, "network") : NULL;
     fw_network_files nf;
     fw_error nerr = {0};
-    if (!net || !net->str || fw_network_find(net->str, &nf, &nerr) ||
+    char ref[1024];
+    if (!net || !net->str || !fw_scn_network_ref(doc->file, net->str, ref, sizeof ref) ||
+        fw_network_find(ref, &nf, &nerr) ||
         fw_network_plane(&nf, s->plane, sizeof s->plane, &s->plane_off_e, &s->plane_off_n,
                          &nerr) || !s->plane[0])
         return FW_OK;

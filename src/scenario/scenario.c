@@ -132,6 +132,20 @@ static fw_status load_tracks(const yt_doc *doc, const yt_node *tr, fw_scenario *
     return FW_OK;
 }
 
+/* traffic.network: a network's name, or a directory's path relative to the
+ * scenario's (scn_ais.h fw_scn_network_ref). */
+static fw_status network_key(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err)
+{
+    char value[sizeof s->network];
+    fw_status st = yt_opt_string(doc, tr, "traffic", "network", value, sizeof value, err);
+    if (st || !value[0])
+        return st;
+    if (!fw_scn_network_ref(doc->file, value, s->network, sizeof s->network))
+        return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",
+                          "path too long");
+    return FW_OK;
+}
+
 static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenario *s,
                               fw_error *err)
 {
@@ -143,7 +157,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     fw_status st;
     if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
         (st = yt_check_keys(doc, tr, "traffic", keys, err)) ||
-        (st = yt_opt_string(doc, tr, "traffic", "network", s->network, sizeof s->network, err)) ||
+        (st = network_key(doc, tr, s, err)) ||
         (st = yt_opt_number(doc, tr, "traffic", "density", 0, 100, &s->density, err)) ||
         (st = yt_opt_seq(doc, tr, "traffic", "targets", &seq, err)))
         return st;
@@ -187,7 +201,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
             return fw_fail(err, FW_ERUN, "out of memory");
         fw_status dst = fw_demand_load(nf.demand, dm, &nerr);
         if (!dst)
-            dst = fw_network_check_demand(s->network, dm, &nerr);
+            dst = fw_network_check_demand(&nf, dm, &nerr);
         free(dm);
         if (dst)
             return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",

@@ -64,7 +64,7 @@ typedef struct fw_scenario {
      * fast-time simulation: the plant is the prediction (world/vessel.h) */
     bool nomoto_plant;
     /* traffic */
-    char network[64];    /* "" = none */
+    char network[1024];  /* a network's name or its directory's path; "" = none */
     double density;      /* demand scale of the network's streams */
     int fill;            /* network ships placed along the routes at t = 0 */
     fw_reactions_def reactions; /* behaviour: colregs (default) or blind */

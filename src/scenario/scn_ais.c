@@ -8,6 +8,15 @@
 
 #include "ais/ais.h"
 
+bool fw_scn_network_ref(const char *scenario_file, const char *value, char *out, size_t n)
+{
+    const char *slash = strrchr(scenario_file, '/');
+    int k = !strchr(value, '/') || value[0] == '/' || !slash
+                ? snprintf(out, n, "%s", value)
+                : snprintf(out, n, "%.*s/%s", (int)(slash - scenario_file), scenario_file, value);
+    return k >= 0 && (size_t)k < n;
+}
+
 fw_status fw_scn_file_key(const yt_doc *doc, const yt_node *map, const char *path,
                           const char *key, const char *scenario_file, char *out, size_t n,
                           fw_error *err)

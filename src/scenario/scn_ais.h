@@ -7,6 +7,11 @@
 #include "scenario/scenario.h"
 #include "yaml/yaml_tree.h"
 
+/* traffic.network's value as fw_network_find takes it: a network's name as
+ * it is, a directory's path (it holds a '/') relative to the directory of
+ * scenario_file unless absolute.  False when out is too short. */
+bool fw_scn_network_ref(const char *scenario_file, const char *value, char *out, size_t n);
+
 /* The optional file key of map (at path) into out: relative to the
  * directory of scenario_file unless absolute; it must open.  out is "" when
  * the key is absent. */

@@ -229,9 +229,9 @@ static fw_status add_input(fw_study *s, const char *role, const char *path, fw_e
 /* Every file a run of the study reads (see src/run/run.c): the study, its
  * scenario and ship, its AIS reports, and the network's demand, ship types
  * and plain XML.
- * The built net.xml is made from that XML (its header holds a timestamp and
- * the build's paths, so its bytes are not compared); targets' tracks are
- * written by each run, from the scenario. */
+ * The net.xml SUMO reads is built from exactly these bytes (the network
+ * cache is keyed by them, traffic/netbuild.h), so their digests stand for
+ * it; targets' tracks are written by each run, from the scenario. */
 static fw_status collect_inputs(fw_study *s, fw_error *err)
 {
     fw_status st;
@@ -247,16 +247,11 @@ static fw_status collect_inputs(fw_study *s, fw_error *err)
     if ((st = fw_network_find(net, &nf, err)) || (st = add_input(s, "demand", nf.demand, err)) ||
         (st = add_input(s, "ship_types", nf.types, err)))
         return st;
-    static const char *const parts[][2] = {
-        {"network_nodes", "nod"}, {"network_edges", "edg"}, {"network_types", "typ"}};
-    for (int i = 0; i < 3; i++) {
-        char path[1024];
-        if ((size_t)snprintf(path, sizeof path, "%s/networks/%s/%s.%s.xml", fw_data_root(), net,
-                             net, parts[i][1]) >= sizeof path)
-            return fw_fail(err, FW_EINPUT, "FAIRWAY_DATA %s: path too long", fw_data_root());
-        if ((st = add_input(s, parts[i][0], path, err)))
+    const char *const parts[][2] = {
+        {"network_nodes", nf.nodes}, {"network_edges", nf.edges}, {"network_types", nf.typ}};
+    for (int i = 0; i < 3; i++)
+        if (parts[i][1][0] && (st = add_input(s, parts[i][0], parts[i][1], err)))
             return st;
-    }
     return FW_OK;
 }
 

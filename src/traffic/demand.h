@@ -56,13 +56,26 @@ fw_status fw_demand_load(const char *path, fw_demand *out, fw_error *err);
 fw_status fw_demand_write(const fw_demand *d, const fw_demand_def *def, const char *path,
                           fw_error *err);
 
-/* The files of network `name` (letters, digits, '_', '-'): the net.xml the
- * build made, its demand.yaml and the shared ship types.  FW_EINPUT with the
- * list of networks when there is no such network. */
+/* The files of a network: its sources, its demand.yaml, the ship types and
+ * the net.xml built from the sources.  `name` is a network's name (letters,
+ * digits, '_', '-': the directory DATA/networks/NAME) or a directory's path
+ * (holding a '/'; its last part is the name).  The directory holds
+ * NAME.nod.xml and NAME.edg.xml (required), NAME.typ.xml and NAME.proj
+ * (optional), demand.yaml, and may hold its own ships.add.xml (else
+ * DATA/networks/ships.add.xml).  The net.xml is built on first use into the
+ * network cache and again whenever a source changes (netbuild.h
+ * fw_network_build).  FW_EINPUT naming the directory and the missing file, or
+ * quoting netconvert, when there is no such network or it cannot be built. */
 typedef struct fw_network_files {
-    char net[1024];
-    char demand[1024];
-    char types[1024];
+    char name[64];
+    char dir[1024];    /* the sources' directory */
+    char nodes[1100];  /* DIR/NAME.nod.xml */
+    char edges[1100];  /* DIR/NAME.edg.xml */
+    char typ[1100];    /* DIR/NAME.typ.xml, "" when there is none */
+    char proj[512];    /* NAME.proj's PROJ string, "" when there is none */
+    char net[1200];    /* the built net.xml (in the network cache) */
+    char demand[1100];
+    char types[1100];
 } fw_network_files;
 fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err);
 /* A geo-referenced network's plane: the PROJ string netconvert projected its
@@ -72,9 +85,9 @@ fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err
 fw_status fw_network_plane(const fw_network_files *nf, char *proj, size_t n, double *off_e,
                            double *off_n, fw_error *err);
 /* Every edge the demand's streams name is an edge of the network's sources
- * (networks/NAME/NAME.edg.xml): else FW_EINPUT at the demand's line and
- * field, before SUMO is started for nothing. */
-fw_status fw_network_check_demand(const char *name, const fw_demand *dm, fw_error *err);
+ * (its NAME.edg.xml): else FW_EINPUT at the demand's line and field, before
+ * SUMO is started for nothing. */
+fw_status fw_network_check_demand(const fw_network_files *nf, const fw_demand *dm, fw_error *err);
 
 /* Total ships per hour at density 1. */
 double fw_demand_rate(const fw_demand *d);

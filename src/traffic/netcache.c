@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/files.h"
 #include "core/hash.h"
@@ -16,12 +17,31 @@
  * header's date cut differently in netbuild.c): older entries then miss. */
 static const char *const kFormat = "fairway netcache 1";
 
-/* ROOT/net, created; false when there is no usable place. */
-static bool cache_dir(char *out, size_t n)
+/* TMPDIR/fairway-UID/net, created, ours alone (a directory of this user
+ * that no one else may write, not a link): where networks go when there is
+ * no cache. */
+static bool private_dir(char *out, size_t n)
+{
+    const char *tmp = getenv("TMPDIR");
+    char top[1000];
+    struct stat sb;
+    if (fw_path(top, sizeof top, NULL, "%s/fairway-%u", tmp && tmp[0] == '/' ? tmp : "/tmp",
+                (unsigned)getuid()) ||
+        (mkdir(top, 0700) != 0 && errno != EEXIST) || lstat(top, &sb) != 0 ||
+        !S_ISDIR(sb.st_mode) || sb.st_uid != getuid() || (sb.st_mode & 022))
+        return false;
+    return !fw_path(out, n, NULL, "%s/net", top) && !fw_mkdirs(out, "cache", NULL);
+}
+
+/* ROOT/net, created; false when there is no usable place.  needed: the
+ * network is one fairway has no other place for (a network's own net.xml,
+ * netbuild.h fw_network_build), kept in a directory of the user's under
+ * TMPDIR when the cache is off or has no place. */
+static bool cache_dir(char *out, size_t n, bool needed)
 {
     const char *off = getenv("FAIRWAY_NETCACHE");
     if (off && strcmp(off, "off") == 0)
-        return false;
+        return needed && private_dir(out, n);
     const char *xdg = getenv("XDG_CACHE_HOME"), *home = getenv("HOME");
     fw_status st;
     /* the XDG rule: a relative XDG_CACHE_HOME is ignored */
@@ -30,8 +50,10 @@ static bool cache_dir(char *out, size_t n)
     else if (home && home[0] == '/')
         st = fw_path(out, n, NULL, "%s/.cache/fairway/net", home);
     else
-        return false;
-    return !st && !fw_mkdirs(out, "cache", NULL);
+        return needed && private_dir(out, n);
+    if (!st && !fw_mkdirs(out, "cache", NULL))
+        return true;
+    return needed && private_dir(out, n);
 }
 
 /* One input file list's names and bytes into the key; false if one cannot
@@ -58,14 +80,14 @@ static bool add_inputs(FILE *key, const char *dir, const char *list)
 }
 
 bool fw_netcache_key_make(const char *dir, const char *const *argv, const char *const *inputs,
-                          int n_files, const char *const *names, fw_netcache_key *k)
+                          int n_files, const char *const *names, bool needed, fw_netcache_key *k)
 {
     memset(k, 0, sizeof *k);
     k->n_files = n_files;
     k->names = names;
     char root[1100];
     struct stat prog;
-    if (!cache_dir(root, sizeof root) || stat(argv[0], &prog) != 0)
+    if (!cache_dir(root, sizeof root, needed) || stat(argv[0], &prog) != 0)
         return false;
     FILE *key = open_memstream(&k->text, &k->n);
     if (!key)
@@ -92,7 +114,8 @@ bool fw_netcache_key_make(const char *dir, const char *const *argv, const char *
     return ok;
 }
 
-bool fw_netcache_get(const fw_netcache_key *k, const char *const *dest)
+/* Does the entry's key equal k's, byte for byte? */
+static bool same_key(const fw_netcache_key *k)
 {
     char path[1300];
     char *data;
@@ -102,6 +125,27 @@ bool fw_netcache_get(const fw_netcache_key *k, const char *const *dest)
         return false;
     bool same = len == k->n && memcmp(data, k->text, len) == 0;
     free(data);
+    return same;
+}
+
+bool fw_netcache_lookup(const fw_netcache_key *k, char *path, size_t n)
+{
+    if (!same_key(k) || fw_path(path, n, NULL, "%s/%s", k->dir, k->names[0]))
+        return false;
+    if (access(path, R_OK) != 0) {
+        fw_remove_tree(k->dir); /* damaged from outside (see fw_netcache_get) */
+        return false;
+    }
+    utimensat(AT_FDCWD, k->dir, NULL, 0);
+    return true;
+}
+
+bool fw_netcache_get(const fw_netcache_key *k, const char *const *dest)
+{
+    char path[1300];
+    char *data;
+    size_t len;
+    bool same = same_key(k);
     for (int i = 0; same && i < k->n_files; i++) {
         if (fw_path(path, sizeof path, NULL, "%s/%s", k->dir, k->names[i]) ||
             fw_file_read(path, &data, &len, NULL)) {

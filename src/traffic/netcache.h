@@ -1,6 +1,8 @@
 /* netcache.h - netconvert's output kept by what it was made from.
  *
- * A network built for a run (netbuild.h) depends only on netconvert's command
+ * A network's own net.xml (netbuild.h fw_network_build, read in place) and a
+ * network built for a run with its targets' tracks (copied into the run)
+ * depend only on netconvert's command
  * line, the netconvert program and the bytes of its input files.  The cache
  * keeps each build's files (the net.xml, netconvert's log) in
  * ROOT/net/HASH/, ROOT being $XDG_CACHE_HOME/fairway or ~/.cache/fairway,
@@ -37,14 +39,23 @@ typedef struct fw_netcache_key {
  * the comma-separated lists in inputs (NULL-terminated; relative names are
  * relative to dir), the entry holding the n_files files names (kept by
  * pointer).  False, *k empty, when the cache is off or unusable or an input
- * cannot be read (netconvert will say why). */
+ * cannot be read (netconvert will say why).  needed: the entry is the only
+ * place its files will have (a network's own net.xml, read in place): with
+ * the cache off or without a place, the entry goes to TMPDIR/fairway-UID/net,
+ * a directory of the user's alone. */
 bool fw_netcache_key_make(const char *dir, const char *const *argv, const char *const *inputs,
-                          int n_files, const char *const *names, fw_netcache_key *k);
+                          int n_files, const char *const *names, bool needed,
+                          fw_netcache_key *k);
 
 /* A hit: the entry's files copied to dest[i] (one per name), each written
  * whole under a temporary name first.  False when the entry is missing, its
  * key differs or a copy fails. */
 bool fw_netcache_get(const fw_netcache_key *k, const char *const *dest);
+
+/* A hit read in place: the path of the entry's first file (names[0]) into
+ * path, the entry marked recently used.  False when the entry is missing, its
+ * key differs or the file is gone (the entry then removed). */
+bool fw_netcache_lookup(const fw_netcache_key *k, char *path, size_t n);
 
 /* Stores the files src[i] (one per name) under k: quietly nothing if the
  * entry appeared meanwhile or the cache cannot be written. */

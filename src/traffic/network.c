@@ -1,40 +1,143 @@
-/* network.c - where a network's files are: the net.xml in the build tree
- * or the install (netconvert output, core/files.h fw_net_dir), the sources
- * and demand under the data root. */
+/* network.c - where a network's files are: its sources and demand (under
+ * the data root or in a directory of the user's), the net.xml built from them
+ * on first use (netbuild.h fw_network_build). */
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/files.h"
 #include "ship/ship.h"
 #include "traffic/demand.h"
+#include "traffic/netbuild.h"
+
+/* The networks under DATA/networks (directories holding a demand.yaml), for
+ * a message: "a, b, c" in directory order, sorted. */
+static void known_networks(char *out, size_t n)
+{
+    char dir[1100];
+    out[0] = '\0';
+    if (fw_path(dir, sizeof dir, NULL, "%s/networks", fw_data_root()))
+        return;
+    struct dirent **v = NULL;
+    int k = scandir(dir, &v, NULL, alphasort);
+    size_t len = 0;
+    for (int i = 0; i < k; i++) {
+        char demand[1400];
+        if (v[i]->d_name[0] != '.' &&
+            !fw_path(demand, sizeof demand, NULL, "%s/%s/demand.yaml", dir, v[i]->d_name) &&
+            access(demand, R_OK) == 0 && len + strlen(v[i]->d_name) + 3 < n)
+            len += (size_t)snprintf(out + len, n - len, "%s%s", len ? ", " : "", v[i]->d_name);
+        free(v[i]);
+    }
+    free(v);
+}
+
+/* A source file DIR/NAME.ext: FW_EINPUT when required and missing or empty;
+ * "" when optional and missing. */
+static fw_status source_file(fw_network_files *out, const char *ext, bool required,
+                             const char *what, char *path, size_t n, fw_error *err)
+{
+    fw_status st = fw_path(path, n, err, "%s/%s.%s", out->dir, out->name, ext);
+    struct stat sb;
+    if (st)
+        return st;
+    if (stat(path, &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0 && access(path, R_OK) == 0)
+        return FW_OK;
+    if (!required && stat(path, &sb) != 0) {
+        path[0] = '\0';
+        return FW_OK;
+    }
+    return fw_fail(err, FW_EINPUT, "network '%s': %s %s (%s; networks/README.md says what a "
+                   "network holds)", out->name, path,
+                   stat(path, &sb) != 0 ? "does not exist" : S_ISREG(sb.st_mode) && sb.st_size == 0
+                                                               ? "is empty" : "cannot be read",
+                   what);
+}
+
+/* NAME.proj's first line, a PROJ string ("+proj=..."), into out->proj. */
+static fw_status read_proj(fw_network_files *out, fw_error *err)
+{
+    char path[1200], *text = NULL;
+    fw_status st = source_file(out, "proj", false, "its projection", path, sizeof path, err);
+    if (st || !path[0] || (st = fw_read_text(path, &text, NULL, err)))
+        return st;
+    size_t len = strcspn(text, "\r\n");
+    if (strncmp(text, "+proj=", 6) != 0 || len >= sizeof out->proj)
+        st = fw_fail_at(err, path, 1, "projection", "the first line must be a PROJ string "
+                        "(+proj=...) of at most %zu characters", sizeof out->proj - 1);
+    else
+        snprintf(out->proj, sizeof out->proj, "%.*s", (int)len, text);
+    free(text);
+    return st;
+}
+
+/* out->name and out->dir from a name or a directory's path. */
+static fw_status locate(const char *name, fw_network_files *out, fw_error *err)
+{
+    if (strchr(name, '/')) {
+        size_t n = strlen(name);
+        while (n > 1 && name[n - 1] == '/')
+            n--;
+        const char *base = name + n;
+        while (base > name && base[-1] != '/')
+            base--;
+        size_t bn = (size_t)(name + n - base);
+        if (bn == 0 || bn >= sizeof out->name || n >= sizeof out->dir)
+            return fw_fail(err, FW_EINPUT, "network '%s': not a network directory (its last "
+                           "part names the network, at most %zu characters)", name,
+                           sizeof out->name - 1);
+        snprintf(out->name, sizeof out->name, "%.*s", (int)bn, base);
+        snprintf(out->dir, sizeof out->dir, "%.*s", (int)n, name);
+        return FW_OK;
+    }
+    size_t n = strlen(name);
+    bool ok = n > 0 && n < sizeof out->name &&
+              strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;
+    char known[512];
+    known_networks(known, sizeof known);
+    if (!ok)
+        return fw_fail(err, FW_EINPUT, "network '%s': not a network name (%s) nor a directory's "
+                       "path", name, known);
+    snprintf(out->name, sizeof out->name, "%s", name);
+    fw_status st = fw_path(out->dir, sizeof out->dir, err, "%s/networks/%s", fw_data_root(), name);
+    struct stat sb;
+    if (!st && (stat(out->dir, &sb) != 0 || !S_ISDIR(sb.st_mode)))
+        st = fw_fail(err, FW_EINPUT, "unknown network '%s' (%s): no directory %s", name, known,
+                     out->dir);
+    return st;
+}
 
 fw_status fw_network_find(const char *name, fw_network_files *out, fw_error *err)
 {
-    static const char *const known = "channel, crossing, strait, sea, dover, geo-channel, bend";
-    size_t n = strlen(name);
-    bool ok = n > 0 && n < 64 && strspn(name, "abcdefghijklmnopqrstuvwxyz"
-                                              "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") == n;
-    if (!ok)
-        return fw_fail(err, FW_EINPUT, "network '%s': not a network name (%s)", name, known);
-    const char *root = fw_data_root();
-    fw_status st;
-    if ((st = fw_path(out->net, sizeof out->net, err, "%s/%s/%s.net.xml", fw_net_dir(), name,
-                      name)) ||
-        (st = fw_path(out->demand, sizeof out->demand, err, "%s/networks/%s/demand.yaml", root,
-                      name)) ||
-        (st = fw_path(out->types, sizeof out->types, err, "%s/networks/ships.add.xml", root)))
+    memset(out, 0, sizeof *out);
+    fw_status st = locate(name, out, err);
+    struct stat sb;
+    if (!st && (stat(out->dir, &sb) != 0 || !S_ISDIR(sb.st_mode)))
+        st = fw_fail(err, FW_EINPUT, "network '%s': %s is not a directory", out->name, out->dir);
+    if (st || (st = source_file(out, "nod.xml", true, "its nodes", out->nodes, sizeof out->nodes,
+                                err)) ||
+        (st = source_file(out, "edg.xml", true, "its edges", out->edges, sizeof out->edges, err)) ||
+        (st = source_file(out, "typ.xml", false, "its edge types", out->typ, sizeof out->typ,
+                          err)) ||
+        (st = read_proj(out, err)) ||
+        (st = fw_path(out->demand, sizeof out->demand, err, "%s/demand.yaml", out->dir)))
         return st;
     if (access(out->demand, R_OK) != 0)
-        return fw_fail(err, FW_EINPUT, "unknown network '%s' (%s): no %s", name, known,
-                       out->demand);
-    if (access(out->net, R_OK) != 0)
-        return fw_fail(err, FW_EINPUT, "network '%s' is not built: no %s (run the build)", name,
-                       out->net);
+        return fw_fail(err, FW_EINPUT, "network '%s': no %s (its traffic streams; "
+                       "networks/README.md)", out->name, out->demand);
+    /* the network's own ship types, else the shared ones */
+    if ((st = fw_path(out->types, sizeof out->types, err, "%s/ships.add.xml", out->dir)))
+        return st;
+    if (access(out->types, R_OK) != 0 &&
+        (st = fw_path(out->types, sizeof out->types, err, "%s/networks/ships.add.xml",
+                      fw_data_root())))
+        return st;
     if (access(out->types, R_OK) != 0)
         return fw_fail(err, FW_EINPUT, "no ship types file %s", out->types);
-    return FW_OK;
+    return fw_network_build(out, err);
 }
 
 /* Is id the id of an <edge> in the plain-XML edges text? */
@@ -50,13 +153,10 @@ static bool has_edge(const char *xml, const char *id)
     return false;
 }
 
-fw_status fw_network_check_demand(const char *name, const fw_demand *dm, fw_error *err)
+fw_status fw_network_check_demand(const fw_network_files *nf, const fw_demand *dm, fw_error *err)
 {
-    char path[1200];
-    fw_status st = fw_path(path, sizeof path, err, "%s/networks/%s/%s.edg.xml", fw_data_root(),
-                           name, name);
-    if (st)
-        return st;
+    const char *name = nf->name, *path = nf->edges;
+    fw_status st;
     char *xml = NULL;
     size_t len = 0;
     fw_error rerr = {0};

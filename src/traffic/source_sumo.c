@@ -178,6 +178,44 @@ static fw_status write_demand(const fw_sumo_source_def *d, const fw_network_file
     return st ? st : fw_demand_write(&dm, &dd, drou, err);
 }
 
+/* The run's files: the demand's routes, and the network SUMO reads (the
+ * network's own, or built with the targets' tracks). */
+static fw_status prepare_files(const fw_sumo_source_def *d, const fw_network_files *nf,
+                               bool tracks, sumo_files *f, fw_error *err)
+{
+    char nodes[2400] = "tracks.nod.xml", edges[2400] = "tracks.edg.xml", nlog[1200];
+    const char *types = NULL;
+    fw_status st;
+    if ((st = fw_path(f->routes, sizeof f->routes, err, "%s/targets.rou.xml", d->dir)))
+        return st;
+    if (nf) {
+        /* the network's own sources and the tracks, built together: one code path */
+        char drou[1200];
+        if ((st = fw_path(nodes, sizeof nodes, err, "%s,tracks.nod.xml", nf->nodes)) ||
+            (st = fw_path(edges, sizeof edges, err, "%s,tracks.edg.xml", nf->edges)) ||
+            (st = fw_path(drou, sizeof drou, err, "%s/demand.rou.xml", d->dir)) ||
+            (st = write_demand(d, nf, drou, &f->lane_change_s, err)))
+            return st;
+        types = nf->typ[0] ? nf->typ : NULL;
+        st = d->n_targets > 0
+                 ? fw_path(f->routes, sizeof f->routes, err, "%s,%s/targets.rou.xml", drou, d->dir)
+                 : fw_path(f->routes, sizeof f->routes, err, "%s", drou);
+        if (st)
+            return st;
+        f->has_types = true;
+        if ((st = fw_path(f->types, sizeof f->types, err, "%s", nf->types)))
+            return st;
+    }
+    if (!tracks)
+        return fw_path(f->net, sizeof f->net, err, "%s", nf->net);
+    /* netconvert runs in dir: relative names keep the net.xml independent of
+     * the (temporary) run directory's path */
+    if ((st = fw_path(f->net, sizeof f->net, err, "%s/run.net.xml", d->dir)) ||
+        (st = fw_path(nlog, sizeof nlog, err, "%s/netconvert.log", d->dir)))
+        return st;
+    return fw_netconvert(d->dir, nodes, edges, types, d->proj, "run.net.xml", nlog, err);
+}
+
 static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *err)
 {
     bool has_net = d->network && d->network[0];
@@ -187,44 +225,19 @@ static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *e
     bool tracks = d->n_targets > 0 || !has_net;
     /* the lists below are joined with commas: none may be in a path */
     fw_status st = fw_sumo_path_check("the run directory", d->dir, err);
-    if (st || (has_net && (st = fw_sumo_path_check("FAIRWAY_DATA", fw_data_root(), err))) ||
-        (tracks && (st = write_tracks(d, err))))
+    fw_network_files *nf = has_net ? calloc(1, sizeof *nf) : NULL;
+    if (has_net && !nf)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    if (st || (has_net && ((st = fw_network_find(d->network, nf, err)) ||
+                           (st = fw_sumo_path_check("the network's directory", nf->dir, err)) ||
+                           (st = fw_sumo_path_check("the built network", nf->net, err)))) ||
+        (tracks && (st = write_tracks(d, err)))) {
+        free(nf);
         return st;
-    char nodes[2400] = "tracks.nod.xml", edges[2400] = "tracks.edg.xml", nlog[1200], typ[1100];
-    const char *types = NULL;
-    fw_network_files nf = {0};
-    if ((st = fw_path(f->routes, sizeof f->routes, err, "%s/targets.rou.xml", d->dir)))
-        return st;
-    if (has_net) {
-        /* the network's own sources and the tracks, built together: one code path */
-        char pre[1024], drou[1200];
-        if ((st = fw_network_find(d->network, &nf, err)) ||
-            (st = fw_path(pre, sizeof pre, err, "%s/networks/%s/%s", fw_data_root(), d->network,
-                          d->network)) ||
-            (st = fw_path(nodes, sizeof nodes, err, "%s.nod.xml,tracks.nod.xml", pre)) ||
-            (st = fw_path(edges, sizeof edges, err, "%s.edg.xml,tracks.edg.xml", pre)) ||
-            (st = fw_path(typ, sizeof typ, err, "%s.typ.xml", pre)) ||
-            (st = fw_path(drou, sizeof drou, err, "%s/demand.rou.xml", d->dir)) ||
-            (st = write_demand(d, &nf, drou, &f->lane_change_s, err)))
-            return st;
-        types = typ;
-        st = d->n_targets > 0
-                 ? fw_path(f->routes, sizeof f->routes, err, "%s,%s/targets.rou.xml", drou, d->dir)
-                 : fw_path(f->routes, sizeof f->routes, err, "%s", drou);
-        if (st)
-            return st;
-        f->has_types = true;
-        if ((st = fw_path(f->types, sizeof f->types, err, "%s", nf.types)))
-            return st;
     }
-    if (!tracks)
-        return fw_path(f->net, sizeof f->net, err, "%s", nf.net);
-    /* netconvert runs in dir: relative names keep the net.xml independent of
-     * the (temporary) run directory's path */
-    if ((st = fw_path(f->net, sizeof f->net, err, "%s/run.net.xml", d->dir)) ||
-        (st = fw_path(nlog, sizeof nlog, err, "%s/netconvert.log", d->dir)))
-        return st;
-    return fw_netconvert(d->dir, nodes, edges, types, d->proj, "run.net.xml", nlog, err);
+    st = prepare_files(d, nf, tracks, f, err);
+    free(nf);
+    return st;
 }
 
 static double ss_time(const fw_source *s)

@@ -19,7 +19,7 @@ mv "$tmp/first" "$tmp/p"
 p=$tmp/p
 for f in bin/fairway lib/fairway/fairway-libsumo.so lib/fairway/fairway-libtraci.so lib/fairway/gui-stubs/stubs.txt \
          share/fairway/scenarios/ships/c3.yaml share/fairway/scenarios/paper/1-head-on.yaml \
-         share/fairway/networks/ships.add.xml share/fairway/networks/dover/dover.net.xml \
+         share/fairway/networks/ships.add.xml share/fairway/networks/dover/dover.nod.xml \
          share/fairway/networks/dover/demand.yaml share/fairway/analysis/plot_study.py \
          share/man/man1/fairway.1; do
   [ -e "$p/$f" ] || { echo "not installed: $f"; exit 1; }
