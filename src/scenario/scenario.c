@@ -136,7 +136,8 @@ static fw_status load_tracks(const yt_doc *doc, const yt_node *tr, fw_scenario *
  * scenario's (scn_ais.h fw_scn_network_ref). */
 static fw_status network_key(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err)
 {
-    char value[sizeof s->network];
+    char value[sizeof s->network] = "";
+    s->network[0] = '\0';
     fw_status st = yt_opt_string(doc, tr, "traffic", "network", value, sizeof value, err);
     if (st || !value[0])
         return st;

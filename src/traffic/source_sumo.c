@@ -228,7 +228,8 @@ static fw_status prepare(const fw_sumo_source_def *d, sumo_files *f, fw_error *e
     fw_network_files *nf = has_net ? calloc(1, sizeof *nf) : NULL;
     if (has_net && !nf)
         return fw_fail(err, FW_ERUN, "out of memory");
-    if (st || (has_net && ((st = fw_network_find(d->network, nf, err)) ||
+    if (st || (has_net && ((st = fw_sumo_path_check("FAIRWAY_DATA", fw_data_root(), err)) ||
+                           (st = fw_network_find(d->network, nf, err)) ||
                            (st = fw_sumo_path_check("the network's directory", nf->dir, err)) ||
                            (st = fw_sumo_path_check("the built network", nf->net, err)))) ||
         (tracks && (st = write_tracks(d, err)))) {
