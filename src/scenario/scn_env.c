@@ -38,7 +38,7 @@ static fw_status read_tide(const yt_doc *doc, const yt_node *m, const char *P, b
     return FW_OK;
 }
 
-/* The charted stream of the scenario's network, networks/NAME/tide.yaml:
+/* The charted stream of the scenario's network, its directory's tide.yaml:
  *   source: "where the numbers come from"
  *   rate_kn: 2.25, neap_rate_kn: 1.25, flood_towards_deg: 85 */
 static fw_status network_tide(const yt_doc *doc, const yt_node *tide, const fw_scenario *s,
@@ -50,8 +50,13 @@ static fw_status network_tide(const yt_doc *doc, const yt_node *tide, const fw_s
     if (!s->network[0])
         return fw_fail_at(err, doc->file, yt_key_line(tide, "network"), P,
                           "the scenario has no traffic.network to take a tidal stream from");
-    char path[1024];
-    snprintf(path, sizeof path, "%s/networks/%s/tide.yaml", fw_data_root(), s->network);
+    /* the network's directory: named by its path, or under the data root */
+    char path[1200];
+    int k = strchr(s->network, '/')
+                ? snprintf(path, sizeof path, "%s/tide.yaml", s->network)
+                : snprintf(path, sizeof path, "%s/networks/%s/tide.yaml", fw_data_root(), s->network);
+    if (k < 0 || (size_t)k >= sizeof path)
+        return fw_fail_at(err, doc->file, yt_key_line(tide, "network"), P, "path too long");
     FILE *f = fopen(path, "rb");
     if (!f)
         return fw_fail_at(err, doc->file, yt_key_line(tide, "network"), P,
