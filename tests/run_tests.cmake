@@ -86,3 +86,7 @@ fw_test(test_branch test_branch.c)
 target_link_libraries(test_branch PRIVATE fairway_run)
 set_tests_properties(test_branch PROPERTIES TIMEOUT 120
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
+# The encounter book's COLREGs reading in restricted visibility (run/book.h: rule 19)
+fw_test(test_book test_book.c)
+target_link_libraries(test_book PRIVATE fairway_run)

@@ -268,10 +268,7 @@ double fw_track_min_distance(const fw_track *tr, const fw_target *t, double *t_m
     return best;
 }
 
-/* Rule 19(d), a ship not in sight: no alteration of course to port for a
- * ship forward of the beam, other than one being overtaken (by the own
- * ship); none towards a ship abeam or abaft the beam. */
-static int rule19_sides(const fw_assessment *a)
+int fw_rule19_sides(const fw_assessment *a)
 {
     double rb = a->rel_bearing; /* [0, 2 pi), clockwise from the bow */
     bool forward = rb < 0.5 * FW_PI || rb > 1.5 * FW_PI;
@@ -287,7 +284,7 @@ int fw_permitted_sides(const fw_helm_def *def, const fw_assessment *as, int n)
         if (!as[i].enters_domain)
             continue;
         if (as[i].rule19) {
-            allowed &= rule19_sides(&as[i]);
+            allowed &= fw_rule19_sides(&as[i]);
             continue;
         }
         switch (as[i].situation) {

@@ -89,6 +89,11 @@ double fw_track_min_distance(const fw_track *tr, const fw_target *t, double *t_m
  * abaft the beam (port for one on the starboard side, starboard for one on
  * the port side).  Sides that exclude each other: starboard. */
 int fw_permitted_sides(const fw_helm_def *def, const fw_assessment *as, int n);
+/* Rule 19(d)'s sides (FW_ALLOW_*) against one ship not in sight: no
+ * alteration of course to port for a ship forward of the beam, other than
+ * one being overtaken (by the own ship); none towards a ship abeam or abaft
+ * the beam. */
+int fw_rule19_sides(const fw_assessment *a);
 
 typedef struct fw_helm_result {
     bool threat;         /* keeping course lets some target into the domain */

@@ -90,6 +90,7 @@ static fw_status add(fw_book *r, double t, const fw_target *ts, const fw_assessm
     e->length = ts->length;
     e->breadth = ts->breadth;
     e->situation = as->situation;
+    e->rule19 = as->rule19;
     e->t_detect = t;
     e->dcpa0 = as->dcpa;
     e->tcpa0 = as->tcpa;
@@ -178,6 +179,7 @@ void fw_book_action(fw_book *r, double t, int side, double helm, const char *pri
         e->act_side = side;
         e->act_helm = helm;
         e->act_situation = as[i].situation;
+        e->act_rule19 = as[i].rule19 ? fw_rule19_sides(&as[i]) : 0;
         e->audit_obs.tcpa_act = as[i].tcpa;
         e->primary = primary_id && strcmp(primary_id, e->id) == 0;
     }
@@ -198,12 +200,18 @@ void fw_book_judge(fw_book *r, fw_run_summary *sum)
     for (int i = 0; i < r->n; i++) {
         fw_encounter *e = &r->e[i];
         /* no action: right when no action was needed (the target stayed out of
-         * the domain) or when the own ship stood on against it */
-        if (e->acted)
+         * the domain) or when the own ship stood on against it; out of sight
+         * (rule 19) there is no standing on, and the sides are 19(d)'s */
+        if (e->acted && e->act_rule19)
+            e->colregs_ok = (e->act_side == FW_SIDE_STARBOARD ? FW_ALLOW_STARBOARD
+                                                              : FW_ALLOW_PORT) &
+                            e->act_rule19;
+        else if (e->acted)
             e->colregs_ok = action_ok(e->act_situation, e->act_side);
         else
-            e->colregs_ok = !e->domain_entered || e->situation == FW_SIT_STAND_ON ||
-                            e->situation == FW_SIT_OVERTAKEN;
+            e->colregs_ok = !e->domain_entered ||
+                            (!e->rule19 && (e->situation == FW_SIT_STAND_ON ||
+                                            e->situation == FW_SIT_OVERTAKEN));
         if (e->min_dist < sum->min_dist) {
             sum->min_dist = e->min_dist;
             snprintf(sum->min_dist_id, sizeof sum->min_dist_id, "%s", e->id);

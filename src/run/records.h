@@ -40,6 +40,9 @@ typedef struct fw_encounter {
     int act_side;           /* FW_SIDE_* */
     double act_helm;        /* rad, signed */
     fw_situation act_situation; /* situation when the own ship acted */
+    bool rule19;            /* out of sight when first detected (restricted visibility) */
+    int act_rule19;         /* out of sight at the action: rule 19(d)'s sides
+                               (helm_search.h FW_ALLOW_*); 0: in sight */
     bool primary;           /* that action was for this target */
     double min_dist, t_min; /* m, s: centre distance */
     double min_hull;        /* m, hull to hull (0: touched; INFINITY if never within 1 nm) */
