@@ -68,6 +68,9 @@ set_tests_properties(worst_replay PROPERTIES TIMEOUT 300 ENVIRONMENT "FAIRWAY_DA
 # ships on a bent channel (networks/bend) never move sideways like no ship can
 fw_script_test(bend_traffic 0 "ok: no ship jumps on the bend" bend_traffic.sh)
 set_tests_properties(bend_traffic PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
+# the start-up fill puts no two ships on a collision course, network-wide
+fw_script_test(fill_pairs 0 "ok: no fill pair on a collision course" fill_pairs.sh)
+set_tests_properties(fill_pairs PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
 
 # Background ships that alter course (traffic.give_way: course) in SUMO's Dover traffic.
 fw_script_test(give_way_course 0 "background ships alter course and come back" give_way_course.sh)

@@ -433,7 +433,7 @@ static void log_start(fw_run *R)
                 R->ais.unprojected, R->ais.unprojected_at);
     if (cleared > 0)
         note(R,     "traffic: %d ships the fill put within 2 nm of the own ship or on a collision "
-                "course with it taken out at the start\n",
+                "course with it or with each other taken out at the start\n",
                 cleared);
 }
 

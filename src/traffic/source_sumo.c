@@ -469,21 +469,30 @@ double fw_sumo_source_step_wall(const fw_source *s)
     return s && s->ops == &sumo_ops ? ((const sumo_source *)s)->wall : 0.0;
 }
 
-/* Is the fill's ship i on a collision course with another of the fill (its
- * hulls within clear_cpa in the next clear_tcpa s, crossing, not following in
- * a lane)?  Put there at the start it has no time to give way: the later
- * of the two in SUMO's order is taken out. */
+/* Is the fill's ship i on a collision course with another ship j < i that
+ * stays (its hulls' centres within clear_cpa in the next clear_tcpa s, at
+ * constant velocity)?  Put there at the start it has no time to give way:
+ * the later of the two in SUMO's order is taken out.  Only crossing courses
+ * count: ships following one another in a lane (courses within 30 deg) keep
+ * their distance by SUMO's car following, and ships meeting on reciprocal
+ * lanes (courses within 40 deg of opposite: a 30 deg bend's legs included)
+ * pass at the lanes' spacing, which the network sets and no other placement
+ * would change; those only when their hulls would touch (centres within the
+ * half beams' sum). */
 static bool fill_conflict(const fw_sumo_source_def *d, const fw_target *v, const bool *out, int i)
 {
     double ie, in;
     fw_velocity(v[i].speed, v[i].course, &ie, &in);
     for (int j = 0; j < i; j++) {
-        if (out[j] || cos(v[i].course - v[j].course) > cos(fw_deg_to_rad(30.0)))
+        double c = cos(v[i].course - v[j].course);
+        if (out[j] || v[j].own || c > cos(fw_deg_to_rad(30.0)))
             continue;
         double je, jn, tc, dc;
         fw_velocity(v[j].speed, v[j].course, &je, &jn);
         fw_cpa(v[j].east - v[i].east, v[j].north - v[i].north, je - ie, jn - in, &tc, &dc);
-        if (tc > 0.0 && tc < d->clear_tcpa && dc < d->clear_cpa)
+        double limit = c < -cos(fw_deg_to_rad(40.0)) ? 0.5 * (v[i].breadth + v[j].breadth)
+                                                     : d->clear_cpa;
+        if (tc > 0.0 && tc < d->clear_tcpa && dc < limit)
             return true;
     }
     return false;
@@ -491,15 +500,16 @@ static bool fill_conflict(const fw_sumo_source_def *d, const fw_target *v, const
 
 /* After SUMO's first step, the fill's ships that would be a scenario's
  * artefact rather than traffic are taken out: near the own ship or on a
- * collision course with it, or on one with another of the fill (see
- * source_sumo.h); *n_out counts them. */
+ * collision course with it, or on one with another ship anywhere on the
+ * network (see source_sumo.h; every ship read once through the getters);
+ * *n_out counts them. */
 static fw_status clear_start(sumo_source *k, const fw_sumo_source_def *d, int *n_out,
                              fw_error *err)
 {
     const fw_target *v;
     int n;
     *n_out = 0;
-    fw_status st = fw_traffic_around(k->tr, &v, &n, err);
+    fw_status st = fw_traffic_all(k->tr, &v, &n, err);
     if (st)
         return st;
     /* ids first: removing changes the list */
@@ -514,7 +524,7 @@ static fw_status clear_start(sumo_source *k, const fw_sumo_source_def *d, int *n
     double oe, on;
     fw_velocity(d->own.speed, d->own.course, &oe, &on);
     for (int i = 0; i < n; i++) {
-        if (fw_target_find(d->targets, d->n_targets, v[i].id) >= 0)
+        if (v[i].own || fw_target_find(d->targets, d->n_targets, v[i].id) >= 0)
             continue;
         double ve, vn, tc, dc, de = v[i].east - d->own.east, dn = v[i].north - d->own.north;
         fw_velocity(v[i].speed, v[i].course, &ve, &vn);

@@ -24,9 +24,14 @@
  * the own ship, or on a course that would bring it within clear_cpa of it in
  * the next clear_tcpa seconds (both at constant velocity), is taken out: a
  * study must not begin with a ship already on top of the own ship.  So is
- * the later (in SUMO's order) of two network ships on crossing courses (more
- * than 30 deg apart) that would come that close that soon: put there at the
- * start they would have no time to give way.
+ * the later (in SUMO's order) of two network ships anywhere on the network
+ * (every ship read once, not only those about the own ship) on crossing
+ * courses (30 to 140 deg apart) that would come within clear_cpa that soon,
+ * or meeting on reciprocal courses with hulls that would touch: put there at
+ * the start they would have no time to give way.  At three times Dover's
+ * density (5 seeds) this took the fill pairs that collided in the first 10
+ * minutes from 2 to 0 (12 to 0 with blind traffic), 4.9% of the fill's ships
+ * taken out in all (2.1% when only the own ship's surroundings were looked at).
  *
  * It has no within() (source.h): a vessel other than the own ship sees the
  * SUMO ships of nearby() (the range query about the own ship) within its
