@@ -22,6 +22,7 @@ struct fw_records {
     const fw_scenario *s;
     char dir[1024];
     FILE *own, *tgt, *log;
+    FILE *sen;     /* sensed.csv: what a sensor (not perfect) made of the ships */
     fw_geo *geo;   /* the scenario's origin: lat/lon columns (NULL: none) */
     fw_book *book; /* the encounter book (book.h): what the files are made of */
 };
@@ -48,7 +49,9 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
     if (st || !dir) /* no directory: the book only */
         return st;
     if (!(r->own = open_in(dir, "own.csv", err)) || !(r->log = open_in(dir, "run.log", err)) ||
-        (s->targets_csv && !(r->tgt = open_in(dir, "targets.csv", err))))
+        (s->targets_csv && !(r->tgt = open_in(dir, "targets.csv", err))) ||
+        (s->targets_csv && s->sensing.mode != FW_SENSE_PERFECT &&
+         !(r->sen = open_in(dir, "sensed.csv", err))))
         return FW_ERUN;
     if ((st = fw_scenario_plane(s, &r->geo, err)))
         return st;
@@ -63,6 +66,8 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
     if (r->tgt)
         fprintf(r->tgt, "t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,bearing_deg,"
                         "dcpa_m,tcpa_s,situation%s\n", geo_cols);
+    if (r->sen)
+        fprintf(r->sen, "t_s,id,east_m,north_m,course_deg,speed_kn,error_m%s\n", geo_cols);
     return FW_OK;
 }
 
@@ -76,6 +81,8 @@ void fw_records_close(fw_records *r)
         fclose(r->tgt);
     if (r->log)
         fclose(r->log);
+    if (r->sen)
+        fclose(r->sen);
     fw_book_destroy(r->book);
     fw_geo_destroy(r->geo);
     free(r);
@@ -107,9 +114,9 @@ FILE *fw_records_log(fw_records *r) { return r->log; }
 
 int fw_records_files(fw_records *r, FILE **f, int max)
 {
-    FILE *all[] = {r->own, r->log, r->tgt};
+    FILE *all[] = {r->own, r->log, r->tgt, r->sen};
     int n = 0;
-    for (int i = 0; i < 3; i++)
+    for (int i = 0; i < 4; i++)
         if (all[i] && n++ < max)
             f[n - 1] = all[i];
     return n;
@@ -156,6 +163,29 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
         end_row(r, r->tgt, ts->east, ts->north);
     }
     return FW_OK;
+}
+
+void fw_records_sensed(fw_records *r, double t, const fw_target *known, int n_known,
+                       const fw_target *truth, int n_truth)
+{
+    if (!r->sen)
+        return;
+    for (int i = 0, j = 0; i < n_known; i++) {
+        const fw_target *k = &known[i];
+        while (j < n_truth && strcmp(truth[j].id, k->id) < 0) /* both sorted by id */
+            j++;
+        double err = j < n_truth && strcmp(truth[j].id, k->id) == 0
+                         ? hypot(k->east - truth[j].east, k->north - truth[j].north)
+                         : NAN;
+        fw_put_fixed(r->sen, t, 1);
+        fputc(',', r->sen);
+        fputs(k->id, r->sen);
+        put_nums(r->sen,
+                 (const double[]){k->east, k->north, fw_heading_deg(k->course),
+                                  fw_ms_to_kn(k->speed), err},
+                 (const int[]){2, 2, 3, 3, 2}, 5);
+        end_row(r, r->sen, k->east, k->north);
+    }
 }
 
 void fw_records_action(fw_records *r, double t, int side, double helm, const char *primary_id,

@@ -149,12 +149,19 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
 void fw_records_close(fw_records *r);
 /* run.log (NULL without a directory). */
 FILE *fw_records_log(fw_records *r);
-/* The open streams (own.csv, run.log, targets.csv), up to max into f; how many. */
+/* The open streams (own.csv, run.log, targets.csv, sensed.csv), up to max
+ * into f; how many. */
 int fw_records_files(fw_records *r, FILE **f, int max);
 /* The own ship's row: x its motion (heading; u, v through the water), rec its
  * record (speed_kn is the speed over ground, the columns' convention). */
 void fw_records_own(fw_records *r, double t, const fw_mmg_state *x, const fw_target *rec,
                     double helm, double n, const char *mode);
+/* What the own ship's sensor knew at t (known, sorted by id) against the
+ * truth (sorted by id): a row of sensed.csv each (its position, course and
+ * speed, and its distance from the truth), written with a sensor that is
+ * not perfect and targets_csv on. */
+void fw_records_sensed(fw_records *r, double t, const fw_target *known, int n_known,
+                       const fw_target *truth, int n_truth);
 /* One target seen at time t, with its assessment (situation, DCPA/TCPA, threat).
  * FW_ERUN when the book cannot grow: a run never goes on missing a ship. */
 fw_status fw_records_target(fw_records *r, double t, const fw_target *ts,

@@ -280,6 +280,8 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
     else if (!seen_as)
         n_seen = 0; /* a controller that assesses nothing names no ship it acted for */
     bool row = k % lround(s->record_every / s->step) == 0;
+    if (row && sensed)
+        fw_records_sensed(R->rec, t, seen, n_seen, tg, n);
     if (row)
         fw_records_own(R->rec, t, x, fw_vessel_record(R->own), d->helm,
                        fw_vessel_propeller(R->own), fw_policy_mode_name(d->mode));

@@ -9,7 +9,9 @@
 # starboard on the track and passes clear, the records keep the truth; the
 # summary gives the scans, plots and the rms error of the track against the
 # truth; the same seed gives the same run.  With ais+radar (AIS first,
-# MSC.192(79) 5.29) the run also counts AIS reports.
+# MSC.192(79) 5.29) the run also counts AIS reports.  Every run keeps what the
+# own ship knew beside the truth (sensed.csv, its error within 30% of the
+# summary's rms for the radar runs).
 set -euo pipefail
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -39,6 +41,12 @@ for d in sys.argv[1:]:
                 for r in csv.DictReader(open(d + "/targets.csv")) if r["t_s"] in own)
     enc = s["encounters"][0]
     assert enc["act_side"] == "starboard" and not enc["collision"], enc
+    # both kept: sensed.csv has what the own ship knew, its error against the truth
+    err = [float(r["error_m"]) for r in csv.DictReader(open(d + "/sensed.csv"))]
+    rms = math.sqrt(sum(e * e for e in err) / len(err))
+    assert len(err) > 100 and 0.0 < rms < 100.0, (len(err), rms)
+    if "position_error_rms_m" in sen:
+        assert abs(rms / sen["position_error_rms_m"] - 1.0) < 0.3, (rms, sen)
     # the truth (5 s rows)
     assert abs(enc["min_distance_m"] - least) < 30.0, (enc["min_distance_m"], least)
     if sen["mode"] == "ais":
