@@ -6,7 +6,9 @@
  *     ship overtaking, either side is right
  *   a crossing ship on the port bow entering the domain with no action: in
  *     clear weather the own ship stood on (right); out of sight there is no
- *     standing on (wrong) */
+ *     standing on (wrong)
+ *   the audit reads such an encounter as rule 19's, the own ship a give-way
+ *     ship, the side as above */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -21,8 +23,8 @@
 /* One ship at relative bearing rb (deg) 3 km off on a collision course (it
  * meets the own ship, 6 m/s north, 600 s on), then 100 m off in the domain;
  * the own ship acts to side (FW_SIDE_NONE: not at all) at t = 1.  Returns
- * the entry's colregs_ok. */
-static bool judged(double rb_deg, int side, double visibility)
+ * the entry's colregs_ok; its audit into *audit when not NULL. */
+static bool judged_audit(double rb_deg, int side, double visibility, fw_audit_result *audit)
 {
     fw_scenario s;
     fw_error err = {0};
@@ -53,10 +55,18 @@ static bool judged(double rb_deg, int side, double visibility)
     memset(&sum, 0, sizeof sum);
     fw_book_judge(b, &sum);
     int n;
-    bool ok = fw_book_entries(b, &n)[0].colregs_ok;
+    const fw_encounter *e = fw_book_entries(b, &n);
+    bool ok = e[0].colregs_ok;
     CHECK(n == 1 && ok == sum.colregs_ok);
+    if (audit)
+        *audit = e[0].audit;
     fw_book_destroy(b);
     return ok;
+}
+
+static bool judged(double rb_deg, int side, double visibility)
+{
+    return judged_audit(rb_deg, side, visibility, NULL);
 }
 
 static void test_rule19_judged(void)
@@ -69,6 +79,16 @@ static void test_rule19_judged(void)
     CHECK(!judged(45.0, FW_SIDE_PORT, fog));
     CHECK(judged(315.0, FW_SIDE_NONE, 0.0)); /* stand-on (rule 17) */
     CHECK(!judged(315.0, FW_SIDE_NONE, fog));
+    /* the audit (audit.h fw_audit_evaluate_rule19): rule 19, a give-way role,
+     * the side read as above */
+    fw_audit_result a;
+    judged_audit(135.0, FW_SIDE_STARBOARD, fog, &a);
+    CHECK(a.rule == 19 && a.role == FW_ROLE_GIVE_WAY && a.compliant == 0);
+    CHECK_CONTAINS(a.note, "rule 19(d)");
+    judged_audit(135.0, FW_SIDE_STARBOARD, 0.0, &a);
+    CHECK(a.rule == 13 && a.role == FW_ROLE_STAND_ON);
+    judged_audit(135.0, FW_SIDE_PORT, fog, &a);
+    CHECK(a.rule == 19 && strstr(a.note, "rule 19(d)") == NULL);
 }
 
 int main(void)

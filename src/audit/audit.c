@@ -191,3 +191,20 @@ void fw_audit_evaluate(const fw_audit_def *d, fw_situation situation, const fw_a
     else
         stand_on(d, situation, o, side, out);
 }
+
+void fw_audit_evaluate_rule19(const fw_audit_def *d, const fw_audit_obs *o, bool acted,
+                              double t_act, bool side_ok, double t_cpa,
+                              const fw_audit_history *h, fw_audit_result *out)
+{
+    /* a give-way ship's reading (early, substantial), the side judged here */
+    fw_audit_evaluate(d, FW_SIT_GIVE_WAY, o, acted, t_act, FW_SIDE_STARBOARD, t_cpa, h, out);
+    out->rule = 19;
+    if (out->compliant < 0)
+        return;
+    if (acted && !side_ok)
+        verdict(out, false, "to port or towards it (rule 19(d))");
+    else if (!acted && !out->compliant)
+        verdict(out, false, "no action (rule 19(d))");
+    else if (!out->compliant && !out->early)
+        verdict(out, false, "late (rule 19(d): in ample time)");
+}

@@ -101,7 +101,7 @@ typedef struct fw_audit_history {
 typedef enum fw_audit_role { FW_ROLE_GIVE_WAY, FW_ROLE_STAND_ON } fw_audit_role;
 
 typedef struct fw_audit_result {
-    int rule;              /* 13, 14 or 15 */
+    int rule;              /* 13, 14 or 15; 19 out of sight (fw_audit_evaluate_rule19) */
     fw_audit_role role;
     bool risk;
     double t_risk, tcpa_risk; /* NAN without risk */
@@ -124,5 +124,15 @@ const char *fw_audit_role_name(fw_audit_role r);
 void fw_audit_evaluate(const fw_audit_def *d, fw_situation situation, const fw_audit_obs *o,
                        bool acted, double t_act, int side, double t_cpa,
                        const fw_audit_history *h, fw_audit_result *out);
+
+/* The audit of an encounter met out of sight in restricted visibility (rule
+ * 19: rule 19, role give-way, since there is no stand-on ship): it acts in
+ * ample time (early, as a give-way ship) and substantially, and side_ok says
+ * whether its side was 19(d)'s (the caller's reading: no alteration to port
+ * for a ship forward of the beam other than one being overtaken, none
+ * towards one abeam or abaft); no action while the risk lasted: a breach. */
+void fw_audit_evaluate_rule19(const fw_audit_def *d, const fw_audit_obs *o, bool acted,
+                              double t_act, bool side_ok, double t_cpa,
+                              const fw_audit_history *h, fw_audit_result *out);
 
 #endif

@@ -191,6 +191,14 @@ fw_encounter *fw_book_entries(fw_book *r, int *n)
     return r->e;
 }
 
+/* Was the action for e on a side rule 19(d) allows (any, when the ship was in
+ * sight by then)? */
+static bool rule19_side_ok(const fw_encounter *e)
+{
+    int bit = e->act_side == FW_SIDE_STARBOARD ? FW_ALLOW_STARBOARD : FW_ALLOW_PORT;
+    return !e->act_rule19 || (bit & e->act_rule19);
+}
+
 void fw_book_judge(fw_book *r, fw_run_summary *sum)
 {
     sum->n_encounters = r->n;
@@ -203,9 +211,7 @@ void fw_book_judge(fw_book *r, fw_run_summary *sum)
          * the domain) or when the own ship stood on against it; out of sight
          * (rule 19) there is no standing on, and the sides are 19(d)'s */
         if (e->acted && e->act_rule19)
-            e->colregs_ok = (e->act_side == FW_SIDE_STARBOARD ? FW_ALLOW_STARBOARD
-                                                              : FW_ALLOW_PORT) &
-                            e->act_rule19;
+            e->colregs_ok = rule19_side_ok(e);
         else if (e->acted)
             e->colregs_ok = action_ok(e->act_situation, e->act_side);
         else
@@ -218,8 +224,12 @@ void fw_book_judge(fw_book *r, fw_run_summary *sum)
         }
         sum->min_hull = fmin(sum->min_hull, e->min_hull);
         fw_audit_history h = {r->h_t, r->h_psi, r->h_v, r->h_n};
-        fw_audit_evaluate(&r->s->audit, e->situation, &e->audit_obs, e->acted, e->t_act,
-                          e->act_side, e->t_min, &h, &e->audit);
+        if (e->rule19)
+            fw_audit_evaluate_rule19(&r->s->audit, &e->audit_obs, e->acted, e->t_act,
+                                     rule19_side_ok(e), e->t_min, &h, &e->audit);
+        else
+            fw_audit_evaluate(&r->s->audit, e->situation, &e->audit_obs, e->acted, e->t_act,
+                              e->act_side, e->t_min, &h, &e->audit);
         sum->domain_entered |= e->domain_entered;
         sum->collision |= e->collision;
         sum->colregs_ok &= e->colregs_ok;
