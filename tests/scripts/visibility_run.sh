@@ -10,6 +10,8 @@
 #   abaft      a faster ship closing from abaft the starboard beam (being
 #              overtaken): in fog the own ship does not alter towards it
 #              (19(d)(ii)): to port
+#   crossing-fog-radar  Imazu 2 in fog on radar (scenarios/sensing): to
+#              starboard by rule 19, deciding on the radar's track
 # No collision; each run's COLREGs check (summary colregs_ok) holds: out of
 # sight by rule 19(d)'s sides and no standing on (run/book.c).
 set -euo pipefail
@@ -24,6 +26,7 @@ sed "s/^name: clear-port/name: fog-port/; $fog" "$tmp/b.yaml" > "$tmp/c.yaml"
 sed "s/^name: imazu-04/name: fog-abaft/; $fog; s/east_m: -7858.0, north_m: -7858.0, course_deg: 45.000, speed_kn: 12.001/east_m: 9623.0, north_m: -16668.0, course_deg: 330.000, speed_kn: 20.78/" \
   "$im/imazu-04.yaml" > "$tmp/d.yaml"
 for x in a b c d; do "$FAIRWAY" run "$tmp/$x.yaml" --out "$tmp/o" > /dev/null; done
+"$FAIRWAY" run "$FAIRWAY_DATA/scenarios/sensing/crossing-fog-radar.yaml" --out "$tmp/o" > /dev/null
 "$PYTHON" - "$tmp/o" <<'PY'
 import json, sys
 o = sys.argv[1]
@@ -43,5 +46,8 @@ assert not r19c and r19 and fogp["act_side"] == "starboard", fogp
 assert fogp["t_act_s"] < clear["t_act_s"] - 30, (fogp["t_act_s"], clear["t_act_s"])
 e, r19 = enc("fog-abaft")
 assert e["act_side"] == "port" and r19, e
+# fog and radar (scenarios/sensing): the same by rule 19, on the radar's track
+e, r19 = enc("crossing-fog-radar")
+assert e["act_side"] == "starboard" and r19, e
 PY
 echo "ok: rule 19 in restricted visibility"
