@@ -90,3 +90,13 @@ set_tests_properties(test_branch PROPERTIES TIMEOUT 120
 # The encounter book's COLREGs reading in restricted visibility (run/book.h: rule 19)
 fw_test(test_book test_book.c)
 target_link_libraries(test_book PRIVATE fairway_run)
+
+# The own ship follows a route (issue 27 item 5): a 30 deg bend within 100 m
+# of its line, the return to the route after avoiding, bad routes refused.
+fw_test(test_route test_route.c)
+target_link_libraries(test_route PRIVATE fairway_run)
+set_tests_properties(test_route PROPERTIES TIMEOUT 120
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+fw_cli_test(cli_route_bad_speed 2 "bad-speed.yaml:12: own_ship.route.1..speed_kn: -4 is out of range"
+            run ${CMAKE_SOURCE_DIR}/tests/data/route/bad-speed.yaml --out ${CMAKE_CURRENT_BINARY_DIR}/cli-runs-route)
+set_tests_properties(cli_route_bad_speed PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}" TIMEOUT 60)

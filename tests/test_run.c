@@ -353,7 +353,7 @@ static void test_bad_files(void)
     bad_case(3, "  ship: nosuch\n", "bad.yaml:3: own_ship.ship: unknown ship 'nosuch'");
     bad_case(7, "  speed_kn: fast\n", "bad.yaml:7: own_ship.speed_kn");   /* wrong type */
     bad_case(7, "  speed_kn: .nan\n", "bad.yaml:7: own_ship.speed_kn");   /* NaN */
-    bad_case(8, "\n", "own_ship: give exactly one of leg_nm or destination"); /* missing */
+    bad_case(8, "\n", "own_ship: give exactly one of leg_nm, destination or route"); /* missing */
     bad_case(9, "traffic:\n  network: atlantis\n",
              "bad.yaml:10: traffic.network: unknown network 'atlantis'");
     bad_case(11, "    - {id: T1, east_m: 0, north_m: 100, course_deg: 180, speed_kn: 10, "

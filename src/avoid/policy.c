@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "avoid/wheel_over.h"
 #include "core/names.h"
 #include "core/units.h"
 
@@ -104,6 +105,40 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->course_set = false;
     p->track_set = false;
     p->track_e = p->track_n = 0.0;
+    p->leg = 0;
+    p->wo_leg = -1;
+    p->wo = 0.0;
+}
+
+/* The planned track: leg k of the route. */
+static void set_leg(fw_policy *p, int k)
+{
+    const fw_route_leg *l = &p->def.route.leg[k];
+    p->leg = k;
+    p->track_e = l->east;
+    p->track_n = l->north;
+    p->psi_ref = l->course;
+}
+
+/* A steered route: on to the next leg once past the active leg's wheel-over
+ * point (the ship's progress along the leg, wherever it is across it). */
+static fw_status follow_route(fw_policy *p, const fw_policy_input *in, fw_error *err)
+{
+    const fw_route *r = &p->def.route;
+    fw_steer_def ap = {.kp = p->def.ap_kp, .kd = p->def.ap_kd, .max_helm = p->def.ap_max_helm};
+    while (p->leg + 1 < r->n) {
+        if (p->wo_leg != p->leg) {
+            fw_status st = fw_wheel_over(in->ctx, r, p->leg, &ap, &p->wo, err);
+            if (st)
+                return st;
+            p->wo_leg = p->leg;
+        }
+        if (fw_route_along(r, p->leg, in->own->east, in->own->north) <
+            r->leg[p->leg].length - p->wo)
+            break;
+        set_leg(p, p->leg + 1);
+    }
+    return FW_OK;
 }
 
 static void set_mode(fw_policy *p, fw_policy_mode m, double t)
@@ -432,7 +467,12 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
         p->track_e = r->n > 0 ? r->leg[0].east : in->own->east;
         p->track_n = r->n > 0 ? r->leg[0].north : in->own->north;
         p->psi_ref = r->n > 0 ? r->leg[0].course : in->own->psi;
+        /* a steered route is steered from the start */
+        p->course_set = r->steered && p->def.ret == FW_RETURN_TRACK;
     }
+    fw_status st;
+    if (p->course_set && p->def.route.steered && (st = follow_route(p, in, err)))
+        return st;
     fw_colregs_def colregs = hdef->colregs;
     if (colregs.rank_range_m <= 0.0)
         colregs.rank_range_m = p->def.act_range; /* the paper's ranking rule (encounter.h) */
@@ -440,8 +480,7 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
               in->order);
     fw_helm_begin(in->ctx, in->own);
     int allowed = fw_permitted_sides(hdef, in->as, in->n);
-    fw_status st = fw_helm_search(in->ctx, in->targets, in->n, allowed, &d->search, err);
-    if (st)
+    if ((st = fw_helm_search(in->ctx, in->targets, in->n, allowed, &d->search, err)))
         return st;
     d->primary = in->n > 0 ? in->order[0] : -1;
     d->acted = false;
@@ -463,5 +502,7 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
         return st;
     d->mode = p->mode;
     d->helm = p->helm;
+    d->leg = p->leg;
+    d->speed = p->def.route.steered ? p->def.route.leg[p->leg].speed : 0.0;
     return FW_OK;
 }

@@ -120,9 +120,13 @@ typedef struct fw_policy_def {
     double los_lookahead;      /* m, 1852: the track return's line-of-sight distance */
     double los_max_angle;      /* rad, 30 deg: the largest intercept angle */
     double track_done;         /* m, 50: the return ends this close to the track */
-    /* the planned route (route.h): its first leg is the track returned to
+    /* the planned route (route.h): its active leg is the track returned to
      * and its course the heading kept; n 0: none given, a one-leg route
-     * from where the ship is and heads at its first step */
+     * from where the ship is and heads at its first step.  A steered route
+     * (waypoints) is followed from the first step: the track autopilot
+     * below on its active leg (STANDBY included), the next leg taken at the
+     * wheel-over point predicted for the ship and this autopilot
+     * (wheel_over.h); the leg's speed ordered (fw_decision.speed) */
     fw_route route;
 } fw_policy_def;
 
@@ -148,6 +152,9 @@ typedef struct fw_policy {
     bool course_set;  /* returned once: STANDBY keeps psi_ref by the autopilot */
     bool track_set;   /* the planned track: through (track_e, track_n) on psi_ref */
     double track_e, track_n; /* m */
+    int leg;          /* the route's active leg (0 without a steered route) */
+    int wo_leg;       /* the leg wo was predicted for (-1: none yet) */
+    double wo;        /* m, its wheel-over distance (wheel_over.h) */
 } fw_policy;
 
 /* m, the own ship's distance from the planned track, + to starboard of it
@@ -160,6 +167,9 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def);
 typedef struct fw_decision {
     fw_policy_mode mode;    /* after this step */
     double helm;            /* rad, the order */
+    double speed;           /* m/s, the speed ordered: a steered route's active leg's;
+                               0: no order (the propeller is kept) */
+    int leg;                /* the route's active leg */
     const char *reason;     /* static text */
     bool acted;             /* this step started an avoidance */
     int primary;            /* most dangerous target this step: index into this

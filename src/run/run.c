@@ -42,6 +42,7 @@ struct fw_run {
     fw_status failed;        /* the failure that ended the run (FW_OK: none) */
     fw_error fail;           /* its message */
     fw_policy_mode mode_prev;
+    int leg_prev;            /* the route's leg at the last step */
     double helm_prev, e_prev, n_prev;
     int reactions_seen;      /* the world's reactions already in run.log */
     bool kb_outside;         /* the own speed was outside the knowledge base's at the last step */
@@ -130,6 +131,12 @@ static void record_action(fw_run *R, double t, const fw_decision *d, const fw_ta
 
 static void record_mode(fw_run *R, double t, const fw_decision *d, fw_run_summary *sum)
 {
+    const fw_route *rt = &R->s->route;
+    if (rt->n > 0 && d->leg != R->leg_prev && d->leg >= 0 && d->leg < rt->n) {
+        note(R, "%9.1f  route: leg %d of %d, %03.0f deg at %.1f kn (wheel over)\n", t, d->leg + 1,
+             rt->n, fw_heading_deg(rt->leg[d->leg].course), fw_ms_to_kn(rt->leg[d->leg].speed));
+        R->leg_prev = d->leg;
+    }
     if (d->mode == R->mode_prev)
         return;
     note(R, "%9.1f  %s -> %s, helm %.1f deg: %s\n", t,
@@ -308,6 +315,16 @@ static void track_measures(fw_run *R)
     const fw_scenario *s = R->s;
     fw_run_summary *sum = &R->sum;
     const fw_mmg_state *x = fw_vessel_motion(R->own);
+    if (s->route.n > 0) {
+        /* a route: the progress along it, against its nearest leg */
+        int k;
+        sum->along_track = fw_route_progress(&s->route, x->east, x->north, NULL, &k);
+        sum->cross_track = fw_route_cross(&s->route, k, x->east, x->north);
+        sum->heading_error = fw_wrap_pi(x->psi - s->route.leg[k].course);
+        sum->path_lengthening = sum->path_length - sum->along_track;
+        sum->time_lost = sum->t_end - fw_route_time(&s->route, sum->along_track);
+        return;
+    }
     double de = x->east - s->east, dn = x->north - s->north;
     double se = sin(s->course), ce = cos(s->course);
     sum->along_track = de * se + dn * ce;
@@ -420,6 +437,11 @@ static void log_start(fw_run *R)
             s->name, s->file, s->ship.name, fw_ms_to_kn(s->speed), fw_heading_deg(s->course),
             s->east, s->north, s->n_targets, s->network[0] ? ", network " : "", s->network,
             s->duration, s->step, s->seed);
+    for (int k = 0; k < s->route.n; k++)
+        note(R, "route: leg %d of %d from (%.1f, %.1f) m, %03.0f deg, %.0f m at %.1f kn\n", k + 1,
+             s->route.n, s->route.leg[k].east, s->route.leg[k].north,
+             fw_heading_deg(s->route.leg[k].course), s->route.leg[k].length,
+             fw_ms_to_kn(s->route.leg[k].speed));
     if (s->ais.file[0])
         note(R,     "traffic: the AIS reports of %s replayed, ids the MMSIs (a ship absent between "
                 "reports more than %.0f s apart; `fairway ais summary` counts what was read)\n",

@@ -186,9 +186,11 @@ fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
         return st;
     }
     fw_policy_controller_def pd = {.ship = &s->ship, .helm = s->helm, .policy = s->policy};
-    /* its planned route: one leg from its start on its course at its speed */
-    pd.policy.route = fw_route_line(s->east, s->north, s->course, s->speed,
-                                    fmax(s->leg, s->speed * s->duration));
+    /* its planned route: the scenario's, or one leg from its start on its
+     * course at its speed */
+    pd.policy.route = s->route.n > 0 ? s->route
+                                     : fw_route_line(s->east, s->north, s->course, s->speed,
+                                                     fmax(s->leg, s->speed * s->duration));
     if (!ctl && (st = fw_policy_controller_create(&pd, &ctl, err)))
         return st;
     fw_vessel_def vd = fw_default_vessel_def();

@@ -10,42 +10,29 @@
 #include "scenario/position.h"
 #include "scenario/scn_ais.h"
 #include "scenario/scn_env.h"
+#include "scenario/scn_route.h"
 #include "scenario/scenario.h"
 #include "traffic/demand.h"
 #include "yaml/yaml_tree.h"
 
-static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
+/* own_ship's start, course, speed and planned leg (without a route). */
+static fw_status load_own_line(const yt_doc *doc, const yt_node *root, const yt_node *own,
+                               fw_scenario *s, fw_error *err)
 {
-    static const char *const keys[] = {"ship", "east_m", "north_m", "lat_deg", "lon_deg",
-                                       "course_deg", "speed_kn", "leg_nm", "destination",
-                                       "dynamics", NULL};
-    const yt_node *own;
-    fw_status st;
-    char ship[512];
-    if ((st = yt_req_map(doc, root, "", "own_ship", &own, err)) ||
-        (st = yt_check_keys(doc, own, "own_ship", keys, err)) ||
-        (st = yt_req_string(doc, own, "own_ship", "ship", ship, sizeof ship, err)))
-        return st;
     double course_deg, speed_kn, gamma;
+    fw_status st;
     if ((st = fw_scn_load_position(doc, own, "own_ship", s, &s->east, &s->north, &gamma, err)) ||
         (st = yt_req_number(doc, own, "own_ship", "course_deg", 0, 360, &course_deg, err)) ||
         (st = yt_req_number(doc, own, "own_ship", "speed_kn", 1, 40, &speed_kn, err)))
         return st;
     s->course = fw_wrap_2pi(fw_deg_to_rad(course_deg) - gamma);
     s->speed = fw_kn_to_ms(speed_kn);
-    char dyn[16] = "mmg";
-    if ((st = yt_opt_string(doc, own, "own_ship", "dynamics", dyn, sizeof dyn, err)))
-        return st;
-    if (strcmp(dyn, "mmg") != 0 && strcmp(dyn, "nomoto") != 0)
-        return fw_fail_at(err, doc->file, yt_key_line(own, "dynamics"), "own_ship.dynamics",
-                          "'%s': expected mmg or nomoto", dyn);
-    s->nomoto_plant = strcmp(dyn, "nomoto") == 0;
     /* where it is going: a leg length along the course or a destination on it */
     const yt_node *dest = yt_get(own, "destination");
     bool has_leg = yt_get(own, "leg_nm") != NULL;
     if (has_leg == (dest != NULL))
         return fw_fail_at(err, doc->file, yt_key_line(root, "own_ship"), "own_ship",
-                          "give exactly one of leg_nm or destination");
+                          "give exactly one of leg_nm, destination or route");
     if (has_leg) {
         double leg_nm;
         if ((st = yt_req_number(doc, own, "own_ship", "leg_nm", 0.1, 500, &leg_nm, err)))
@@ -68,10 +55,6 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
                               "must lie ahead on the course line, at least 0.1 nm away");
         s->leg = leg;
     }
-    fw_error serr = {0};
-    if ((st = fw_ship_load(ship, &s->ship, &serr)))
-        return fw_fail_at(err, doc->file, yt_key_line(own, "ship"), "own_ship.ship", "%s",
-                          serr.msg);
     const fw_nomoto_kb *kb = &s->ship.nomoto;
     if (fw_nomoto_kb_speed(kb, speed_kn) == FW_KB_SPEED_REFUSED)
         return fw_fail_at(err, doc->file, yt_key_line(own, "speed_kn"), "own_ship.speed_kn",
@@ -81,6 +64,33 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
                           FW_KB_SPEED_MARGIN, kb->speed_min_kn / FW_KB_SPEED_MARGIN,
                           kb->speed_max_kn * FW_KB_SPEED_MARGIN);
     return FW_OK;
+}
+
+static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)
+{
+    static const char *const keys[] = {"ship", "east_m", "north_m", "lat_deg", "lon_deg",
+                                       "course_deg", "speed_kn", "leg_nm", "destination",
+                                       "route", "dynamics", NULL};
+    const yt_node *own;
+    fw_status st;
+    char ship[512];
+    if ((st = yt_req_map(doc, root, "", "own_ship", &own, err)) ||
+        (st = yt_check_keys(doc, own, "own_ship", keys, err)) ||
+        (st = yt_req_string(doc, own, "own_ship", "ship", ship, sizeof ship, err)))
+        return st;
+    char dyn[16] = "mmg";
+    if ((st = yt_opt_string(doc, own, "own_ship", "dynamics", dyn, sizeof dyn, err)))
+        return st;
+    if (strcmp(dyn, "mmg") != 0 && strcmp(dyn, "nomoto") != 0)
+        return fw_fail_at(err, doc->file, yt_key_line(own, "dynamics"), "own_ship.dynamics",
+                          "'%s': expected mmg or nomoto", dyn);
+    s->nomoto_plant = strcmp(dyn, "nomoto") == 0;
+    fw_error serr = {0};
+    if ((st = fw_ship_load(ship, &s->ship, &serr)))
+        return fw_fail_at(err, doc->file, yt_key_line(own, "ship"), "own_ship.ship", "%s",
+                          serr.msg);
+    return yt_get(own, "route") ? fw_scn_load_route(doc, own, s, err)
+                                : load_own_line(doc, root, own, s, err);
 }
 
 static fw_status load_target(const yt_doc *doc, const yt_node *t, const char *path,

@@ -58,7 +58,10 @@ typedef struct fw_scenario {
     double east, north;  /* m */
     double course;       /* rad */
     double speed;        /* m/s */
-    double leg;          /* m, planned straight leg along the course */
+    double leg;          /* m, planned straight leg along the course (the route's length) */
+    /* own_ship.route (scenario/scn_route.h): waypoints with a speed per leg,
+     * followed by the policy (avoid/route.h); n 0: none, the one leg above */
+    fw_route route;
     /* own_ship.dynamics: false (mmg, the default) the MMG model integrated by
      * ARKODE; true (nomoto) the ship's own Nomoto model, the paper's
      * fast-time simulation: the plant is the prediction (world/vessel.h) */

@@ -127,9 +127,31 @@ void fw_vessel_free(fw_vessel *v)
     fw_free_each(4, v->view, v->as, v->order, v->truth);
 }
 
+/* A speed order (fw_decision.speed, a route leg's): the MMG ship's propeller
+ * set to the revolutions of that speed on a straight course (the ship then
+ * gathers or loses way by its own dynamics); the Nomoto plant, which has no
+ * surge dynamics, takes the speed at once. */
+static fw_status order_speed(fw_vessel *v, double speed, fw_error *err)
+{
+    if (v->dyn == FW_DYN_MMG) {
+        double n;
+        fw_status st = fw_mmg_propeller_for_speed(v->ship, speed, &n, err);
+        if (st)
+            return st;
+        fw_stepper_set_propeller(v->st, n);
+        v->n_prop = n;
+    } else {
+        v->nom.U = v->nom.U0 = speed;
+    }
+    v->U0 = speed;
+    return FW_OK;
+}
+
 fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err)
 {
     fw_status st;
+    if (v->d.speed > 0.0 && v->d.speed != v->U0 && (st = order_speed(v, v->d.speed, err)))
+        return st;
     if (v->dyn == FW_DYN_MMG) {
         v->r_prev = v->motion.r;
         fw_stepper_set_helm(v->st, v->d.helm);
