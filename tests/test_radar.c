@@ -7,7 +7,8 @@
  *   detection: no ship is known beyond its radar horizon (a 200 m ship
  *     15.5 nm, a 10 m boat 11.7 nm, antenna 15 m); every one is known well
  *     inside its class's range (11 nm, 3.4 nm); a track is shown 60 s after
- *     its first plot; a ship that sails off beyond the horizon is lost
+ *     its first plot; a ship that sails off beyond the horizon is lost, and
+ *     so is one out of the sensor's sight for more than 5 scans
  *   fusion: with AIS reports current the known ship is the AIS one; with
  *     every report lost, the radar's track
  *   the same seed gives the same tracks */
@@ -146,22 +147,31 @@ static void test_detection_range(void)
 }
 
 /* A track is shown 60 s after its first plot (a ship 2 nm off from t = 0:
- * detected at the first scan almost surely). */
-static void test_shown_after_a_minute(void)
+ * detected at the first scan almost surely); the ship out of the sensor's
+ * sight (not in the truth it is given) for 30 s, 12 scans: its track is lost,
+ * and on its return a new one is shown a minute after its first plot. */
+static void test_gap_loses_track(void)
 {
     fw_streams *st = fw_streams_create(2);
     fw_sensor *s = make(FW_SENSE_RADAR, st);
     fw_target a, known[1];
     fw_error err = {0};
-    int n = 0, first = -1;
-    for (int k = 0; k <= 120; k++) {
+    int n = 0, first = -1, back = -1;
+    for (int k = 0; k <= 250; k++) {
         a = ship(0, 200.0, fw_nm_to_m(2.0), 0.0, fw_kn_to_ms(10.0), k);
-        CHECK(fw_sensor_update(s, k, &a, 1, known, &n, &err) == FW_OK);
+        bool there = k < 100 || k >= 130;
+        CHECK(fw_sensor_update(s, k, &a, there ? 1 : 0, known, &n, &err) == FW_OK);
         if (n && first < 0)
             first = k;
+        if (k >= 130 && n && back < 0)
+            back = k;
     }
-    printf("a 200 m ship at 2 nm: shown at t = %d s\n", first);
+    fw_sensing_counts c = fw_sensor_counts(s);
+    printf("a 200 m ship at 2 nm: shown at t = %d s; gone 30 s: shown again at t = %d s; %ld "
+           "tracks, %ld lost\n", first, back, c.tracks, c.tracks_lost);
     CHECK(first == 60);
+    CHECK(back >= 130 + 60 && back <= 130 + 63);
+    CHECK(c.tracks == 2 && c.tracks_lost == 1);
     fw_sensor_destroy(s);
     fw_streams_free(st);
 }
@@ -226,7 +236,7 @@ int main(void)
 {
     TEST_RUN(test_straight_pass_theory);
     TEST_RUN(test_detection_range);
-    TEST_RUN(test_shown_after_a_minute);
+    TEST_RUN(test_gap_loses_track);
     TEST_RUN(test_fusion);
     TEST_RUN(test_same_seed);
     return TEST_EXIT();

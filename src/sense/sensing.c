@@ -104,6 +104,7 @@ typedef struct link {
     double t_track;      /* s, its first plot */
     unsigned hist;       /* its last scans, newest in bit 0: 1 plotted */
     int n_hist;          /* scans since it began, up to 10 */
+    long k_last;         /* the number of the last scan it had */
     fw_rng *rnoise, *rdetect;
 } link;
 
@@ -266,11 +267,25 @@ static int misses(const link *l)
     return l->n_hist - hits;
 }
 
+/* The ship's track is lost: a new one starts at its next plot. */
+static void drop_track(fw_sensor *s, link *l)
+{
+    l->trk = (fw_ab_track){0};
+    l->hist = 0u, l->n_hist = 0;
+    s->counts.tracks_lost++;
+}
+
 /* Ship a's scans number k0..k1, the truth at t moved back to each. */
 static void radar_step(fw_sensor *s, link *l, const fw_target *a, double t, long k0, long k1)
 {
     const fw_radar_def *d = &s->def.radar;
     const fw_target *o = &s->own;
+    /* a ship out of the sensor's sight for more than 5 scans (not in the
+     * truth it was given) was missed by them all: its track is lost */
+    if (l->trk.plots > 0 && k1 >= k0 && k0 - l->k_last - 1 > 5)
+        drop_track(s, l);
+    if (k1 >= k0)
+        l->k_last = k1;
     for (long k = k0; k <= k1; k++) {
         double ts = (double)k * d->scan, back = t - ts;
         double te = a->east - a->speed * sin(a->course) * back;
@@ -293,9 +308,7 @@ static void radar_step(fw_sensor *s, link *l, const fw_target *a, double t, long
             fw_ab_update(&l->trk, d, ts, ze, zn);
             s->counts.plotted++;
         } else if (l->trk.plots > 0 && misses(l) > 5) { /* MSC.192(79) 5.25.4.3 */
-            l->trk = (fw_ab_track){0};
-            l->hist = 0u, l->n_hist = 0;
-            s->counts.tracks_lost++;
+            drop_track(s, l);
         }
     }
 }

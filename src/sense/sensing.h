@@ -30,7 +30,9 @@
  *            60 s old (MSC.192(79) 5.25.4.1: the trend of a target's motion
  *            within one minute), and lost when more than 5 of its last 10
  *            scans missed it (5.25.4.3: tracking continues while a target is
- *            seen in 5 scans of 10); a ship seen again starts a new track.
+ *            seen in 5 scans of 10), or when it was out of the sensor's
+ *            sight (not among the ships given) for more than 5 scans; a ship
+ *            seen again starts a new track.
  *            The known ship: the track's position dead reckoned to now, its
  *            course and speed over ground from the track's velocity, its
  *            heading = its course (a radar sees no heading); its id, type
