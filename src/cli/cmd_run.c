@@ -29,10 +29,12 @@
 #include "core/units.h"
 #include "run/run.h"
 #include "scenario/scenario.h"
+#include "scenario/scn_dnv.h"
 
 static void help(void)
 {
     printf("usage: fairway run SCENARIO... [--out DIR] [--sumo MODE] [--json] [--profile]\n"
+           "                  [--ship SHIP]\n"
            "\n"
            "Runs each scenario file (YAML, see scenarios/README.md): SUMO moves the\n"
            "targets and background traffic (or recorded tracks and AIS reports are\n"
@@ -52,6 +54,13 @@ static void help(void)
            "                remote:HOST:PORT (a sumo started with the command each run\n"
            "                writes, DIR/NAME/sumo/remote-command.txt: a run with no sumo\n"
            "                there fails and keeps it; a sumo on another network is refused)\n"
+           "A SCENARIO ending in .json is a DNV maritime-schema traffic situation\n"
+           "(scenarios/dnv/README.md): the targets follow their waypoints, the own ship\n"
+           "is fairway's c3-mmg (or --ship) from the situation's start on its first leg.\n"
+           "\n"
+           "  --ship SHIP   the own ship's model for DNV situations (a name in\n"
+           "                scenarios/ships or a ship file; default c3-mmg); run.log\n"
+           "                says which, and what of the situation's own ship is used\n"
            "  --json        print the summaries as a JSON array instead of the table\n"
            "  --profile     where each run's CPU time went (set-up, SUMO's steps, the\n"
            "                reads, the decisions, the reactions, the own dynamics, the\n"
@@ -99,7 +108,7 @@ typedef struct gui_opts {
 } gui_opts;
 
 typedef struct run_opts {
-    const char *out, *mode;
+    const char *out, *mode, *ship;
     bool json;
     gui_opts gui;
     const char **files;
@@ -155,7 +164,7 @@ static int parse_options(int argc, char **argv, run_opts *o, fw_error *err)
     bool seen[7] = {0};
     const fw_opt opts[] = {
         FW_OPT("--out", FW_OPT_TEXT, &o->out), FW_OPT("--sumo", FW_OPT_TEXT, &o->mode),
-        FW_OPT("--json", FW_OPT_FLAG, &o->json), FW_OPT("--profile", FW_OPT_FLAG, &o->def.profile),
+        FW_OPT("--json", FW_OPT_FLAG, &o->json), FW_OPT("--ship", FW_OPT_TEXT, &o->ship), FW_OPT("--profile", FW_OPT_FLAG, &o->def.profile),
         FW_OPT_SEEN("--gui-delay", FW_OPT_DOUBLE, &g->delay_ms, &seen[0]),
         FW_OPT_SEEN("--realtime", FW_OPT_DOUBLE, &g->realtime, &seen[1]),
         FW_OPT_SEEN("--gui-size", FW_OPT_TEXT, &g->size, &seen[2]),
@@ -215,7 +224,10 @@ static int load_all(run_opts *o, fw_error *err)
         o->scn[i] = malloc(sizeof **o->scn);
         if (!o->scn[i])
             return fw_report((fw_fail(err, FW_ERUN, "out of memory"), err));
-        if (fw_scenario_load(o->files[i], o->scn[i], err))
+        fw_status st = fw_scn_is_dnv(o->files[i])
+                           ? fw_scn_dnv_load(o->files[i], o->ship, o->scn[i], err)
+                           : fw_scenario_load(o->files[i], o->scn[i], err);
+        if (st)
             return fw_report(err);
         for (int j = 0; j < i; j++)
             if (strcmp(o->scn[i]->name, o->scn[j]->name) == 0)

@@ -442,6 +442,8 @@ static void log_start(fw_run *R)
              s->route.n, s->route.leg[k].east, s->route.leg[k].north,
              fw_heading_deg(s->route.leg[k].course), s->route.leg[k].length,
              fw_ms_to_kn(s->route.leg[k].speed));
+    if (s->note[0])
+        note(R, "%s\n", s->note);
     if (s->ais.file[0])
         note(R,     "traffic: the AIS reports of %s replayed, ids the MMSIs (a ship absent between "
                 "reports more than %.0f s apart; `fairway ais summary` counts what was read)\n",
@@ -636,7 +638,8 @@ void *fw_run_branch_box(const fw_run *R) { return R->branch_box; }
 
 const char *fw_run_def_unforkable(const fw_run_def *d)
 {
-    bool sumo = !d->scenario->tracks[0] && d->traffic == FW_RUN_TRAFFIC_SUMO;
+    bool sumo = !d->scenario->tracks[0] && !d->scenario->waypoint_targets &&
+                d->traffic == FW_RUN_TRAFFIC_SUMO;
     if (sumo && d->mode.kind != FW_TRAFFIC_EMBEDDED)
         return "whose SUMO is another process (--sumo gui or remote: libtraci)";
     return NULL;

@@ -3,6 +3,7 @@
  * (run_world.h; the run's set-up, run.c). */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -153,6 +154,53 @@ static fw_status ais_source(const fw_run_def *def, const fw_replay_def *td, fw_s
     return fw_mirror_source_create(inner, &md, src, err);
 }
 
+/* One point of a waypoint track: at t, (e, n), on course c at speed v. */
+static bool push_point(fw_rec_track *tr, double t, double e, double n, double c, double v)
+{
+    if (!fw_rec_track_reserve(tr))
+        return false;
+    tr->p[tr->n++] = (fw_rec_point){.t = t, .east = e, .north = n, .course = c, .speed = v};
+    return true;
+}
+
+/* Targets following waypoints (scenario.h fw_scn_route, a DNV situation):
+ * each a track through its waypoints, straight at each leg's speed, and on
+ * along its last leg past the run's end; the recorded-track source replays
+ * them (no gaps: max_gap infinite). */
+static fw_status waypoint_source(const fw_scenario *s, const fw_replay_def *td, fw_source **src,
+                                 fw_error *err)
+{
+    fw_rec_track *tr = calloc((size_t)s->n_targets + 1, sizeof *tr);
+    if (!tr)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    bool ok = true;
+    for (int i = 0; i < s->n_targets && ok; i++) {
+        const fw_scn_route *r = &s->target_routes[i];
+        tr[i].info = s->targets[i];
+        double t = 0.0, c = 0.0, v = 0.0;
+        for (int k = 0; k + 1 < r->n && ok; k++) {
+            const fw_scn_waypoint *a = &r->wp[k], *b = &r->wp[k + 1];
+            double de = b->east - a->east, dn = b->north - a->north;
+            c = fw_wrap_2pi(atan2(de, dn));
+            v = b->speed;
+            ok = push_point(&tr[i], t, a->east, a->north, c, v);
+            t += hypot(de, dn) / v;
+        }
+        const fw_scn_waypoint *z = &r->wp[r->n - 1];
+        double after = fmax(s->duration + 2.0 * s->step - t, 0.0) * v;
+        ok = ok && push_point(&tr[i], t, z->east, z->north, c, v) &&
+             (after <= 0.0 || push_point(&tr[i], t + after / v, z->east + after * sin(c),
+                                         z->north + after * cos(c), c, v));
+    }
+    if (!ok) {
+        fw_rec_tracks_free(tr, s->n_targets);
+        return fw_fail(err, FW_ERUN, "out of memory");
+    }
+    fw_replay_def d = *td;
+    d.max_gap = INFINITY;
+    return fw_track_source_create(tr, s->n_targets, &d, s->file, src, err);
+}
+
 /* The world: the source and the own ship (MMG, the avoidance policy or the
  * caller's controller, which is destroyed here if the world is not made). */
 fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own,
@@ -168,6 +216,7 @@ fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     td.radius = s->radius;
     /* recorded tracks replay without SUMO, whatever the run asked for */
     fw_status st = s->tracks[0]     ? fw_replay_source_create(&td, &src, err)
+                   : s->waypoint_targets ? waypoint_source(s, &td, &src, err)
                    : s->ais.file[0] ? ais_source(def, &td, &src, ais, err)
                    : def->traffic == FW_RUN_TRAFFIC_KINEMATIC
                        ? fw_run_kinematic_source(s, s->step, s->radius, &src, err)

@@ -420,17 +420,8 @@ static fw_status load_run(const yt_doc *doc, const yt_node *root, fw_scenario *s
     return FW_OK;
 }
 
-fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
+fw_status fw_scenario_defaults(const char *path, fw_scenario *s, fw_error *err)
 {
-    return fw_scenario_load_with(path, NULL, 0, s, err);
-}
-
-fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, int n,
-                                fw_scenario *s, fw_error *err)
-{
-    static const char *const keys[] = {"name", "description", "origin", "own_ship", "traffic",
-                                       "avoidance", "survey", "environment", "sensing", "run",
-                                       "outputs", NULL};
     memset(s, 0, sizeof *s);
     if (fw_path_copy(s->file, sizeof s->file, path, err))
         return err->status;
@@ -443,8 +434,30 @@ fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, in
     s->survey_radius = fw_nm_to_m(6.0);
     s->survey_def = fw_default_survey_def();
     s->step = 1.0;
+    s->record_every = s->step;
     s->seed = 1;
     s->targets_csv = true;
+    /* what the sections' loaders set when a section is absent */
+    s->env = fw_default_env();
+    s->sensing = fw_default_sensing_def();
+    s->reactions.watch = fw_default_watch_def();
+    s->own_watch = fw_default_watch_def();
+    return FW_OK;
+}
+
+fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err)
+{
+    return fw_scenario_load_with(path, NULL, 0, s, err);
+}
+
+fw_status fw_scenario_load_with(const char *path, const fw_setting *settings, int n,
+                                fw_scenario *s, fw_error *err)
+{
+    static const char *const keys[] = {"name", "description", "origin", "own_ship", "traffic",
+                                       "avoidance", "survey", "environment", "sensing", "run",
+                                       "outputs", NULL};
+    if (fw_scenario_defaults(path, s, err))
+        return err->status;
     yt_doc *doc = NULL;
     fw_status st = yt_load_file(path, &doc, err);
     if (st)

@@ -30,6 +30,21 @@
 #include "world/reactions.h"
 
 #define FW_SCN_MAX_TARGETS 32
+/* Waypoints of a target that follows them (a DNV traffic situation: scn_dnv.h) */
+#define FW_SCN_MAX_WAYPOINTS 32
+
+/* A target's way: it is at wp[0] at t = 0 and goes from each waypoint to the
+ * next at the leg's speed (wp[i].speed, m/s, the leg from i-1 to i; wp[0]'s
+ * unused), and on along its last leg after the last. */
+typedef struct fw_scn_waypoint {
+    double east, north; /* m */
+    double speed;       /* m/s, on the leg arriving here */
+} fw_scn_waypoint;
+
+typedef struct fw_scn_route {
+    int n; /* 0: the target moves at constant velocity (targets[i]) */
+    fw_scn_waypoint wp[FW_SCN_MAX_WAYPOINTS];
+} fw_scn_route;
 
 /* traffic.ais: AIS reports replayed as the traffic (ais/ais_track.h). */
 typedef struct fw_scn_ais {
@@ -75,6 +90,10 @@ typedef struct fw_scenario {
     fw_scn_ais ais;      /* AIS reports replayed (needs the origin) */
     int n_targets;
     fw_target targets[FW_SCN_MAX_TARGETS]; /* at t = 0; type: the label kept in the records */
+    /* targets that follow waypoints (all of them when set; scn_dnv.h): the
+     * recorded-track source replays their ways, no SUMO */
+    bool waypoint_targets;
+    fw_scn_route target_routes[FW_SCN_MAX_TARGETS];
     /* avoidance */
     fw_helm_def helm;
     /* traffic.waterway: open-sea (default), tss or channel; sets the audit's
@@ -106,6 +125,9 @@ typedef struct fw_scenario {
     bool targets_csv;
     double record_every; /* s, time-history sampling (a multiple of step) */
     bool fcd;            /* SUMO's own FCD output of every ship (sumo/fcd.xml) */
+    /* how the scenario was made, a line for run.log ("" = a YAML scenario):
+     * a DNV situation's own-ship model and what of the situation it uses */
+    char note[768];
 } fw_scenario;
 
 /* The scenario's plane (geom/geo.h), *g NULL when it has no origin: the
@@ -120,6 +142,9 @@ fw_status fw_scenario_plane(const fw_scenario *s, fw_geo **g, fw_error *err);
  * Splitting (study/split_run.h) needs such randomness: without it every
  * branch repeats its parent. */
 const char *fw_scenario_randomness(const fw_scenario *s);
+
+/* The defaults every scenario starts from (s zeroed first; file set). */
+fw_status fw_scenario_defaults(const char *path, fw_scenario *s, fw_error *err);
 
 /* Loads and checks path.  s is large (a ship inside): callers heap-allocate. */
 fw_status fw_scenario_load(const char *path, fw_scenario *s, fw_error *err);

@@ -1,0 +1,61 @@
+/* scn_dnv.h - a DNV maritime-schema traffic situation (v0.2.0) read as a scenario.
+ *
+ * `fairway run situation.json` runs one of the traffic situations in which
+ * test benches share encounters (scenarios/dnv/README.md; DNV's
+ * traffic_situation.schema.json).  What is read, every value checked, a
+ * problem named by its JSON path with FW_EINPUT (exit 2) before anything runs:
+ *
+ *   $.version (or $.schemaVersion, which DNV's own generator writes): 0.2.x
+ *   $.title, $.description: the scenario's description; its name is the
+ *     file's stem (it names the run directory)
+ *   $.ownShip, $.targetShips[i] (up to FW_SCN_MAX_TARGETS):
+ *     waypoints[k].position {lat, lon}  WGS84 degrees, 2..FW_SCN_MAX_WAYPOINTS
+ *     waypoints[k].leg.sog              kn, the leg from waypoint k-1 to k
+ *                                       (absent: the leg before's, or initial.sog)
+ *     initial {position, sog, cog, heading, navStatus}: all optional; the
+ *       ship starts at initial.position (else waypoint 0) and goes to
+ *       waypoint 1 at initial.sog (else waypoint 1's leg speed)
+ *     static {id (required), name, mmsi, shipType, dimensions {length, width, ...}}
+ *   Other members (environment, turnRadius, cross-track limits ...) are
+ *   allowed by the schema and not used.
+ *
+ * The plane: a transverse Mercator about the own ship's start (geom/geo.h;
+ * latitudes beyond +-80 deg refused); true courses become grid courses there.
+ *
+ * Targets follow their waypoints: straight legs at each leg's speed over
+ * ground, and on along the last leg after the last waypoint (the recorded-
+ * track source replays them: traffic/source_track.h); their hull is the
+ * static dimensions' length x width, centred on the position (DNV's
+ * generated files put the reference point amidships, a = b, c = d); they do
+ * not give way (behaviour blind: a situation's targets are scripted).
+ *
+ * The own ship's model is not the situation's: it is fairway's c3-mmg (the
+ * C-3 with MMG dynamics), or the ship file given (`--ship`).  The situation
+ * gives its start, course and speed; its dimensions are reported, not used
+ * (the domain and hull measures are the model's).  fairway's own ship follows
+ * one planned leg (avoid/route.h): the first leg, from the start towards
+ * waypoint 1, continued straight; further own waypoints are reported in the
+ * scenario's note (run.log) and not followed.  The run lasts until the own
+ * ship would reach waypoint 1 or the last target its last waypoint, the
+ * longer, in steps of 1 s.
+ */
+#ifndef FW_SCN_DNV_H
+#define FW_SCN_DNV_H
+
+#include <stdbool.h>
+
+#include "core/error.h"
+#include "scenario/scenario.h"
+
+/* The own ship's model when none is given. */
+#define FW_DNV_DEFAULT_SHIP "c3-mmg"
+
+/* Whether path names a JSON file (ends in .json): a DNV situation. */
+bool fw_scn_is_dnv(const char *path);
+
+/* Reads and checks the situation at path into s (zeroed first; large:
+ * heap-allocate); ship: the own ship's model (a name or a ship file), NULL
+ * for FW_DNV_DEFAULT_SHIP. */
+fw_status fw_scn_dnv_load(const char *path, const char *ship, fw_scenario *s, fw_error *err);
+
+#endif
