@@ -15,7 +15,7 @@
 
 /* Bumped when what a cached file holds changes for the same inputs (say, the
  * header's date cut differently in netbuild.c): older entries then miss. */
-static const char *const kFormat = "fairway netcache 1";
+static const char *const kFormat = "fairway netcache 2"; /* 2: the sums file */
 
 /* TMPDIR/fairway-UID/net, created, ours alone (a directory of this user
  * that no one else may write, not a link): where networks go when there is
@@ -128,14 +128,57 @@ static bool same_key(const fw_netcache_key *k)
     return same;
 }
 
+/* The sums of an entry's files in dir, one line each: "NAME SIZE FNV-1a",
+ * malloc'd into *out; false when a file cannot be read. */
+static bool sums(const char *dir, const fw_netcache_key *k, char **out)
+{
+    size_t n = 0;
+    FILE *f = open_memstream(out, &n);
+    bool ok = f != NULL;
+    for (int i = 0; ok && i < k->n_files; i++) {
+        char path[1400], *data;
+        size_t len;
+        ok = !fw_path(path, sizeof path, NULL, "%s/%s", dir, k->names[i]) &&
+             !fw_file_read(path, &data, &len, NULL);
+        if (ok) {
+            fprintf(f, "%s %zu %016llx\n", k->names[i], len,
+                    (unsigned long long)fw_fnv1a(FW_FNV_INIT, data, len));
+            free(data);
+        }
+    }
+    if (f && fclose(f) != 0)
+        ok = false;
+    if (!ok) {
+        free(*out);
+        *out = NULL;
+    }
+    return ok;
+}
+
+/* Is k's entry there, made from k's key, and are its files whole (the size
+ * and digest the sums file recorded when it was stored)?  An entry with k's
+ * key whose files are not is damaged (a truncated file, a disk error, a hand
+ * edit) and goes, so that the caller builds and stores it again. */
+static bool whole(const fw_netcache_key *k)
+{
+    if (!same_key(k))
+        return false;
+    char path[1300], *want = NULL, *have = NULL;
+    size_t len = 0;
+    bool ok = !fw_path(path, sizeof path, NULL, "%s/sums", k->dir) &&
+              !fw_file_read(path, &want, &len, NULL) && sums(k->dir, k, &have) &&
+              strlen(have) == len && memcmp(have, want, len) == 0;
+    free(want);
+    free(have);
+    if (!ok)
+        fw_remove_tree(k->dir);
+    return ok;
+}
+
 bool fw_netcache_lookup(const fw_netcache_key *k, char *path, size_t n)
 {
-    if (!same_key(k) || fw_path(path, n, NULL, "%s/%s", k->dir, k->names[0]))
+    if (!whole(k) || fw_path(path, n, NULL, "%s/%s", k->dir, k->names[0]))
         return false;
-    if (access(path, R_OK) != 0) {
-        fw_remove_tree(k->dir); /* damaged from outside (see fw_netcache_get) */
-        return false;
-    }
     utimensat(AT_FDCWD, k->dir, NULL, 0);
     return true;
 }
@@ -145,14 +188,11 @@ bool fw_netcache_get(const fw_netcache_key *k, const char *const *dest)
     char path[1300];
     char *data;
     size_t len;
-    bool same = same_key(k);
+    bool same = whole(k);
     for (int i = 0; same && i < k->n_files; i++) {
         if (fw_path(path, sizeof path, NULL, "%s/%s", k->dir, k->names[i]) ||
             fw_file_read(path, &data, &len, NULL)) {
-            /* entries are renamed into place whole: one missing a file was
-             * damaged from outside, and goes, so that the next run stores
-             * it again */
-            fw_remove_tree(k->dir);
+            fw_remove_tree(k->dir); /* gone since it was checked */
             return false;
         }
         same = !fw_file_write(dest[i], data, len, NULL);
@@ -245,6 +285,11 @@ void fw_netcache_put(const fw_netcache_key *k, const char *const *src)
               !fw_file_write(path, k->text, k->n, NULL);
     for (int i = 0; ok && i < k->n_files; i++)
         ok = copy_in(tmp, k->names[i], src[i]);
+    /* the files' sizes and digests, checked at every use (whole) */
+    char *sum = NULL;
+    ok = ok && sums(tmp, k, &sum) && !fw_path(path, sizeof path, NULL, "%s/sums", tmp) &&
+         !fw_file_write(path, sum, strlen(sum), NULL);
+    free(sum);
     /* an entry there already (a parallel run stored it first) is kept */
     if (!ok || rename(tmp, k->dir) != 0) {
         fw_remove_tree(tmp);

@@ -13,6 +13,10 @@
  * network; what a hit copies into the run is byte for byte what netconvert
  * wrote for the same inputs.
  *
+ * An entry also holds each file's size and FNV-1a digest (sums), checked at
+ * every use: a damaged entry (a truncated file, a disk error, an edit by
+ * hand) is removed and built again, never handed to SUMO.
+ *
  * An entry is a directory written under a temporary name and renamed into
  * place whole, so parallel runs (a sweep's workers) never see a partial entry;
  * of two runs storing the same entry at once, the second throws its copy away.
@@ -49,12 +53,13 @@ bool fw_netcache_key_make(const char *dir, const char *const *argv, const char *
 
 /* A hit: the entry's files copied to dest[i] (one per name), each written
  * whole under a temporary name first.  False when the entry is missing, its
- * key differs or a copy fails. */
+ * key differs, a file is not as stored (the entry then removed) or a copy
+ * fails. */
 bool fw_netcache_get(const fw_netcache_key *k, const char *const *dest);
 
 /* A hit read in place: the path of the entry's first file (names[0]) into
  * path, the entry marked recently used.  False when the entry is missing, its
- * key differs or the file is gone (the entry then removed). */
+ * key differs or a file is not as stored (the entry then removed). */
 bool fw_netcache_lookup(const fw_netcache_key *k, char *path, size_t n);
 
 /* Stores the files src[i] (one per name) under k: quietly nothing if the

@@ -1,8 +1,8 @@
 # netcache.sh - the network cache (src/traffic/netcache.h): a paper case's
-# network built once and reused, byte for byte what netconvert writes; an
-# entry is what a hit hands out (a marked entry shows up in the next run), a
-# changed input misses, a damaged entry is rebuilt, parallel runs leave one
-# whole entry and no temporary directories.
+# network built once and reused, byte for byte what netconvert writes; a hit
+# reads the entry, an entry edited or truncated since it was stored is
+# rebuilt (its sums), a changed input misses, an entry missing its file is
+# rebuilt, parallel runs leave one whole entry and no temporary directories.
 set -euo pipefail
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -31,14 +31,24 @@ same ref first paper-1-head-on
 same ref second paper-1-head-on
 echo "cached network: the same files as netconvert's"
 
-# a hit copies the entry: a comment added to it appears in the next run
+# a hit reads the entry (its directory stays the same one); an entry whose
+# file is not as stored (size and digest, sums) is removed and built again
 e=$(find "$net" -mindepth 1 -maxdepth 1 -type d -name '[0-9a-f]*')
 cp "$e/net.xml" "$tmp/saved.xml"
+ino=$(stat -c %i "$e")
+run hit "$p/1-head-on.yaml"
+[ "$(stat -c %i "$e")" = "$ino" ] || { echo "the second run did not take its network from the cache"; exit 1; }
 echo "<!-- marked by netcache.sh -->" >> "$e/net.xml"
 run marked "$p/1-head-on.yaml"
-grep -q "marked by netcache.sh" "$tmp/marked/paper-1-head-on/sumo/run.net.xml" ||
-  { echo "the second run did not take its network from the cache"; exit 1; }
-cp "$tmp/saved.xml" "$e/net.xml"
+! grep -q "marked by netcache.sh" "$tmp/marked/paper-1-head-on/sumo/run.net.xml" ||
+  { echo "an edited entry was handed out"; exit 1; }
+cmp -s "$e/net.xml" "$tmp/saved.xml" || { echo "the edited entry was not built again"; exit 1; }
+same ref marked paper-1-head-on
+head -c 1000 "$tmp/saved.xml" > "$e/net.xml"   # truncated: same name, part of the bytes
+run truncated "$p/1-head-on.yaml"
+same ref truncated paper-1-head-on
+cmp -s "$e/net.xml" "$tmp/saved.xml" || { echo "the truncated entry was not built again"; exit 1; }
+echo "edited and truncated entries rebuilt"
 
 # other targets, other tracks: a miss and an entry of their own
 run other "$p/2-overtaking.yaml"

@@ -42,7 +42,13 @@ grep -q '<output-file value="mine.net.xml"/>' "$n1" || { echo "the header names 
 run second "$tmp/data/scenarios/mine.yaml"
 [ "$(net_of second)" = "$n1" ] && [ "$(entries)" -eq 1 ] || { echo "not reused: $(entries) entries"; exit 1; }
 cmp -s "$tmp/first/mine/own.csv" "$tmp/second/mine/own.csv" || { echo "the same network gave another run"; exit 1; }
-echo "built on first use, reused after"
+# a damaged cache file (truncated) is found by its size and digest and built again
+cp "$n1" "$tmp/n1.xml"
+head -c 500 "$tmp/n1.xml" > "$n1"
+run repaired "$tmp/data/scenarios/mine.yaml"
+[ "$(net_of repaired)" = "$n1" ] && cmp -s "$n1" "$tmp/n1.xml" || { echo "the damaged net.xml was used"; exit 1; }
+cmp -s "$tmp/first/mine/own.csv" "$tmp/repaired/mine/own.csv" || { echo "the rebuilt network gave another run"; exit 1; }
+echo "built on first use, reused after, rebuilt when damaged"
 
 # a shape point moved: built again, the next run on the new network
 sed -i 's/<node id="B" x="10000" y="0"/<node id="B" x="10000" y="800"/' "$mine/mine.nod.xml"
