@@ -10,6 +10,7 @@
 #include "core/mem.h"
 #include "core/units.h"
 #include "nomoto/nomoto.h"
+#include "run/dnv_out.h"
 #include "run/run.h"
 #include "run/run_world.h"
 #include "traffic/source_sumo.h"
@@ -53,6 +54,7 @@ struct fw_run {
     uint32_t branch;         /* branch.h: 0 unless restored from a snapshot as another */
     void *branch_box;        /* branch.h: where a restored branch leaves its result */
     fw_ais_tracks ais;       /* AIS traffic: what the reading counted (no arrays) */
+    fw_dnv_out *dnv;         /* a DNV situation's answer (dnv_out.h); NULL: none */
 };
 
 /* The CPU clock with --profile, else 0 (no system calls). */
@@ -297,6 +299,11 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
             return st;
     if (d->acted)
         record_action(R, t, d, seen, seen_as, n_seen, sum);
+    const fw_target *me = fw_vessel_record(R->own);
+    if (R->dnv && (k == 0 || d->acted || d->mode != R->mode_prev) &&
+        (st = fw_dnv_out_event(R->dnv, t, fw_vessel_own_state(R->own), me->course, me->speed, d,
+                               tg, as, n, err)))
+        return st;
     record_mode(R, t, d, sum);
     sum->max_helm = fmax(sum->max_helm, fabs(d->helm));
     if (fabs(d->helm - R->helm_prev) > fw_deg_to_rad(0.5)) {
@@ -406,6 +413,10 @@ static fw_status finish(fw_run *R, fw_encounter **enc, int *n_enc, fw_status st,
     /* the survey first: summary.json carries its totals */
     fw_status fst = R->sv ? survey_finish(R, &R->def, sum, &ferr) : FW_OK;
     fw_status rst = fw_records_finish(R->rec, sum, &rerr);
+    char so[1100];
+    if (!rst && R->dnv && !(rst = fw_path(so, sizeof so, &rerr, "%s/situation_output.json",
+                                          R->def.dir)))
+        rst = fw_dnv_out_write(R->dnv, so, &rerr);
     if (!fst && rst) {
         fst = rst;
         ferr = rerr;
@@ -472,7 +483,8 @@ static fw_status set_up(fw_run *R, fw_error *err)
     fw_status st;
     if ((st = fw_records_open(&R->rec, s, R->def.dir, err)) ||
         (st = fw_monitor_create(&md, fw_records_log(R->rec), &R->mon, err)) ||
-        (s->survey && (st = fw_survey_create(&s->survey_def, &R->sv, err)))) {
+        (s->survey && (st = fw_survey_create(&s->survey_def, &R->sv, err))) ||
+        (s->situation_output && R->def.dir && (st = fw_dnv_out_create(s, &R->dnv, err)))) {
         fw_controller_destroy(R->def.controller);
         return st;
     }
@@ -586,6 +598,7 @@ static void teardown(fw_run *R)
     fw_monitor_destroy(R->mon);
     R->sum.wall_s = fw_clock_s() - R->wall0;
     fw_records_close(R->rec);
+    fw_dnv_out_destroy(R->dnv);
     free(R->as);
 }
 

@@ -29,6 +29,7 @@
  *   traffic_encounters.csv  one row per pair episode of the survey (only with one)
  *   summary.json    the run's measures, the traffic monitors and the encounter rows
  *   run.log         decisions and mode changes, every traffic monitor event
+ *   situation_output.json  a DNV situation's answer (run/dnv_out.h; only for one)
  *   sumo/           the generated network, routes and SUMO's messages (SUMO runs)
  */
 #ifndef FW_RUN_H

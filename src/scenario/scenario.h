@@ -128,6 +128,10 @@ typedef struct fw_scenario {
     /* how the scenario was made, a line for run.log ("" = a YAML scenario):
      * a DNV situation's own-ship model and what of the situation it uses */
     char note[768];
+    /* a DNV situation's run answers in the situation output (run/dnv_out.h),
+     * its times from utc_start (s since 1970, UTC: the situation's startTime) */
+    bool situation_output;
+    double utc_start;
 } fw_scenario;
 
 /* The scenario's plane (geom/geo.h), *g NULL when it has no origin: the

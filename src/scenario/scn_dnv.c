@@ -4,11 +4,13 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include "core/json_read.h"
 #include "core/units.h"
 #include "geom/geo.h"
 #include "geom/geom.h"
+#include "avoid/route.h"
 #include "nomoto/nomoto.h"
 
 #define DNV_MAX_SOG_KN 60.0
@@ -266,10 +268,36 @@ static void stem_name(const char *path, char *out, size_t n)
         snprintf(out, n, "situation");
 }
 
+/* More than one own leg: a route the policy steers (avoid/route.h), each
+ * leg's speed within the model's knowledge base. */
+static fw_status own_route(const dnv_ship *d, fw_scenario *s, fw_error *err)
+{
+    if (d->r.n > FW_ROUTE_MAX_LEGS + 1)
+        return fw_jfail(&d->node, err, "%d waypoints from the start: fairway's own ship follows "
+                        "%d at most", d->r.n, FW_ROUTE_MAX_LEGS + 1);
+    double e[FW_ROUTE_MAX_LEGS + 1], n[FW_ROUTE_MAX_LEGS + 1], v[FW_ROUTE_MAX_LEGS + 1];
+    for (int k = 0; k < d->r.n; k++) {
+        e[k] = d->r.wp[k].east, n[k] = d->r.wp[k].north;
+        v[k] = k + 1 < d->r.n ? d->r.wp[k + 1].speed : 0.0;
+        double kn = fw_ms_to_kn(v[k]);
+        if (k + 1 < d->r.n && fw_nomoto_kb_speed(&s->ship.nomoto, kn) == FW_KB_SPEED_REFUSED)
+            return fw_jfail(&d->node, err, "leg %d: %g kn is beyond %s's Nomoto knowledge base "
+                            "(give another model with --ship)", k + 1, kn, s->ship.name);
+    }
+    fw_error rerr = {0};
+    if (fw_route_from_waypoints(e, n, v, d->r.n, &s->route, &rerr))
+        return fw_jfail(&d->node, err, "waypoints: %s", rerr.msg);
+    s->leg = 0.0;
+    for (int k = 0; k < s->route.n; k++)
+        s->leg += s->route.leg[k].length;
+    return FW_OK;
+}
+
 /* The own ship: its model, start, course, speed, planned leg; the note. */
 static fw_status own_ship(const dnv_ship *d, const char *ship, fw_scenario *s, fw_error *err)
 {
     fw_error serr = {0};
+    fw_status st;
     if (fw_ship_load(ship, &s->ship, &serr))
         return fw_fail(err, FW_EINPUT, "--ship %s: %s", ship, serr.msg);
     s->east = d->t.east;
@@ -288,6 +316,8 @@ static fw_status own_ship(const dnv_ship *d, const char *ship, fw_scenario *s, f
                         "%g kn is beyond %s's Nomoto knowledge base, fitted over %g-%g kn (give "
                         "another model with --ship)", kn, s->ship.name, kb->speed_min_kn,
                         kb->speed_max_kn);
+    if (d->r.n > 2 && (st = own_route(d, s, err)))
+        return st;
     s->helm.domain.own_half_length = 0.5 * s->ship.Loa;
     s->helm.domain.own_half_breadth = 0.5 * s->ship.B;
     s->audit = fw_audit_def_for(s->waterway, s->ship.Loa);
@@ -297,13 +327,13 @@ static fw_status own_ship(const dnv_ship *d, const char *ship, fw_scenario *s, f
     snprintf(s->note, sizeof s->note,
              "own ship model: %s (%s), %.1f x %.1f m: the situation's own ship '%s' (%s, %s) "
              "gives the start, course and speed, not the hull (the domain and hull measures are "
-             "the model's); planned track: its first leg, %.2f nm on %03.0f deg (grid) at %.1f kn, "
-             "continued straight%s; targets follow their waypoints at the legs' speeds, blind",
+             "the model's); planned track: %s %.2f nm from %03.0f deg (grid) at %.1f kn%s; "
+             "targets follow their waypoints at the legs' speeds, blind",
              s->ship.name, strcmp(ship, FW_DNV_DEFAULT_SHIP) == 0 ? "fairway's default" : "--ship",
-             s->ship.Loa, s->ship.B, d->name, d->type, dims, fw_m_to_nm(s->leg),
-             fw_heading_deg(s->course), kn,
-             d->r.n > 2 ? " (its later waypoints are not followed: fairway's own ship follows one "
-                          "leg)" : "");
+             s->ship.Loa, s->ship.B, d->name, d->type, dims,
+             s->route.n > 1 ? "its waypoints, a route steered leg by leg," : "its one leg,",
+             fw_m_to_nm(s->leg), fw_heading_deg(s->course), kn,
+             s->route.n > 1 ? ", each leg at its speed" : ", continued straight");
     return FW_OK;
 }
 
@@ -334,8 +364,33 @@ static fw_status read_targets(const fw_jnode *root, const fw_geo *g, fw_scenario
             return fw_jfail(&t, err, "starts overlapping the own ship's hull");
         s->targets[s->n_targets] = d->t;
         s->target_routes[s->n_targets++] = d->r;
-        s->duration = fmax(s->duration, ceil(route_time(&d->r)));
+        s->duration = fmax(s->duration, ceil(route_time(&d->r) - 1e-3));
     }
+    return FW_OK;
+}
+
+/* $.startTime: "YYYY-MM-DDThh:mm:ss[.f]Z" into s->utc_start (absent: 2000-01-01). */
+static fw_status read_start(const fw_jnode *root, fw_scenario *s, fw_error *err)
+{
+    fw_jnode n;
+    const char *text;
+    s->utc_start = 946684800.0;
+    fw_status st = fw_jmember(root, "startTime", false, &n, err);
+    if (st || fw_jnode_type(&n) == FW_J_ABSENT || (st = fw_jstring(&n, &text, err)))
+        return st;
+    struct tm tm = {0};
+    double sec = -1.0;
+    int used = 0;
+    if (sscanf(text, "%4d-%2d-%2dT%2d:%2d:%lf%n", &tm.tm_year, &tm.tm_mon, &tm.tm_mday,
+               &tm.tm_hour, &tm.tm_min, &sec, &used) != 6 ||
+        !(strcmp(text + used, "Z") == 0 || strcmp(text + used, "+00:00") == 0) ||
+        tm.tm_year < 1970 || tm.tm_year > 9999 || tm.tm_mon < 1 || tm.tm_mon > 12 ||
+        tm.tm_mday < 1 || tm.tm_mday > 31 || tm.tm_hour > 23 || tm.tm_min > 59 ||
+        !(sec >= 0.0 && sec < 61.0))
+        return fw_jfail(&n, err, "'%s' is not a UTC time YYYY-MM-DDThh:mm:ssZ", text);
+    tm.tm_year -= 1900;
+    tm.tm_mon -= 1;
+    s->utc_start = (double)timegm(&tm) + sec;
     return FW_OK;
 }
 
@@ -348,6 +403,7 @@ static fw_status read_doc(const fw_jdoc *doc, const char *ship, fw_scenario *s, 
     if ((st = fw_jobject(&root, err)) || (st = read_version(&root, err)) ||
         (st = fw_jmember_string(&root, "title", false, &title, err)) ||
         (st = fw_jmember_string(&root, "description", false, &desc, err)) ||
+        (st = read_start(&root, s, err)) ||
         (st = fw_jmember(&root, "ownShip", true, &own, err)) || (st = fw_jobject(&own, err)) ||
         (st = start_node(&own, &pos, err)) || (st = read_latlon(&pos, &lat, &lon, err)))
         return st;
@@ -362,7 +418,7 @@ static fw_status read_doc(const fw_jdoc *doc, const char *ship, fw_scenario *s, 
     s->origin_lon = lon;
     dnv_ship d;
     if (!(st = read_ship(&own, g, &d, err)) && !(st = own_ship(&d, ship, s, err))) {
-        s->duration = ceil(s->leg / s->speed);
+        s->duration = ceil((s->route.n > 1 ? route_time(&d.r) : s->leg / s->speed) - 1e-3);
         st = read_targets(&root, g, s, &d, err);
     }
     fw_geo_destroy(g);
@@ -377,6 +433,7 @@ fw_status fw_scn_dnv_load(const char *path, const char *ship, fw_scenario *s, fw
     stem_name(path, s->name, sizeof s->name);
     s->reactions.behaviour = FW_BEHAVIOUR_BLIND; /* scripted targets */
     s->waypoint_targets = true;
+    s->situation_output = true; /* run/dnv_out.h */
     fw_jdoc *doc = NULL;
     if ((st = fw_jdoc_load(path, &doc, err)))
         return st;

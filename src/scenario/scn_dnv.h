@@ -32,11 +32,13 @@
  * The own ship's model is not the situation's: it is fairway's c3-mmg (the
  * C-3 with MMG dynamics), or the ship file given (`--ship`).  The situation
  * gives its start, course and speed; its dimensions are reported, not used
- * (the domain and hull measures are the model's).  fairway's own ship follows
- * one planned leg (avoid/route.h): the first leg, from the start towards
- * waypoint 1, continued straight; further own waypoints are reported in the
- * scenario's note (run.log) and not followed.  The run lasts until the own
- * ship would reach waypoint 1 or the last target its last waypoint, the
+ * (the domain and hull measures are the model's).  With two waypoints it
+ * sails the leg from its start towards waypoint 1, continued straight (as a
+ * scenario's course and leg); with more (up to FW_ROUTE_MAX_LEGS + 1 from
+ * the start) they are its route (avoid/route.h, as own_ship.route: steered
+ * leg by leg, each leg's speed ordered).  The scenario's note (run.log) says
+ * which.  The run lasts until the own ship would reach its last waypoint or
+ * the last target its last, the
  * longer, in steps of 1 s.
  */
 #ifndef FW_SCN_DNV_H
