@@ -306,6 +306,8 @@ static fw_world *crossing_world_in(fw_watch_def watch, uint64_t seed, double sid
     kd.n = 2;
     fw_world_def wd = fw_default_world_def();
     wd.reactions = fw_default_reactions_def(); /* colregs */
+    /* the watch's timing is read off g's first slow-down order */
+    wd.reactions.give_way = FW_GIVE_WAY_SPEED;
     wd.reactions.watch = watch;
     wd.reactions.colregs.visibility = visibility;
     wd.seed = seed;

@@ -184,12 +184,13 @@ static void test_two_vessels_head_on(void)
  * between any two ships, and the orders given. */
 typedef struct react_out {
     double dmin;
-    int slow, resume;
+    int slow, resume, alter, rejoin;
     double first_slow_t, tcpa_then;
     double speed_end[3];
 } react_out;
 
-static react_out react_world(const fw_kin_ship *ships, int n, fw_behaviour b, int seconds)
+static react_out react_world_gw(const fw_kin_ship *ships, int n, fw_behaviour b, int seconds,
+                                fw_give_way gw)
 {
     react_out o = {.dmin = INFINITY, .first_slow_t = -1};
     fw_error err = {0};
@@ -198,6 +199,7 @@ static react_out react_world(const fw_kin_ship *ships, int n, fw_behaviour b, in
     kd.n = n;
     fw_world_def wd = fw_default_world_def();
     wd.reactions.behaviour = b;
+    wd.reactions.give_way = gw;
     fw_world *w = NULL;
     fw_vessel *own = NULL;
     fw_vessel_handle oh = {0};
@@ -232,11 +234,21 @@ static react_out react_world(const fw_kin_ship *ships, int n, fw_behaviour b, in
             o.resume++;
             continue;
         }
+        o.alter += r[i].kind == FW_REACT_ALTER;
+        o.rejoin += r[i].kind == FW_REACT_REJOIN;
+        if (r[i].kind != FW_REACT_SLOW)
+            continue;
         if (o.slow++ == 0)
             o.first_slow_t = r[i].t;
     }
     fw_world_destroy(w);
     return o;
+}
+
+/* The speed orders' world (give_way speed: what these tests measure). */
+static react_out react_world(const fw_kin_ship *ships, int n, fw_behaviour b, int seconds)
+{
+    return react_world_gw(ships, n, b, seconds, FW_GIVE_WAY_SPEED);
 }
 
 /* Background ships by COLREGs: one that must give way to the own ship (the
@@ -258,6 +270,13 @@ static void test_reactive_traffic(void)
     CHECK_MSG(col.dmin > 0.99 * 926.0, "colregs: closest %.0f m", col.dmin);
     CHECK_MSG(col.resume == 1 && fabs(col.speed_end[0] - v) < 1e-9, "given its speed back: %d, %.2f",
               col.resume, col.speed_end[0]);
+    /* give_way course (world/steer.h): it alters course instead (and may
+     * alter again while it steers itself), passes at the passing distance
+     * less its turn's lag (95 %), and is back on its lane within the hour */
+    react_out alt = react_world_gw(&give, 1, FW_BEHAVIOUR_COLREGS, 3600, FW_GIVE_WAY_COURSE);
+    CHECK_MSG(alt.alter >= 1 && alt.slow == 0 && alt.rejoin == 1,
+              "course: %d alterations, %d slow-downs, %d back", alt.alter, alt.slow, alt.rejoin);
+    CHECK_MSG(alt.dmin > 0.95 * 926.0, "course: closest %.0f m", alt.dmin);
     fw_kin_ship stand = {.start = {.id = "S", .east = 3000.0, .north = 3000.0, .course = 1.5 * FW_PI, .heading = 1.5 * FW_PI,
                                    .speed = v, .length = 200, .breadth = 32}};
     react_out st = react_world(&stand, 1, FW_BEHAVIOUR_COLREGS, 900);

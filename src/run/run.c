@@ -167,11 +167,15 @@ static void record_course(fw_run *R, const fw_reaction *r, fw_run_summary *sum)
     sum->alter_deg_max = sum->n_alter ? fmax(sum->alter_deg_max, alt) : alt;
     sum->n_alter++;
     sum->n_give_way++;
-    note(R, "%9.1f  traffic: %s gives way to %s (%s): alters %.0f deg to starboard, %.0f -> "
-            "%.0f deg, CPA %.0f -> %.0f m\n",
-         r->t, r->ship, r->other, fw_situation_name(r->situation), alt,
-         fw_rad_to_deg(fw_wrap_2pi(r->course_from)), fw_rad_to_deg(r->course_to), r->dcpa_before,
-         r->dcpa_after);
+    note(R, "%9.1f  traffic: %s gives way to %s (%s): alters %.0f deg to %s, %.0f -> "
+            "%.0f deg",
+         r->t, r->ship, r->other, fw_situation_name(r->situation), fabs(alt),
+         alt < 0.0 ? "port" : "starboard",
+         fw_rad_to_deg(fw_wrap_2pi(r->course_from)), fw_rad_to_deg(r->course_to));
+    if (isnan(r->dcpa_before)) /* a steered ship's further alteration (world/steer.h) */
+        note(R, " (steering itself)\n");
+    else
+        note(R, ", CPA %.0f -> %.0f m\n", r->dcpa_before, r->dcpa_after);
 }
 
 /* The background ships' new orders: run.log and the summary. */

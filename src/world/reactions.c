@@ -537,7 +537,9 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
         fw_status s2 = fw_source_set_speed(src, a->id, -1.0, err);
         return s2 ? s2 : fw_react_record(r, &x, err);
     }
-    if (!st->holding && r->def.give_way == FW_GIVE_WAY_COURSE) {
+    /* overtaking (rule 13) it keeps out of the way by its speed: a ship it
+     * overtakes may itself be moving off to starboard (steered, steer.h) */
+    if (!st->holding && r->def.give_way == FW_GIVE_WAY_COURSE && sit != FW_SIT_OVERTAKING) {
         int a2 = fw_react_alter(r, t, self, all, st, r->list, m, nearest, sit, dcpa, src, err);
         if (a2 != 0 || sit == FW_SIT_HEAD_ON) /* ordered, failed, or head-on: no speed */
             return a2 < 0 ? err->status : FW_OK;

@@ -43,8 +43,8 @@
  * Head-on meetings of two lane-bound ships are kept apart by their lanes;
  * the own ship's policy turns.
  *
- * give_way: speed (the above: slowing down is a lane-bound ship's only
- * action) or course: a give-way ship alters course to starboard (rules 8,
+ * give_way: speed (the default, the above: slowing down as if a lane-bound
+ * ship had no other action) or course: a give-way ship alters course to starboard (rules 8,
  * 15, 16), by the least of alter_min, alter_min + 5 deg, ... alter_max (20
  * and 60 deg: at least 20 deg is readily apparent to another ship, rule 8(b),
  * by eye and on radar) at which it passes every ship near it at cpa or more
@@ -54,7 +54,9 @@
  * ship meeting the own ship head-on alters to starboard likewise (rule 14;
  * nothing if it has no room).  Where no alteration clears or there is no
  * room, or the ship is changing lanes (more than 10 m or 2 deg off its
- * lane's line), it slows down as above.  A ship that alters course is handed to
+ * lane's line), it slows down as above; and an overtaking ship (rule 13)
+ * keeps out of the way by its speed (not overtaking), since the ship it
+ * would overtake may itself be moving off to starboard.  A ship that alters course is handed to
  * the world to steer (fw_reactions_takes; world/steer.h says how it turns,
  * when it comes back, and how) and given back to its lane after.
  * Every order is recorded (ship, time, kind, speeds or courses, the ship it

@@ -68,10 +68,52 @@ void fw_lane_where(const fw_lane_info *lane, double e, double n, double *course,
 /* s: how far ahead a ship coming back to its lane looks for ships in its way */
 static const double kConflictS = 600.0;
 
+static void pred_path(const fw_predictor *self, const fw_target *now, double dt, int n,
+                      double *east, double *north, double *heading)
+{
+    const fw_steer_pred *p = (const fw_steer_pred *)self;
+    /* its drift (course over ground less heading) kept through the turn */
+    double psi = now->heading, drift = fw_wrap_pi(now->course - now->heading);
+    double e = now->east, no = now->north, v = now->speed;
+    for (int k = 0; k < n; k++) {
+        east[k] = e, north[k] = no, heading[k] = psi;
+        double step = 0.0;
+        if (p->turning) {
+            double left = fw_wrap_pi(p->heading - psi), turn = p->rate * dt;
+            step = fabs(left) <= turn ? left : copysign(turn, left);
+        }
+        double mid = psi + 0.5 * step + drift;
+        e += v * dt * sin(mid), no += v * dt * cos(mid);
+        psi += step;
+    }
+}
+
+void fw_steer_pred_init(fw_steer_pred *p)
+{
+    *p = (fw_steer_pred){.base = {.path = pred_path}};
+}
+
+/* s: how often a steered ship looks round (as reactions.h's officer), and
+ * how far ahead it looks for ships it must give way to */
+static const double kLookS = 10.0;
+static const double kHorizonS = 900.0;
+static const double kCloseS = 300.0;
+/* m: a turn at close quarters must gain this much, or it would swing a
+ * degree a step between courses alike */
+static const double kBetterM = 50.0;
+
 typedef struct steer_ctl {
     fw_controller base;
     fw_alter_def def;
     fw_steer_phase phase;
+    double alter;                  /* rad, its alteration now (to starboard of its lane) */
+    char other[FW_TARGET_ID_MAX];  /* the ship it gives way to now */
+    fw_colregs_def colregs;
+    double t_look;                 /* s, when it looks round next */
+    /* a new alteration since the world last asked (fw_steer_controller_news) */
+    bool news;
+    double news_from, news_to;     /* rad, courses over ground */
+    fw_situation news_sit;
 } steer_ctl;
 
 /* The heading that makes good course chi over ground at speed U in the
@@ -98,7 +140,7 @@ static bool past_and_clear(const steer_ctl *c, const fw_sense *in, double chi)
     const fw_own_state *o = in->own;
     for (int i = 0; i < in->n; i++) {
         const fw_target *t = &in->targets[i];
-        if (strcmp(t->id, c->def.other) != 0)
+        if (strcmp(t->id, c->other) != 0)
             continue;
         double oe, on, te, tn, tc, dc;
         /* over ground, as the target's course and speed are */
@@ -135,13 +177,119 @@ static bool conflicts(const steer_ctl *c, const fw_sense *in, double chi)
     return false;
 }
 
+/* Ship t's closest approach to it on course chi over ground at its speed. */
+static void cpa_on(const fw_own_state *o, const fw_target *t, double chi, double *tc, double *dc)
+{
+    double oe, on, te, tn;
+    fw_velocity(o->U, chi, &oe, &on);
+    oe += o->cur_e, on += o->cur_n;
+    fw_velocity(t->speed, t->course, &te, &tn);
+    fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, tc, dc);
+}
+
+/* The ship it must give way to by altering course (rules 14 and 15, from
+ * its own side: crossing from starboard, head-on) that on course chi it would pass
+ * within the passing distance in the horizon, the nearest in time; -1: none. */
+static int must_give_way(const steer_ctl *c, const fw_sense *in, double chi, fw_situation *sit)
+{
+    int best = -1;
+    double tbest = INFINITY;
+    for (int i = 0; i < in->n; i++) {
+        double tc, dc;
+        cpa_on(in->own, &in->targets[i], chi, &tc, &dc);
+        if (!(tc > 0.0 && tc < kHorizonS && dc < c->def.cpa && tc < tbest))
+            continue;
+        fw_situation s = fw_classify(&c->colregs, in->own, &in->targets[i]);
+        if (s == FW_SIT_GIVE_WAY || s == FW_SIT_HEAD_ON)
+            best = i, tbest = tc, *sit = s;
+    }
+    return best;
+}
+
+/* The closest it would pass any ship it sees on course chi, ahead in the horizon. */
+static double pass_within(const fw_sense *in, double chi, double horizon, int *who)
+{
+    double best = INFINITY;
+    for (int i = 0; i < in->n; i++) {
+        double tc, dc;
+        cpa_on(in->own, &in->targets[i], chi, &tc, &dc);
+        if (tc > 0.0 && tc < horizon && dc < best)
+            best = dc, *who = i;
+    }
+    return best;
+}
+
+static double pass_on(const fw_sense *in, double chi)
+{
+    int who;
+    return pass_within(in, chi, kHorizonS, &who);
+}
+
+/* Close quarters (rules 2(b) and 17(b)): whatever the roles, a ship the
+ * course it steers (chi) would pass within a quarter of the passing
+ * distance in the next 5 minutes makes it turn now, to the course from 10 to
+ * 90 deg to starboard of its heading (10 deg steps) that passes every ship
+ * farthest in those 5 minutes, if that gains 50 m (true: turned).  Never to
+ * port: the other ship, by the same rules, turns to starboard (17(c)), and
+ * a turn to port against a constant-velocity look at a ship that is already
+ * turning is the classic way to meet it. */
+static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, double chi)
+{
+    int j = -1, k;
+    double now = pass_within(in, chi, kCloseS, &j), lim = 0.25 * c->def.cpa;
+    if (!(now < lim))
+        return false;
+    double best = now, pick = chi;
+    for (int s = 1; s <= 9; s++) {
+        double cand = in->own->psi + fw_deg_to_rad(10.0 * s);
+        double d = pass_within(in, cand, kCloseS, &k);
+        if (d > best + kBetterM)
+            best = d, pick = cand;
+    }
+    if (pick == chi)
+        return false;
+    c->news = true, c->news_from = chi, c->news_to = pick;
+    c->news_sit = fw_classify(&c->colregs, in->own, &in->targets[j]);
+    c->alter = fw_wrap_pi(pick - course);
+    c->phase = FW_STEER_ALTER;
+    snprintf(c->other, sizeof c->other, "%s", in->targets[j].id);
+    return true;
+}
+
+/* A ship it must give way to on the course it steers (chi): it alters
+ * further to starboard, by the least of 20, 25, ... 60 deg that passes
+ * every ship it sees at the passing distance, and at most 90 deg off its
+ * lane (true: a new alteration; false: none needed, or none that clears,
+ * and it holds on: its model keeps its speed). */
+static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi)
+{
+    fw_situation sit = FW_SIT_GIVE_WAY;
+    int j = must_give_way(c, in, chi, &sit);
+    if (j < 0)
+        return false;
+    for (double alt = fw_deg_to_rad(20.0); alt <= fw_deg_to_rad(60.0) + 1e-9;
+         alt += fw_deg_to_rad(5.0)) {
+        double off = fw_wrap_pi(chi + alt - course);
+        if (off > fw_deg_to_rad(90.0))
+            break;
+        if (pass_on(in, chi + alt) < c->def.cpa)
+            continue;
+        c->news = true, c->news_from = chi, c->news_to = chi + alt, c->news_sit = sit;
+        c->alter = off;
+        c->phase = FW_STEER_ALTER;
+        snprintf(c->other, sizeof c->other, "%s", in->targets[j].id);
+        return true;
+    }
+    return false;
+}
+
 /* The course over ground to a line `offset` m to starboard of the lane's
  * (line-of-sight), never more than the alteration off the line's course. */
 static double los_course(const steer_ctl *c, double course, double xtrack, double offset)
 {
     double look = fmax(4.0 * c->def.length, 400.0);
     double off = atan2(-(xtrack - offset), look);
-    double lim = c->def.alteration;
+    double lim = fmax(fabs(c->alter), fw_deg_to_rad(20.0));
     return course + fmax(-lim, fmin(lim, off));
 }
 
@@ -167,16 +315,31 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
     }
     /* altered: the alteration, or along the edge of its room once there */
     double chi = c->phase != FW_STEER_ALTER ? back
-                 : isfinite(c->def.room)    ? fmin(course + c->def.alteration,
+                 : isfinite(c->def.room)    ? fmin(course + c->alter,
                                                    los_course(c, course, xt, c->def.room))
-                                            : course + c->def.alteration;
+                                            : course + c->alter;
+    if (in->t >= c->t_look - 1e-9) {
+        c->t_look = in->t + kLookS;
+        if (replan(c, in, course, chi)) /* a ship it must now give way to */
+            chi = course + c->alter;
+    }
+    if (close_quarters(c, in, course, chi))
+        chi = course + c->alter;
     /* coming back across ships in its way (a ship of its lane, another
      * coming back): along its lane where it is until they are by */
     if (c->phase == FW_STEER_RETURN && conflicts(c, in, chi) && !conflicts(c, in, course))
         chi = course;
     double psi_d = heading_for(chi, o->U, o->cur_e, o->cur_n);
+    double helm = helm_for(c, o, psi_d);
+    if (c->def.pred) {
+        /* the rate its helm gives (the model's steady rate), or its own if faster */
+        double L = c->def.length, rate = FW_STEER_K_ND * o->U / L * fabs(helm);
+        c->def.pred->rate = fmax(rate, fabs(o->r));
+        c->def.pred->heading = psi_d;
+        c->def.pred->turning = fabs(fw_wrap_pi(psi_d - o->psi)) > fw_deg_to_rad(1.0);
+    }
     *d = (fw_decision){.mode = c->phase == FW_STEER_ALTER ? FW_MODE_AVOID : FW_MODE_AUTOPILOT,
-                       .helm = helm_for(c, o, psi_d), .primary = -1,
+                       .helm = helm, .primary = -1,
                        .reason = c->phase == FW_STEER_ALTER    ? "gives way: course altered"
                                  : c->phase == FW_STEER_RETURN ? "back to its lane"
                                                                : "on its lane: to be given back"};
@@ -203,6 +366,10 @@ fw_status fw_steer_controller_create(const fw_alter_def *def, fw_controller **ou
     c->base.ops = &steer_ops;
     c->def = *def;
     c->phase = FW_STEER_ALTER;
+    c->alter = def->alteration;
+    snprintf(c->other, sizeof c->other, "%s", def->other);
+    c->colregs = fw_default_colregs_def();
+    c->t_look = -INFINITY; /* set at the first decision */
     *out = &c->base;
     return FW_OK;
 }
@@ -212,4 +379,16 @@ bool fw_steer_controller_is(const fw_controller *c) { return c && c->ops == &ste
 fw_steer_phase fw_steer_controller_phase(const fw_controller *c)
 {
     return ((const steer_ctl *)c)->phase;
+}
+
+bool fw_steer_controller_news(fw_controller *ctl, double *from, double *to, char *other,
+                              fw_situation *sit)
+{
+    steer_ctl *c = (steer_ctl *)ctl;
+    if (!c->news)
+        return false;
+    c->news = false;
+    *from = c->news_from, *to = c->news_to, *sit = c->news_sit;
+    snprintf(other, FW_TARGET_ID_MAX, "%s", c->other);
+    return true;
 }

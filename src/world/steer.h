@@ -42,14 +42,28 @@
  * constant L/U), at most 20 deg of helm (an officer's alteration, not a
  * crash turn); in a current the heading allows for the set (course over
  * ground is what is steered).
+ * How the others expect it to move (fw_steer_pred, its record's predictor,
+ * geom/target.h): while it turns, on turning at the rate its helm gives
+ * (K' U / L x helm, or its present rate if faster) until it heads as its
+ * helmsman steers, then straight on; steady, at constant velocity.  An
+ * officer who sees a ship swing (and AIS's rate of turn) reads its
+ * alteration; a constant-velocity look at a ship half way through its turn
+ * would see it heading for the very collision it is turning away from.
  * Wind acts on it no more than on SUMO's ships (neither has windage); a
  * current carries it (vessel.h: a Nomoto vessel's step).
- * While taken it does not give way to a third ship: the other ships see it
- * as a vessel and give way to it as the rules say (reactions.h).
+ * While it steers itself it looks round every 10 s, as reactions.h's
+ * officer does: a ship it must give way to (rules 14 and 15 from its own side)
+ * that the course it steers would pass within the passing distance in the
+ * next 15 minutes makes it alter further to starboard, by the least of 20,
+ * 25, ... 60 deg that passes every ship it sees at that distance (at most
+ * 90 deg off its lane; none: it holds on, its model has no speed orders),
+ * and it gives way to that ship from then on.  The other ships see it as a
+ * vessel and give way to it as the rules say (reactions.h).
  */
 #ifndef FW_WORLD_STEER_H
 #define FW_WORLD_STEER_H
 
+#include "avoid/encounter.h"
 #include "ship/ship.h"
 #include "traffic/source.h"
 #include "world/vessel.h"
@@ -62,6 +76,17 @@
  * type name (copied, cut to fit) into *out. */
 void fw_steer_ship(double length, double breadth, const char *type, fw_ship *out);
 
+/* The predictor (above); the controller keeps it up to date. */
+typedef struct fw_steer_pred {
+    fw_predictor base;
+    double rate;     /* rad/s, > 0: how fast it is expected to turn */
+    double heading;  /* rad: the heading it turns to */
+    bool turning;
+} fw_steer_pred;
+
+/* A predictor that expects constant velocity until its controller says. */
+void fw_steer_pred_init(fw_steer_pred *p);
+
 typedef struct fw_alter_def {
     fw_lane_info lane;                 /* where it comes back to (source.h) */
     double alteration;                 /* rad, > 0: to starboard of its lane's course */
@@ -70,6 +95,8 @@ typedef struct fw_alter_def {
     double room;                       /* m, the farthest to starboard of its line it goes */
     double length;                     /* m, its Loa */
     double helm_max;                   /* rad, 20 deg */
+    fw_steer_pred *pred;               /* kept up to date (NULL: none); must outlive
+                                          every copy of the ship's record */
 } fw_alter_def;
 
 /* lane and other empty, alteration 30 deg, cpa 926 m, room unlimited, length 100 m,
@@ -83,6 +110,11 @@ fw_status fw_steer_controller_create(const fw_alter_def *def, fw_controller **ou
 /* Is c one (and then its phase)? */
 bool fw_steer_controller_is(const fw_controller *c);
 fw_steer_phase fw_steer_controller_phase(const fw_controller *c);
+/* A further alteration it made since the last call (its course over ground
+ * from, to, rad; the ship, FW_TARGET_ID_MAX room, and the situation): true
+ * once for each. */
+bool fw_steer_controller_news(fw_controller *c, double *from, double *to, char *other,
+                              fw_situation *sit);
 
 /* The point of the lane's line nearest (e, n): the line's course there (rad)
  * and the cross-track distance (m, > 0 to starboard of the line), the

@@ -10,6 +10,7 @@
 #include "core/clock.h"
 #include "core/mem.h"
 #include "core/streams.h"
+#include "core/units.h"
 #include "world/steer.h"
 #include "world/vessel_internal.h"
 
@@ -18,9 +19,17 @@
 typedef struct slot {
     fw_vessel *v;
     uint16_t generation;
-    fw_ship *ship; /* the vessel's model when the world made it (a steered
-                      background ship's, steer.h), freed with it */
+    struct steered *steered; /* a steered background ship's model and predictor
+                                (steer.h), made by the world */
 } slot;
+
+/* What the world makes for a background ship it steers: its model, and the
+ * predictor its record points to.  Freed only once no view holds a copy of
+ * its record any more: at the next sensing after the vessel is gone. */
+typedef struct steered {
+    fw_ship ship;
+    fw_steer_pred pred;
+} steered;
 
 struct fw_world {
     fw_world_def def;
@@ -39,6 +48,8 @@ struct fw_world {
     fw_sensor *sensor;   /* the own ship's (def.own_sensing) */
     fw_watch *own_watch; /* the own ship's (def.own_watch) */
     fw_rng *gust;        /* the wind's gusts (env.h; NULL: a steady wind) */
+    steered **grave;     /* of vessels gone since the last sensing */
+    int n_grave, grave_cap;
 };
 
 /* The CPU clock when the def keeps timings, else 0 (no system calls). */
@@ -70,8 +81,11 @@ void fw_world_destroy(fw_world *w)
         if (w->slots[i].v)
             fw_vessel_free(w->slots[i].v);
         free(w->slots[i].v);
-        free(w->slots[i].ship);
+        free(w->slots[i].steered);
     }
+    for (int i = 0; i < w->n_grave; i++)
+        free(w->grave[i]);
+    free(w->grave);
     free(w->slots);
     free(w->recs);
     fw_source_destroy(w->source);
@@ -265,8 +279,16 @@ static void drop(fw_world *w, int i)
         w->own = -1;
     fw_vessel_free(v);
     free(v);
-    free(w->slots[i].ship);
-    w->slots[i].ship = NULL;
+    if (w->slots[i].steered) {
+        /* copies of its record (with the predictor) may be in views until
+         * the next sensing: freed then; if no room to wait, now (the views
+         * of this step are then not read again) */
+        if (fw_reserve((void **)&w->grave, sizeof *w->grave, &w->grave_cap, w->n_grave + 1))
+            w->grave[w->n_grave++] = w->slots[i].steered;
+        else
+            free(w->slots[i].steered);
+        w->slots[i].steered = NULL;
+    }
     w->slots[i].v = NULL;
     w->slots[i].generation++;
     w->nv--;
@@ -472,10 +494,11 @@ static fw_status take_orders(fw_world *w, fw_error *err)
     int n;
     const fw_take_order *o = fw_reactions_takes(w->react, &n);
     for (int k = 0; k < n; k++) {
-        fw_ship *ship = malloc(sizeof *ship);
-        if (!ship)
+        steered *sd_mem = malloc(sizeof *sd_mem);
+        if (!sd_mem)
             return fw_fail(err, FW_ERUN, "out of memory for a ship to steer");
-        fw_steer_ship(o[k].ship.length, o[k].ship.breadth, o[k].ship.type, ship);
+        fw_steer_ship(o[k].ship.length, o[k].ship.breadth, o[k].ship.type, &sd_mem->ship);
+        fw_steer_pred_init(&sd_mem->pred);
         fw_alter_def sd = fw_default_alter_def();
         sd.lane = o[k].lane;
         sd.alteration = o[k].alteration;
@@ -484,8 +507,10 @@ static fw_status take_orders(fw_world *w, fw_error *err)
         /* as reactions.h decided it: a tenth of the room and its half breadth spare */
         sd.room = fmax(0.0, 0.9 * o[k].lane.room_starboard - 0.5 * o[k].ship.breadth);
         snprintf(sd.other, sizeof sd.other, "%s", o[k].other);
+        sd.pred = &sd_mem->pred;
         fw_vessel_def vd = fw_default_vessel_def();
-        vd.ship = ship;
+        vd.ship = &sd_mem->ship;
+        vd.predictor = &sd_mem->pred.base;
         vd.dynamics = FW_DYN_NOMOTO;
         vd.radius = w->def.reactions.range;
         fw_vessel_handle h;
@@ -493,27 +518,45 @@ static fw_status take_orders(fw_world *w, fw_error *err)
         if (!st)
             st = fw_world_take(w, o[k].ship.id, &vd, &h, err);
         if (st) {
-            free(ship);
+            free(sd_mem);
             return st;
         }
-        w->slots[h.index1 - 1].ship = ship;
+        w->slots[h.index1 - 1].steered = sd_mem;
     }
     return FW_OK;
 }
 
-/* The steered ships back on their lanes given back to the source (one the
- * source finds not yet on its route's line is steered on and tried again
- * the next step), each recorded. */
-static fw_status give_back_done(fw_world *w, fw_error *err)
+/* A steered ship's further alteration (steer.h), recorded as the reactive
+ * traffic's are. */
+static fw_status record_news(fw_world *w, fw_vessel *v, fw_error *err)
+{
+    fw_reaction x = {.t = fw_world_time(w), .kind = FW_REACT_ALTER, .enough = true,
+                     .speed_from = v->record.speed, .speed_to = v->record.speed,
+                     .dcpa_before = NAN, .dcpa_after = NAN};
+    if (!fw_steer_controller_news(v->ctl, &x.course_from, &x.course_to, x.other, &x.situation))
+        return FW_OK;
+    x.course_from = fw_wrap_2pi(x.course_from), x.course_to = fw_wrap_2pi(x.course_to);
+    snprintf(x.ship, sizeof x.ship, "%s", v->id);
+    return fw_reactions_note(w->react, &x, err);
+}
+
+/* The steered ships' further alterations recorded, and those back on their
+ * lanes given back to the source (one the source finds not yet on its
+ * route's line is steered on and tried again the next step), each recorded. */
+static fw_status steered_ships(fw_world *w, fw_error *err)
 {
     for (int i = 0; w->n_taken > 0 && i < w->n_slots; i++) {
         fw_vessel *v = w->slots[i].v;
-        if (!v || !v->taken || !fw_steer_controller_is(v->ctl) ||
-            fw_steer_controller_phase(v->ctl) != FW_STEER_DONE)
+        if (!v || !v->taken || !fw_steer_controller_is(v->ctl))
+            continue;
+        fw_status st = record_news(w, v, err);
+        if (st)
+            return st;
+        if (fw_steer_controller_phase(v->ctl) != FW_STEER_DONE)
             continue;
         fw_target rec = v->record;
         fw_error e2 = {0};
-        fw_status st = fw_world_give_back(w, handle_of(w, i), &e2);
+        st = fw_world_give_back(w, handle_of(w, i), &e2);
         if (st == FW_EINPUT)
             continue;
         if (st) {
@@ -546,6 +589,11 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
     for (int i = 0; !st && i < w->n_slots; i++)
         if (w->slots[i].v && i != w->own)
             st = sense_one(w, i, NULL, 0, err);
+    /* every view is new: no copy of a gone ship's record is left */
+    for (int i = 0; !st && i < w->n_grave; i++)
+        free(w->grave[i]);
+    if (!st)
+        w->n_grave = 0;
     for (int i = 0; !st && i < w->n_slots; i++)
         if (w->slots[i].v)
             st = decide(w, w->slots[i].v, err);
@@ -555,7 +603,7 @@ static fw_status sense_and_decide(fw_world *w, fw_error *err)
         const fw_target *vs;
         int nvs = 0;
         src = NULL, n_src = 0;
-        st = give_back_done(w, err);
+        st = steered_ships(w, err);
         if (!st && w->own >= 0)
             st = fw_source_nearby(w->source, &src, &n_src, err);
         if (!st)
