@@ -12,6 +12,8 @@
  *   no sea room (the kinematic lane 100 m each side): it slows down instead
  *   head-on with the own ship (rule 14): it alters to starboard
  *   give_way speed (the default): no alteration, the slow-down of before
+ *   the predictor: a turning ship is expected to finish its turn (arc, then
+ *     straight), a steady one to go on at constant velocity
  */
 #include <math.h>
 #include <string.h>
@@ -231,6 +233,33 @@ static void test_head_on_alters(void)
     fw_world_destroy(w);
 }
 
+/* The predictor: a ship turning at 0.5 deg/s towards 030 from 000 at 5 m/s
+ * is expected to head 030 after 60 s and then run straight: its heading
+ * exactly so, its position the arc's (radius U / r) then the straight line,
+ * to 0.5 m (the midpoint rule on 1 s steps). */
+static void test_predictor_finishes_the_turn(void)
+{
+    fw_steer_pred p;
+    fw_steer_pred_init(&p);
+    p.turning = true, p.rate = fw_deg_to_rad(0.5), p.heading = fw_deg_to_rad(30.0);
+    fw_target now = {.speed = 5.0, .stw = 5.0, .pred = &p.base};
+    double e[121], n[121], h[121];
+    fw_target_path(&now, 1.0, 121, e, n, h);
+    CHECK_NEAR(h[30], fw_deg_to_rad(15.0), 1e-12);
+    CHECK_NEAR(h[60], fw_deg_to_rad(30.0), 1e-12);
+    CHECK_NEAR(h[120], fw_deg_to_rad(30.0), 1e-12);
+    double R = 5.0 / fw_deg_to_rad(0.5), a = fw_deg_to_rad(30.0);
+    double e60 = R * (1.0 - cos(a)), n60 = R * sin(a);
+    CHECK_NEAR(e[60], e60, 0.5);
+    CHECK_NEAR(n[60], n60, 0.5);
+    CHECK_NEAR(e[120], e60 + 300.0 * sin(a), 0.5);
+    CHECK_NEAR(n[120], n60 + 300.0 * cos(a), 0.5);
+    p.turning = false; /* steady: constant velocity */
+    fw_target_path(&now, 1.0, 121, e, n, h);
+    CHECK_NEAR(n[120], 600.0, 1e-9);
+    CHECK_NEAR(e[120], 0.0, 1e-9);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -244,5 +273,6 @@ int main(void)
     TEST_RUN(test_no_room_slows);
     TEST_RUN(test_speed_mode_unchanged);
     TEST_RUN(test_head_on_alters);
+    TEST_RUN(test_predictor_finishes_the_turn);
     return TEST_EXIT();
 }
