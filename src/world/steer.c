@@ -248,7 +248,7 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
     }
     if (pick == chi)
         return false;
-    c->news = true, c->news_from = chi, c->news_to = pick;
+    c->news = true, c->news_from = in->own->psi, c->news_to = pick;
     c->news_sit = fw_classify(&c->colregs, in->own, &in->targets[j]);
     c->alter = fw_wrap_pi(pick - course);
     c->phase = FW_STEER_ALTER;
