@@ -25,7 +25,9 @@ static fw_scenario s; /* large: a ship inside */
  * last state, the leg it ended on, the actions it took. */
 typedef struct sailed {
     double max_off, max_off_t, last_psi, last_U, last_off;
-    int last_leg, n_actions;
+    double max_turn;   /* rad, the most the heading turned from the start's, counted through */
+    double min_dist;   /* m */
+    int last_leg, n_actions, n_unkept;
 } sailed;
 
 static sailed sail(const char *rel)
@@ -35,20 +37,24 @@ static sailed sail(const char *rel)
     sailed out = {0};
     snprintf(file, sizeof file, "%s/%s", fw_data_root(), rel);
     CHECK_MSG(fw_scenario_load(file, &s, &err) == FW_OK, "%s", err.msg);
-    CHECK(s.route.n == 2 && s.route.steered);
     fw_run_def def = fw_default_run_def();
     def.scenario = &s;
     def.traffic = FW_RUN_TRAFFIC_KINEMATIC;
     fw_run *r = NULL;
     CHECK_MSG(fw_run_open(&def, &r, &err) == FW_OK, "%s", err.msg);
+    double psi_prev = s.course, turned = 0.0;
     while (r && !fw_run_done(r)) {
         CHECK_MSG(fw_run_step(r, &err) == FW_OK, "%s", err.msg);
         fw_world *w = fw_run_world(r);
         fw_vessel *own = fw_world_vessel(w, fw_world_own(w));
         const fw_mmg_state *x = fw_vessel_motion(own);
         const fw_decision *d = fw_vessel_decision(own);
-        double off;
-        fw_route_progress(&s.route, x->east, x->north, &off, NULL);
+        double off = 0.0;
+        if (s.route.n > 0)
+            fw_route_progress(&s.route, x->east, x->north, &off, NULL);
+        turned += fw_wrap_pi(x->psi - psi_prev);
+        psi_prev = x->psi;
+        out.max_turn = fmax(out.max_turn, fabs(turned));
         if (off > out.max_off)
             out.max_off = off, out.max_off_t = fw_run_time(r);
         out.last_psi = x->psi, out.last_U = hypot(x->u, x->vm), out.last_off = off;
@@ -60,10 +66,14 @@ static sailed sail(const char *rel)
     CHECK_MSG(fw_run_close(r, &sum, &enc, &n_enc, &err) == FW_OK, "%s", err.msg);
     free(enc);
     out.n_actions = sum.n_actions;
+    out.n_unkept = sum.n_unkept;
+    out.min_dist = sum.min_dist;
     printf("  %s: %.1f m off the route at most (t %.0f s), at the end %.1f m, %03.1f deg, "
-           "%.2f kn, leg %d, %d actions\n",
+           "%.2f kn, leg %d, %d actions; turned %.0f deg at most, %d times the domain could not "
+           "be kept, %.0f m the least distance\n",
            rel, out.max_off, out.max_off_t, out.last_off, fw_heading_deg(out.last_psi),
-           fw_ms_to_kn(out.last_U), out.last_leg + 1, out.n_actions);
+           fw_ms_to_kn(out.last_U), out.last_leg + 1, out.n_actions,
+           fw_rad_to_deg(out.max_turn), out.n_unkept, out.min_dist);
     return out;
 }
 
@@ -93,6 +103,18 @@ static void test_avoid_returns(void)
     CHECK(a.last_leg == 1);
     CHECK_MSG(a.last_off < 50.0, "%.1f m from the route at the end", a.last_off);
     CHECK_NEAR(fw_wrap_pi(a.last_psi - fw_deg_to_rad(30.0)), 0.0, fw_deg_to_rad(2.0));
+}
+
+/* A 1000 m domain that cannot be kept against a give-way ship that does not
+ * act: no round turn (before the band: 369 deg away from the course), the
+ * heading within the band (90 deg and the autopilot's overshoot), the
+ * domain reported as not kept, the ship slowed, no collision. */
+static void test_no_round_turn(void)
+{
+    sailed a = sail("tests/data/route/standon-loop.yaml");
+    CHECK_MSG(a.max_turn < fw_deg_to_rad(100.0), "%.0f deg", fw_rad_to_deg(a.max_turn));
+    CHECK(a.n_unkept >= 1);
+    CHECK_MSG(a.min_dist > 500.0, "%.0f m", a.min_dist);
 }
 
 /* A scenario with body as its own_ship: loads (0) or fails with FW_EINPUT and
@@ -143,5 +165,6 @@ int main(void)
     TEST_RUN(test_bad_routes);
     TEST_RUN(test_bend);
     TEST_RUN(test_avoid_returns);
+    TEST_RUN(test_no_round_turn);
     return TEST_EXIT();
 }

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "avoid/band.h"
 #include "avoid/wheel_over.h"
 #include "core/names.h"
 #include "core/units.h"
@@ -31,7 +32,10 @@ fw_policy_def fw_default_policy_def(void)
                            .ret = FW_RETURN_TRACK,
                            .los_lookahead = FW_NMILE,
                            .los_max_angle = fw_deg_to_rad(30.0),
-                           .track_done = 50.0};
+                           .track_done = 50.0,
+                           .band_turn = fw_deg_to_rad(90.0),
+                           .band_xte = FW_NMILE,
+                           .slow_factor = 0.5};
 }
 
 static const char *const kReturnNames[] = {"track", "heading"}; /* fw_return_kind order */
@@ -108,16 +112,22 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->leg = 0;
     p->wo_leg = -1;
     p->wo = 0.0;
+    p->dev = p->psi_last = 0.0;
+    p->unkept = p->no_room = false;
+    p->speed_order = 0.0;
+    p->t_kept = -1.0;
 }
 
 /* The planned track: leg k of the route. */
 static void set_leg(fw_policy *p, int k)
 {
     const fw_route_leg *l = &p->def.route.leg[k];
+    double c_old = p->psi_ref;
     p->leg = k;
     p->track_e = l->east;
     p->track_n = l->north;
     p->psi_ref = l->course;
+    fw_band_leg(p, c_old);
 }
 
 /* A steered route: on to the next leg once past the active leg's wheel-over
@@ -243,7 +253,13 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
 /* PD on the heading error to psi, limited. */
 static double autopilot(const fw_policy *p, const fw_own_state *own, double psi)
 {
-    double h = -p->def.ap_kp * fw_wrap_pi(own->psi - psi) - p->def.ap_kd * own->r;
+    double e = fw_wrap_pi(own->psi - psi);
+    /* turned more than 90 deg from the route's course: the error counted
+     * through the turns (band.h), so that the way back unwinds them rather
+     * than going on round the short way */
+    if (p->def.band_xte > 0.0 && p->def.route.n > 0 && fabs(p->dev) > 0.5 * M_PI)
+        e = p->dev - fw_wrap_pi(psi - p->psi_ref);
+    double h = -p->def.ap_kp * e - p->def.ap_kd * own->r;
     return fmax(-p->def.ap_max_helm, fmin(p->def.ap_max_helm, h));
 }
 
@@ -258,6 +274,16 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
                               err);
     if (st || !act || d->search.side == FW_SIDE_NONE)
         return st;
+    if (p->no_room) {
+        /* no permitted side has room within the route's band (policy.h):
+         * the least bad heading within it (step_steady), slower */
+        p->unkept = true;
+        d->reason = "the domain cannot be kept within the route's band: the least bad heading "
+                    "within it, reducing speed";
+        p->psi_hold = own->psi;
+        set_mode(p, FW_MODE_STEADY, t);
+        return FW_OK;
+    }
     d->acted = true;
     p->t_blocked = -1.0;
     p->psi_act = own->psi;
@@ -331,6 +357,7 @@ static fw_status step_avoid(fw_policy *p, const fw_policy_input *in, fw_decision
      * and decide again from there rather than turn round in the traffic */
     double max_turn = in->helm->track.max_turn;
     bool far_enough = max_turn > 0.0 && fabs(fw_wrap_pi(own->psi - p->psi_act)) >= max_turn;
+    bool edge = fw_band_edge(p, own, p->side);
     /* rule 8(b): one alteration large enough to be readily apparent,
      * not a succession of small ones; less only once the target passes */
     int k = p->primary_id[0] ? fw_target_find(in->targets, in->n, p->primary_id)
@@ -343,9 +370,11 @@ static fw_status step_avoid(fw_policy *p, const fw_policy_input *in, fw_decision
      * course at each vertex, and their constant-velocity tracks swing
      * with it; without it the order would follow every swing */
     bool dwelt = in->t - p->t_mode >= p->def.min_avoid_time;
-    if (dwelt && ((apparent && hold >= p->def.steady_margin) || far_enough)) {
-        d->reason = far_enough ? "turned as far as the prediction goes: steadying"
-                               : "steadying on this heading keeps every target out: steadying";
+    if (edge || (dwelt && ((apparent && hold >= p->def.steady_margin) || far_enough))) {
+        d->reason = edge ? "at the edge of the route's band: steadying"
+                    : far_enough ? "turned as far as the prediction goes: steadying"
+                                 : "steadying on this heading keeps every target out: steadying";
+        p->unkept = p->unkept || (edge && hold < 1.0);
         p->psi_hold = own->psi;
         p->helm = autopilot(p, own, p->psi_hold);
         set_mode(p, FW_MODE_STEADY, in->t);
@@ -367,6 +396,8 @@ static fw_status reopen(fw_policy *p, const fw_policy_input *in, fw_decision *d,
     double away = fw_wrap_pi(p->psi_hold - p->psi_ref);
     if (!(in->t - p->t_blocked >= p->def.blocked_time && away != 0.0))
         return FW_OK;
+    if (!(fw_band_sides(p, in->own) & (away > 0.0 ? FW_ALLOW_STARBOARD : FW_ALLOW_PORT)))
+        return FW_OK; /* no room left in the route's band that way */
     double next = p->psi_hold + copysign(p->def.reopen_step, away), cl;
     double max_turn = in->helm->track.max_turn;
     bool within = max_turn <= 0.0 || fabs(fw_wrap_pi(next - p->psi_ref)) <= max_turn;
@@ -387,10 +418,12 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
                              fw_error *err)
 {
     const fw_own_state *own = in->own;
-    p->helm = autopilot(p, own, p->psi_hold);
     double hold, ret;
-    fw_status st = steer(p, in->ctx, in->targets, in->n, p->psi_hold, 0, &hold, err);
+    fw_status st = p->unkept ? fw_band_least_bad(p, in, err) : fw_band_hold(p, in, err);
     if (st)
+        return st;
+    p->helm = autopilot(p, own, p->psi_hold);
+    if ((st = steer(p, in->ctx, in->targets, in->n, p->psi_hold, 0, &hold, err)))
         return st;
     if (hold < 1.0) {
         if (!d->search.threat) {
@@ -398,10 +431,14 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
              * psi_hold would not: hold the heading reached instead */
             d->reason = "steady: holding the present heading keeps every target out";
             p->psi_hold = own->psi;
+            if ((st = fw_band_hold(p, in, err)))
+                return st;
             p->helm = autopilot(p, own, p->psi_hold);
             return FW_OK;
         }
         d->reason = "steady: a target would enter the domain";
+        p->unkept = p->unkept || fw_band_edge(p, own, p->dev > 0.0 ? FW_SIDE_STARBOARD
+                                                                     : FW_SIDE_PORT);
         return maybe_act(p, in->ctx, in->t, own, in->targets, in->n, in->as, d, err);
     }
     /* no wait for TCPA < 0 here: a ship that keeps pacing the own ship
@@ -455,6 +492,28 @@ static void step_autopilot(fw_policy *p, const fw_policy_input *in, fw_decision 
     }
 }
 
+/* The speed ordered: slowed while the domain cannot be kept (until keeping
+ * the course lets no target in), else a steered route's leg's, or the
+ * planned speed again after a slowing. */
+static void order_speed(fw_policy *p, const fw_policy_input *in, fw_decision *d)
+{
+    const fw_route *r = &p->def.route;
+    /* kept again once keeping the course has let no target in for
+     * min_avoid_time (not at the first clear step: the verdict flickers) */
+    if (!p->unkept || d->search.threat)
+        p->t_kept = -1.0;
+    else if (p->t_kept < 0.0)
+        p->t_kept = in->t;
+    if (p->unkept && p->t_kept >= 0.0 && in->t - p->t_kept >= p->def.min_avoid_time)
+        p->unkept = false;
+    if (p->unkept)
+        p->speed_order = fw_band_slow(p, &in->ctx->ship->nomoto);
+    else if (r->steered || p->speed_order > 0.0)
+        p->speed_order = r->leg[p->leg].speed;
+    d->speed = p->speed_order;
+    d->unkept = p->unkept;
+}
+
 fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d,
                          fw_error *err)
 {
@@ -469,7 +528,10 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
         p->psi_ref = r->n > 0 ? r->leg[0].course : in->own->psi;
         /* a steered route is steered from the start */
         p->course_set = r->steered && p->def.ret == FW_RETURN_TRACK;
+        p->psi_last = in->own->psi;
+        p->dev = fw_wrap_pi(in->own->psi - p->psi_ref);
     }
+    fw_band_track(p, in->own);
     fw_status st;
     if (p->course_set && p->def.route.steered && (st = follow_route(p, in, err)))
         return st;
@@ -479,8 +541,9 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
     fw_assess(&colregs, &hdef->domain, hdef->track.horizon, in->own, in->targets, in->n, in->as,
               in->order);
     fw_helm_begin(in->ctx, in->own);
-    int allowed = fw_permitted_sides(hdef, in->as, in->n);
-    if ((st = fw_helm_search(in->ctx, in->targets, in->n, allowed, &d->search, err)))
+    int allowed = fw_permitted_sides(hdef, in->as, in->n), room = allowed & fw_band_sides(p, in->own);
+    p->no_room = room == 0;
+    if ((st = fw_helm_search(in->ctx, in->targets, in->n, room ? room : allowed, &d->search, err)))
         return st;
     d->primary = in->n > 0 ? in->order[0] : -1;
     d->acted = false;
@@ -503,6 +566,6 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
     d->mode = p->mode;
     d->helm = p->helm;
     d->leg = p->leg;
-    d->speed = p->def.route.steered ? p->def.route.leg[p->leg].speed : 0.0;
+    order_speed(p, in, d);
     return FW_OK;
 }

@@ -51,6 +51,26 @@
  * least standon_min_helm (the action that best aids, not the least that
  * clears), and never to port for a target on the port side.
  *
+ * The band about the route (band.h): no manoeuvre takes the heading more than
+ * band_turn (90 deg) from the active leg's course, counted through every turn
+ * (so no succession of alterations adds up to a round turn), nor the ship
+ * more than band_xte (1 nm) across from the route, to either side.  A side
+ * without room is not searched; a threat that no permitted side within the
+ * band can meet means the domain cannot be kept: the decision says so
+ * (fw_decision.unkept, run.log, summary.json's domain_unkept) and the ship
+ * steers the least bad heading within the band (band.h fw_band_least_bad:
+ * the one of the leg's course +-15, 30 .. 90 deg that keeps the targets
+ * farthest out) and reduces speed to slow_factor of the planned speed (not
+ * below the knowledge base's lowest fitted speed: its predictions hold
+ * there), until keeping the course has let no target in for min_avoid_time.
+ * Why: in a traffic separation scheme
+ * or a channel a master who cannot open the range by altering course does not
+ * circle through the lanes (rule 10 asks a crossing ship to cross at right
+ * angles, and a round turn puts the ship head-on to the traffic it was
+ * crossing); he keeps a predictable course and takes way off (rule 8(e):
+ * "slacken her speed or take all way off"), which gives the other ship time
+ * and room and keeps the own ship where the others expect it.
+ *
  * Restricted visibility (helm colregs.visibility > 0): a target farther than
  * the visibility is not in sight (encounter.h rule19) and rule 19 governs it
  * instead of rules 13-17: there is no stand-on ship (19(d): a ship that
@@ -120,6 +140,14 @@ typedef struct fw_policy_def {
     double los_lookahead;      /* m, 1852: the track return's line-of-sight distance */
     double los_max_angle;      /* rad, 30 deg: the largest intercept angle */
     double track_done;         /* m, 50: the return ends this close to the track */
+    /* the band about the route (above; band.h); band_xte 0: no band */
+    double band_turn;          /* rad, 90 deg: beyond, the ship sails back along its route */
+    double band_xte;           /* m, 1852: one nautical mile, the action distance: a ship
+                                  that far off its planned line is no longer where its
+                                  passage plan (and the others) expect it; in the Dover
+                                  scheme's 4 nm lanes it keeps the crossing within the
+                                  scheme's geometry */
+    double slow_factor;        /* 0.5: the speed ordered when the domain cannot be kept */
     /* the planned route (route.h): its active leg is the track returned to
      * and its course the heading kept; n 0: none given, a one-leg route
      * from where the ship is and heads at its first step.  A steered route
@@ -155,6 +183,13 @@ typedef struct fw_policy {
     int leg;          /* the route's active leg (0 without a steered route) */
     int wo_leg;       /* the leg wo was predicted for (-1: none yet) */
     double wo;        /* m, its wheel-over distance (wheel_over.h) */
+    double dev;       /* rad, the heading's turn from the active leg's course, counted
+                         through every turn (not wrapped) */
+    double psi_last;  /* rad, the heading at the last step */
+    bool unkept;      /* the domain cannot be kept within the band: slowed */
+    bool no_room;     /* this step: no permitted side has room within the band */
+    double t_kept;    /* s, since when keeping the course lets no target in (< 0: not) */
+    double speed_order; /* m/s, the last speed ordered (0: none yet) */
 } fw_policy;
 
 /* m, the own ship's distance from the planned track, + to starboard of it
@@ -170,6 +205,7 @@ typedef struct fw_decision {
     double speed;           /* m/s, the speed ordered: a steered route's active leg's;
                                0: no order (the propeller is kept) */
     int leg;                /* the route's active leg */
+    bool unkept;            /* the domain cannot be kept within the route's band (band.h) */
     const char *reason;     /* static text */
     bool acted;             /* this step started an avoidance */
     int primary;            /* most dangerous target this step: index into this

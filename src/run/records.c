@@ -318,6 +318,10 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
                    "\"max_deg\": %.1f},\n",
                 ind, s->n_alter, s->n_rejoin, s->n_alter ? s->alter_deg_min : 0.0,
                 s->n_alter ? s->alter_deg_max : 0.0);
+    if (s->n_unkept > 0) /* only then: the outputs of runs that kept it are as before */
+        fprintf(f, "%s  \"domain_unkept\": {\"episodes\": %d, \"first_t_s\": %.1f, "
+                   "\"speed_kn\": %.1f},\n",
+                ind, s->n_unkept, s->t_unkept, fw_ms_to_kn(s->unkept_speed));
     kb_json(f, s, ind);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {

@@ -87,6 +87,10 @@ typedef struct fw_run_summary {
     double rudder_work;     /* rad s, integral of |rudder| */
     int helm_orders;        /* number of changes of the helm order */
     int n_actions;          /* avoidance manoeuvres begun */
+    /* the domain could not be kept within the route's band (avoid/policy.h):
+     * how often it began, when first, the slowest speed ordered (m/s) */
+    int n_unkept;
+    double t_unkept, unkept_speed;
     /* Wall-clock seconds of the run and of it inside SUMO's step: for the
      * benchmarks and the study database only, never written to the run's
      * files (they must be identical from run to run). */

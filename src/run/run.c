@@ -44,6 +44,7 @@ struct fw_run {
     fw_error fail;           /* its message */
     fw_policy_mode mode_prev;
     int leg_prev;            /* the route's leg at the last step */
+    bool unkept_prev;        /* the domain could not be kept at the last step */
     double helm_prev, e_prev, n_prev;
     int reactions_seen;      /* the world's reactions already in run.log */
     bool kb_outside;         /* the own speed was outside the knowledge base's at the last step */
@@ -139,6 +140,19 @@ static void record_mode(fw_run *R, double t, const fw_decision *d, fw_run_summar
              rt->n, fw_heading_deg(rt->leg[d->leg].course), fw_ms_to_kn(rt->leg[d->leg].speed));
         R->leg_prev = d->leg;
     }
+    if (d->unkept && !R->unkept_prev) {
+        note(R, "%9.1f  the domain cannot be kept within the route's band: holding %03.0f deg, "
+                "speed ordered %.1f kn: %s\n",
+             t, fw_heading_deg(fw_vessel_motion(R->own)->psi), fw_ms_to_kn(d->speed),
+             d->reason ? d->reason : "");
+        if (sum->n_unkept++ == 0)
+            sum->t_unkept = t, sum->unkept_speed = d->speed;
+        sum->unkept_speed = fmin(sum->unkept_speed, d->speed);
+    } else if (!d->unkept && R->unkept_prev) {
+        note(R, "%9.1f  the domain can be kept again: speed ordered %.1f kn\n", t,
+             fw_ms_to_kn(d->speed));
+    }
+    R->unkept_prev = d->unkept;
     if (d->mode == R->mode_prev)
         return;
     note(R, "%9.1f  %s -> %s, helm %.1f deg: %s\n", t,

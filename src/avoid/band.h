@@ -1,0 +1,42 @@
+/* band.h - the band about the route that the avoidance keeps to (policy.h):
+ * how far the heading has turned from the active leg's course, counted
+ * through every turn, and which sides still have room.  Internal to
+ * src/avoid (policy.c). */
+#ifndef FW_BAND_H
+#define FW_BAND_H
+
+#include "avoid/policy.h"
+
+/* Counts the turn since the last step into p->dev (from the leg's course at
+ * the first step). */
+void fw_band_track(fw_policy *p, const fw_own_state *own);
+
+/* The leg changed from course c_old to the active leg's: dev from the new. */
+void fw_band_leg(fw_policy *p, double c_old);
+
+/* FW_ALLOW_* sides a new alteration still has room for: less than
+ * band_turn - min_alteration turned that way and less than band_xte across
+ * to that side.  FW_ALLOW_EITHER without a band. */
+int fw_band_sides(const fw_policy *p, const fw_own_state *own);
+
+/* At (or past) the band's edge on side (FW_SIDE_*): turned band_turn that
+ * way, or band_xte across to it. */
+bool fw_band_edge(const fw_policy *p, const fw_own_state *own, int side);
+
+/* m/s: the speed ordered when the domain cannot be kept: slow_factor of the
+ * planned (the active leg's) speed, not below kb's lowest fitted speed. */
+double fw_band_slow(const fw_policy *p, const fw_nomoto_kb *kb);
+
+/* STEADY at the band's edge: the heading held stays within band_turn of the
+ * leg's course; once band_xte across, it becomes the leg's course if that
+ * keeps every target out, else it is held and p->unkept set. */
+fw_status fw_band_hold(fw_policy *p, const fw_policy_input *in, fw_error *err);
+
+/* The domain cannot be kept: p->psi_hold becomes the least bad heading within
+ * the band (the leg's course +-15, 30 .. band_turn deg, none further out past
+ * band_xte): the one whose steering keeps the targets farthest out, over the
+ * horizon and beyond (the return's check), the nearest the course among
+ * equals (within 0.02 of the normalised domain radius). */
+fw_status fw_band_least_bad(fw_policy *p, const fw_policy_input *in, fw_error *err);
+
+#endif
