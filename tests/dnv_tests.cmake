@@ -3,3 +3,5 @@ fw_script_test(dnv_baseline 0 "the five DNV baselines: no collision" dnv_baselin
 fw_script_test(dnv_waypoints 0 "a DNV target follows its waypoints" dnv_waypoints.sh)
 fw_script_test(dnv_bad 0 "ok deep" dnv_bad.sh)
 set_tests_properties(dnv_baseline dnv_waypoints dnv_bad PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
+fw_script_test(dnv_write 0 "situations written, valid, and read back to the same run" dnv_write.sh)
+set_tests_properties(dnv_write PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 180)

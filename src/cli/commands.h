@@ -17,5 +17,6 @@ int fw_cmd_sweep(int argc, char **argv);
 int fw_cmd_report(int argc, char **argv);
 int fw_cmd_worst(int argc, char **argv);
 int fw_cmd_ais(int argc, char **argv);
+int fw_cmd_situation(int argc, char **argv);
 
 #endif

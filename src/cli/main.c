@@ -21,6 +21,7 @@ static const command commands[] = {
     {"sweep", fw_cmd_sweep, "Monte Carlo study: every run of a study file into a SQLite database"},
     {"report", fw_cmd_report, "statistics, tables, plots and a summary of a study database"},
     {"worst", fw_cmd_worst, "a study's closest encounters as scenarios that replay them"},
+    {"situation", fw_cmd_situation, "scenarios written as DNV traffic situations"},
     {"ais", fw_cmd_ais, "AIS files: summary, tracks in the plane, a network's demand from them"},
     {"ship", fw_cmd_ship, "check a ship file and print its particulars"},
 };

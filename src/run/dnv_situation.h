@@ -1,0 +1,50 @@
+/* dnv_situation.h - fairway's encounters written as DNV traffic situations.
+ *
+ * A scenario's own ship and its targets' tracks become a maritime-schema
+ * 0.2.0 traffic situation (scenarios/dnv/traffic_situation.schema.json),
+ * which fairway reads back (scenario/scn_dnv.h) and other test benches run:
+ *
+ *   ownShip      initial position (the start), sog, cog, heading; waypoints:
+ *                the start and the end of the planned leg (at least the
+ *                distance sailed in the run's duration), the leg's sog;
+ *                static: id 1, the model's name, length and breadth
+ *   targetShips  one per track, static.id 2, 3, ... (fairway's id in
+ *                static.name), shipType from fairway's label (Cargo unless it
+ *                names a passenger ship, tanker, tug, fishing vessel ...),
+ *                its length and breadth; waypoints: its track simplified
+ *                (below), each leg's sog the leg's length over its time
+ *   startTime    the scenario's (2000-01-01T00:00:00Z when it has none)
+ *
+ * Tracks are simplified with the synchronised Douglas-Peucker rule: a point
+ * is dropped only while the straight legs at constant speed between the
+ * waypoints kept put the ship within `tolerance` metres of every recorded
+ * point at the point's time; so the waypoints keep both path and timing.  A
+ * track that begins after t = 0 (a ship that came into sight) is extended
+ * back to t = 0 along its first course at its first speed: a situation has
+ * no time at which a ship appears.  Each track ends at the scenario's
+ * duration (the reader extends the last leg beyond it).
+ *
+ * Positions: a scenario with an origin is written in its plane's latitude
+ * and longitude; one without (a network's plane) is placed with its (0, 0)
+ * at latitude 0, longitude 0, where grid north is true north.
+ */
+#ifndef FW_RUN_DNV_SITUATION_H
+#define FW_RUN_DNV_SITUATION_H
+
+#include "core/error.h"
+#include "scenario/scenario.h"
+#include "traffic/source_track.h"
+
+/* m: what the simplification keeps every recorded point within */
+#define FW_DNV_TOLERANCE_M 0.25
+
+/* Writes the situation of s's own ship and tracks[0..n-1] (points in any
+ * order, times from 0) to path (whole or not at all). */
+fw_status fw_dnv_situation_write(const fw_scenario *s, const fw_rec_track *tracks, int n,
+                                 double tolerance, const char *path, fw_error *err);
+
+/* The same of a scenario with explicit targets (constant velocity over its
+ * duration: the Imazu and paper cases). */
+fw_status fw_dnv_situation_of_scenario(const fw_scenario *s, const char *path, fw_error *err);
+
+#endif
