@@ -12,6 +12,7 @@ enum { MAX_CASES = 50, REPLAY_TOLERANCE_M = 10 };
 static void help(void)
 {
     printf("usage: fairway worst FILE --out DIR [--n N] [--study STUDY] [--splits]\n"
+           "                    [--situations]\n"
            "\n"
            "Takes the N own-ship encounters of a study database with the smallest\n"
            "hull-to-hull distance (one per run), sails each run again from the study file\n"
@@ -27,6 +28,10 @@ static void help(void)
            "                 again into DIR/split-cell-K with its full records; prints\n"
            "                 its closeness as the database has it and as the replay gives\n"
            "                 it (the same: the path names every draw)\n"
+           "  --situations   also DIR/case-K/situation.json: the case as a DNV traffic\n"
+           "                 situation (the tracks simplified to 0.25 m, src/run/\n"
+           "                 dnv_situation.h), read back and sailed into\n"
+           "                 DIR/case-K/situation; prints its closest approach too\n"
            "  --out DIR      where the cases go (created)\n"
            "  --n N          how many cases (1 to %d, default 1)\n"
            "  --study FILE   the study file, when the one named in the database's meta\n"
@@ -71,7 +76,7 @@ int fw_cmd_worst(int argc, char **argv)
     const fw_opt opts[] = {
         FW_OPT("--out", FW_OPT_TEXT, &def.out), FW_OPT("--n", FW_OPT_LONG, &n),
         FW_OPT("--study", FW_OPT_TEXT, &def.study), FW_OPT("--splits", FW_OPT_FLAG, &splits),
-        FW_OPT_END,
+        FW_OPT("--situations", FW_OPT_FLAG, &def.situations), FW_OPT_END,
     };
     int rc = fw_args_parse(argc, argv, "worst", opts, help, fw_args_one_file, &def.db, &err);
     if (rc >= 0)
@@ -88,12 +93,16 @@ int fw_cmd_worst(int argc, char **argv)
     int got = 0;
     if (fw_worst_export(&def, cases, &got, &err))
         return fw_report(&err);
-    printf("case,run_id,target,db_min_m,db_hull_m,rerun_min_m,replay_min_m,dir\n");
+    printf("case,run_id,target,db_min_m,db_hull_m,rerun_min_m,replay_min_m,dir%s\n",
+           def.situations ? ",situation_min_m" : "");
     int bad = 0;
     for (int i = 0; i < got; i++) {
         const fw_worst_case *c = &cases[i];
-        printf("%d,%d,%s,%.2f,%.2f,%.2f,%.2f,%s\n", i + 1, c->run_id, c->target, c->db_min,
+        printf("%d,%d,%s,%.2f,%.2f,%.2f,%.2f,%s", i + 1, c->run_id, c->target, c->db_min,
                c->db_hull, c->rerun_min, c->replay_min, c->dir);
+        if (def.situations)
+            printf(",%.2f", c->situation_min);
+        printf("\n");
         bad += !(fabs(c->replay_min - c->db_min) <= REPLAY_TOLERANCE_M);
     }
     if (bad)

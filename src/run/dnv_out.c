@@ -11,6 +11,7 @@
 #include "core/json.h"
 #include "core/units.h"
 #include "geom/geo.h"
+#include "run/dnv_situation.h"
 
 #define DNV_OUT_VERSION "0.2.0"
 #define FAIRWAY_VERSION "0.1.0" /* main.c --version */
@@ -57,17 +58,9 @@ void fw_dnv_out_destroy(fw_dnv_out *o)
     free(o);
 }
 
-/* "position": {"lat": .., "lon": ..} of plane point (e, n); gamma: the
- * convergence there (rad, grid north minus true north). */
 static fw_status position(fw_dnv_out *o, double e, double n, double *gamma, fw_error *err)
 {
-    double lat, lon;
-    fw_status st = fw_geo_to_latlon(o->g, e, n, &lat, &lon, err);
-    if (!st && gamma)
-        st = fw_geo_convergence(o->g, lat, lon, gamma, err);
-    if (!st)
-        fprintf(o->ev, "\"position\": {\"lat\": %.7f, \"lon\": %.7f}", lat, lon);
-    return st;
+    return fw_dnv_position(o->ev, o->g, e, n, 7, gamma, err);
 }
 
 /* A grid direction as true degrees in [0, 360). */

@@ -51,15 +51,21 @@ static void simplify(const fw_rec_point *p, int i, int j, double tol, bool *keep
     }
 }
 
-static fw_status position(writer *w, double e, double n, double *gamma, fw_error *err)
+fw_status fw_dnv_position(FILE *f, const fw_geo *g, double e, double n, int digits,
+                          double *gamma, fw_error *err)
 {
     double lat, lon;
-    fw_status st = fw_geo_to_latlon(w->g, e, n, &lat, &lon, err);
+    fw_status st = fw_geo_to_latlon(g, e, n, &lat, &lon, err);
     if (!st && gamma)
-        st = fw_geo_convergence(w->g, lat, lon, gamma, err);
+        st = fw_geo_convergence(g, lat, lon, gamma, err);
     if (!st)
-        fprintf(w->f, "\"position\": {\"lat\": %.10f, \"lon\": %.10f}", lat, lon);
+        fprintf(f, "\"position\": {\"lat\": %.*f, \"lon\": %.*f}", digits, lat, digits, lon);
     return st;
+}
+
+static fw_status position(writer *w, double e, double n, double *gamma, fw_error *err)
+{
+    return fw_dnv_position(w->f, w->g, e, n, 10, gamma, err);
 }
 
 /* "initial": position, sog, cog, heading (true degrees). */
@@ -109,41 +115,48 @@ static const char *ship_type(const char *label)
 }
 
 static void static_data(writer *w, int id, const char *name, const char *type, double length,
-                        double breadth)
+                        double breadth, bool more)
 {
     fprintf(w->f, "      \"static\": {\"id\": %d, \"name\": ", id);
     fw_json_string(w->f, name);
     fprintf(w->f, ", \"shipType\": \"%s\", \"dimensions\": {\"length\": %.2f, \"width\": %.2f, "
-                  "\"a\": %.2f, \"b\": %.2f, \"c\": %.2f, \"d\": %.2f}}\n",
-            ship_type(type), length, breadth, length / 2, length / 2, breadth / 2, breadth / 2);
+                  "\"a\": %.2f, \"b\": %.2f, \"c\": %.2f, \"d\": %.2f}}%s\n",
+            ship_type(type), length, breadth, length / 2, length / 2, breadth / 2, breadth / 2,
+            more ? "," : "");
 }
 
-/* The track's points from t = 0 to the duration, simplified (header). */
+/* The track's points from its appearance to its end (the duration when
+ * it was there to the end), simplified (header); *appear, *vanish: s, 0 and
+ * INFINITY for a ship there all the time. */
 static fw_status track_points(const fw_rec_track *tr, double duration, double tol,
-                              fw_rec_point **out, int *m, fw_error *err)
+                              fw_rec_point **out, int *m, double *appear, double *vanish,
+                              fw_error *err)
 {
     int n = tr->n;
-    fw_rec_point *p = malloc(sizeof *p * (size_t)(n + 2));
-    bool *keep = calloc((size_t)n + 2, sizeof *keep);
+    fw_rec_point *p = malloc(sizeof *p * (size_t)(n + 1));
+    bool *keep = calloc((size_t)n + 1, sizeof *keep);
     if (!p || !keep || n < 1) {
         free(p), free(keep);
         return fw_fail(err, n < 1 ? FW_EINPUT : FW_ERUN, "track of %s: %s", tr->info.id,
                        n < 1 ? "no points" : "out of memory");
     }
-    memcpy(p + 1, tr->p, sizeof *p * (size_t)n);
-    qsort(p + 1, (size_t)n, sizeof *p, cmp_t);
-    fw_rec_point a = p[1], z = p[n];
-    p[0] = a, p[n + 1] = z;
-    p[0].t = 0.0; /* back to t = 0, on to the duration, straight */
-    p[0].east -= a.t * a.speed * sin(a.course), p[0].north -= a.t * a.speed * cos(a.course);
-    p[n + 1].t = fmax(duration, z.t + 1.0);
-    double dz = (p[n + 1].t - z.t) * z.speed;
-    p[n + 1].east += dz * sin(z.course), p[n + 1].north += dz * cos(z.course);
-    int lo = a.t > 0.0 ? 0 : 1, hi = dz > 1.0 ? n + 1 : n;
-    keep[lo] = keep[hi] = true;
-    simplify(p, lo, hi, tol, keep);
+    memcpy(p, tr->p, sizeof *p * (size_t)n);
+    qsort(p, (size_t)n, sizeof *p, cmp_t);
+    fw_rec_point z = p[n - 1];
+    *appear = p[0].t;
+    /* gone before the end (a recorded track ends where its ship left the
+     * sight or the network; one there to the end goes on along its last leg) */
+    bool left = z.t < duration - 1.5;
+    *vanish = left ? z.t : INFINITY;
+    p[n] = z;
+    p[n].t = fmax(duration, z.t + 1.0);
+    double dz = (p[n].t - z.t) * z.speed;
+    p[n].east += dz * sin(z.course), p[n].north += dz * cos(z.course);
+    int hi = !left && dz > 1.0 ? n : n - 1;
+    keep[0] = keep[hi] = true;
+    simplify(p, 0, hi, tol, keep);
     *m = 0;
-    for (int k = lo; k <= hi; k++) /* the reader wants legs of 1 m at least */
+    for (int k = 0; k <= hi; k++) /* the reader wants legs of 1 m at least */
         if (keep[k] && (*m == 0 || hypot(p[k].east - p[*m - 1].east,
                                          p[k].north - p[*m - 1].north) >= 1.0))
             p[(*m)++] = p[k];
@@ -164,7 +177,7 @@ static fw_status own_ship(writer *w, const fw_scenario *s, fw_error *err)
     fprintf(w->f, "  \"ownShip\": {\n");
     fw_status st = initial(w, s->east, s->north, s->course, s->speed, err);
     if (!st && !(st = waypoints(w, p, 2, err)))
-        static_data(w, 1, s->ship.name, "cargo", s->ship.Loa, s->ship.B);
+        static_data(w, 1, s->ship.name, "cargo", s->ship.Loa, s->ship.B, false);
     fprintf(w->f, "  },\n");
     return st;
 }
@@ -177,14 +190,22 @@ static fw_status targets(writer *w, const fw_scenario *s, const fw_rec_track *tr
     for (int i = 0; i < n && !st; i++) {
         fw_rec_point *p = NULL;
         int m = 0;
-        if (!(st = track_points(&tracks[i], s->duration, tol, &p, &m, err))) {
+        double appear = 0.0, vanish = INFINITY;
+        if (!(st = track_points(&tracks[i], s->duration, tol, &p, &m, &appear, &vanish, err))) {
             fprintf(w->f, "%s\n    {\n", i ? "," : "");
             double c = atan2(p[1].east - p[0].east, p[1].north - p[0].north);
             double v = hypot(p[1].east - p[0].east, p[1].north - p[0].north) / (p[1].t - p[0].t);
             if (!(st = initial(w, p[0].east, p[0].north, c, v, err)) &&
                 !(st = waypoints(w, p, m, err)))
                 static_data(w, i + 2, tracks[i].info.id, tracks[i].info.type,
-                            tracks[i].info.length, tracks[i].info.breadth);
+                            tracks[i].info.length, tracks[i].info.breadth,
+                            appear > 0.0 || isfinite(vanish));
+            if (!st && (appear > 0.0 || isfinite(vanish))) {
+                fprintf(w->f, "      \"fairway\": {\"appearS\": %.3f", appear);
+                if (isfinite(vanish))
+                    fprintf(w->f, ", \"vanishS\": %.3f", vanish);
+                fprintf(w->f, "}\n");
+            }
             fprintf(w->f, "    }");
         }
         free(p);
@@ -213,6 +234,9 @@ fw_status fw_dnv_situation_write(const fw_scenario *s, const fw_rec_track *track
     fprintf(w.f, ",\n  \"description\": ");
     fw_json_string(w.f, s->description);
     fprintf(w.f, ",\n  \"startTime\": \"%s\",\n", when);
+    fprintf(w.f, "  \"fairway\": {\"durationS\": %.17g, \"domainM\": %.17g, "
+                 "\"foreAftRatio\": %.17g},\n",
+            s->duration, s->helm.domain.size, s->helm.domain.fore_aft_ratio);
     if (!(st = own_ship(&w, s, err)))
         st = targets(&w, s, tracks, n, tolerance, err);
     fprintf(w.f, "}\n");

@@ -14,15 +14,21 @@
  *                its length and breadth; waypoints: its track simplified
  *                (below), each leg's sog the leg's length over its time
  *   startTime    the scenario's (2000-01-01T00:00:00Z when it has none)
+ *   fairway      fairway's own member (the schema allows more; others ignore
+ *                it): durationS, domainM, foreAftRatio, so that fairway reads
+ *                the run back as it was (its other settings are its defaults)
  *
  * Tracks are simplified with the synchronised Douglas-Peucker rule: a point
  * is dropped only while the straight legs at constant speed between the
  * waypoints kept put the ship within `tolerance` metres of every recorded
  * point at the point's time; so the waypoints keep both path and timing.  A
- * track that begins after t = 0 (a ship that came into sight) is extended
- * back to t = 0 along its first course at its first speed: a situation has
- * no time at which a ship appears.  Each track ends at the scenario's
- * duration (the reader extends the last leg beyond it).
+ * situation has no time at which a ship appears or leaves: a track that
+ * begins after t = 0 (a ship that came into sight or onto the network) or
+ * ends before the run's end (one that left) gets fairway's own member
+ * `"fairway": {"appearS": T0, "vanishS": T1}` (the schema allows more
+ * members; scenario/scn_dnv.h reads it; other test benches will have the ship
+ * there all the time); a track there to the end goes on along its last leg
+ * to the scenario's duration (the reader extends it beyond).
  *
  * Positions: a scenario with an origin is written in its plane's latitude
  * and longitude; one without (a network's plane) is placed with its (0, 0)
@@ -30,6 +36,8 @@
  */
 #ifndef FW_RUN_DNV_SITUATION_H
 #define FW_RUN_DNV_SITUATION_H
+
+#include <stdio.h>
 
 #include "core/error.h"
 #include "scenario/scenario.h"
@@ -42,6 +50,13 @@
  * order, times from 0) to path (whole or not at all). */
 fw_status fw_dnv_situation_write(const fw_scenario *s, const fw_rec_track *tracks, int n,
                                  double tolerance, const char *path, fw_error *err);
+
+/* "position": {"lat": .., "lon": ..} of plane point (e, n) with digits
+ * decimals; *gamma (may be NULL): the meridian convergence there (rad, grid
+ * north minus true north).  Shared with run/dnv_out.h. */
+typedef struct fw_geo fw_geo;
+fw_status fw_dnv_position(FILE *f, const fw_geo *g, double e, double n, int digits,
+                          double *gamma, fw_error *err);
 
 /* The same of a scenario with explicit targets (constant velocity over its
  * duration: the Imazu and paper cases). */

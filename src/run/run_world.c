@@ -164,8 +164,9 @@ static bool push_point(fw_rec_track *tr, double t, double e, double n, double c,
 }
 
 /* Targets following waypoints (scenario.h fw_scn_route, a DNV situation):
- * each a track through its waypoints, straight at each leg's speed, and on
- * along its last leg past the run's end; the recorded-track source replays
+ * each a track through its waypoints from its appearance, straight at each
+ * leg's speed, and on along its last leg past the run's end unless it
+ * vanishes there; the recorded-track source replays
  * them (no gaps: max_gap infinite). */
 static fw_status waypoint_source(const fw_scenario *s, const fw_replay_def *td, fw_source **src,
                                  fw_error *err)
@@ -177,7 +178,7 @@ static fw_status waypoint_source(const fw_scenario *s, const fw_replay_def *td, 
     for (int i = 0; i < s->n_targets && ok; i++) {
         const fw_scn_route *r = &s->target_routes[i];
         tr[i].info = s->targets[i];
-        double t = 0.0, c = 0.0, v = 0.0;
+        double t = r->appear, c = 0.0, v = 0.0;
         for (int k = 0; k + 1 < r->n && ok; k++) {
             const fw_scn_waypoint *a = &r->wp[k], *b = &r->wp[k + 1];
             double de = b->east - a->east, dn = b->north - a->north;
@@ -188,6 +189,8 @@ static fw_status waypoint_source(const fw_scenario *s, const fw_replay_def *td, 
         }
         const fw_scn_waypoint *z = &r->wp[r->n - 1];
         double after = fmax(s->duration + 2.0 * s->step - t, 0.0) * v;
+        if (isfinite(r->vanish))
+            after = 0.0;
         ok = ok && push_point(&tr[i], t, z->east, z->north, c, v) &&
              (after <= 0.0 || push_point(&tr[i], t + after / v, z->east + after * sin(c),
                                          z->north + after * cos(c), c, v));

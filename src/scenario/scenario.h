@@ -29,9 +29,9 @@
 #include "survey/survey.h"
 #include "world/reactions.h"
 
-#define FW_SCN_MAX_TARGETS 32
+#define FW_SCN_MAX_TARGETS 64
 /* Waypoints of a target that follows them (a DNV traffic situation: scn_dnv.h) */
-#define FW_SCN_MAX_WAYPOINTS 32
+#define FW_SCN_MAX_WAYPOINTS 256
 
 /* A target's way: it is at wp[0] at t = 0 and goes from each waypoint to the
  * next at the leg's speed (wp[i].speed, m/s, the leg from i-1 to i; wp[0]'s
@@ -43,6 +43,9 @@ typedef struct fw_scn_waypoint {
 
 typedef struct fw_scn_route {
     int n; /* 0: the target moves at constant velocity (targets[i]) */
+    /* s: it is at wp[0] at `appear` (0: from the start) and, when `vanish`
+     * is finite, gone after its last waypoint (reached then) */
+    double appear, vanish;
     fw_scn_waypoint wp[FW_SCN_MAX_WAYPOINTS];
 } fw_scn_route;
 

@@ -215,6 +215,21 @@ static fw_status read_static(const fw_jnode *ship, dnv_ship *d, fw_error *err)
     return FW_OK;
 }
 
+/* fairway's own members of a target (written by run/dnv_situation.h; the
+ * schema allows more): fairway.appearS, fairway.vanishS, s. */
+static fw_status read_fairway(const fw_jnode *ship, fw_scn_route *r, fw_error *err)
+{
+    fw_jnode f;
+    r->appear = 0.0;
+    r->vanish = INFINITY;
+    fw_status st = fw_jmember(ship, "fairway", false, &f, err);
+    if (st || fw_jnode_type(&f) == FW_J_ABSENT || (st = fw_jobject(&f, err)) ||
+        (st = fw_jmember_number(&f, "appearS", false, 0, 86400, &r->appear, NULL, err)) ||
+        (st = fw_jmember_number(&f, "vanishS", false, r->appear, 86400, &r->vanish, NULL, err)))
+        return st;
+    return FW_OK;
+}
+
 /* One ship: start, course and speed towards waypoint 1, waypoints, static. */
 static fw_status read_ship(const fw_jnode *ship, const fw_geo *g, dnv_ship *d, fw_error *err)
 {
@@ -228,7 +243,8 @@ static fw_status read_ship(const fw_jnode *ship, const fw_geo *g, dnv_ship *d, f
         (st = to_plane(g, &pos, lat, lon, &d->r.wp[0].east, &d->r.wp[0].north, err)))
         return st;
     d->r.n = 1;
-    if ((st = read_waypoints(ship, g, sog, d, err)) || (st = read_static(ship, d, err)))
+    if ((st = read_waypoints(ship, g, sog, d, err)) || (st = read_static(ship, d, err)) ||
+        (st = read_fairway(ship, &d->r, err)))
         return st;
     const fw_scn_waypoint *a = &d->r.wp[0], *b = &d->r.wp[1];
     double c = atan2(b->east - a->east, b->north - a->north);
@@ -241,10 +257,10 @@ static fw_status read_ship(const fw_jnode *ship, const fw_geo *g, dnv_ship *d, f
     return FW_OK;
 }
 
-/* s: seconds along a route at its legs' speeds. */
+/* s: when the ship reaches its last waypoint at its legs' speeds. */
 static double route_time(const fw_scn_route *r)
 {
-    double t = 0.0;
+    double t = r->appear;
     for (int k = 1; k < r->n; k++)
         t += hypot(r->wp[k].east - r->wp[k - 1].east, r->wp[k].north - r->wp[k - 1].north) /
              r->wp[k].speed;
@@ -394,6 +410,22 @@ static fw_status read_start(const fw_jnode *root, fw_scenario *s, fw_error *err)
     return FW_OK;
 }
 
+/* fairway's own top-level member (written by run/dnv_situation.h): the
+ * run's duration and the domain the situation was run with. */
+static fw_status read_settings(const fw_jnode *root, fw_scenario *s, fw_error *err)
+{
+    fw_jnode f;
+    fw_status st = fw_jmember(root, "fairway", false, &f, err);
+    if (st || fw_jnode_type(&f) == FW_J_ABSENT || (st = fw_jobject(&f, err)) ||
+        (st = fw_jmember_number(&f, "durationS", false, 1, 86400, &s->duration, NULL, err)) ||
+        (st = fw_jmember_number(&f, "domainM", false, 10, 5000, &s->helm.domain.size, NULL,
+                                err)) ||
+        (st = fw_jmember_number(&f, "foreAftRatio", false, 0.2, 10,
+                                &s->helm.domain.fore_aft_ratio, NULL, err)))
+        return st;
+    return FW_OK;
+}
+
 static fw_status read_doc(const fw_jdoc *doc, const char *ship, fw_scenario *s, fw_error *err)
 {
     fw_jnode root = fw_jdoc_root(doc), own, pos;
@@ -421,6 +453,8 @@ static fw_status read_doc(const fw_jdoc *doc, const char *ship, fw_scenario *s, 
         s->duration = ceil((s->route.n > 1 ? route_time(&d.r) : s->leg / s->speed) - 1e-3);
         st = read_targets(&root, g, s, &d, err);
     }
+    if (!st)
+        st = read_settings(&root, s, err);
     fw_geo_destroy(g);
     return st;
 }

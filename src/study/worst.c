@@ -11,8 +11,10 @@
 #include <sys/stat.h>
 
 #include "core/files.h"
+#include "run/dnv_situation.h"
 #include "run/encounter_record.h"
 #include "run/run.h"
+#include "scenario/scn_dnv.h"
 #include "study/db_check.h"
 #include "study/study.h"
 #include "yaml/yaml_tree.h"
@@ -336,6 +338,29 @@ static fw_status sail(const fw_scenario *scn, const char *dir, const char *targe
     return st;
 }
 
+/* The case as a DNV situation (worst.h), read back and sailed. */
+static fw_status export_situation(const fw_worst_def *def, fw_worst_case *c, const char *tracks,
+                                  fw_scenario *scn, fw_error *err)
+{
+    char json[1200], run[1200], ship[1024], id[16] = "";
+    fw_rec_track *tr = NULL;
+    int n = 0;
+    fw_status st;
+    if ((st = fw_path(json, sizeof json, err, "%s/situation.json", c->dir)) ||
+        (st = fw_path(run, sizeof run, err, "%s/situation", c->dir)) ||
+        (st = fw_path_copy(ship, sizeof ship, scn->ship.file, err)) ||
+        (st = fw_rec_tracks_load(tracks, &tr, &n, err)))
+        return st;
+    for (int i = 0; i < n; i++) /* the situation's ids: 2, 3, ... in track order */
+        if (strcmp(tr[i].info.id, c->target) == 0)
+            snprintf(id, sizeof id, "%d", i + 2);
+    st = fw_dnv_situation_write(scn, tr, n, FW_DNV_TOLERANCE_M, json, err);
+    fw_rec_tracks_free(tr, n);
+    if (st || (st = fw_scn_dnv_load(json, ship, scn, err)))
+        return st;
+    return sail(scn, run, id, def->mode, &c->situation_min, err);
+}
+
 static fw_status export_case(const fw_worst_def *def, const fw_study *s, fw_worst_case *c,
                              int k, fw_scenario *scn, fw_error *err)
 {
@@ -358,9 +383,11 @@ static fw_status export_case(const fw_worst_def *def, const fw_study *s, fw_wors
         return st;
     /* SUMO's files and the full histories: large, and made again at will */
     fw_remove_tree(run_dir);
-    if ((st = fw_scenario_load(yaml, scn, err)))
+    if ((st = fw_scenario_load(yaml, scn, err)) ||
+        (st = sail(scn, replay, c->target, def->mode, &c->replay_min, err)))
         return st;
-    return sail(scn, replay, c->target, def->mode, &c->replay_min, err);
+    c->situation_min = NAN;
+    return def->situations ? export_situation(def, c, tracks, scn, err) : FW_OK;
 }
 
 fw_status fw_worst_study(const fw_worst_def *def, const char *study_file, const char *digest,

@@ -15,6 +15,12 @@
  * closest approach to the same target, beside the database's and the re-run's.
  * A replay differs from the original only where the rounding of the recorded
  * positions (cm) and speeds moves a decision of the own ship.
+ *
+ * With situations, each case is also written as DIR/case-K/situation.json,
+ * a DNV traffic situation of the replay's own ship and the tracks simplified
+ * to FW_DNV_TOLERANCE_M (run/dnv_situation.h), read back
+ * (scenario/scn_dnv.h, the study's own-ship model) and sailed into
+ * DIR/case-K/situation: its closest approach to the same ship beside the rest.
  */
 #ifndef FW_STUDY_WORST_H
 #define FW_STUDY_WORST_H
@@ -29,6 +35,9 @@ typedef struct fw_worst_def {
     const char *study;  /* NULL: the study file named in its meta */
     const char *out;    /* directory to write the cases into (created) */
     int n;              /* cases, 1 by default */
+    /* also DIR/case-K/situation.json, the case as a DNV traffic situation
+     * (run/dnv_situation.h), read back and sailed into DIR/case-K/situation */
+    bool situations;
     fw_traffic_mode mode;
 } fw_worst_def;
 
@@ -41,6 +50,7 @@ typedef struct fw_worst_case {
     double db_hull;     /* m, hull to hull (NAN if not recorded) */
     double rerun_min;   /* m, the run sailed again */
     double replay_min;  /* m, the exported scenario */
+    double situation_min; /* m, the situation read back (NAN: not written) */
     char dir[1100];
 } fw_worst_case;
 

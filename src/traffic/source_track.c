@@ -332,6 +332,19 @@ fw_status fw_track_source_create(fw_rec_track *tracks, int n, const fw_replay_de
     return FW_OK;
 }
 
+fw_status fw_rec_tracks_load(const char *file, fw_rec_track **tracks, int *n, fw_error *err)
+{
+    trk_list k = {0};
+    fw_status st = load(&k, file, err);
+    if (st) {
+        fw_rec_tracks_free(k.v, k.n);
+        k.v = NULL, k.n = 0;
+    }
+    *tracks = k.v;
+    *n = k.n;
+    return st;
+}
+
 fw_status fw_replay_source_create(const fw_replay_def *def, fw_source **out, fw_error *err)
 {
     *out = NULL;

@@ -50,6 +50,10 @@ typedef struct fw_replay_def {
 
 fw_replay_def fw_default_replay_def(void);
 
+/* The tracks of a track file (the CSV above) into *tracks (malloc'd, n of
+ * them, points in file order; fw_rec_tracks_free): FW_EINPUT as below. */
+fw_status fw_rec_tracks_load(const char *file, fw_rec_track **tracks, int *n, fw_error *err);
+
 /* FW_EINPUT naming FILE:LINE for a row that cannot be read (a missing
  * column, a number that is not one, a time twice for one ship). */
 fw_status fw_replay_source_create(const fw_replay_def *def, fw_source **out, fw_error *err);

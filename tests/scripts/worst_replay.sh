@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # fairway worst: a study's closest encounter sailed again with every target
 # recorded, exported as tracks.csv + scenario.yaml, and replayed without SUMO
-# to its closest approach within 10 m (exit 0); `fairway run` replays it too;
+# to its closest approach within 10 m (exit 0); `fairway run` replays it too; with --situations
+# each case is also a DNV situation that validates and reads back to the replay's run;
 # a changed study is refused.
 set -u
 fail() { echo "FAIL: $*"; exit 1; }
@@ -10,7 +11,7 @@ trap 'rm -rf "$dir"' EXIT
 study=$FAIRWAY_DATA/tests/data/study/worst.yaml
 "$FAIRWAY" sweep "$study" --db "$dir/s.db" --progress none || fail "sweep"
 # stdout only: the table (a sanitizer build reports on stderr)
-out=$("$FAIRWAY" worst "$dir/s.db" --out "$dir/w" --n 2 --study "$study" 2>"$dir/err") ||
+out=$("$FAIRWAY" worst "$dir/s.db" --out "$dir/w" --n 2 --study "$study" --situations 2>"$dir/err") ||
   fail "worst exit $?: $out $(cat "$dir/err")"
 echo "$out"
 [ -s "$dir/w/case-1/tracks.csv" ] && [ -s "$dir/w/case-1/scenario.yaml" ] || fail "case files"
@@ -24,6 +25,29 @@ for r in rows:
     db, rerun, replay = float(r[3]), float(r[5]), float(r[6])
     assert abs(rerun - db) < 0.01, r      # the same run, sailed again
     assert abs(replay - db) <= 10.0, r    # replayed from the recorded tracks
+PY
+# --situations: each case as a DNV traffic situation (src/run/dnv_situation.h) that validates
+# against DNV's schema and, read back, sails the replay's run: the own ship within 1 m of the
+# replay's at every instant, the closest approach within 1 m
+"$PYTHON" - "$out" "$dir/w" "$FAIRWAY_DATA/scenarios/dnv/traffic_situation.schema.json" <<'PY' || fail "situations"
+import csv, json, sys
+import jsonschema
+rows = [l.split(",") for l in sys.argv[1].splitlines()[1:]]
+v = jsonschema.Draft202012Validator(json.load(open(sys.argv[3])))
+for r in rows:
+    c = r[7]
+    errors = [e.message for e in v.iter_errors(json.load(open(c + "/situation.json")))]
+    a = list(csv.DictReader(open(c + "/replay/own.csv")))
+    b = {x["t_s"]: x for x in csv.DictReader(open(c + "/situation/own.csv"))}
+    oe = float(a[0]["east_m"]) - float(b["0.0"]["east_m"])
+    on = float(a[0]["north_m"]) - float(b["0.0"]["north_m"])
+    dev = max(((float(x["east_m"]) - float(b[x["t_s"]]["east_m"]) - oe) ** 2 +
+               (float(x["north_m"]) - float(b[x["t_s"]]["north_m"]) - on) ** 2) ** 0.5
+              for x in a if x["t_s"] in b)
+    print(f"case {r[0]}: situation valid {not errors}, own ship within {dev:.3f} m of the replay "
+          f"at {len(b)} instants, closest approach {r[8]} m against {r[6]} m")
+    assert not errors and len(b) == len(a) and dev < 1.0, (errors[:3], dev)
+    assert abs(float(r[8]) - float(r[6])) < 1.0, r
 PY
 # the exported scenario is an ordinary one
 "$FAIRWAY" run "$dir/w/case-1/scenario.yaml" --out "$dir/runs" > "$dir/run.txt" 2>&1 || fail "fairway run: $(cat "$dir/run.txt")"
