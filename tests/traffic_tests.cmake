@@ -75,3 +75,7 @@ set_tests_properties(fill_pairs PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
 # Background ships that alter course (traffic.give_way: course) in SUMO's Dover traffic.
 fw_script_test(give_way_course 0 "background ships alter course and come back" give_way_course.sh)
 set_tests_properties(give_way_course PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
+
+# In a wind the own ship keeps its planned line (its one leg steered as a route).
+fw_script_test(wind_track 0 "the own ship keeps its line in a wind" wind_track.sh)
+set_tests_properties(wind_track PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)

@@ -243,6 +243,12 @@ fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     pd.policy.route = s->route.n > 0 ? s->route
                                      : fw_route_line(s->east, s->north, s->course, s->speed,
                                                      fmax(s->leg, s->speed * s->duration));
+    /* in a wind, a ship with its rudder amidships turns into it (the wind's
+     * yaw moment: 32 deg in 10 minutes for the C-3 in a 30 kn beam wind), so
+     * its one leg is steered as a route is (route.h); in calm air, with or
+     * without a current, the rudder stays amidships as before */
+    if (s->route.n == 0 && !fw_wind_is_calm(&s->env.wind))
+        pd.policy.route.steered = true;
     if (!ctl && (st = fw_policy_controller_create(&pd, &ctl, err)))
         return st;
     fw_vessel_def vd = fw_default_vessel_def();
