@@ -8,6 +8,7 @@
 
 #include "core/json_read.h"
 #include "core/units.h"
+#include "scenario/scn_env.h"
 #include "geom/geo.h"
 #include "geom/geom.h"
 #include "avoid/route.h"
@@ -426,6 +427,53 @@ static fw_status read_settings(const fw_jnode *root, fw_scenario *s, fw_error *e
     return FW_OK;
 }
 
+/* $.environment: a uniform wind (windSpeed m/s, windDirection deg, the way
+ * it blows from), a uniform current (currentSpeed m/s, currentDirection
+ * deg, the way it sets) and the visibility (NM), as fairway's own
+ * environment: takes them (scenario/scn_env.h; the same bounds: 100 kn of
+ * wind, 10 kn of current, visibility more than 0 and at most 100 nm).  A
+ * speed without its direction is refused.  Waves (waveSpectrum,
+ * significantWaveHeight, wavePeriod, waveDirection) and `conditions` are
+ * read past: fairway has no wave forces (run.log says so when a wave
+ * height is given). */
+static fw_status read_environment(const fw_jnode *root, fw_scenario *s, fw_error *err)
+{
+    fw_jnode e;
+    double ws = 0.0, wd = 0.0, cs = 0.0, cd = 0.0, vis = 0.0, hs = 0.0;
+    bool has_ws = false, has_wd = false, has_cs = false, has_cd = false, has_vis = false;
+    fw_status st = fw_jmember(root, "environment", false, &e, err);
+    if (st || fw_jnode_type(&e) == FW_J_ABSENT)
+        return st;
+    if ((st = fw_jobject(&e, err)) ||
+        (st = fw_jmember_number(&e, "windSpeed", false, 0.0, fw_kn_to_ms(100.0), &ws, &has_ws,
+                                err)) ||
+        (st = fw_jmember_number(&e, "windDirection", false, 0.0, 360.0, &wd, &has_wd, err)) ||
+        (st = fw_jmember_number(&e, "currentSpeed", false, 0.0, fw_kn_to_ms(10.0), &cs, &has_cs,
+                                err)) ||
+        (st = fw_jmember_number(&e, "currentDirection", false, 0.0, 360.0, &cd, &has_cd, err)) ||
+        (st = fw_jmember_number(&e, "visibility", false, 1e-9, 100.0, &vis, &has_vis, err)) ||
+        (st = fw_jmember_number(&e, "significantWaveHeight", false, 0.0, 30.0, &hs, NULL, err)))
+        return st;
+    if (has_ws != has_wd || has_cs != has_cd)
+        return fw_jfail(&e, err, "a %s speed needs its direction, and a direction its speed",
+                        has_ws != has_wd ? "wind" : "current");
+    if (has_ws && ws > 0.0)
+        s->env.wind = (fw_wind){.kind = FW_FIELD_UNIFORM, .speed = ws, .from = fw_deg_to_rad(wd)};
+    if (has_cs && cs > 0.0)
+        s->env.current = fw_current_uniform(cs, fw_deg_to_rad(cd));
+    if (has_vis)
+        fw_scn_set_visibility(s, fw_nm_to_m(vis));
+    size_t k = strlen(s->note);
+    if (hs > 0.0 && k + 1 < sizeof s->note) /* said in run.log with the rest of the note */
+        snprintf(s->note + k, sizeof s->note - k,
+                 "%sthe situation's waves (%.1f m) are not modelled (no wave forces)",
+                 k ? "; " : "", hs);
+    fw_error e2 = {0};
+    if (fw_env_check_vessel(&s->env, "own ship", &s->ship, !s->nomoto_plant, &e2))
+        return fw_jfail(&e, err, "%s", e2.msg);
+    return FW_OK;
+}
+
 static fw_status read_doc(const fw_jdoc *doc, const char *ship, fw_scenario *s, fw_error *err)
 {
     fw_jnode root = fw_jdoc_root(doc), own, pos;
@@ -455,6 +503,8 @@ static fw_status read_doc(const fw_jdoc *doc, const char *ship, fw_scenario *s, 
     }
     if (!st)
         st = read_settings(&root, s, err);
+    if (!st)
+        st = read_environment(&root, s, err);
     fw_geo_destroy(g);
     return st;
 }

@@ -16,8 +16,13 @@
  *       ship starts at initial.position (else waypoint 0) and goes to
  *       waypoint 1 at initial.sog (else waypoint 1's leg speed)
  *     static {id (required), name, mmsi, shipType, dimensions {length, width, ...}}
- *   Other members (environment, turnRadius, cross-track limits ...) are
- *   allowed by the schema and not used.
+ *   environment {windSpeed m/s, windDirection deg (from), currentSpeed m/s,
+ *     currentDirection deg (towards), visibility NM}: a uniform wind and
+ *     current and the visibility, as scenario/scn_env.h's environment: (a
+ *     speed needs its direction; waves and conditions are read past: no wave
+ *     forces, said in run.log when a wave height is given)
+ *   Other members (turnRadius, cross-track limits ...) are allowed by the
+ *   schema and not used.
  *
  * The plane: a transverse Mercator about the own ship's start (geom/geo.h;
  * latitudes beyond +-80 deg refused); true courses become grid courses there.

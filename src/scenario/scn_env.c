@@ -166,10 +166,15 @@ static fw_status load_visibility(const yt_doc *doc, const yt_node *e, fw_scenari
         return fw_fail_at(err, doc->file, yt_key_line(e, "visibility_nm"),
                           "environment.visibility_nm", "%g: a visibility is more than 0 and "
                           "at most 100 nm (leave it out for clear weather)", nm);
-    s->visibility = fw_nm_to_m(nm);
-    s->helm.colregs.visibility = s->visibility;
-    s->reactions.colregs.visibility = s->visibility;
+    fw_scn_set_visibility(s, fw_nm_to_m(nm));
     return FW_OK;
+}
+
+void fw_scn_set_visibility(fw_scenario *s, double m)
+{
+    s->visibility = m;
+    s->helm.colregs.visibility = m;
+    s->reactions.colregs.visibility = m;
 }
 
 fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err)

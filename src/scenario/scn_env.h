@@ -40,6 +40,11 @@
 #include "scenario/scenario.h"
 #include "yaml/yaml_tree.h"
 
+/* A visibility of m metres (> 0) into s and the rules' colregs definitions
+ * (the own ship's and the background ships'): what visibility_nm sets; for
+ * other readers of an environment (scn_dnv.c). */
+void fw_scn_set_visibility(fw_scenario *s, double m);
+
 /* sensing: of root into s->sensing (sense/sensing.h; perfect without it):
  *   sensing: {mode: ais, position_sd_m: 10, sog_sd_kn: 0.1, cog_sd_deg: 1,
  *             heading_sd_deg: 0.5, dropout: 0.1, latency_s: 1, stale_s: 360}

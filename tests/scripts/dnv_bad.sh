@@ -22,6 +22,9 @@ case("no_targets", lambda s: s.pop("targetShips"))
 case("one_waypoint", lambda s: s["ownShip"]["waypoints"].pop())
 case("own_too_fast", lambda s: s["ownShip"]["waypoints"][1]["leg"].update(sog=45))
 case("id_text", lambda s: s["targetShips"][0]["static"].update(id="two"))
+case("wind_no_dir", lambda s: s.update(environment={"windSpeed": 10}))
+case("wind_negative", lambda s: s.update(environment={"windSpeed": -1, "windDirection": 90}))
+case("visibility_0", lambda s: s.update(environment={"visibility": 0}))
 open(f"{d}/invalid.json", "w").write('{"schemaVersion": "0.2.0", "ownShip": {\n  "static": }\n')
 with open(f"{d}/nested.json", "w") as f:  # 50 MB of nested arrays
     f.write("[" * (25 << 20) + "]" * (25 << 20))
@@ -47,6 +50,9 @@ check no_targets '\$: no targetShips'
 check one_waypoint '\$\.ownShip\.waypoints: 1 elements, at least 2 needed'
 check own_too_fast '\$\.ownShip: 45 kn is beyond c3-mmg'
 check id_text '\$\.targetShips\[0\]\.static\.id: '
+check wind_no_dir '\$\.environment: a wind speed needs its direction'
+check wind_negative '\$\.environment\.windSpeed: -1 is not in'
+check visibility_0 '\$\.environment\.visibility: 0 is not in'
 check invalid '\$: invalid JSON'
 check nested '\$: more than 8388608 bytes'
 check deep '\$: invalid JSON'
