@@ -80,6 +80,13 @@ target_link_libraries(test_vessels PRIVATE fairway_run)
 set_tests_properties(test_vessels PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 
+# The reacting background ships decide on what their sensing tells them
+# (world/reactions.h "Sensing"): AIS reports (delayed, noisy), radar tracks
+fw_test(test_react_sense test_react_sense.c)
+target_link_libraries(test_react_sense PRIVATE fairway_run)
+set_tests_properties(test_react_sense PROPERTIES TIMEOUT 60
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
 # Snapshot and restore of a running run (src/run/branch.h): a run of each
 # source kind branched at three steps ends byte-identical to the unbranched one
 fw_test(test_branch test_branch.c)

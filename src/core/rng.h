@@ -66,6 +66,9 @@ typedef enum {
     FW_PURPOSE_SPLIT = 7,       /* splitting's own draws: parents, particles' streams (study/ams.h) */
     FW_PURPOSE_RADAR = 8,       /* radar plots' range and bearing noise (sense/arpa.h) */
     FW_PURPOSE_RADAR_DETECT = 9, /* whether a scan detects a ship (sense/arpa.h) */
+    FW_PURPOSE_AIS_TX = 10,     /* a ship's AIS reports as the reacting traffic hears them
+                                   (world/reactions.h): noise and phase */
+    FW_PURPOSE_AIS_TX_LOSS = 11, /* ... and those lost */
     FW_PURPOSE_TEST = 255       /* tests and benchmarks only */
 } fw_purpose;
 
@@ -86,6 +89,17 @@ typedef struct {
  * folded to 32 bits (never 0, which is the own ship's).  The same in every
  * run of a replication, so the common random numbers hold (above). */
 uint32_t fw_rng_vessel_key(const char *id);
+
+/* The key of the link from a receiver (its vessel key; 0: the own ship,
+ * whose links keep the target's own key) to a target: a mix of the two. */
+static inline uint32_t fw_rng_link_key(uint32_t receiver, uint32_t target)
+{
+    if (receiver == 0)
+        return target;
+    uint64_t z = ((uint64_t)receiver << 32) | target;
+    uint32_t k = (uint32_t)(fw_splitmix64(&z) >> 32);
+    return k ? k : 1u;
+}
 
 /* Where an element of the world takes its streams: the world's table
  * (world.h fw_world_rng), handed down as a function and its context so the

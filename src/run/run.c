@@ -166,6 +166,18 @@ static void record_mode(fw_run *R, double t, const fw_decision *d, fw_run_summar
     R->mode_prev = d->mode;
 }
 
+/* How the acting ship knew the other, for run.log: "" on the truth (perfect
+ * sensing), else how and how far from where it was (world/reactions.h). */
+static const char *known_note(const fw_reaction *r, char *buf, size_t n)
+{
+    static const char *const how[] = {"", "", "its AIS", "sight", "its radar"};
+    buf[0] = '\0';
+    if (r->known_how >= FW_KNOWN_AIS && r->known_how <= FW_KNOWN_RADAR)
+        snprintf(buf, n, " [%s known by %s, %.0f m from where it was]", r->other,
+                 how[r->known_how], hypot(r->known_e - r->true_e, r->known_n - r->true_n));
+    return buf;
+}
+
 /* A background ship's course alteration or its return to its lane: run.log
  * and the summary. */
 static void record_course(fw_run *R, const fw_reaction *r, fw_run_summary *sum)
@@ -186,10 +198,12 @@ static void record_course(fw_run *R, const fw_reaction *r, fw_run_summary *sum)
          r->t, r->ship, r->other, fw_situation_name(r->situation), fabs(alt),
          alt < 0.0 ? "port" : "starboard",
          fw_rad_to_deg(fw_wrap_2pi(r->course_from)), fw_rad_to_deg(r->course_to));
+    char kn[128];
     if (isnan(r->dcpa_before)) /* a steered ship's further alteration (world/steer.h) */
         note(R, " (steering itself)\n");
     else
-        note(R, ", CPA %.0f -> %.0f m\n", r->dcpa_before, r->dcpa_after);
+        note(R, ", CPA %.0f -> %.0f m%s\n", r->dcpa_before, r->dcpa_after,
+             known_note(r, kn, sizeof kn));
 }
 
 /* The background ships' new orders: run.log and the summary. */
@@ -216,10 +230,12 @@ static void record_reactions(fw_run *R, fw_run_summary *sum)
                 r->other, fw_situation_name(r->situation),
                 r->speed_to > r->speed_from ? "speeds up" : "slows", fw_ms_to_kn(r->speed_from),
                 fw_ms_to_kn(r->speed_to), r->dcpa_before);
+        char kn[128];
         if (r->enough)
-            note(R, " -> %.0f m\n", r->dcpa_after);
+            note(R, " -> %.0f m%s\n", r->dcpa_after, known_note(r, kn, sizeof kn));
         else
-            note(R, ": no speed keeps the passing distance, the one that passes farthest\n");
+            note(R, ": no speed keeps the passing distance, the one that passes farthest%s\n",
+                 known_note(r, kn, sizeof kn));
     }
 }
 

@@ -232,6 +232,8 @@ fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
     wd.seed = s->seed; /* the replication's: fairway's random streams (core/rng.h) */
     wd.env = s->env;   /* the scenario's current and wind (calm by default) */
     wd.own_sensing = s->sensing; /* what the own ship knows of the others */
+    if (s->sensing_background) /* and the reacting traffic (world/reactions.h) */
+        wd.reactions.sensing = s->sensing;
     wd.own_watch = s->own_watch; /* and how soon it notices them */
     if (st || (st = fw_world_create(&wd, w, err))) {
         fw_controller_destroy(ctl);

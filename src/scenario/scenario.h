@@ -114,8 +114,11 @@ typedef struct fw_scenario {
     /* environment.visibility_nm: m, restricted visibility, 0 = clear (scn_env.h);
      * also in helm.colregs and reactions.colregs, where the rules read it */
     double visibility;
-    /* sensing: what the own ship knows of the others (sense/sensing.h) */
+    /* sensing: what the own ship knows of the others (sense/sensing.h), and
+     * (sensing_background, sensing.background: true by default) the
+     * reacting background ships too (world/reactions.h) */
     fw_sensing_def sensing;
+    bool sensing_background;
     /* traffic.watch.own_ship: the own ship's watch (world/watch.h): flawless
      * (perfect, an autonomous system) by default; human: the background
      * ships' watch (scn_env.h) */

@@ -230,10 +230,11 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
                                        "cog_sd_deg",     "heading_sd_deg", "dropout",
                                        "latency_s",      "stale_s",        "range_sd_m",
                                        "bearing_sd_deg", "scan_s",         "alpha",
-                                       "antenna_height_m", NULL};
+                                       "antenna_height_m", "background", NULL};
     const char *P = "sensing";
     fw_sensing_def *d = &s->sensing;
     *d = fw_default_sensing_def();
+    s->sensing_background = true;
     const yt_node *m = NULL;
     fw_status st;
     if ((st = yt_opt_map(doc, root, "", "sensing", &m, err)) || !m)
@@ -254,7 +255,8 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
         (st = yt_opt_number(doc, m, P, "dropout", 0.0, 1.0, &d->dropout, err)) ||
         (st = yt_opt_number(doc, m, P, "latency_s", 0.0, 2.0, &d->latency, err)) ||
         (st = yt_opt_number(doc, m, P, "stale_s", 1.0, 86400.0, &d->stale, err)) ||
-        (st = load_radar(doc, m, &d->radar, err)))
+        (st = load_radar(doc, m, &d->radar, err)) ||
+        (st = yt_opt_bool(doc, m, P, "background", &s->sensing_background, err)))
         return st;
     d->sog_sd = fw_kn_to_ms(sog);
     d->cog_sd = fw_deg_to_rad(cog);

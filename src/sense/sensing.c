@@ -80,25 +80,10 @@ double fw_ais_interval(double speed, bool turning)
     return 2.0;
 }
 
-/* A report: where the ship was, as its AIS said, when it was sent. */
-typedef struct report {
-    double t, east, north, sog, cog, heading;
-} report;
-
 /* What the sensor keeps of one ship. */
-/* Reports on their way at once: the latency is at most 2 s, the shortest
- * interval 2 s (and a first phase may be shorter). */
-enum { kInFlight = 4 };
-
 typedef struct link {
     bool streams;        /* its streams taken */
-    bool started, known;
-    double t_next;       /* s, its next report */
-    double t_prev, course_prev; /* its course over ground when last seen */
-    report last;         /* the last that arrived */
-    report queued[kInFlight]; /* on their way, oldest first */
-    int n_queued;
-    fw_rng *noise, *loss;
+    fw_ais_tx ais;       /* its AIS reports (sensing.h) */
     /* radar */
     fw_ab_track trk;     /* plots 0: no track */
     double t_track;      /* s, its first plot */
@@ -116,6 +101,7 @@ struct fw_sensor {
     long next_scan;      /* the next scan's number: at next_scan x radar.scan */
     fw_rng_getter rng;
     void *ctx;
+    uint32_t salt;       /* the receiver's key (0: the own ship's, fw_sensor_set_salt) */
     fw_idmap ids;
     link *links;
     int cap;
@@ -170,9 +156,9 @@ static link *link_of(fw_sensor *s, const fw_target *a)
     }
     link *l = &s->links[k];
     if (!l->streams) {
-        uint32_t key = fw_rng_vessel_key(a->id);
-        if (s->ais && (!(l->noise = s->rng(s->ctx, key, FW_PURPOSE_SENSING)) ||
-                       !(l->loss = s->rng(s->ctx, key, FW_PURPOSE_AIS_DROPOUT))))
+        uint32_t key = fw_rng_link_key(s->salt, fw_rng_vessel_key(a->id));
+        if (s->ais && (!(l->ais.noise = s->rng(s->ctx, key, FW_PURPOSE_SENSING)) ||
+                       !(l->ais.loss = s->rng(s->ctx, key, FW_PURPOSE_AIS_DROPOUT))))
             return NULL;
         if (s->radar && (!(l->rnoise = s->rng(s->ctx, key, FW_PURPOSE_RADAR)) ||
                          !(l->rdetect = s->rng(s->ctx, key, FW_PURPOSE_RADAR_DETECT))))
@@ -183,21 +169,21 @@ static link *link_of(fw_sensor *s, const fw_target *a)
 }
 
 /* The report ship a sends at t: its state with its GNSS and sensors' noise. */
-static report make_report(const fw_sensing_def *d, link *l, const fw_target *a, double t)
+static fw_ais_sent make_report(const fw_sensing_def *d, fw_rng *noise, const fw_target *a,
+                                 double t)
 {
-    report r = {.t = t};
-    r.east = a->east + d->position_sd * fw_rng_normal(l->noise);
-    r.north = a->north + d->position_sd * fw_rng_normal(l->noise);
-    r.sog = fmax(0.0, a->speed + d->sog_sd * fw_rng_normal(l->noise));
-    r.cog = fw_wrap_2pi(a->course + d->cog_sd * fw_rng_normal(l->noise));
-    r.heading = fw_wrap_2pi(a->heading + d->heading_sd * fw_rng_normal(l->noise));
+    fw_ais_sent r = {.t = t};
+    r.east = a->east + d->position_sd * fw_rng_normal(noise);
+    r.north = a->north + d->position_sd * fw_rng_normal(noise);
+    r.sog = fmax(0.0, a->speed + d->sog_sd * fw_rng_normal(noise));
+    r.cog = fw_wrap_2pi(a->course + d->cog_sd * fw_rng_normal(noise));
+    r.heading = fw_wrap_2pi(a->heading + d->heading_sd * fw_rng_normal(noise));
     return r;
 }
 
-/* One ship's reports up to t: sent when due, lost or on their way, arrived. */
-static void ais_step(fw_sensor *s, link *l, const fw_target *a, double t)
+void fw_ais_tx_step(const fw_sensing_def *d, fw_ais_tx *l, const fw_target *a, double t,
+                    fw_sensing_counts *c)
 {
-    const fw_sensing_def *d = &s->def;
     bool turning = l->started && t > l->t_prev &&
                    fabs(fw_wrap_pi(a->course - l->course_prev)) / (t - l->t_prev) > kTurning;
     /* a ship first seen has been reporting all along: its last report is
@@ -213,34 +199,37 @@ static void ais_step(fw_sensor *s, link *l, const fw_target *a, double t)
     while (l->n_queued > 0 && t >= l->queued[0].t + d->latency - 1e-9) {
         l->last = l->queued[0], l->known = true;
         memmove(l->queued, l->queued + 1, sizeof *l->queued * (size_t)--l->n_queued);
-        s->counts.arrived++;
+        c->arrived++;
     }
     if (t < l->t_next - 1e-9)
         return;
     /* due (a ship turning reports sooner: its new interval counts from now) */
     l->t_next = t + phase * fw_ais_interval(a->speed, turning);
-    s->counts.sent++;
-    report r = make_report(d, l, a, t);
+    c->sent++;
+    fw_ais_sent r = make_report(d, l->noise, a, t);
     if (d->dropout > 0.0 && fw_rng_uniform(l->loss) < d->dropout) {
-        s->counts.lost++;
+        c->lost++;
         return;
     }
     if (d->latency > 0.0) {
-        if (l->n_queued == kInFlight) { /* cannot happen within the bounds: the oldest goes */
-            memmove(l->queued, l->queued + 1, sizeof *l->queued * (kInFlight - 1));
+        if (l->n_queued == FW_AIS_IN_FLIGHT) { /* cannot happen within the bounds: the oldest goes */
+            memmove(l->queued, l->queued + 1, sizeof *l->queued * (FW_AIS_IN_FLIGHT - 1));
             l->n_queued--;
         }
         l->queued[l->n_queued++] = r;
         return;
     }
     l->last = r, l->known = true;
-    s->counts.arrived++;
+    c->arrived++;
 }
 
-/* What the last report says of ship a at t: dead reckoned. */
-static void dead_reckon(const link *l, const fw_target *a, double t, fw_target *out)
+bool fw_ais_tx_known(const fw_sensing_def *d, const fw_ais_tx *l, const fw_target *a, double t,
+                     fw_target *out)
 {
-    const report *r = &l->last;
+    if (!l->known || t - l->last.t > d->stale)
+        return false;
+    /* what the last report says of ship a at t: dead reckoned */
+    const fw_ais_sent *r = &l->last;
     double age = t - r->t;
     *out = *a; /* id, type, length, breadth, key, own: its static data */
     out->east = r->east + r->sog * age * sin(r->cog);
@@ -250,7 +239,10 @@ static void dead_reckon(const link *l, const fw_target *a, double t, fw_target *
     out->heading = r->heading;
     out->stw = r->sog; /* AIS says nothing of the water */
     out->pred = NULL;
+    return true;
 }
+
+void fw_sensor_set_salt(fw_sensor *s, uint32_t receiver) { s->salt = receiver; }
 
 void fw_sensor_place(fw_sensor *s, const fw_target *own)
 {
@@ -369,13 +361,13 @@ fw_status fw_sensor_update(fw_sensor *s, double t, const fw_target *truth, int n
         if (!l)
             return fw_fail(err, FW_ERUN, "out of memory for the sensor's ships");
         if (s->ais)
-            ais_step(s, l, a, t);
+            fw_ais_tx_step(&s->def, &l->ais, a, t, &s->counts);
         if (s->radar)
             radar_step(s, l, a, t, k0, k1);
         fw_target *out = &known[*n_known];
-        if (s->ais && l->known && t - l->last.t <= s->def.stale)
-            dead_reckon(l, a, t, out); /* AIS first (MSC.192(79) 5.29) */
-        else if (!(s->radar && track_target(l, a, t, out)))
+        if (s->ais && fw_ais_tx_known(&s->def, &l->ais, a, t, out)) {
+            /* AIS first (MSC.192(79) 5.29) */
+        } else if (!(s->radar && track_target(l, a, t, out)))
             continue;
         (*n_known)++;
         if (s->radar) {

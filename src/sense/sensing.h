@@ -47,8 +47,9 @@
  * Randomness: the noise and the phase are the transmitting ship's (its GNSS,
  * its slot), from its own stream (FW_PURPOSE_SENSING, key: rng.h
  * fw_rng_vessel_key of its id); a lost report is the receiver's
- * (FW_PURPOSE_AIS_DROPOUT, the same key).  Only the own ship has a sensor
- * (world.h), so a key names one link.
+ * (FW_PURPOSE_AIS_DROPOUT, the same key).  The own ship's sensor (world.h)
+ * keys a link by the target; a background ship's (fw_sensor_set_salt) by
+ * the pair, so a key names one link.
  *
  * The radar's noise and detections draw from the target's
  * FW_PURPOSE_RADAR and FW_PURPOSE_RADAR_DETECT streams: one uniform a scan
@@ -103,11 +104,56 @@ fw_status fw_sensing_check(const fw_sensing_def *def, fw_error *err);
  * not. */
 double fw_ais_interval(double speed, bool turning);
 
+/* Counts so far: AIS reports sent, lost, arrived; radar: ships scanned
+ * (within the horizon), plotted, tracks started and lost; and the squared
+ * error of what was known against the truth (m^2, summed over err_n ships
+ * known at updates), for the radar modes. */
+typedef struct fw_sensing_counts {
+    long sent, lost, arrived;
+    long scanned, plotted, tracks, tracks_lost;
+    double err_sq;
+    long err_n;
+} fw_sensing_counts;
+/* One ship's AIS transmissions as a receiver hears them (the modes with
+ * AIS, above): its reports' schedule and noise (streams noise and loss, set
+ * by the caller before the first step), those on their way, the last that
+ * arrived. */
+typedef struct fw_ais_sent {
+    double t, east, north, sog, cog, heading;
+} fw_ais_sent;
+/* Reports on their way at once: the latency is at most 2 s, the shortest
+ * interval 2 s (and a first phase may be shorter). */
+enum { FW_AIS_IN_FLIGHT = 4 };
+typedef struct fw_ais_tx {
+    bool started, known;
+    double t_next;              /* s, its next report */
+    double t_prev, course_prev; /* its course over ground when last seen */
+    fw_ais_sent last;         /* the last that arrived */
+    fw_ais_sent queued[FW_AIS_IN_FLIGHT]; /* on their way, oldest first */
+    int n_queued;
+    fw_rng *noise, *loss;
+} fw_ais_tx;
+
+/* Ship a (the truth) at t: its reports sent when due, lost or on their way,
+ * arrived (counted into c). */
+void fw_ais_tx_step(const fw_sensing_def *d, fw_ais_tx *tx, const fw_target *a, double t,
+                    fw_sensing_counts *c);
+/* What its last report says of a at t (dead reckoned, a's static data), if
+ * one has arrived and is not older than d->stale. */
+bool fw_ais_tx_known(const fw_sensing_def *d, const fw_ais_tx *tx, const fw_target *a, double t,
+                     fw_target *out);
+
 typedef struct fw_sensor fw_sensor;
 
 fw_status fw_sensor_create(const fw_sensing_def *def, fw_rng_getter rng, void *rng_ctx,
                            fw_sensor **out, fw_error *err);
 void fw_sensor_destroy(fw_sensor *s);
+
+/* A sensor of a ship other than the own ship (the reacting traffic's,
+ * world/reactions.h): its links draw from the streams of key
+ * fw_rng_link_key(receiver, target key), not the target's own (0: the own
+ * ship's sensor, the default). */
+void fw_sensor_set_salt(fw_sensor *s, uint32_t receiver);
 
 /* Where the sensor is (the own ship's record: position, course and speed
  * over ground), before each update; the radar modes need it. */
@@ -119,16 +165,6 @@ void fw_sensor_place(fw_sensor *s, const fw_target *own);
 fw_status fw_sensor_update(fw_sensor *s, double t, const fw_target *truth, int n,
                            fw_target *known, int *n_known, fw_error *err);
 
-/* Counts so far: AIS reports sent, lost, arrived; radar: ships scanned
- * (within the horizon), plotted, tracks started and lost; and the squared
- * error of what was known against the truth (m^2, summed over err_n ships
- * known at updates), for the radar modes. */
-typedef struct fw_sensing_counts {
-    long sent, lost, arrived;
-    long scanned, plotted, tracks, tracks_lost;
-    double err_sq;
-    long err_n;
-} fw_sensing_counts;
 fw_sensing_counts fw_sensor_counts(const fw_sensor *s);
 
 #endif

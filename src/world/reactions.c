@@ -23,7 +23,7 @@ fw_reactions_def fw_default_reactions_def(void)
                               .colregs = fw_default_colregs_def(),
                               .watch = fw_default_watch_def(), .give_way = FW_GIVE_WAY_SPEED,
                               .alter_min = fw_deg_to_rad(20.0), .alter_max = fw_deg_to_rad(60.0),
-                              .room_from_lanes = true};
+                              .room_from_lanes = true, .sensing = fw_default_sensing_def()};
 }
 
 static const char *const kGiveWayNames[] = {"speed", "course"}; /* fw_give_way order */
@@ -59,6 +59,9 @@ fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, f
         return fw_fail(err, FW_EINPUT, "reactions: cpa, horizon and range must be positive, "
                                        "min_speed in [0, 1), interval 0 to 60 s, alterations "
                                        "0 < min <= max < 90 deg");
+    fw_status s0 = fw_sensing_check(&def->sensing, err);
+    if (s0)
+        return s0;
     fw_reactions *r = calloc(1, sizeof *r);
     if (!r)
         return fw_fail(err, FW_ERUN, "out of memory");
@@ -75,6 +78,8 @@ fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, f
 
 void fw_reactions_set_rng(fw_reactions *r, fw_rng_getter rng, void *ctx)
 {
+    r->rng = rng;
+    r->rng_ctx = ctx;
     fw_watch_set_rng(r->watch, rng, ctx);
 }
 
@@ -89,6 +94,7 @@ void fw_reactions_destroy(fw_reactions *r)
         return;
     fw_idmap_free(&r->ids);
     fw_watch_destroy(r->watch);
+    fw_react_sense_free(r);
     fw_free_each(10, r->s, r->list, r->nb, r->all_buf, r->idx, r->sn, r->cs, r->log,
                  r->takes, r);
 }
@@ -432,6 +438,7 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
         return FW_OK;
     snprintf(x.ship, sizeof x.ship, "%s", a->id);
     snprintf(x.other, sizeof x.other, "%s", all[j].id);
+    fw_react_sense_note(r, j, &x);
     x.kind = FW_REACT_SLOW, x.speed_from = st->holding ? st->hold : st->v0, x.speed_to = v;
     st->holding = st->rule17 = true;
     st->hold = v;
@@ -464,25 +471,12 @@ static int unnoticed(fw_reactions *r, double t, int self, const fw_target *all, 
     return m;
 }
 
-static fw_status react(fw_reactions *r, double t, int self, const fw_target *all, int n,
-                       react_state *st, fw_source *src, fw_error *err)
+/* Ship self's look round (react): all[self] its truth, the others as it
+ * knows them. */
+static fw_status look(fw_reactions *r, double t, int self, const fw_target *all, int n,
+                      react_state *st, fw_source *src, fw_error *err)
 {
     const fw_target *a = &all[self];
-    /* what it does of its own accord: the fastest it has gone untold (a ship
-     * slowed by SUMO's car following or speeding up again after giving way
-     * means to go on at that speed); risks and speeds are judged at it, so
-     * that a ship given its speed back is not told again while it picks up */
-    if (!st->seen || (!st->holding && a->speed > st->v0))
-        st->v0 = a->speed;
-    /* a watch officer looks round every interval s, not every step: the
-     * ships' first looks are spread over the interval by their place in
-     * the list, so the work is too */
-    if (!st->seen)
-        st->t_next = t + fmod((double)self, fmax(r->def.interval, 1e-9));
-    st->seen = true;
-    if (t < st->t_next - 1e-9)
-        return FW_OK;
-    st->t_next = t + r->def.interval;
     /* every pair loop below goes over the ships in range only, and not
      * over background ships on parallel courses: those share the lanes
      * and pass by overtaking, which SUMO's car following keeps apart (the
@@ -492,7 +486,8 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
         double de = all[j].east - a->east, dn = all[j].north - a->north;
         bool parallel = !all[j].own && r->sn[self] * r->sn[j] + r->cs[self] * r->cs[j] >
                                            r->cos_parallel;
-        if (j != self && !parallel && de * de + dn * dn <= r->def.range * r->def.range)
+        if (j != self && !parallel && de * de + dn * dn <= r->def.range * r->def.range &&
+            !(r->truth && r->how[j] == FW_KNOWN_NOT))
             r->nb[r->nnb++] = j;
     }
     double v0 = st->v0;
@@ -524,7 +519,7 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
         /* not while the ship it gave way to is still this close: around the
          * closest approach the predicted passing flips from ahead to past */
         for (int j = 0; j < n; j++)
-            if (strcmp(all[j].id, st->other) == 0 &&
+            if (!(r->truth && r->how[j] == FW_KNOWN_NOT) && strcmp(all[j].id, st->other) == 0 &&
                 hypot(all[j].east - a->east, all[j].north - a->north) < r->def.cpa)
                 return FW_OK;
         /* clear at its own speed again: given back */
@@ -554,6 +549,7 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
         return FW_OK; /* the best there is, already ordered */
     snprintf(x.ship, sizeof x.ship, "%s", a->id);
     snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
+    fw_react_sense_note(r, nearest, &x);
     x.kind = FW_REACT_SLOW;
     x.speed_from = st->holding ? st->hold : v0;
     x.speed_to = v;
@@ -563,6 +559,34 @@ static fw_status react(fw_reactions *r, double t, int self, const fw_target *all
     st->hold = v;
     fw_status s2 = fw_source_set_speed(src, a->id, v, err);
     return s2 ? s2 : fw_react_record(r, &x, err);
+}
+
+static fw_status react(fw_reactions *r, double t, int self, const fw_target *all, int n,
+                       react_state *st, fw_source *src, fw_error *err)
+{
+    /* itself as it is (with sensing, all[self] is what the others know of it) */
+    const fw_target *a = r->truth ? &r->truth[self] : &all[self];
+    /* what it does of its own accord: the fastest it has gone untold (a ship
+     * slowed by SUMO's car following or speeding up again after giving way
+     * means to go on at that speed); risks and speeds are judged at it, so
+     * that a ship given its speed back is not told again while it picks up */
+    if (!st->seen || (!st->holding && a->speed > st->v0))
+        st->v0 = a->speed;
+    /* a watch officer looks round every interval s, not every step: the
+     * ships' first looks are spread over the interval by their place in
+     * the list, so the work is too */
+    if (!st->seen)
+        st->t_next = t + fmod((double)self, fmax(r->def.interval, 1e-9));
+    st->seen = true;
+    if (t < st->t_next - 1e-9)
+        return FW_OK;
+    st->t_next = t + r->def.interval;
+    fw_status s2 = r->truth ? fw_react_sense_begin(r, t, self, n, st, err) : FW_OK;
+    if (!s2)
+        s2 = look(r, t, self, all, n, st, src, err);
+    if (r->truth)
+        fw_react_sense_end(r);
+    return s2;
 }
 
 /* The index of ship a's state (its id interned, the array grown to hold
@@ -629,10 +653,19 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *vessels,
         all[m] = vessels[i];
         all[m++].own = true;
     }
-    /* every state found first: a new one may move the array */
-    for (int i = 0; i < n; i++)
-        if ((r->idx[i] = state_of(r, &ships[i], err)) < 0)
+    /* every state found first: a new one may move the array (with sensing
+     * fairway's vessels too: their AIS is heard) */
+    int ns = fw_react_sensing(r) ? m : n;
+    for (int i = 0; i < ns; i++)
+        if ((r->idx[i] = state_of(r, &all[i], err)) < 0)
             return err->status;
+    if (fw_react_sensing(r)) {
+        fw_status s1 = fw_react_sense_reserve(r, m, err);
+        if (!s1)
+            s1 = fw_react_sense_step(r, t, all, r->idx, m, err);
+        if (s1)
+            return s1;
+    }
     course_trig(r, all, n, m);
     r->all = all;
     fw_status st = FW_OK;

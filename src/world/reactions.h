@@ -61,6 +61,30 @@
  * when it comes back, and how) and given back to its lane after.
  * Every order is recorded (ship, time, kind, speeds or courses, the ship it
  * gives way to).
+ *
+ * Sensing (def.sensing; perfect by default, the truth as above): every ship
+ * decides on what it knows of the others (reactions_sense.c), itself exact:
+ *   AIS (modes ais, ais+radar)  every ship in the list (the background ships
+ *            and fairway's vessels) sends its reports (sense/sensing.h
+ *            fw_ais_tx: the standard's intervals, noise, losses, delay,
+ *            dead reckoning, stale_s), drawn from its streams
+ *            FW_PURPOSE_AIS_TX and _LOSS (not the own ship's sensor's: the
+ *            own ship hears other draws of the same law); a report is one
+ *            broadcast, heard by every background ship alike, a lost one
+ *            lost to all.  Stepped every step for every ship in the list.
+ *   eye      a ship without a current report within sight (the visibility;
+ *            always in clear weather) is seen as it is
+ *   radar (modes radar, ais+radar)  a ship out of sight without a report
+ *            is known by the looking ship's own radar and tracker (a
+ *            sense/sensing.h sensor per ship, its links keyed by the pair),
+ *            fed at each look round (the scans since the last, the truth
+ *            moved back along its velocity to each) with only those ships:
+ *            within range, out of sight, without a report
+ *   else     not known: not given way to, not avoided.
+ * A record says how the acting ship knew the other and where it took it to
+ * be beside where it was (fw_reaction known_*).  Not modelled: per-receiver
+ * AIS losses, what a ship sees of a ship in sight (the truth), steered ships
+ * (give_way course) once taken: they steer on the truth (world/steer.h).
  */
 #ifndef FW_WORLD_REACTIONS_H
 #define FW_WORLD_REACTIONS_H
@@ -68,6 +92,7 @@
 #include "avoid/encounter.h"
 #include "core/error.h"
 #include "geom/target.h"
+#include "sense/sensing.h"
 #include "traffic/source.h"
 #include "world/watch.h"
 
@@ -104,6 +129,8 @@ typedef struct fw_reactions_def {
      * collision, rule 10 with rule 2(b)); true by default, scenarios set it
      * from traffic.waterway */
     bool room_from_lanes;
+    /* what they know of the others (Sensing, above): perfect by default */
+    fw_sensing_def sensing;
 } fw_reactions_def;
 
 fw_reactions_def fw_default_reactions_def(void);
@@ -117,6 +144,15 @@ typedef enum fw_reaction_kind {
     FW_REACT_REJOIN
 } fw_reaction_kind;
 
+/* How the acting ship knew the other (Sensing, above). */
+typedef enum fw_known {
+    FW_KNOWN_TRUTH,  /* perfect sensing */
+    FW_KNOWN_NOT,    /* not known (never in a record) */
+    FW_KNOWN_AIS,    /* by its AIS reports */
+    FW_KNOWN_EYE,    /* in sight, without a report: seen */
+    FW_KNOWN_RADAR   /* out of sight, without a report: the ship's radar track */
+} fw_known;
+
 typedef struct fw_reaction {
     double t;                        /* s */
     char ship[FW_TARGET_ID_MAX];     /* the ship that acts */
@@ -128,6 +164,9 @@ typedef struct fw_reaction {
                                         (alter: course) */
     bool enough;                     /* the new speed keeps cpa against every ship */
     double course_from, course_to;   /* rad, alter: its course and the one ordered */
+    /* how it knew `other`, where it took it to be and where it was (m) */
+    fw_known known_how;
+    double known_e, known_n, true_e, true_n;
 } fw_reaction;
 
 /* A ship to take from the source and steer (give_way course): itself as it

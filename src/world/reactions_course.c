@@ -101,6 +101,7 @@ int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, re
                          .course_to = fw_wrap_2pi(a->course + alt)};
         snprintf(x.ship, sizeof x.ship, "%s", a->id);
         snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
+        fw_react_sense_note(r, nearest, &x);
         snprintf(st->other, sizeof st->other, "%s", all[nearest].id);
         if (fw_react_record(r, &x, err) || order(r, a, &lane, alt, all[nearest].id, err))
             return -1;

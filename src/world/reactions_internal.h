@@ -20,6 +20,9 @@ typedef struct react_state {
      * while the course stays; trig_ok false: none yet */
     double course, sin_c, cos_c;
     bool trig_ok;
+    /* sensing (reactions_sense.c): its AIS as the others hear it, its radar */
+    fw_ais_tx ais;
+    fw_sensor *radar;
 } react_state;
 
 struct fw_reactions {
@@ -43,6 +46,21 @@ struct fw_reactions {
     fw_watch *watch;
     fw_take_order *takes; /* this step's ships to take and steer (course alterations) */
     int ntakes, takes_cap;
+    /* sensing (reactions_sense.c; NULL truth: perfect): the list's truth,
+     * how each entry of the list is known, the entries one ship's look
+     * changed (put back after it), the radar's scratch */
+    fw_rng_getter rng;
+    void *rng_ctx;
+    fw_target *truth;
+    fw_known *how;
+    int *undo_j;
+    fw_target *undo_t;
+    fw_known *undo_how;
+    int n_undo;
+    int *radar_in;
+    fw_target *radar_truth, *radar_known;
+    int sense_cap;
+    fw_sensing_counts ais_counts;
 };
 
 /* The closest a, at speed v, would pass any ship near it (r->nb) other than
@@ -59,5 +77,21 @@ fw_status fw_react_record(fw_reactions *r, const fw_reaction *x, fw_error *err);
 int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, react_state *st,
                    const int *list, int m, int nearest, fw_situation sit, double dcpa,
                    fw_source *src, fw_error *err);
+
+/* Sensing (reactions_sense.c): is it not perfect; room for m ships; every
+ * ship's AIS stepped and all[i] made what its reports say of it (the truth
+ * kept in r->truth, how[i] AIS or not known); ship self's look begins
+ * (itself the truth, a ship without a report seen in sight, tracked by its
+ * radar out of sight) and ends (the list as before); what the record x says
+ * of entry j (known and true position). */
+bool fw_react_sensing(const fw_reactions *r);
+fw_status fw_react_sense_reserve(fw_reactions *r, int m, fw_error *err);
+fw_status fw_react_sense_step(fw_reactions *r, double t, fw_target *all, const int *idx, int m,
+                              fw_error *err);
+fw_status fw_react_sense_begin(fw_reactions *r, double t, int self, int m, react_state *st,
+                               fw_error *err);
+void fw_react_sense_end(fw_reactions *r);
+void fw_react_sense_note(const fw_reactions *r, int j, fw_reaction *x);
+void fw_react_sense_free(fw_reactions *r);
 
 #endif
