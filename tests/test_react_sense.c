@@ -19,17 +19,31 @@
  *     first)
  *   radar, fog: g tracks t by its own radar: no action before the track is
  *     shown (60 s), then on the track (known_how radar)
+ *
+ * Rule 19(e) (reactions.h, avoid/policy.h):
+ *   background: in 1 km fog g first slows (t out of sight forward of its
+ *     beam, 4.2 km off: t's whistle, a 333 m ship's, is heard within 2 nm)
+ *     to a speed that clears, not by 19(e); later, within 2 nm of t or with
+ *     no speed that keeps 0.5 nm (close quarters it cannot avoid), it
+ *     reduces to min_speed (0.3) of its own speed, the record saying 19(e)
+ *   own ship (c3-mmg on Nomoto, 12 kn planned, kb fitted from 8 kn) meeting
+ *     a 200 m ship head-on at 20 kn closing, in 0.5 nm fog: rule 19(e)'s 8 kn
+ *     ordered from the step the other comes within its whistle's 2 nm (to a
+ *     step's closing), not before; in clear weather never
  */
 #include <math.h>
 #include <string.h>
 
 #include "core/units.h"
+#include "avoid/encounter.h"
 #include "geom/geom.h"
 #include "test.h"
 #include "traffic/source.h"
 #include "world/world.h"
 
-static fw_ship c3p;
+#include "world/controllers.h"
+
+static fw_ship c3p, c3m;
 
 static fw_world *crossing(const fw_sensing_def *sense, double visibility, uint64_t seed)
 {
@@ -171,10 +185,121 @@ static void test_radar_fog(void)
     CHECK(hypot(x.known_e - x.true_e, x.known_n - x.true_n) > 0.0);
 }
 
+/* The distance between g (the source's) and t (taken) now, from t's view,
+ * and the range of audibility of t's whistle. */
+static double g_to_t(fw_world *w, double *audible)
+{
+    for (int i = 0; i < fw_world_vessel_count(w); i++) {
+        const fw_vessel *v = fw_world_vessel(w, fw_world_vessel_at(w, i));
+        const fw_target *t = fw_vessel_record(v), *tg;
+        const fw_assessment *as;
+        int n;
+        if (strcmp(t->id, "t") != 0)
+            continue;
+        fw_vessel_view(v, &tg, &as, &n);
+        *audible = fw_fog_signal_range(t->length);
+        for (int j = 0; j < n; j++)
+            if (strcmp(tg[j].id, "g") == 0)
+                return hypot(tg[j].east - t->east, tg[j].north - t->north);
+    }
+    return NAN;
+}
+
+static void test_rule19e_background(void)
+{
+    fw_error err = {0};
+    fw_sensing_def d = fw_default_sensing_def();
+    fw_world *w = crossing(&d, 1000.0, 1);
+    int seen = 0, first = -1, e19 = -1;
+    double range19 = NAN, audible = NAN;
+    for (int k = 0; k < 900 && e19 < 0; k++) {
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+        int n;
+        const fw_reaction *r = fw_world_reactions(w, &n);
+        for (; seen < n; seen++)
+            if (strcmp(r[seen].ship, "g") == 0 && r[seen].kind == FW_REACT_SLOW) {
+                first = first < 0 ? seen : first;
+                if (e19 < 0 && r[seen].rule19e)
+                    e19 = seen, range19 = g_to_t(w, &audible);
+            }
+    }
+    int n;
+    const fw_reaction *r = fw_world_reactions(w, &n);
+    CHECK(first >= 0 && e19 > first && !r[first].rule19e);
+    if (e19 > first && first >= 0) {
+        bool heard = range19 <= audible;
+        printf("rule 19(e), background: g first slows at %.0f s to %.1f kn, then at %.0f s, t "
+               "%.0f m off (%s within %.0f m), to %.1f kn (0.3 of 8)\n",
+               r[first].t, fw_ms_to_kn(r[first].speed_to), r[e19].t, range19,
+               heard ? "its whistle heard" : "out of earshot, but no speed keeps 0.5 nm", audible,
+               fw_ms_to_kn(r[e19].speed_to));
+        CHECK(fabs(r[e19].speed_to - 0.3 * fw_kn_to_ms(8)) < 1e-9);
+        CHECK(heard || !r[e19].enough);
+    }
+    fw_world_destroy(w);
+}
+
+/* The own ship meeting T (200 m, 10 kn south) head-on from 3 nm, 50 m to
+ * starboard of its line, in visibility vis (m, 0: clear): the first step
+ * (s) its decision holds rule 19(e), the speed then and T's range then. */
+static double own_rule19e(double vis, double *speed, double *range)
+{
+    fw_error err = {0};
+    fw_kin_ship sh = {.start = {.id = "T", .east = 50, .north = 3 * FW_NMILE, .course = FW_PI,
+                                .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32}};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = &sh;
+    kd.n = 1;
+    fw_world_def wd = fw_default_world_def();
+    fw_policy_controller_def pd = {.ship = &c3m, .helm = fw_default_helm_def(),
+                                   .policy = fw_default_policy_def()};
+    pd.helm.colregs.visibility = vis;
+    pd.policy.route = fw_route_line(0, 0, 0, fw_kn_to_ms(12), 20000);
+    fw_world *w = NULL;
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.id = "own", vd.role = FW_ROLE_OWN, vd.ship = &c3m, vd.dynamics = FW_DYN_NOMOTO;
+    vd.speed = fw_kn_to_ms(12);
+    fw_vessel_handle h;
+    CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
+          fw_world_create(&wd, &w, &err) == FW_OK &&
+          fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK &&
+          fw_world_add_vessel(w, &vd, &h, &err) == FW_OK && fw_world_start(w, &err) == FW_OK);
+    double first = NAN;
+    for (int k = 0; k < 600 && isnan(first); k++) {
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+        const fw_vessel *v = fw_world_vessel(w, h);
+        const fw_decision *dd = fw_vessel_decision(v);
+        if (dd->rule19e) {
+            const fw_target *tg;
+            const fw_assessment *as;
+            int n;
+            fw_vessel_view(v, &tg, &as, &n);
+            first = fw_world_time(w);
+            *speed = dd->speed;
+            *range = n > 0 ? as[0].range : NAN;
+        }
+    }
+    fw_world_destroy(w);
+    return first;
+}
+
+static void test_rule19e_own(void)
+{
+    double speed = NAN, range = NAN;
+    double clear = own_rule19e(0.0, &speed, &range);
+    CHECK(isnan(clear));
+    double fog = own_rule19e(0.5 * FW_NMILE, &speed, &range);
+    printf("rule 19(e), own ship: clear never; 0.5 nm fog from %.0f s, T at %.0f m (its "
+           "whistle heard within %.0f m), %.1f kn ordered\n",
+           fog, range, 2 * FW_NMILE, fw_ms_to_kn(speed));
+    CHECK(!isnan(fog) && fabs(speed - fw_kn_to_ms(8)) < 1e-9);
+    CHECK(range <= 2 * FW_NMILE && range > 2 * FW_NMILE - 1.5 * fw_kn_to_ms(22));
+}
+
 int main(void)
 {
     fw_error err = {0};
-    if (fw_ship_load("c3-paper", &c3p, &err)) {
+    if (fw_ship_load("c3-paper", &c3p, &err) || fw_ship_load("c3-mmg", &c3m, &err)) {
         fprintf(stderr, "%s\n", err.msg);
         return 1;
     }
@@ -182,5 +307,7 @@ int main(void)
     TEST_RUN(test_ais);
     TEST_RUN(test_ais_radar_clear);
     TEST_RUN(test_radar_fog);
+    TEST_RUN(test_rule19e_background);
+    TEST_RUN(test_rule19e_own);
     return TEST_EXIT();
 }

@@ -64,6 +64,11 @@ double fw_band_slow(const fw_policy *p, const fw_nomoto_kb *kb)
     return fmax(p->def.slow_factor * planned, fmin(floor, planned));
 }
 
+double fw_rule19e_speed(const fw_nomoto_kb *kb, double planned)
+{
+    return fmin(fw_kn_to_ms(kb->speed_min_kn), planned);
+}
+
 /* STEADY at the route's band's edge: the heading held stays within band_turn
  * of the leg's course; once band_xte across, it becomes the leg's course if
  * that keeps every target out, else the heading is held and the domain

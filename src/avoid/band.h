@@ -27,6 +27,12 @@ bool fw_band_edge(const fw_policy *p, const fw_own_state *own, int side);
  * planned (the active leg's) speed, not below kb's lowest fitted speed. */
 double fw_band_slow(const fw_policy *p, const fw_nomoto_kb *kb);
 
+/* m/s: rule 19(e)'s speed, "the minimum at which she can be kept on her
+ * course": kb's lowest fitted speed (the lowest at which the policy's
+ * predictions, and so its keeping of the course, hold; not the hull's
+ * steerage way), not above the planned speed. */
+double fw_rule19e_speed(const fw_nomoto_kb *kb, double planned);
+
 /* STEADY at the band's edge: the heading held stays within band_turn of the
  * leg's course; once band_xte across, it becomes the leg's course if that
  * keeps every target out, else it is held and p->unkept set. */

@@ -254,3 +254,10 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
             out[order[i]].rank = i;
     }
 }
+
+double fw_fog_signal_range(double length)
+{
+    /* COLREGs Annex III 1(c): the range of audibility of a whistle by the
+     * ship's length (200 m or more: 2 nm; 75 m: 1.5; 20 m: 1; less: 0.5) */
+    return fw_nm_to_m(length >= 200.0 ? 2.0 : length >= 75.0 ? 1.5 : length >= 20.0 ? 1.0 : 0.5);
+}

@@ -78,6 +78,10 @@ static inline bool fw_not_in_sight(const fw_colregs_def *def, double range)
     return def->visibility > 0.0 && range > def->visibility;
 }
 
+/* m: the range of audibility of a ship's whistle (its fog signal, rule 35)
+ * by its length, COLREGs Annex III 1(c): rule 19(e)'s "hears the fog signal". */
+double fw_fog_signal_range(double length);
+
 /* Fills out[0..n-1].  If order is not NULL (room for 2 n ints: the second
  * half is scratch) it gets the target indices most dangerous first and each
  * out[i].rank is set: targets entering the domain first; among those, the one

@@ -79,8 +79,21 @@
  * (reasons "rule 19, not in sight: ..."), and the sides are 19(d)'s
  * (helm_search.h fw_permitted_sides): no alteration to port for a ship
  * forward of the beam other than one being overtaken, none towards a ship
- * abeam or abaft the beam.  Not modelled: 19(e)'s reduction of speed (the
- * policy steers only) and sound signals (rule 35).
+ * abeam or abaft the beam.  Rule 19(e): while a target out of sight forward
+ * of the beam is at risk (it enters the domain) and either its fog signal is
+ * heard (within its whistle's range of audibility, COLREGs Annex III 1(c):
+ * 2 nm for a ship of 200 m or more, 1.5 nm from 75 m, 1 nm from 20 m, 0.5 nm
+ * below; every ship is taken to sound it, rule 35) or a close-quarters
+ * situation cannot be avoided (the domain cannot be kept, above), the ship
+ * reduces speed to the minimum at which she can be kept on her course:
+ * taken as the knowledge base's lowest fitted speed (band.h
+ * fw_rule19e_speed: 8 kn for c3-mmg, a model limit above the hull's real
+ * steerage way), not above the planned speed; it steers as before; the
+ * speed is kept until the last target that called for it is past (its
+ * closest approach behind, or out of view) and none has called for
+ * min_avoid_time ("until danger of collision is over"), then the planned
+ * speed is ordered again.  fw_decision.rule19e and run.log say so.  Not modelled: the sound
+ * itself (its bearing is taken as the true one), taking all way off.
  */
 #ifndef FW_POLICY_H
 #define FW_POLICY_H
@@ -187,6 +200,9 @@ typedef struct fw_policy {
                          through every turn (not wrapped) */
     double psi_last;  /* rad, the heading at the last step */
     bool unkept;      /* the domain cannot be kept within the band: slowed */
+    bool r19e;        /* rule 19(e)'s speed held (above) ... */
+    double t_19e;     /* s, ... since when no target has called for it (< 0: one does) */
+    char r19e_id[FW_TARGET_ID_MAX]; /* the last target that called for it */
     bool no_room;     /* this step: no permitted side has room within the band */
     double t_kept;    /* s, since when keeping the course lets no target in (< 0: not) */
     double speed_order; /* m/s, the last speed ordered (0: none yet) */
@@ -206,6 +222,8 @@ typedef struct fw_decision {
                                0: no order (the propeller is kept) */
     int leg;                /* the route's active leg */
     bool unkept;            /* the domain cannot be kept within the route's band (band.h) */
+    bool rule19e;           /* rule 19(e)'s speed ordered (above) ... */
+    int rule19e_target;     /* ... for this target (index this step, -1: none now) */
     const char *reason;     /* static text */
     bool acted;             /* this step started an avoidance */
     int primary;            /* most dangerous target this step: index into this

@@ -322,6 +322,8 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
         fprintf(f, "%s  \"domain_unkept\": {\"episodes\": %d, \"first_t_s\": %.1f, "
                    "\"speed_kn\": %.1f},\n",
                 ind, s->n_unkept, s->t_unkept, fw_ms_to_kn(s->unkept_speed));
+    if (s->n_rule19e > 0) /* only then, likewise */
+        fprintf(f, "%s  \"rule19e_slowdowns\": %d,\n", ind, s->n_rule19e);
     kb_json(f, s, ind);
     fprintf(f, "%s  \"encounters\": [", ind);
     for (int i = 0; i < n; i++) {

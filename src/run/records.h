@@ -91,6 +91,7 @@ typedef struct fw_run_summary {
      * how often it began, when first, the slowest speed ordered (m/s) */
     int n_unkept;
     double t_unkept, unkept_speed;
+    int n_rule19e;          /* times rule 19(e)'s speed was ordered (avoid/policy.h) */
     /* Wall-clock seconds of the run and of it inside SUMO's step: for the
      * benchmarks and the study database only, never written to the run's
      * files (they must be identical from run to run). */

@@ -45,6 +45,7 @@ struct fw_run {
     fw_policy_mode mode_prev;
     int leg_prev;            /* the route's leg at the last step */
     bool unkept_prev;        /* the domain could not be kept at the last step */
+    bool r19e_prev;          /* rule 19(e)'s speed was ordered at the last step */
     double helm_prev, e_prev, n_prev;
     int reactions_seen;      /* the world's reactions already in run.log */
     bool kb_outside;         /* the own speed was outside the knowledge base's at the last step */
@@ -153,6 +154,20 @@ static void record_mode(fw_run *R, double t, const fw_decision *d, fw_run_summar
              fw_ms_to_kn(d->speed));
     }
     R->unkept_prev = d->unkept;
+    if (d->rule19e != R->r19e_prev) {
+        const fw_target *tg;
+        const fw_assessment *as;
+        int n;
+        fw_vessel_view(R->own, &tg, &as, &n);
+        if (d->rule19e && d->rule19e_target >= 0 && d->rule19e_target < n)
+            note(R, "%9.1f  rule 19(e): %s out of sight forward of the beam: speed ordered %.1f "
+                    "kn, the least at which the ship keeps her course\n",
+                 t, tg[d->rule19e_target].id, fw_ms_to_kn(d->speed));
+        else
+            note(R, "%9.1f  rule 19(e) over: speed ordered %.1f kn\n", t, fw_ms_to_kn(d->speed));
+        sum->n_rule19e += d->rule19e;
+    }
+    R->r19e_prev = d->rule19e;
     if (d->mode == R->mode_prev)
         return;
     note(R, "%9.1f  %s -> %s, helm %.1f deg: %s\n", t,
@@ -231,6 +246,8 @@ static void record_reactions(fw_run *R, fw_run_summary *sum)
                 r->speed_to > r->speed_from ? "speeds up" : "slows", fw_ms_to_kn(r->speed_from),
                 fw_ms_to_kn(r->speed_to), r->dcpa_before);
         char kn[128];
+        if (r->rule19e)
+            note(R, " (rule 19(e): the least speed)");
         if (r->enough)
             note(R, " -> %.0f m%s\n", r->dcpa_after, known_note(r, kn, sizeof kn));
         else

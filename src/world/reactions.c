@@ -471,6 +471,29 @@ static int unnoticed(fw_reactions *r, double t, int self, const fw_target *all, 
     return m;
 }
 
+/* Is b out of a's sight (restricted visibility) and forward of its beam? */
+static bool out_of_sight_ahead(const fw_reactions *r, const fw_target *a, const fw_target *b)
+{
+    double de = b->east - a->east, dn = b->north - a->north;
+    return fw_not_in_sight(&r->def.colregs, hypot(de, dn)) &&
+           de * sin(a->heading) + dn * cos(a->heading) > 0.0;
+}
+
+/* Rule 19(e) (reactions.h): does ship self hear, forward of its beam, the
+ * fog signal of a ship of list (those it must act for) out of its sight? */
+static bool rule19e_heard(const fw_reactions *r, int self, const fw_target *all, const int *list,
+                          int m)
+{
+    const fw_target *a = &all[self];
+    for (int q = 0; q < m; q++) {
+        const fw_target *b = &all[list[q]];
+        if (out_of_sight_ahead(r, a, b) &&
+            hypot(b->east - a->east, b->north - a->north) <= fw_fog_signal_range(b->length))
+            return true;
+    }
+    return false;
+}
+
 /* Ship self's look round (react): all[self] its truth, the others as it
  * knows them. */
 static fw_status look(fw_reactions *r, double t, int self, const fw_target *all, int n,
@@ -540,11 +563,22 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
             return a2 < 0 ? err->status : FW_OK;
     }
     double after;
+    /* rule 19(e) (reactions.h): a fog signal heard forward of the beam */
+    bool r19e = rule19e_heard(r, self, all, r->list, m);
     /* the speed it holds still keeps every ship it gives way to at cpa (a
      * new one may need another: slower is not always clear of a crossing) */
-    if (st->holding && clears_at(r, self, all, st->hold, &after))
+    if (!r19e && st->holding && clears_at(r, self, all, st->hold, &after))
         return FW_OK;
-    double v = yielding_speed(r, self, all, r->list, m, v0, vh, &x.enough, &after);
+    double v = r19e ? r->def.min_speed * v0
+                    : yielding_speed(r, self, all, r->list, m, v0, vh, &x.enough, &after);
+    /* ... or close quarters it cannot avoid with a ship out of sight ahead */
+    if (!r19e && !x.enough && out_of_sight_ahead(r, &all[self], &all[nearest])) {
+        r19e = true;
+        v = r->def.min_speed * v0;
+    }
+    if (r19e)
+        x.enough = clears_at(r, self, all, v, &after);
+    x.rule19e = r19e;
     if (st->holding && fabs(v - st->hold) < 0.05 * v0)
         return FW_OK; /* the best there is, already ordered */
     snprintf(x.ship, sizeof x.ship, "%s", a->id);

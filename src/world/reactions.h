@@ -35,9 +35,18 @@
  * own speed back once that is no longer so.
  * In restricted visibility (colregs.visibility > 0) a ship farther off than
  * it is out of sight: rule 19 replaces the roles, and a ship at risk with one
- * forward of its beam gives way to it (slows, 19(e)) whichever side it is on;
- * for one abeam or abaft it does nothing (its only action, slowing, would
- * not take it away).
+ * forward of its beam gives way to it (slows) whichever side it is on; for
+ * one abeam or abaft it does nothing (its only action, slowing, would not
+ * take it away).  Rule 19(e): if it hears the fog signal of such a ship
+ * forward of its beam (within the range of audibility of the other's
+ * whistle by its length, COLREGs Annex III 1(c): 2 nm for 200 m or more,
+ * 1.5 nm from 75 m, 1 nm from 20 m, 0.5 nm below; every ship is taken to
+ * sound it, rule 35), or no speed keeps every ship at cpa (the
+ * close-quarters situation it cannot avoid) with the nearest out of sight
+ * forward of its beam, it reduces speed to min_speed of its own (the least
+ * the model orders a lane-bound ship: taken as the speed at which she can
+ * be kept on her course) and holds it until the danger is over (the
+ * resumption below); the record says rule 19(e).
  * With a watch (watch.h) a ship notices a ship it must give way to only after
  * a delay, or not at all (a lapse); until then it treats it as not there.
  * Head-on meetings of two lane-bound ships are kept apart by their lanes;
@@ -167,6 +176,7 @@ typedef struct fw_reaction {
     /* how it knew `other`, where it took it to be and where it was (m) */
     fw_known known_how;
     double known_e, known_n, true_e, true_n;
+    bool rule19e;                    /* slowed to min_speed by rule 19(e) (above) */
 } fw_reaction;
 
 /* A ship to take from the source and steer (give_way course): itself as it

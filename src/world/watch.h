@@ -23,9 +23,18 @@
  *            seen or judged dangerous only close by)
  *
  * All are zero by default: the flawless watch fairway had before, every
- * number unchanged.  fairway gives no default values with a source yet: the
- * shared reference has none for detection or decision times; the values are
- * the user's (a study sweeps them as axes).  Draws come from the acting
+ * number unchanged.  Values with sources (scenarios/README.md "The watch"
+ * has the table):
+ *   lapse    FW_WATCH_LAPSE_CROSSING 1.3e-4, _HEAD_ON 4.9e-5, _OVERTAKING
+ *            1.1e-4: IWRAP Mk II's default causation factors (Pedersen 1995;
+ *            Fujii 1974), the probability that ships on a collision course
+ *            fail to make evasive actions (IALA IWRAP wiki, Porthin 2010),
+ *            the two ships' failures combined; taken whole as the give-way
+ *            ship's lapse, the most the source allows it.  No figure for fog
+ *            (Fujii and Mizuki's factors of 2 and 8 are on an area's yearly
+ *            rate by how often visibility is below 1 km, not per encounter).
+ *   detect, delay, late, late_range: no published figure found; the user's.
+ * scenarios/studies/dover-imperfect.yaml uses the crossing lapse.  Draws come from the acting
  * ship's stream (FW_PURPOSE_WATCH, key rng.h fw_rng_vessel_key of its id),
  * so splitting re-keys them and a replication draws the same lapses in every
  * setting whose encounters come in the same order.  A new encounter draws, in
@@ -40,6 +49,11 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "geom/target.h"
+
+/* The lapse probabilities with a source (above). */
+#define FW_WATCH_LAPSE_CROSSING 1.3e-4
+#define FW_WATCH_LAPSE_HEAD_ON 4.9e-5
+#define FW_WATCH_LAPSE_OVERTAKING 1.1e-4
 
 typedef struct fw_watch_def {
     double delay;      /* s, >= 0: the time to decide, after detection */
