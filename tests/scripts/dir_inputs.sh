@@ -31,21 +31,21 @@ expect 2 "$dir/deep.yaml:1: nested deeper than 64 levels" ship "$dir/deep.yaml"
 expect 2 "$dir/deep.yaml:1: nested deeper than 64 levels" run "$dir/deep.yaml" --out "$dir/runs"
 expect 2 "$dir/deepmap.yaml:2: nested deeper than 64 levels" sweep "$dir/deepmap.yaml" --db "$dir/x.db"
 [ ! -e "$dir/runs" ] && [ ! -e "$dir/x.db" ] || { echo "output created: $(ls "$dir")"; exit 1; }
-# 18 kn: outside c3-mmg's knowledge base (8-14 kn), within its x1.5 margin:
+# 22 kn: outside c3-mmg's knowledge base (4-20 kn), within its x1.5 margin:
 # warned about on stderr, in run.log and in summary.json, and the run goes on
-sed -e 's/speed_kn: 12/speed_kn: 18/' -e 's/duration_s: 3600/duration_s: 60/' \
+sed -e 's/speed_kn: 12/speed_kn: 22/' -e 's/duration_s: 3600/duration_s: 60/' \
     "$FAIRWAY_DATA/scenarios/traffic/strait-crossing.yaml" > "$dir/fast.yaml"
-expect 0 "warning: $dir/fast.yaml: own_ship.speed_kn: 18 kn is outside 8-14 kn, the speeds c3-mmg's Nomoto knowledge base was fitted over" \
+expect 0 "warning: $dir/fast.yaml: own_ship.speed_kn: 22 kn is outside 4-20 kn, the speeds c3-mmg's Nomoto knowledge base was fitted over" \
   run "$dir/fast.yaml" --out "$dir/runs"
-grep -q "warning: own speed 18.00 kn is outside 8.00-14.00 kn" "$dir"/runs/*/run.log ||
+grep -q "warning: own speed 22.00 kn is outside 4.00-20.00 kn" "$dir"/runs/*/run.log ||
   { echo "run.log: no knowledge-base speed warning"; exit 1; }
-grep -q '"knowledge_base_speeds": {"fitted_min_kn": 8.00, "fitted_max_kn": 14.00, .*"outside_s": 61.0, "warning": "own speed' \
+grep -q '"knowledge_base_speeds": {"fitted_min_kn": 4.00, "fitted_max_kn": 20.00, .*"outside_s": 61.0, "warning": "own speed' \
   "$dir"/runs/*/summary.json || { echo "summary.json: no knowledge-base speed warning"; exit 1; }
-# 35 kn: within what scenarios accept, beyond the margin (5.3-21 kn): refused
+# 35 kn: within what scenarios accept, beyond the margin (2.7-30 kn): refused
 sed -e 's/speed_kn: 12/speed_kn: 35/' "$FAIRWAY_DATA/scenarios/traffic/strait-crossing.yaml" > "$dir/faster.yaml"
-expect 2 "faster.yaml:[0-9]*: own_ship.speed_kn: 35 kn is beyond c3-mmg's Nomoto knowledge base, fitted over 8-14 kn, by more than its x1.5 margin (5.3-21.0 kn)" \
+expect 2 "faster.yaml:[0-9]*: own_ship.speed_kn: 35 kn is beyond c3-mmg's Nomoto knowledge base, fitted over 4-20 kn, by more than its x1.5 margin (2.7-30.0 kn)" \
   run "$dir/faster.yaml" --out "$dir/runs2"
-expect 0 "warning: --own speed: 35 kn is outside 8-14 kn" helm --ship c3-mmg --own 0,0,0,35 --target 0,5000,180,10
+expect 0 "warning: --own speed: 35 kn is outside 4-20 kn" helm --ship c3-mmg --own 0,0,0,35 --target 0,5000,180,10
 expect 2 "speed 45 kn is above 40 kn" helm --ship c3-mmg --own 0,0,0,45
 expect 2 "--speed: 60 kn is above 40 kn" manoeuvre turning --ship c3 --speed 60 --rudder 35
 expect 2 "--speed: 45 kn is above 40 kn" manoeuvre zigzag --ship c3 --speed 45 --angle 10
