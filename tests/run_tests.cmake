@@ -107,3 +107,8 @@ set_tests_properties(test_route PROPERTIES TIMEOUT 120
 fw_cli_test(cli_route_bad_speed 2 "bad-speed.yaml:12: own_ship.route.1..speed_kn: -4 is out of range"
             run ${CMAKE_SOURCE_DIR}/tests/data/route/bad-speed.yaml --out ${CMAKE_CURRENT_BINARY_DIR}/cli-runs-route)
 set_tests_properties(cli_route_bad_speed PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}" TIMEOUT 60)
+# A route given as a network's edges (networks/bend): within 100 m of the
+# lanes' line; edges, speeds, streams, waypoints off the network and networks
+# without nodes or edges refused (FILE:LINE: FIELD, exit 2, nothing run).
+fw_script_test(net_route 0 "ok: the own ship follows a network's edges" net_route.sh)
+set_tests_properties(net_route PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)

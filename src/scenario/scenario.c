@@ -10,6 +10,7 @@
 #include "scenario/position.h"
 #include "scenario/scn_ais.h"
 #include "scenario/scn_env.h"
+#include "scenario/scn_netroute.h"
 #include "scenario/scn_route.h"
 #include "scenario/scenario.h"
 #include "traffic/demand.h"
@@ -70,7 +71,7 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
 {
     static const char *const keys[] = {"ship", "east_m", "north_m", "lat_deg", "lon_deg",
                                        "course_deg", "speed_kn", "leg_nm", "destination",
-                                       "route", "dynamics", NULL};
+                                       "route", "network_route", "dynamics", NULL};
     const yt_node *own;
     fw_status st;
     char ship[512];
@@ -89,6 +90,8 @@ static fw_status load_own(const yt_doc *doc, const yt_node *root, fw_scenario *s
     if ((st = fw_ship_load(ship, &s->ship, &serr)))
         return fw_fail_at(err, doc->file, yt_key_line(own, "ship"), "own_ship.ship", "%s",
                           serr.msg);
+    if (yt_get(own, "network_route"))
+        return fw_scn_load_net_route(doc, root, own, s, err);
     return yt_get(own, "route") ? fw_scn_load_route(doc, own, s, err)
                                 : load_own_line(doc, root, own, s, err);
 }
@@ -217,6 +220,8 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
         if (dst)
             return fw_fail_at(err, doc->file, yt_key_line(tr, "network"), "traffic.network",
                               "%s", nerr.msg);
+        if ((st = fw_scn_route_on_network(doc, root, s, &nf, err)))
+            return st;
     }
     if (seq) {
         if (seq->n > FW_SCN_MAX_TARGETS)

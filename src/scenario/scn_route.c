@@ -8,8 +8,7 @@
 #include "nomoto/nomoto.h"
 #include "scenario/position.h"
 
-/* The keys a route replaces: none of them beside it. */
-static fw_status no_line_keys(const yt_doc *doc, const yt_node *own, fw_error *err)
+fw_status fw_scn_route_no_line_keys(const yt_doc *doc, const yt_node *own, fw_error *err)
 {
     static const char *const line[] = {"east_m",   "north_m",  "lat_deg", "lon_deg",
                                        "course_deg", "speed_kn", "leg_nm", "destination"};
@@ -45,16 +44,24 @@ static fw_status waypoint(const yt_doc *doc, const yt_node *w, const char *path,
                                  "the waypoint it begins at")
                    : FW_OK;
     }
-    if ((st = yt_req_number(doc, w, path, "speed_kn", 1, 40, &kn, err)))
+    if ((st = yt_req_number(doc, w, path, "speed_kn", 1, 40, &kn, err)) ||
+        (st = fw_scn_leg_speed(doc, yt_key_line(w, "speed_kn"), path, "speed_kn", kn, s, err)))
         return st;
-    const fw_nomoto_kb *kb = &s->ship.nomoto;
-    if (fw_nomoto_kb_speed(kb, kn) == FW_KB_SPEED_REFUSED)
-        return yt_fail_key(doc, w, path, "speed_kn", err,
-                           "%g kn is beyond %s's Nomoto knowledge base, fitted over %g-%g kn, "
-                           "by more than its x%g margin",
-                           kn, s->ship.name, kb->speed_min_kn, kb->speed_max_kn,
-                           FW_KB_SPEED_MARGIN);
     *speed = fw_kn_to_ms(kn);
+    return FW_OK;
+}
+
+fw_status fw_scn_leg_speed(const yt_doc *doc, int line, const char *path, const char *key,
+                           double kn, const fw_scenario *s, fw_error *err)
+{
+    const fw_nomoto_kb *kb = &s->ship.nomoto;
+    char field[128];
+    const char *at = key[0] ? yt_path(field, sizeof field, path, key) : path;
+    if (fw_nomoto_kb_speed(kb, kn) == FW_KB_SPEED_REFUSED)
+        return fw_fail_at(err, doc->file, line, at,
+                          "%g kn is beyond %s's Nomoto knowledge base, fitted over %g-%g kn, "
+                          "by more than its x%g margin", kn, s->ship.name, kb->speed_min_kn, kb->speed_max_kn,
+                          FW_KB_SPEED_MARGIN);
     return FW_OK;
 }
 
@@ -62,7 +69,7 @@ fw_status fw_scn_load_route(const yt_doc *doc, const yt_node *own, fw_scenario *
                             fw_error *err)
 {
     const yt_node *seq;
-    fw_status st = no_line_keys(doc, own, err);
+    fw_status st = fw_scn_route_no_line_keys(doc, own, err);
     if (st || (st = yt_req_seq(doc, own, "own_ship", "route", &seq, err)))
         return st;
     if (seq->n < 2 || seq->n > FW_ROUTE_MAX_LEGS + 1)
@@ -82,11 +89,16 @@ fw_status fw_scn_load_route(const yt_doc *doc, const yt_node *own, fw_scenario *
     fw_error rerr = {0};
     if (fw_route_from_waypoints(e, no, v, (int)seq->n, &s->route, &rerr))
         return fw_fail_at(err, doc->file, yt_key_line(own, "route"), "own_ship.route", "%s", rerr.msg);
-    s->east = e[0], s->north = no[0];
+    fw_scn_route_start(s);
+    return FW_OK;
+}
+
+void fw_scn_route_start(fw_scenario *s)
+{
+    s->east = s->route.leg[0].east, s->north = s->route.leg[0].north;
     s->course = s->route.leg[0].course;
     s->speed = s->route.leg[0].speed;
     s->leg = 0.0;
     for (int k = 0; k < s->route.n; k++)
         s->leg += s->route.leg[k].length;
-    return FW_OK;
 }

@@ -27,4 +27,16 @@
 fw_status fw_scn_load_route(const yt_doc *doc, const yt_node *own, fw_scenario *s,
                             fw_error *err);
 
+/* The start (s->east, north, course, speed, leg) from s->route. */
+void fw_scn_route_start(fw_scenario *s);
+
+/* None of the keys a route replaces (east_m, course_deg, speed_kn, ...)
+ * beside it in the own_ship map. */
+fw_status fw_scn_route_no_line_keys(const yt_doc *doc, const yt_node *own, fw_error *err);
+
+/* A leg's speed kn (read at line, field path.key; key may be "") within the
+ * margin of the own ship's knowledge base (nomoto.h), else FW_EINPUT there. */
+fw_status fw_scn_leg_speed(const yt_doc *doc, int line, const char *path, const char *key,
+                           double kn, const fw_scenario *s, fw_error *err);
+
 #endif

@@ -37,6 +37,31 @@ static void known_networks(char *out, size_t n)
 
 /* A source file DIR/NAME.ext: FW_EINPUT when required and missing or empty;
  * "" when optional and missing. */
+/* The nodes' and edges' files hold at least one <node> or <edge> element (a
+ * file of none is refused here, before netconvert's less plain message). */
+static fw_status has_element(const fw_network_files *out, const char *path, const char *ext,
+                             const char *what, fw_error *err)
+{
+    const char *tag = strcmp(ext, "nod.xml") == 0 ? "<node" : strcmp(ext, "edg.xml") == 0
+                                                                 ? "<edge"
+                                                                 : NULL;
+    char *text = NULL;
+    if (!tag)
+        return FW_OK;
+    fw_status st = fw_read_text(path, &text, NULL, err);
+    if (st)
+        return st;
+    bool found = false;
+    for (const char *p = strstr(text, tag); p && !found; p = strstr(p + 5, tag))
+        found = p[5] == ' ' || p[5] == '\t' || p[5] == '\n' || p[5] == '\r' || p[5] == '/' ||
+                p[5] == '>';
+    free(text);
+    return found ? FW_OK
+                 : fw_fail(err, FW_EINPUT, "network '%s': %s has no %s> element (%s; "
+                           "networks/README.md says what a network holds)", out->name, path,
+                           tag, what);
+}
+
 static fw_status source_file(fw_network_files *out, const char *ext, bool required,
                              const char *what, char *path, size_t n, fw_error *err)
 {
@@ -45,7 +70,7 @@ static fw_status source_file(fw_network_files *out, const char *ext, bool requir
     if (st)
         return st;
     if (stat(path, &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_size > 0 && access(path, R_OK) == 0)
-        return FW_OK;
+        return has_element(out, path, ext, what, err);
     if (!required && stat(path, &sb) != 0) {
         path[0] = '\0';
         return FW_OK;
