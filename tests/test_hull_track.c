@@ -76,9 +76,31 @@ static void test_corner(void)
     fw_hull_track_free(&tr);
 }
 
+/* A slow ship: its bow 0.7 m a step (1.4 kn), less than the points' spacing.
+ * Its hull moves with its bow every step, 0.7 m, never 0 then 1.4 m (on
+ * main before: the hull stood still every other step at 1.5 m a step, and
+ * the records showed a ship stopping and jumping). */
+static void test_slow_ship_moves_every_step(void)
+{
+    fw_hull_track tr = {0};
+    double L = 90.0, cx, cy, hh, prev_y;
+    CHECK(fw_hull_track_start(&tr, 0.0, 0.0, 0.0, L));
+    fw_hull_track_hull(&tr, L, &cx, &prev_y, &hh);
+    for (int k = 1; k <= 600; k++) {
+        CHECK(fw_hull_track_push(&tr, 0.0, 0.7 * k, L));
+        fw_hull_track_hull(&tr, L, &cx, &cy, &hh);
+        CHECK_NEAR(cy - prev_y, 0.7, 1e-9);
+        CHECK_NEAR(cx, 0.0, 1e-12);
+        prev_y = cy;
+    }
+    CHECK(tr.n <= 90.0 / 2.0 + 4);
+    fw_hull_track_free(&tr);
+}
+
 int main(void)
 {
     TEST_RUN(test_straight);
     TEST_RUN(test_corner);
+    TEST_RUN(test_slow_ship_moves_every_step);
     return TEST_EXIT();
 }

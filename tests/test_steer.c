@@ -278,6 +278,52 @@ static void test_predictor_finishes_the_turn(void)
     CHECK_NEAR(e[120], 0.0, 1e-9);
 }
 
+/* Keeping its distance: a steered ship (150 x 25 m, its own speed 6 m/s) on
+ * its lane's line going north, a lane-mate 1 km ahead at 3 m/s.  It slows
+ * at no more than 0.1 m/s^2, never comes within SUMO's gap of 200 m hull to
+ * hull, and settles behind it at 200 m + 30 s x 3 m/s = 290 m at the
+ * lane-mate's speed (kinematic: it makes good its order along the line). */
+static void test_follows_a_slower_ship_ahead(void)
+{
+    fw_alter_def def = fw_default_alter_def();
+    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
+    def.length = 150.0, def.breadth = 25.0, def.speed = 6.0;
+    snprintf(def.other, sizeof def.other, "%s", "gone"); /* past: it comes back at once */
+    fw_controller *c = NULL;
+    fw_error err = {0};
+    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    fw_own_state o = {.U = 6.0};
+    fw_target lead = {.id = "lead", .north = 1000.0, .speed = 3.0, .stw = 3.0, .length = 150.0,
+                      .breadth = 25.0};
+    fw_assessment as[1];
+    int order[2];
+    double least = INFINITY, u_prev = 6.0, worst_rate = 0.0;
+    for (int k = 0; k < 1800; k++) {
+        fw_sense in = {.t = k, .own = &o, .targets = &lead, .n = 1, .as = as, .order = order};
+        fw_decision d;
+        CHECK(c->ops->decide(c, &in, &d, &err) == FW_OK);
+        CHECK_MSG(d.speed > 0.0, "t %d: no speed order", k);
+        worst_rate = fmax(worst_rate, u_prev - d.speed);
+        u_prev = o.U = d.speed;
+        o.north += o.U, lead.north += lead.speed;
+        least = fmin(least, lead.north - o.north - 150.0);
+    }
+    CHECK_MSG(worst_rate <= 0.1 + 1e-12, "slowed %.3f m/s in a second", worst_rate);
+    CHECK_MSG(least >= 200.0, "came within %.1f m of the ship ahead", least);
+    CHECK_NEAR(lead.north - o.north - 150.0, 290.0, 5.0);
+    CHECK_NEAR(o.U, 3.0, 0.02);
+    /* the lane-mate gone: back up to its own speed at 0.05 m/s^2 */
+    lead.north = 1e6;
+    for (int k = 1800; k < 1800 + 30; k++) {
+        fw_sense in = {.t = k, .own = &o, .targets = &lead, .n = 1, .as = as, .order = order};
+        fw_decision d;
+        CHECK(c->ops->decide(c, &in, &d, &err) == FW_OK);
+        o.U = d.speed;
+    }
+    CHECK_NEAR(o.U, 3.0 + 0.05 * 30, 0.051);
+    fw_controller_destroy(c);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -292,5 +338,6 @@ int main(void)
     TEST_RUN(test_speed_mode_unchanged);
     TEST_RUN(test_head_on_alters);
     TEST_RUN(test_predictor_finishes_the_turn);
+    TEST_RUN(test_follows_a_slower_ship_ahead);
     return TEST_EXIT();
 }

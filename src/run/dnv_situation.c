@@ -130,7 +130,7 @@ static void static_data(writer *w, int id, const char *name, const char *type, d
  * INFINITY for a ship there all the time. */
 static fw_status track_points(const fw_rec_track *tr, double duration, double tol,
                               fw_rec_point **out, int *m, double *appear, double *vanish,
-                              fw_error *err)
+                              double *tol_used, fw_error *err)
 {
     int n = tr->n;
     fw_rec_point *p = malloc(sizeof *p * (size_t)(n + 1));
@@ -153,8 +153,19 @@ static fw_status track_points(const fw_rec_track *tr, double duration, double to
     double dz = (p[n].t - z.t) * z.speed;
     p[n].east += dz * sin(z.course), p[n].north += dz * cos(z.course);
     int hi = !left && dz > 1.0 ? n : n - 1;
-    keep[0] = keep[hi] = true;
-    simplify(p, 0, hi, tol, keep);
+    /* a reader holds FW_SCN_MAX_WAYPOINTS a ship: a track that needs more
+     * (a ship that changed speed for long, each change a leg of its own) is
+     * simplified again at twice the tolerance until it fits (*tol_used) */
+    *tol_used = tol;
+    int kept;
+    do {
+        memset(keep, 0, sizeof *keep * (size_t)(n + 1));
+        keep[0] = keep[hi] = true;
+        simplify(p, 0, hi, *tol_used, keep);
+        kept = 0;
+        for (int k = 0; k <= hi; k++)
+            kept += keep[k];
+    } while (kept > FW_SCN_MAX_WAYPOINTS && (*tol_used *= 2.0) < 1e4);
     *m = 0;
     for (int k = 0; k <= hi; k++) /* the reader wants legs of 1 m at least */
         if (keep[k] && (*m == 0 || hypot(p[k].east - p[*m - 1].east,
@@ -190,20 +201,23 @@ static fw_status targets(writer *w, const fw_scenario *s, const fw_rec_track *tr
     for (int i = 0; i < n && !st; i++) {
         fw_rec_point *p = NULL;
         int m = 0;
-        double appear = 0.0, vanish = INFINITY;
-        if (!(st = track_points(&tracks[i], s->duration, tol, &p, &m, &appear, &vanish, err))) {
+        double appear = 0.0, vanish = INFINITY, used = tol;
+        if (!(st = track_points(&tracks[i], s->duration, tol, &p, &m, &appear, &vanish, &used,
+                                err))) {
+            bool more = appear > 0.0 || isfinite(vanish) || used > tol;
             fprintf(w->f, "%s\n    {\n", i ? "," : "");
             double c = atan2(p[1].east - p[0].east, p[1].north - p[0].north);
             double v = hypot(p[1].east - p[0].east, p[1].north - p[0].north) / (p[1].t - p[0].t);
             if (!(st = initial(w, p[0].east, p[0].north, c, v, err)) &&
                 !(st = waypoints(w, p, m, err)))
                 static_data(w, i + 2, tracks[i].info.id, tracks[i].info.type,
-                            tracks[i].info.length, tracks[i].info.breadth,
-                            appear > 0.0 || isfinite(vanish));
-            if (!st && (appear > 0.0 || isfinite(vanish))) {
+                            tracks[i].info.length, tracks[i].info.breadth, more);
+            if (!st && more) {
                 fprintf(w->f, "      \"fairway\": {\"appearS\": %.3f", appear);
                 if (isfinite(vanish))
                     fprintf(w->f, ", \"vanishS\": %.3f", vanish);
+                if (used > tol)
+                    fprintf(w->f, ", \"toleranceM\": %.17g", used);
                 fprintf(w->f, "}\n");
             }
             fprintf(w->f, "    }");

@@ -21,7 +21,10 @@
  * Tracks are simplified with the synchronised Douglas-Peucker rule: a point
  * is dropped only while the straight legs at constant speed between the
  * waypoints kept put the ship within `tolerance` metres of every recorded
- * point at the point's time; so the waypoints keep both path and timing.  A
+ * point at the point's time; so the waypoints keep both path and timing (a
+ * track that would keep more than a reader holds, FW_SCN_MAX_WAYPOINTS, is
+ * simplified at twice the tolerance, again until it fits, and says so:
+ * `"fairway": {"toleranceM": T}`).  A
  * situation has no time at which a ship appears or leaves: a track that
  * begins after t = 0 (a ship that came into sight or onto the network) or
  * ends before the run's end (one that left) gets fairway's own member

@@ -181,7 +181,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     if (fw_behaviour_parse(beh, &s->reactions.behaviour))
         return fw_fail_at(err, doc->file, yt_key_line(tr, "behaviour"), "traffic.behaviour",
                           "'%s': expected colregs or blind", beh);
-    char gw[32] = "speed";
+    char gw[32] = "course";
     if ((st = yt_opt_string(doc, tr, "traffic", "give_way", gw, sizeof gw, err)))
         return st;
     if (fw_give_way_parse(gw, &s->reactions.give_way))
@@ -195,8 +195,10 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     if (fw_waterway_parse(ww, &s->waterway))
         return fw_fail_at(err, doc->file, yt_key_line(tr, "waterway"), "traffic.waterway",
                           "'%s': expected open-sea, tss or channel", ww);
-    /* a channel's lanes are the water; elsewhere a ship may leave them (reactions.h) */
+    /* a channel's lanes are the water, a scheme's traffic lane is where a
+     * ship proceeds (rule 10(b)(i)); elsewhere it may go anywhere (reactions.h) */
     s->reactions.room_from_lanes = s->waterway == FW_WATERWAY_CHANNEL;
+    s->reactions.room_traffic_lanes = s->waterway == FW_WATERWAY_TSS;
     /* the audit's risk distance for this water and this ship (audit.h) */
     s->audit = fw_audit_def_for(s->waterway, s->ship.Loa);
     long fill = 0;

@@ -86,6 +86,7 @@ typedef struct fw_sumo_backend {
      * lane counted) to the right and left sides of its edge.  FW_EINPUT when
      * it is in a junction now. */
     fw_status (*lane)(const char *id, double *xy, int max, int *n, double *right, double *left,
+                      bool *traffic_lane,
                       fw_error *err);
 } fw_sumo_backend;
 

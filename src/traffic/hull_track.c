@@ -42,15 +42,20 @@ bool fw_hull_track_start(fw_hull_track *tr, double bx, double by, double heading
     tr->x[0] = bx - length * sh, tr->y[0] = by - length * ch, tr->s[0] = 0.0;
     tr->x[1] = bx, tr->y[1] = by, tr->s[1] = length;
     tr->n = 2;
+    tr->provisional = false;
     return true;
 }
 
 bool fw_hull_track_push(fw_hull_track *tr, double bx, double by, double length)
 {
+    if (tr->provisional && tr->n > 2)
+        tr->n--; /* the last step's bow, kept only until now */
+    tr->provisional = false;
     int last = tr->n - 1;
     double d = hypot(bx - tr->x[last], by - tr->y[last]);
-    if (d < kMinStep)
+    if (d < 1e-9)
         return true;
+    bool close = d < kMinStep;
     /* drop what lies wholly behind the stern (keep one point before it) */
     double keep_from = tr->s[last] + d - length;
     int k = 0;
@@ -66,6 +71,7 @@ bool fw_hull_track_push(fw_hull_track *tr, double bx, double by, double length)
         return false;
     tr->x[tr->n] = bx, tr->y[tr->n] = by, tr->s[tr->n] = tr->s[tr->n - 1] + d;
     tr->n++;
+    tr->provisional = close;
     return true;
 }
 

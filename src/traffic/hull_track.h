@@ -26,6 +26,8 @@
 typedef struct fw_hull_track {
     double *x, *y, *s;  /* the bow's points (m, SUMO's plane) and their distance along it */
     int n, cap;
+    bool provisional;   /* the last point is the bow now, closer than kMinStep to the one
+                           before: replaced by the next */
 } fw_hull_track;
 
 /* Starts the track: the bow at (bx, by), sailing `heading` (rad,
@@ -34,9 +36,11 @@ typedef struct fw_hull_track {
 bool fw_hull_track_start(fw_hull_track *tr, double bx, double by, double heading,
                          double length);
 
-/* The bow's next position; points closer than kMinStep to the last are not
- * kept (a ship standing still adds nothing).  Points more than `length`
- * behind the stern are dropped.  false when out of memory. */
+/* The bow's next position; a point closer than kMinStep to the last kept
+ * one is the track's end only until the next (a ship standing still adds
+ * nothing; a slow one's hull still moves with its bow every step).  Points
+ * more than `length` behind the stern are dropped.  false when out of
+ * memory. */
 bool fw_hull_track_push(fw_hull_track *tr, double bx, double by, double length);
 
 /* The hull of a ship `length` m long whose bow is the track's last point:

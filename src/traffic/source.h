@@ -65,6 +65,7 @@ typedef struct fw_lane_info {
     int np;
     double e[FW_LANE_POINTS], n[FW_LANE_POINTS];
     double room_starboard, room_port;
+    bool traffic_lane; /* a separation scheme's traffic lane (traffic.h fw_traffic_lane) */
 } fw_lane_info;
 
 typedef struct fw_source_ops {

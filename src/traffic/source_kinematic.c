@@ -270,7 +270,9 @@ static fw_status kin_lane(fw_source *s, const char *id, fw_lane_info *out, fw_er
     double ue, un;
     scripted(p, kin_time(s), &at);
     fw_velocity(1.0, at.course, &ue, &un);
-    *out = (fw_lane_info){.np = 2, .room_starboard = k->def.room, .room_port = k->def.room};
+    /* its leg is its traffic lane: the def's room bounds it (source.h) */
+    *out = (fw_lane_info){.np = 2, .room_starboard = k->def.room, .room_port = k->def.room,
+                          .traffic_lane = true};
     out->e[0] = at.east - 1e4 * ue, out->n[0] = at.north - 1e4 * un;
     out->e[1] = at.east + 5e4 * ue, out->n[1] = at.north + 5e4 * un;
     return FW_OK;

@@ -436,7 +436,7 @@ static fw_status ss_lane(fw_source *s, const char *id, fw_lane_info *out, fw_err
     double xy[2 * FW_LANE_POINTS];
     *out = (fw_lane_info){0};
     fw_status st = fw_traffic_lane(k->tr, id, xy, FW_LANE_POINTS, &out->np, &out->room_starboard,
-                                   &out->room_port, err);
+                                   &out->room_port, &out->traffic_lane, err);
     if (!st && out->np < 2)
         st = fw_fail(err, FW_EINPUT, "sumo source: '%s' has no lane ahead", id);
     for (int i = 0; !st && i < out->np; i++)
@@ -478,14 +478,23 @@ double fw_sumo_source_step_wall(const fw_source *s)
  * lanes (courses within 40 deg of opposite: a 30 deg bend's legs included)
  * pass at the lanes' spacing, which the network sets and no other placement
  * would change; those only when their hulls would touch (centres within the
- * half beams' sum). */
+ * half beams' sum).  Whatever their courses, two hulls placed within their
+ * half beams' sum of each other (overlapping among them: a crossing ship put
+ * on a lane ship, already past its closest approach) are one too many. */
 static bool fill_conflict(const fw_sumo_source_def *d, const fw_target *v, const bool *out, int i)
 {
     double ie, in;
     fw_velocity(v[i].speed, v[i].course, &ie, &in);
     for (int j = 0; j < i; j++) {
+        if (out[j] || v[j].own)
+            continue;
+        const fw_target *a = &v[i], *b = &v[j];
+        if (fw_hull_distance(a->east, a->north, a->heading, a->length, a->breadth, b->east,
+                             b->north, b->heading, b->length, b->breadth) <
+            0.5 * (a->breadth + b->breadth))
+            return true;
         double c = cos(v[i].course - v[j].course);
-        if (out[j] || v[j].own || c > cos(fw_deg_to_rad(30.0)))
+        if (c > cos(fw_deg_to_rad(30.0)))
             continue;
         double je, jn, tc, dc;
         fw_velocity(v[j].speed, v[j].course, &je, &jn);

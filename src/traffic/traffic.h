@@ -165,10 +165,12 @@ fw_status fw_traffic_take(fw_traffic *t, const char *id, fw_error *err);
 /* Background ship id's lane (source.h fw_lane_info): up to max points of the
  * centre line of its lane along its route ahead into xy (east, north pairs,
  * SUMO's plane is fairway's) and the room from its line to the right
- * (starboard) and left (port) sides of its edge.  FW_EINPUT when it is in a
- * junction now. */
+ * (starboard) and left (port) sides of its edge; *traffic_lane: its edge is
+ * a separation scheme's traffic lane (the network's edge carries the
+ * parameter fairway.traffic_lane = true, networks/README.md).  FW_EINPUT
+ * when it is in a junction now. */
 fw_status fw_traffic_lane(fw_traffic *t, const char *id, double *xy, int max, int *n,
-                          double *right, double *left, fw_error *err);
+                          double *right, double *left, bool *traffic_lane, fw_error *err);
 /* ... given back: its hull centre (x, y, heading rad) for the next step
  * mapped onto the nearest lane of its route ahead and moved there, its
  * speed (m/s) as its last, SUMO's car following driving it from then on.

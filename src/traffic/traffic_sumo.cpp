@@ -323,7 +323,7 @@ std::string lane_of(const std::string &e, int k)
 }
 
 fw_status be_lane(const char *id, double *xy, int max, int *n, double *right, double *left,
-                  fw_error *err)
+                  bool *traffic_lane, fw_error *err)
 {
     fw_status st = FW_OK;
     *n = 0;
@@ -342,6 +342,7 @@ fw_status be_lane(const char *id, double *xy, int max, int *n, double *right, do
                 (k < li ? r : l) += S::Lane::getWidth(lane_of(edge, k));
         const double lat = S::Vehicle::getLateralLanePosition(id);
         *right = r + 0.5 * w + lat, *left = l + 0.5 * w - lat;
+        *traffic_lane = S::Edge::getParameter(edge, "fairway.traffic_lane") == "true";
         const std::vector<std::string> route = S::Vehicle::getRoute(id);
         double length = 0.0;
         for (size_t i = (size_t)std::max(0, S::Vehicle::getRouteIndex(id));

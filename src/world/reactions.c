@@ -21,7 +21,7 @@ fw_reactions_def fw_default_reactions_def(void)
                               .parallel = fw_deg_to_rad(30.0), .last_cpa = 0.25 * FW_NMILE,
                               .last_time = 240.0, .interval = 10.0,
                               .colregs = fw_default_colregs_def(),
-                              .watch = fw_default_watch_def(), .give_way = FW_GIVE_WAY_SPEED,
+                              .watch = fw_default_watch_def(), .give_way = FW_GIVE_WAY_COURSE,
                               .alter_min = fw_deg_to_rad(20.0), .alter_max = fw_deg_to_rad(60.0),
                               .room_from_lanes = true, .sensing = fw_default_sensing_def()};
 }

@@ -52,8 +52,8 @@
  * Head-on meetings of two lane-bound ships are kept apart by their lanes;
  * the own ship's policy turns.
  *
- * give_way: speed (the default, the above: slowing down as if a lane-bound
- * ship had no other action) or course: a give-way ship alters course to starboard (rules 8,
+ * give_way: speed (the above: slowing down as if a lane-bound ship had no
+ * other action) or course (the default): a give-way ship alters course to starboard (rules 8,
  * 15, 16), by the least of alter_min, alter_min + 5 deg, ... alter_max (20
  * and 60 deg: at least 20 deg is readily apparent to another ship, rule 8(b),
  * by eye and on radar) at which it passes every ship near it at cpa or more
@@ -130,14 +130,17 @@ typedef struct fw_reactions_def {
     double interval;      /* s, 10: each ship looks round this often (0: every step) */
     fw_colregs_def colregs;
     fw_watch_def watch;   /* its watchkeeping (watch.h): flawless by default */
-    fw_give_way give_way; /* speed (default) or course */
+    fw_give_way give_way; /* course (default) or speed */
     double alter_min, alter_max; /* rad, 20 and 60 deg: the course alterations tried */
-    /* the sea room is the lanes' (true: a channel, where the edge of the
-     * lanes is the edge of the water) or unlimited (false: open sea and a
-     * separation scheme's lanes, which a ship may leave to avoid a
-     * collision, rule 10 with rule 2(b)); true by default, scenarios set it
-     * from traffic.waterway */
+    /* the sea room is the lanes' (room_from_lanes: a channel, where the
+     * edge of the lanes is the edge of the water; room_traffic_lanes: on a
+     * separation scheme's traffic lanes only (source.h fw_lane_info), whose
+     * ships proceed in their lane, rule 10(b)(i): an alteration that needs
+     * more room than the lane has is not taken, the ship slows instead) or
+     * unlimited (neither: open sea, and a ferry's route across a scheme);
+     * room_from_lanes by default, scenarios set them from traffic.waterway */
     bool room_from_lanes;
+    bool room_traffic_lanes;
     /* what they know of the others (Sensing, above): perfect by default */
     fw_sensing_def sensing;
 } fw_reactions_def;
@@ -188,6 +191,7 @@ typedef struct fw_take_order {
     double alteration;
     char other[FW_TARGET_ID_MAX];
     double cpa;
+    double speed;      /* m/s, the speed it sails when nothing is in its way */
 } fw_take_order;
 
 typedef struct fw_reactions fw_reactions;

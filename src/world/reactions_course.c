@@ -46,12 +46,13 @@ static double pass_on_course(const fw_reactions *r, int self, const fw_target *a
 }
 
 static fw_status order(fw_reactions *r, const fw_target *a, const fw_lane_info *lane,
-                       double alt, const char *other, fw_error *err)
+                       double alt, double v0, const char *other, fw_error *err)
 {
     if (!fw_reserve((void **)&r->takes, sizeof *r->takes, &r->takes_cap, r->ntakes + 1))
         return fw_fail(err, FW_ERUN, "out of memory for the ships to steer");
     fw_take_order *o = &r->takes[r->ntakes++];
-    *o = (fw_take_order){.ship = *a, .lane = *lane, .alteration = alt, .cpa = r->def.cpa};
+    *o = (fw_take_order){.ship = *a, .lane = *lane, .alteration = alt, .cpa = r->def.cpa,
+                            .speed = v0};
     o->ship.own = false;
     snprintf(o->other, sizeof o->other, "%s", other);
     return FW_OK;
@@ -87,7 +88,7 @@ int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, re
             fw_lane_where(&lane, a->east, a->north, &lc, &xt, &seg);
             if (fabs(xt) > kOnLine || fabs(fw_wrap_pi(a->course - lc)) > kAlong)
                 return 0;
-            if (!r->def.room_from_lanes)
+            if (!r->def.room_from_lanes && !(r->def.room_traffic_lanes && lane.traffic_lane))
                 lane.room_starboard = lane.room_port = INFINITY;
         }
         /* its sideways run until the last of them is past, its half
@@ -103,7 +104,7 @@ int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, re
         snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
         fw_react_sense_note(r, nearest, &x);
         snprintf(st->other, sizeof st->other, "%s", all[nearest].id);
-        if (fw_react_record(r, &x, err) || order(r, a, &lane, alt, all[nearest].id, err))
+        if (fw_react_record(r, &x, err) || order(r, a, &lane, alt, v0, all[nearest].id, err))
             return -1;
         return 1;
     }

@@ -37,7 +37,8 @@ void fw_steer_ship(double length, double breadth, const char *type, fw_ship *out
 fw_alter_def fw_default_alter_def(void)
 {
     return (fw_alter_def){.alteration = fw_deg_to_rad(30.0), .cpa = 0.5 * FW_NMILE,
-                          .room = INFINITY, .length = 100.0, .helm_max = fw_deg_to_rad(20.0)};
+                          .room = INFINITY, .length = 100.0, .breadth = 16.0,
+                          .helm_max = fw_deg_to_rad(20.0)};
 }
 
 void fw_lane_where(const fw_lane_info *lane, double e, double n, double *course, double *xtrack,
@@ -114,6 +115,9 @@ typedef struct steer_ctl {
     bool news;
     double news_from, news_to;     /* rad, courses over ground */
     fw_situation news_sit;
+    /* speed (steer.h): its own, the order now, when it was given, and until
+     * when it slows because it cannot alter */
+    double speed, u_order, t_order, slow_until;
 } steer_ctl;
 
 /* The heading that makes good course chi over ground at speed U in the
@@ -187,6 +191,14 @@ static void cpa_on(const fw_own_state *o, const fw_target *t, double chi, double
     fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, tc, dc);
 }
 
+/* A ship going its way (its course within 45 deg of chi): one ahead it keeps
+ * its distance from by speed (follow_speed), one astern is overtaking and
+ * keeps clear of it (rule 13); neither makes it alter course. */
+static bool same_way(const fw_target *t, double chi)
+{
+    return fabs(fw_wrap_pi(t->course - chi)) < 0.25 * FW_PI;
+}
+
 /* The ship it must give way to by altering course (rules 14 and 15, from
  * its own side: crossing from starboard, head-on) that on course chi it would pass
  * within the passing distance in the horizon, the nearest in time; -1: none. */
@@ -196,6 +208,8 @@ static int must_give_way(const steer_ctl *c, const fw_sense *in, double chi, fw_
     double tbest = INFINITY;
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
+        if (same_way(&in->targets[i], in->own->psi))
+            continue;
         cpa_on(in->own, &in->targets[i], chi, &tc, &dc);
         if (!(tc > 0.0 && tc < kHorizonS && dc < c->def.cpa && tc < tbest))
             continue;
@@ -206,12 +220,16 @@ static int must_give_way(const steer_ctl *c, const fw_sense *in, double chi, fw_
     return best;
 }
 
-/* The closest it would pass any ship it sees on course chi, ahead in the horizon. */
-static double pass_within(const fw_sense *in, double chi, double horizon, int *who)
+/* The closest it would pass any ship it sees on course chi, ahead in the
+ * horizon (with cross_only, only ships not going its way). */
+static double pass_within(const fw_sense *in, double chi, double horizon, bool cross_only,
+                          int *who)
 {
     double best = INFINITY;
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
+        if (cross_only && same_way(&in->targets[i], in->own->psi))
+            continue;
         cpa_on(in->own, &in->targets[i], chi, &tc, &dc);
         if (tc > 0.0 && tc < horizon && dc < best)
             best = dc, *who = i;
@@ -222,32 +240,37 @@ static double pass_within(const fw_sense *in, double chi, double horizon, int *w
 static double pass_on(const fw_sense *in, double chi)
 {
     int who;
-    return pass_within(in, chi, kHorizonS, &who);
+    return pass_within(in, chi, kHorizonS, false, &who);
 }
 
 /* Close quarters (rules 2(b) and 17(b)): whatever the roles, a ship the
  * course it steers (chi) would pass within a quarter of the passing
- * distance in the next 5 minutes makes it turn now, to the course from 10 to
- * 90 deg to starboard of its heading (10 deg steps) that passes every ship
- * farthest in those 5 minutes, if that gains 50 m (true: turned).  Never to
+ * distance in the next 5 minutes (not one going its way: same_way) makes it
+ * turn now, to the course from 10 to 90 deg to starboard of its heading (10
+ * deg steps, at most 90 deg off its lane) that passes every ship farthest in
+ * those 5 minutes, if that gains 50 m (true: turned).  Never to
  * port: the other ship, by the same rules, turns to starboard (17(c)), and
  * a turn to port against a constant-velocity look at a ship that is already
  * turning is the classic way to meet it. */
 static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, double chi)
 {
     int j = -1, k;
-    double now = pass_within(in, chi, kCloseS, &j), lim = 0.25 * c->def.cpa;
-    if (!(now < lim))
+    double lim = 0.25 * c->def.cpa;
+    if (!(pass_within(in, chi, kCloseS, true, &j) < lim))
         return false;
-    double best = now, pick = chi;
+    double best = pass_within(in, chi, kCloseS, false, &k), pick = chi;
     for (int s = 1; s <= 9; s++) {
         double cand = in->own->psi + fw_deg_to_rad(10.0 * s);
-        double d = pass_within(in, cand, kCloseS, &k);
+        if (fw_wrap_pi(cand - course) > 0.5 * FW_PI)
+            break;
+        double d = pass_within(in, cand, kCloseS, false, &k);
         if (d > best + kBetterM)
             best = d, pick = cand;
     }
-    if (pick == chi)
+    if (pick == chi) {
+        c->slow_until = in->t + kLookS; /* no turn gains: it slows (rule 8(e)) */
         return false;
+    }
     c->news = true, c->news_from = in->own->psi, c->news_to = pick;
     c->news_sit = fw_classify(&c->colregs, in->own, &in->targets[j]);
     c->alter = fw_wrap_pi(pick - course);
@@ -260,7 +283,7 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
  * further to starboard, by the least of 20, 25, ... 60 deg that passes
  * every ship it sees at the passing distance, and at most 90 deg off its
  * lane (true: a new alteration; false: none needed, or none that clears,
- * and it holds on: its model keeps its speed). */
+ * and then it slows for the next look). */
 static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi)
 {
     fw_situation sit = FW_SIT_GIVE_WAY;
@@ -280,16 +303,75 @@ static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi)
         snprintf(c->other, sizeof c->other, "%s", in->targets[j].id);
         return true;
     }
+    c->slow_until = in->t + kLookS;
     return false;
 }
 
+/* Keeping its distance (steer.h): SUMO's gap for the background types
+ * (networks/ships.add.xml minGap 200 m, tau 30 s), closed or opened over
+ * kRelaxS; who counts: a ship ahead within 45 deg of its course, in its path
+ * (its half breadth and the other's and kSideM) now or within kPathS. */
+static const double kMinGapM = 200.0, kHeadwayS = 30.0, kRelaxS = 60.0;
+static const double kSideM = 100.0, kPathS = 600.0;
+/* m/s^2 (ships.add.xml's accel and decel), m/s (steerage way), and the
+ * fraction of its speed it slows to when it cannot alter */
+static const double kAccel = 0.05, kDecel = 0.1, kSteerageWay = 1.0, kSlowFraction = 0.3;
+
+/* The fastest it may sail on course chi behind the ships ahead going its way. */
+static double follow_speed(const steer_ctl *c, const fw_sense *in, double chi, double want)
+{
+    const fw_own_state *o = in->own;
+    double v = want;
+    for (int i = 0; i < in->n; i++) {
+        const fw_target *t = &in->targets[i];
+        double dc = fw_wrap_pi(t->course - chi);
+        double dx = t->east - o->east, dy = t->north - o->north;
+        double ahead = dx * sin(chi) + dy * cos(chi), across = dx * cos(chi) - dy * sin(chi);
+        if (!(ahead > 0.0) || fabs(dc) > 0.25 * FW_PI)
+            continue;
+        double w = 0.5 * (c->def.breadth + t->breadth) + kSideM, tc, dcpa;
+        if (fabs(across) > w) {
+            cpa_on(o, t, chi, &tc, &dcpa);
+            if (!(tc > 0.0 && tc < kPathS && dcpa < w))
+                continue;
+        }
+        double lead = fmax(0.0, t->speed * cos(dc));
+        double gap = ahead - 0.5 * (c->def.length + t->length);
+        v = fmin(v, lead + (gap - kMinGapM - kHeadwayS * lead) / kRelaxS);
+    }
+    return v;
+}
+
+/* Its speed order this step: towards what it wants, as fast as it may
+ * change, never below steerage way. */
+static double speed_order(steer_ctl *c, const fw_sense *in, double chi)
+{
+    if (!(c->speed > 0.0))
+        c->speed = fmax(in->own->U, kSteerageWay);
+    if (!isfinite(c->t_order))
+        c->u_order = in->own->U, c->t_order = in->t;
+    double want = in->t < c->slow_until ? kSlowFraction * c->speed : c->speed;
+    /* behind the ships ahead on the course it steers and on the course it
+     * makes good now: a slow ship turns slowly (K = K' U / L), and sails on
+     * the old course for a while */
+    const fw_own_state *o = in->own;
+    double cog = atan2(o->U * sin(o->psi) + o->cur_e, o->U * cos(o->psi) + o->cur_n);
+    want = fmin(follow_speed(c, in, chi, want), follow_speed(c, in, cog, want));
+    want = fmax(kSteerageWay, want);
+    double dt = fmax(0.0, in->t - c->t_order), u = c->u_order;
+    u = want > u ? fmin(want, u + kAccel * dt) : fmax(want, u - kDecel * dt);
+    c->u_order = u, c->t_order = in->t;
+    return u;
+}
+
 /* The course over ground to a line `offset` m to starboard of the lane's
- * (line-of-sight), never more than the alteration off the line's course. */
+ * (line-of-sight), never more than the alteration (at least 20, at most 45
+ * deg) off the line's course. */
 static double los_course(const steer_ctl *c, double course, double xtrack, double offset)
 {
     double look = fmax(4.0 * c->def.length, 400.0);
     double off = atan2(-(xtrack - offset), look);
-    double lim = fmax(fabs(c->alter), fw_deg_to_rad(20.0));
+    double lim = fmin(fmax(fabs(c->alter), fw_deg_to_rad(20.0)), fw_deg_to_rad(45.0));
     return course + fmax(-lim, fmin(lim, off));
 }
 
@@ -339,7 +421,7 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
         c->def.pred->turning = fabs(fw_wrap_pi(psi_d - o->psi)) > fw_deg_to_rad(1.0);
     }
     *d = (fw_decision){.mode = c->phase == FW_STEER_ALTER ? FW_MODE_AVOID : FW_MODE_AUTOPILOT,
-                       .helm = helm, .primary = -1,
+                       .helm = helm, .speed = speed_order(c, in, chi), .primary = -1,
                        .reason = c->phase == FW_STEER_ALTER    ? "gives way: course altered"
                                  : c->phase == FW_STEER_RETURN ? "back to its lane"
                                                                : "on its lane: to be given back"};
@@ -356,7 +438,7 @@ fw_status fw_steer_controller_create(const fw_alter_def *def, fw_controller **ou
     *out = NULL;
     if (def->lane.np < 2 || def->lane.np > FW_LANE_POINTS ||
         !(def->alteration > 0.0 && def->alteration < 0.5 * FW_PI) || !(def->cpa > 0.0) ||
-        !(def->room >= 0.0) ||
+        !(def->room >= 0.0) || !(def->speed >= 0.0) || !(def->breadth >= 0.0) ||
         !(def->length > 0.0) || !(def->helm_max > 0.0))
         return fw_fail(err, FW_EINPUT, "steer: a lane of 2 or more points, an alteration "
                                        "between 0 and 90 deg, cpa, length and helm positive, room >= 0");
@@ -370,6 +452,9 @@ fw_status fw_steer_controller_create(const fw_alter_def *def, fw_controller **ou
     snprintf(c->other, sizeof c->other, "%s", def->other);
     c->colregs = fw_default_colregs_def();
     c->t_look = -INFINITY; /* set at the first decision */
+    c->speed = def->speed;
+    c->t_order = NAN;      /* the first decision gives the first order */
+    c->slow_until = -INFINITY;
     *out = &c->base;
     return FW_OK;
 }

@@ -30,7 +30,7 @@
  *            closest approach ahead); a ship no longer in sight is past
  *   return   back to its lane's centre line by line-of-sight guidance
  *            (look-ahead 4 ship lengths, at least 400 m), never crossing back
- *            at more than the alteration; while that course would bring it
+ *            at more than the alteration (at least 20, at most 45 deg); while that course would bring it
  *            within half the passing distance of a ship it sees in the next
  *            10 minutes (a ship of its lane, another coming back) and its
  *            lane's course would not, it sails along its lane where it is
@@ -49,6 +49,17 @@
  * officer who sees a ship swing (and AIS's rate of turn) reads its
  * alteration; a constant-velocity look at a ship half way through its turn
  * would see it heading for the very collision it is turning away from.
+ * Speed: it sails at its own speed (the fastest the reactive traffic saw it
+ * sail unhindered), and keeps its distance behind a ship ahead going its
+ * way (within 45 deg of its course, in its path now or within 10 minutes)
+ * as SUMO's ships do along a lane (networks/ships.add.xml: a gap of 200 m
+ * plus 30 s at the leader's speed, closed or opened over a minute: it never
+ * runs up on a lane-mate while off its lane or coming back); where it must
+ * give way and no alteration clears, or at close quarters no turn gains, it
+ * slows to 0.3 of its speed (rule 8(e); the reactive traffic's floor) for
+ * the next 10 s, looked at again then.  Its speed orders change by at most
+ * the background types' 0.05 m/s^2 up and 0.1 m/s^2 down, never below 1 m/s
+ * (steerage way), and it is given back at the speed it has.
  * Wind acts on it no more than on SUMO's ships (neither has windage); a
  * current carries it (vessel.h: a Nomoto vessel's step).
  * While it steers itself it looks round every 10 s, as reactions.h's
@@ -56,9 +67,12 @@
  * that the course it steers would pass within the passing distance in the
  * next 15 minutes makes it alter further to starboard, by the least of 20,
  * 25, ... 60 deg that passes every ship it sees at that distance (at most
- * 90 deg off its lane; none: it holds on, its model has no speed orders),
- * and it gives way to that ship from then on.  The other ships see it as a
- * vessel and give way to it as the rules say (reactions.h).
+ * 90 deg off its lane; none: it slows, below),
+ * and it gives way to that ship from then on.  Ships going its way (courses
+ * within 45 deg) never make it alter: one ahead it keeps its distance from
+ * by speed (below), one astern is overtaking it and keeps clear (rule 13).
+ * The other ships see it as a vessel and give way to it as the rules say
+ * (reactions.h).
  */
 #ifndef FW_WORLD_STEER_H
 #define FW_WORLD_STEER_H
@@ -94,13 +108,16 @@ typedef struct fw_alter_def {
     double cpa;                        /* m, the passing distance it keeps */
     double room;                       /* m, the farthest to starboard of its line it goes */
     double length;                     /* m, its Loa */
+    double breadth;                    /* m */
+    double speed;                      /* m/s, its speed when nothing is in its way
+                                          (0: its speed at the first decision) */
     double helm_max;                   /* rad, 20 deg */
     fw_steer_pred *pred;               /* kept up to date (NULL: none); must outlive
                                           every copy of the ship's record */
 } fw_alter_def;
 
 /* lane and other empty, alteration 30 deg, cpa 926 m, room unlimited, length 100 m,
- * helm 20 deg. */
+ * breadth 16 m, speed 0, helm 20 deg. */
 fw_alter_def fw_default_alter_def(void);
 
 typedef enum fw_steer_phase { FW_STEER_ALTER, FW_STEER_RETURN, FW_STEER_DONE } fw_steer_phase;

@@ -504,6 +504,8 @@ static fw_status take_orders(fw_world *w, fw_error *err)
         sd.alteration = o[k].alteration;
         sd.cpa = o[k].cpa;
         sd.length = o[k].ship.length;
+        sd.breadth = o[k].ship.breadth;
+        sd.speed = o[k].speed;
         /* as reactions.h decided it: a tenth of the room and its half breadth spare */
         sd.room = fmax(0.0, 0.9 * o[k].lane.room_starboard - 0.5 * o[k].ship.breadth);
         snprintf(sd.other, sizeof sd.other, "%s", o[k].other);

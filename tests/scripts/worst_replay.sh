@@ -27,8 +27,13 @@ for r in rows:
     assert abs(replay - db) <= 10.0, r    # replayed from the recorded tracks
 PY
 # --situations: each case as a DNV traffic situation (src/run/dnv_situation.h) that validates
-# against DNV's schema and, read back, sails the replay's run: the own ship within 1 m of the
-# replay's at every instant, the closest approach within 1 m
+# against DNV's schema and, read back, sails the replay's run: every target within 0.5 m of its
+# replayed position at every instant (the simplification's 0.25 m; measured 0.31), the closest approach within
+# 1 m, and the own ship within 10 m of the replay's at every instant.  Not closer: a situation's
+# waypoints carry position and time, not heading; a ship changing lanes crabs up to 5 deg off its
+# course, which the situation's ship, heading along its leg, does not, and the own ship's helm
+# search, which sees hull outlines, may then choose another degree of helm (measured: 7.5 m after
+# 15 minutes, from a 1 deg difference in helm at 820 s)
 "$PYTHON" - "$out" "$dir/w" "$FAIRWAY_DATA/scenarios/dnv/traffic_situation.schema.json" <<'PY' || fail "situations"
 import csv, json, sys
 import jsonschema
@@ -44,9 +49,22 @@ for r in rows:
     dev = max(((float(x["east_m"]) - float(b[x["t_s"]]["east_m"]) - oe) ** 2 +
                (float(x["north_m"]) - float(b[x["t_s"]]["north_m"]) - on) ** 2) ** 0.5
               for x in a if x["t_s"] in b)
-    print(f"case {r[0]}: situation valid {not errors}, own ship within {dev:.3f} m of the replay "
-          f"at {len(b)} instants, closest approach {r[8]} m against {r[6]} m")
-    assert not errors and len(b) == len(a) and dev < 1.0, (errors[:3], dev)
+    # the targets, in the situation's plane (its origin elsewhere: the own ship's offset)
+    names = {str(s["static"]["id"]): s["static"]["name"]
+             for s in json.load(open(c + "/situation.json"))["targetShips"]}
+    ta = {(x["t_s"], x["id"]): x for x in csv.DictReader(open(c + "/replay/targets.csv"))}
+    tdev, tn = 0.0, 0
+    for x in csv.DictReader(open(c + "/situation/targets.csv")):
+        y = ta.get((x["t_s"], names.get(x["id"], x["id"])))
+        if y:
+            tn += 1
+            tdev = max(tdev, ((float(y["east_m"]) - float(x["east_m"]) - oe) ** 2 +
+                              (float(y["north_m"]) - float(x["north_m"]) - on) ** 2) ** 0.5)
+    print(f"case {r[0]}: situation valid {not errors}, targets within {tdev:.3f} m at {tn} "
+          f"points, own ship within {dev:.3f} m of the replay at {len(b)} instants, closest "
+          f"approach {r[8]} m against {r[6]} m")
+    assert not errors and len(b) == len(a) and dev < 10.0, (errors[:3], dev)
+    assert tn > 1000 and tdev < 0.5, (tn, tdev)
     assert abs(float(r[8]) - float(r[6])) < 1.0, r
 PY
 # the exported scenario is an ordinary one
