@@ -58,7 +58,8 @@ static fw_world *crossing(const fw_sensing_def *sense, double visibility, uint64
     kd.ships = ks;
     kd.n = 2;
     fw_world_def wd = fw_default_world_def();
-    wd.reactions = fw_default_reactions_def(); /* colregs, give way by speed */
+    wd.reactions = fw_default_reactions_def(); /* colregs */
+    wd.reactions.give_way = FW_GIVE_WAY_SPEED; /* its action a speed order, read below */
     wd.reactions.colregs.visibility = visibility;
     wd.reactions.sensing = *sense;
     wd.seed = seed;
