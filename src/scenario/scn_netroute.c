@@ -2,6 +2,7 @@
 #include "scenario/scn_netroute.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -166,32 +167,43 @@ static int append_edge(polyline *pl, const fw_net_edge *e, int k)
     return 0;
 }
 
-/* Douglas-Peucker: keep[] marks the points of pl within tol of the line. */
-static void simplify(const polyline *pl, int a, int b, double tol, char *keep)
+/* Are the points of pl between a and b within tol of the segment a-b? */
+static bool within(const polyline *pl, int a, int b, double tol)
 {
-    double dx = pl->x[b] - pl->x[a], dy = pl->y[b] - pl->y[a], len = hypot(dx, dy), far = -1.0;
-    int at = -1;
+    double dx = pl->x[b] - pl->x[a], dy = pl->y[b] - pl->y[a], len2 = dx * dx + dy * dy;
     for (int i = a + 1; i < b; i++) {
         double ex = pl->x[i] - pl->x[a], ey = pl->y[i] - pl->y[a];
-        double d = len > 0.0 ? fabs(ex * dy - ey * dx) / len : hypot(ex, ey);
-        if (d > far)
-            far = d, at = i;
+        double t = len2 > 0.0 ? fmax(0.0, fmin(1.0, (ex * dx + ey * dy) / len2)) : 0.0;
+        if (hypot(ex - t * dx, ey - t * dy) > tol)
+            return false;
     }
-    if (at < 0 || far <= tol)
-        return;
-    keep[at] = 1;
-    simplify(pl, a, at, tol, keep);
-    simplify(pl, at, b, tol, keep);
+    return true;
+}
+
+/* keep[] marks the points of pl a line within tol of it goes through: from
+ * each kept point the farthest on whose chord every point between lies
+ * within tol (on a curve, the fewest points: Douglas-Peucker halves arcs). */
+static void simplify(const polyline *pl, double tol, char *keep)
+{
+    for (int a = 0; a + 1 < pl->n;) {
+        int b = a + 1;
+        while (b + 1 < pl->n && within(pl, a, b + 1, tol))
+            b++;
+        keep[b] = 1;
+        a = b;
+    }
 }
 
 /* The kept points, without interior ones that leave a leg under 0.1 nm. */
-static int reduce(polyline *pl, fw_error *err)
+static int reduce(polyline *pl, double tol, fw_error *err)
 {
+    if (pl->n < 2)
+        return FW_OK;
     char *keep = calloc((size_t)pl->n, 1);
     if (!keep)
         return fw_fail(err, FW_ERUN, "out of memory");
     keep[0] = keep[pl->n - 1] = 1;
-    simplify(pl, 0, pl->n - 1, FW_NETROUTE_TOL_M, keep);
+    simplify(pl, tol, keep);
     int m = 0;
     for (int i = 0; i < pl->n; i++)
         if (keep[i])
@@ -237,15 +249,42 @@ static fw_status edges_line(const yt_doc *doc, const fw_net_shape *ns, const fw_
     return FW_OK;
 }
 
+/* m: the narrowest width of the edges ne. */
+static double narrowest(const fw_net_shape *ns, const net_edges *ne)
+{
+    double w = INFINITY;
+    for (int i = 0; i < ne->n; i++)
+        w = fmin(w, fw_net_shape_edge(ns, ne->id[i])->width);
+    return w;
+}
+
+/* pl reduced into r within *tol of it, the tolerance doubled from
+ * FW_NETROUTE_TOL_M up to max_tol while the route would need more waypoints
+ * than a route has. */
+static fw_status fit_line(const polyline *pl, polyline *r, double *tol, double max_tol,
+                          fw_error *err)
+{
+    for (;;) {
+        r->n = 0;
+        for (int i = 0; i < pl->n; i++)
+            if (push(r, pl->x[i], pl->y[i], pl->edge[i]))
+                return fw_fail(err, FW_ERUN, "out of memory");
+        fw_status st = reduce(r, *tol, err);
+        if (st || r->n <= FW_ROUTE_MAX_LEGS + 1 || 2.0 * *tol > max_tol)
+            return st;
+        *tol *= 2.0;
+    }
+}
+
 /* The route from the reduced line pl, into s. */
 static fw_status make_route(const yt_doc *doc, const yt_node *own, const polyline *pl,
-                            const net_edges *ne, fw_scenario *s, fw_error *err)
+                            double tol, const net_edges *ne, fw_scenario *s, fw_error *err)
 {
     if (pl->n > FW_ROUTE_MAX_LEGS + 1)
         return yt_fail_key(doc, own, "own_ship", "network_route", err,
-                           "its lanes' line needs %d waypoints to stay within %.0f m of it, "
-                           "a route has at most %d", pl->n, FW_NETROUTE_TOL_M,
-                           FW_ROUTE_MAX_LEGS + 1);
+                           "its lanes' line needs %d waypoints to stay within %.0f m of it (a "
+                           "quarter of its narrowest edge's width), a route has at most %d",
+                           pl->n, tol, FW_ROUTE_MAX_LEGS + 1);
     if (pl->n < 2 || hypot(pl->x[1] - pl->x[0], pl->y[1] - pl->y[0]) < 0.1 * FW_NMILE)
         return yt_fail_key(doc, own, "own_ship", "network_route", err,
                            "the edges are shorter than 0.1 nm");
@@ -281,10 +320,13 @@ fw_status fw_scn_load_net_route(const yt_doc *doc, const yt_node *root, const yt
     fw_error nerr = {0};
     if (fw_net_shape_load(nf.net, &ns, &nerr))
         return fw_fail_at(err, doc->file, yt_key_line(own, "network_route"), P, "%s", nerr.msg);
-    polyline pl = {0};
-    if (!(st = edges_line(doc, &ns, &nf, &ne, &pl, err)) && !(st = reduce(&pl, err)))
-        st = make_route(doc, own, &pl, &ne, s, err);
+    polyline pl = {0}, r = {0};
+    double tol = FW_NETROUTE_TOL_M;
+    if (!(st = edges_line(doc, &ns, &nf, &ne, &pl, err)) &&
+        !(st = fit_line(&pl, &r, &tol, narrowest(&ns, &ne) / 4.0, err)))
+        st = make_route(doc, own, &r, tol, &ne, s, err);
     free(pl.x), free(pl.y), free(pl.edge);
+    free(r.x), free(r.y), free(r.edge);
     fw_net_shape_free(&ns);
     return st;
 }

@@ -12,9 +12,12 @@
  *
  * The route's line is each edge's centre line (the mean of its lanes' shapes
  * in the built net.xml, traffic/netshape.h), joined where an edge's last
- * segment meets the next one's first, then reduced by Douglas-Peucker to
- * within FW_NETROUTE_TOL_M of that line with no leg under 0.1 nm; it must
- * then fit in a route's 2..9 waypoints (avoid/route.h).  Each leg's speed is
+ * segment meets the next one's first, then reduced (from each waypoint the
+ * farthest point whose chord keeps every point between) to
+ * within FW_NETROUTE_TOL_M of that line with no leg under 0.1 nm; when that
+ * needs more than a route's 9 waypoints (avoid/route.h), within twice that,
+ * and so on up to a quarter of the narrowest edge's width (the ship then
+ * stays on its edge's lanes); beyond, refused.  Each leg's speed is
  * that of the edge it begins on.  The route replaces east_m/north_m,
  * course_deg, speed_kn, leg_nm and destination, and own_ship.route (giving
  * both is an error).  The network is the scenario's traffic.network.

@@ -78,4 +78,54 @@ bad "$tmp/mine.yaml" "mine.yaml:13: traffic.network: network 'mine': .*/net/mine
 cp "$FAIRWAY_DATA/networks/bend/bend.nod.xml" "$tmp/net/mine/mine.nod.xml"
 printf '<edges>\n</edges>\n' > "$tmp/net/mine/mine.edg.xml"
 bad "$tmp/mine.yaml" "mine.yaml:13: traffic.network: network 'mine': .*/net/mine/mine.edg.xml has no <edge> element (its edges"
+# a curved edge (a user's network): one edge whose shape is a 40 deg arc to
+# port of radius 5 km, a point a degree.  The lanes' line (radius 5250 m) is
+# cut to the fewest waypoints within 10 m of it: 7, every 6.7 deg, on that
+# line (Douglas-Peucker, which halves an arc, gave 9 every 5 deg, and the
+# follower then settled 87 m outside the legs).  The ship within 100 m of
+# the legs.  A 270 deg arc needs 15 waypoints even at 80 m (a quarter of the
+# edge's 500 m is the most allowed): refused.
+arc() { # DIR DEGREES
+  mkdir -p "$1"
+  cp "$FAIRWAY_DATA/networks/bend/bend.typ.xml" "$1/$(basename "$1").typ.xml"
+  "$PYTHON" - "$1" "$2" <<'PY'
+import math, os, sys
+d, deg = sys.argv[1], float(sys.argv[2])
+n = os.path.basename(d)
+pts = [(5000 * math.sin(math.radians(k)), 5000 - 5000 * math.cos(math.radians(k))) for k in range(int(deg) + 1)]
+open(f"{d}/{n}.nod.xml", "w").write('<nodes>\n  <node id="A" x="0" y="0"/>\n  <node id="B" x="%.3f" y="%.3f"/>\n</nodes>\n' % pts[-1])
+shape = " ".join("%.3f,%.3f" % p for p in pts)
+open(f"{d}/{n}.edg.xml", "w").write('<edges>\n  <edge id="AB" from="A" to="B" type="fairway" shape="%s"/>\n</edges>\n' % shape)
+open(f"{d}/demand.yaml", "w").write("streams:\n  - {id: along, edges: [AB], per_hour: 1, types: fw_seagoing}\n")
+PY
+}
+arc "$tmp/net/arc" 40
+sed -e 's|  network: bend|  network: net/arc|' -e 's/edges: \[WB, BE\]/edges: [AB]/' \
+    -e 's/speeds_kn: \[10, 12\]/speeds_kn: 10/' -e 's/duration_s: 3600/duration_s: 690/' "$scn" > "$tmp/arc.yaml"
+"$FAIRWAY" run "$tmp/arc.yaml" --out "$tmp/arcrun" > "$tmp/out.txt" 2>&1 ||
+  { echo "arc run failed"; cat "$tmp/out.txt"; exit 1; }
+"$PYTHON" - "$tmp/arcrun/net-route-bend" <<'PY' || exit 1
+import csv, math, re, sys
+d = sys.argv[1]
+legs = [tuple(map(float, m.groups())) for m in
+        re.finditer(r"route: leg \d+ of \d+ from \(([-\d.]+), ([-\d.]+)\) m, (\d+) deg, (\d+) m", open(d + "/run.log").read())]
+P = [(e, n) for e, n, c, l in legs]
+e, n, c, l = legs[-1]
+P.append((e + l * math.sin(math.radians(c)), n + l * math.cos(math.radians(c))))
+# the lanes' centre line: the arc 250 m to starboard of the edge's shape, radius 5250 m
+r = [math.hypot(x, y - 5000) for x, y in P]
+def dseg(p, a, b):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    t = max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy)))
+    return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
+rows = list(csv.DictReader(open(d + "/own.csv")))
+off = max(min(dseg((float(q["east_m"]), float(q["north_m"])), P[i], P[i + 1]) for i in range(len(P) - 1)) for q in rows)
+print("40 deg arc: %d waypoints at radius %.1f-%.1f m (lanes' line 5250 m), track at most %.1f m off the legs"
+      % (len(P), min(r), max(r), off))
+assert len(P) == 7 and 5250 - 1 < min(r) and max(r) < 5250 + 5 and off < 100.0
+PY
+arc "$tmp/net/loop" 270
+sed -e 's|  network: bend|  network: net/loop|' -e 's/edges: \[WB, BE\]/edges: [AB]/' \
+    -e 's/speeds_kn: \[10, 12\]/speeds_kn: 10/' "$scn" > "$tmp/loop.yaml"
+bad "$tmp/loop.yaml" "loop.yaml:9: own_ship.network_route: its lanes' line needs 15 waypoints to stay within 80 m of it (a quarter of its narrowest edge's width), a route has at most 9"
 echo "ok: the own ship follows a network's edges; bad routes and networks refused"
