@@ -74,6 +74,9 @@ set_tests_properties(plot_run PROPERTIES ENVIRONMENT "${fw_lsan}")
 
 # Vessels that come and go (world.h handles, roles, take and give back); its
 # "sumo" case (a SUMO ship taken and given back) is with the traffic tests.
+# the watch under splitting: redrawn detections, the unseen approach
+fw_test(test_watch_redraw test_watch_redraw.c)
+target_link_libraries(test_watch_redraw PRIVATE fairway_run)
 fw_test(test_vessels test_vessels.c)
 fw_test(test_steer test_steer.c)
 target_link_libraries(test_vessels PRIVATE fairway_run)

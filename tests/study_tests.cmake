@@ -12,6 +12,9 @@ if(FW_MPIRUN AND MPI_C_FOUND)
   fw_script_test(sweep_mpi 0 "same results: 10 runs" sweep_mpi.sh)
   # Open MPI's own allocations would be reported as leaks
   set_tests_properties(sweep_mpi PROPERTIES LABELS no_sanitize TIMEOUT 300)
+  # splitting's (cell, batch) estimates over the ranks, and resumed
+  fw_script_test(sweep_mpi_split 0 "ok: splitting over MPI" sweep_mpi_split.sh)
+  set_tests_properties(sweep_mpi_split PROPERTIES LABELS no_sanitize TIMEOUT 300)
 endif()
 
 fw_cli_test(cli_sweep_help 0 "usage: fairway sweep" sweep --help)
@@ -34,6 +37,7 @@ foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
             "aisspread:4: replications: 4 over recorded traffic would be 4 copies of one run"
             "timespread:6: start.time_s: only over recorded traffic"
             "particles:5: estimate.particles: 1 is out of range \\[2, 100000\\]"
+            "event:5: estimate.event: unknown field"
             "estmethod:5: estimate.method: 'importance': the one method is splitting"
             "estbatches:7: estimate.batches: 1 is out of range \\[2, 10000\\]"
             "norandom:6: estimate: .*base.yaml has no randomness after t = 0"

@@ -65,6 +65,15 @@ static void traj_free(traj *t)
     free(t);
 }
 
+/* The trajectory's score so far (split_run.h): the closeness, and below
+ * the hidden level, with a watch that draws, the unseen ship's approach. */
+static double split_score(const fw_split_run *S, fw_run *r)
+{
+    double c = fw_closeness(fw_run_min_hull(r)), q = S->def.hidden_level;
+    double u = q > 0.0 ? fw_world_own_unseen(fw_run_world(r)) : -1.0;
+    return u < 0.0 || c >= q ? c : q * u;
+}
+
 /* Re-keys due after step k. */
 static void apply_rekeys(fw_run *r, const traj *t, long k, int *next)
 {
@@ -99,7 +108,7 @@ static void child_run(const fw_split_run *S, const traj *t, const char *dir, int
         if (k > 0 && (st = fw_run_step(r, &err)))
             break;
         apply_rekeys(r, t, k, &next);
-        double score = fw_closeness(fw_run_min_hull(r));
+        double score = split_score(S, r);
         if (score > best) {
             if (!fw_reserve((void **)&rises, sizeof *rises, &cap, h.n_rise + 1)) {
                 st = fw_fail(&err, FW_ERUN, "out of memory");
@@ -288,7 +297,7 @@ static void final(void *ctx, const fw_ams_sim *p, int n)
     for (int i = 1; i < n; i++)
         if (p[i].score > p[best].score)
             best = i;
-    S->best = n > 0 ? p[best].score : 0.0;
+    S->best = n > 0 ? fw_closeness(((const traj *)p[best].traj)->min_hull) : 0.0;
     S->best_path[0] = '\0';
     if (n > 0)
         path_text(p[best].traj, S->best_path, sizeof S->best_path);

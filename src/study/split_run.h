@@ -2,7 +2,8 @@
  *
  * A trajectory is one run of a scenario to its duration, scored each step by
  * the own ship's closeness so far (study/outcome.h fw_closeness of the least
- * hull-to-hull distance to any ship: 1 at contact).  Its randomness is the
+ * hull-to-hull distance to any ship: 1 at contact; below a near miss, with a
+ * watch that draws, its unseen approach: fw_split_run_def.hidden_level).  Its randomness is the
  * run's: a start draws the scenario (a seed for the traffic and the streams,
  * and whatever else the caller's `scenario` makes of the draw: a study's
  * own-ship start), a branch is its parent up to the first step whose score
@@ -46,6 +47,17 @@ typedef struct fw_split_run_def {
      * run takes it over), and a look at the run once it is open. */
     fw_status (*make_controller)(void *ctx, fw_controller **out, fw_error *err);
     void (*opened)(void *ctx, fw_run *r);
+    /* The score below this closeness (a near miss's; 0: closeness alone)
+     * when the own ship's watch draws (world.h fw_world_own_unseen): that
+     * level times the watch's unseen approach (watch.h fw_watch_unseen).
+     * Every path on which the watch noticed a ship in time is one path with
+     * one closeness (the policy acts at its act range, whenever it noticed),
+     * so the closeness ties them all and splitting dies out; the unseen
+     * approach rises only while a ship is still hidden from the policy, so
+     * a branch is taken before the detection and draws it afresh (watch.h
+     * fw_watch_redraw).  Events are unchanged: the score is at or above the
+     * level exactly when the closeness is. */
+    double hidden_level;
 } fw_split_run_def;
 
 /* A trajectory's summary for the caller, from fw_split_run_last. */

@@ -105,11 +105,33 @@ double fw_sweep_now(void); /* s, monotonic */
 
 /* sweep_split.c: the study's pending splitting estimates (estimate:), each
  * (cell, batch) in a worker process of its own, up to `jobs` at once,
- * committed one by one (a resumed sweep makes only the missing ones).  Runs
- * locally: under mpirun, rank 0 makes them after the runs. */
+ * committed one by one (a resumed sweep makes only the missing ones).  Under
+ * mpirun (sweep_mpi.c) the ranks take them after the runs, each in a forked
+ * worker, and rank 0 commits them. */
 typedef struct fw_store fw_store;
 fw_status fw_sweep_splits(const fw_sweep_def *def, fw_store *st, const char *work, int jobs,
                           fw_sweep_result *res, fw_error *err);
+/* One estimate's result, as a worker sends it back: fixed size, well under
+ * a pipe's buffer (the worker never waits on its reader), the same bytes
+ * over MPI (ranks of one build on one kind of machine). */
+typedef struct fw_split_msg {
+    int job; /* cell * batches + batch */
+    int ok, rounds;
+    double runs, sim_s, wall_s, p_collision, p_near_miss, best;
+    char reason[512];
+    char path[2048];
+} fw_split_msg;
+/* The (cell, batch) jobs not yet in the database, as job = cell * batches +
+ * batch, batch-major (every cell's batch 0 first: a sweep cut short holds
+ * paired sets); --retry-failed forgets failed ones first. */
+fw_status fw_sweep_split_pending(const fw_sweep_def *def, fw_store *st, int **jobs, int *n_jobs,
+                                 fw_error *err);
+/* One job estimated in a forked worker under work (an MPI rank's part); a
+ * worker that died leaves m failed, saying so. */
+void fw_sweep_split_one(const fw_sweep_def *def, const char *work, int job, fw_split_msg *m);
+/* A job's result into the database, the progress line, and res's counts. */
+fw_status fw_sweep_split_commit(const fw_sweep_def *def, fw_store *st, int job,
+                                const fw_split_msg *m, fw_sweep_result *res, fw_error *err);
 /* A SIGINT or SIGTERM has asked the sweep to stop. */
 bool fw_sweep_stopped(void);
 

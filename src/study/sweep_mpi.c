@@ -2,9 +2,13 @@
  *
  * Rank 0 opens the database, hands out one run id at a time and commits each
  * result as it arrives; ranks 1..K-1 run them (each in a forked child, as a
- * local sweep does, so a crashing run costs one run).  Messages: WORK carries
- * a run id (-1 = stop), RESULT the outcome's bytes.  With one rank the sweep
- * is local.  Built only when CMake finds MPI (FAIRWAY_MPI).
+ * local sweep does, so a crashing run costs one run).  A study with
+ * estimate: then has its pending splitting estimates (cell, batch) handed
+ * out the same way, each made in a forked worker on its rank (sweep_split.c)
+ * and committed by rank 0; a resumed sweep makes only the missing ones.
+ * Messages: WORK carries a run id, or -2 - job for a splitting job (-1 =
+ * stop), RESULT the outcome's bytes, SPLIT an fw_split_msg.  With one rank
+ * the sweep is local.  Built only when CMake finds MPI (FAIRWAY_MPI).
  */
 #include <stdlib.h>
 #include <time.h>
@@ -34,7 +38,7 @@ fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_r
 
 #include <mpi.h>
 
-enum { TAG_WORK = 1, TAG_RESULT = 2 };
+enum { TAG_WORK = 1, TAG_RESULT = 2, TAG_SPLIT = 3 };
 
 bool fw_sweep_under_mpi(void)
 {
@@ -75,8 +79,19 @@ static void worker(const fw_sweep_def *def, const char *work, const char *why)
         MPI_Status stt;
         wait_message(0, TAG_WORK, &stt);
         MPI_Recv(&run_id, 1, MPI_INT, 0, TAG_WORK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        if (run_id < 0)
+        if (run_id == -1)
             return;
+        if (run_id < -1) {
+            fw_split_msg m;
+            memset(&m, 0, sizeof m);
+            m.job = -2 - run_id;
+            if (!work[0])
+                snprintf(m.reason, sizeof m.reason, "%s", why);
+            else
+                fw_sweep_split_one(def, work, -2 - run_id, &m);
+            MPI_Send(&m, (int)sizeof m, MPI_BYTE, 0, TAG_SPLIT, MPI_COMM_WORLD);
+            continue;
+        }
         fw_child c;
         fw_outcome o;
         fw_error err = {0};
@@ -113,62 +128,122 @@ static void worker(const fw_sweep_def *def, const char *work, const char *why)
  * machine, two queued: 0.94 (0.83-1.04). */
 enum { QUEUE_DEPTH = 2 };
 
-/* Rank 0: hand out the pending runs, commit what comes back. */
-static fw_status root(const fw_sweep_def *def, fw_store *st, const int *pending, int n_pending,
-                      int size, fw_sweep_result *res, fw_error *err)
+/* Rank 0's work list: the pending runs (ids >= 0), then the pending
+ * splitting jobs (-2 - job). */
+typedef struct work_list {
+    const int *items;
+    int n, n_runs, next;
+} work_list;
+
+/* Hands rank its next item, if any and if it may queue one: a splitting job
+ * (minutes) is never queued behind another item, so that a rank that falls
+ * idle takes it. */
+static bool hand_out(work_list *wl, int rank, int *queued, int *busy)
 {
-    const fw_study *s = def->study;
-    int next = 0, busy = 0;
+    if (wl->next >= wl->n || (wl->next >= wl->n_runs && queued[rank] > 0))
+        return false;
+    send_run(rank, wl->items[wl->next++]);
+    queued[rank]++;
+    (*busy)++;
+    return true;
+}
+
+/* A result from a rank (tag RESULT or SPLIT) committed. */
+static fw_status take_result(const fw_sweep_def *def, fw_store *st, const MPI_Status *stt,
+                             fw_progress *prog, fw_sweep_result *res, fw_error *err)
+{
+    int n = 0;
+    MPI_Get_count(stt, MPI_BYTE, &n);
+    unsigned char *buf = malloc(n > 0 ? (size_t)n : 1);
+    if (!buf)
+        MPI_Abort(MPI_COMM_WORLD, 1);
+    MPI_Recv(buf, n, MPI_BYTE, stt->MPI_SOURCE, stt->MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (stt->MPI_TAG == TAG_SPLIT) {
+        fw_split_msg m;
+        bool whole = n == (int)sizeof m;
+        if (whole)
+            memcpy(&m, buf, sizeof m);
+        free(buf);
+        if (!whole)
+            return fw_fail(err, FW_ERUN, "rank %d: a splitting result of %d bytes",
+                           stt->MPI_SOURCE, n);
+        return fw_sweep_split_commit(def, st, m.job, &m, res, err);
+    }
+    fw_outcome o;
+    fw_error uerr = {0};
+    bool unpacked = fw_outcome_unpack(buf, (size_t)n, &o, &uerr) == FW_OK;
+    free(buf);
+    if (!unpacked)
+        return fw_fail(err, FW_ERUN, "rank %d: %s", stt->MPI_SOURCE, uerr.msg);
+    fw_status r = fw_store_commit(st, def->study, &o, err);
+    if (!r)
+        fw_progress_count(prog, def->study, &o, res);
+    fw_outcome_free(&o);
+    return r;
+}
+
+/* Rank 0: hand out the pending runs, then the splitting jobs; commit what
+ * comes back. */
+static fw_status root(const fw_sweep_def *def, fw_store *st, work_list *wl, int size,
+                      fw_sweep_result *res, fw_error *err)
+{
+    int busy = 0, runs_out = wl->n_runs;
     int *queued = calloc((size_t)size, sizeof *queued);
     if (!queued)
         MPI_Abort(MPI_COMM_WORLD, 1);
     fw_status r = FW_OK;
-    fw_progress *prog = fw_progress_start(def, n_pending, res->total, res->skipped);
-    /* one run to each rank, then the second: the first runs spread first */
+    fw_progress *prog = fw_progress_start(def, wl->n_runs, res->total, res->skipped);
+    /* one item to each rank, then the second: the first runs spread first */
     for (int k = 0; k < QUEUE_DEPTH; k++)
-        for (int rank = 1; rank < size && next < n_pending; rank++) {
-            send_run(rank, pending[next++]);
-            queued[rank]++;
-            busy++;
-        }
+        for (int rank = 1; rank < size; rank++)
+            hand_out(wl, rank, queued, &busy);
     for (int rank = 1; rank < size; rank++)
         if (!queued[rank])
             send_run(rank, -1);
     while (busy > 0) {
         MPI_Status stt;
-        int n = 0;
-        wait_message(MPI_ANY_SOURCE, TAG_RESULT, &stt);
-        MPI_Get_count(&stt, MPI_BYTE, &n);
-        unsigned char *buf = malloc(n > 0 ? (size_t)n : 1);
-        if (!buf)
+        wait_message(MPI_ANY_SOURCE, MPI_ANY_TAG, &stt);
+        if (stt.MPI_TAG != TAG_RESULT && stt.MPI_TAG != TAG_SPLIT)
             MPI_Abort(MPI_COMM_WORLD, 1);
-        MPI_Recv(buf, n, MPI_BYTE, stt.MPI_SOURCE, TAG_RESULT, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        int rank = stt.MPI_SOURCE;
         busy--;
-        queued[stt.MPI_SOURCE]--;
-        fw_outcome o;
-        fw_error uerr = {0};
-        bool unpacked = fw_outcome_unpack(buf, (size_t)n, &o, &uerr) == FW_OK;
-        free(buf);
+        queued[rank]--;
+        runs_out -= stt.MPI_TAG == TAG_RESULT;
+        fw_status tr = take_result(def, st, &stt, prog, res, err);
+        if (!r)
+            r = tr;
+        if (runs_out == 0 && prog) { /* the runs are all in: their last line */
+            fw_progress_end(prog, res->done, res->failed);
+            prog = NULL;
+        }
         /* after an error, no new work: every rank is told to stop once its
          * queue is done */
-        if (!r && next < n_pending) {
-            send_run(stt.MPI_SOURCE, pending[next++]);
-            queued[stt.MPI_SOURCE]++;
-            busy++;
-        } else if (!queued[stt.MPI_SOURCE]) {
-            send_run(stt.MPI_SOURCE, -1);
-        }
-        if (!unpacked) {
-            if (!r)
-                r = fw_fail(err, FW_ERUN, "rank %d: %s", stt.MPI_SOURCE, uerr.msg);
-            continue;
-        }
-        if (!r && !(r = fw_store_commit(st, s, &o, err)))
-            fw_progress_count(prog, s, &o, res);
-        fw_outcome_free(&o);
+        if ((r || !hand_out(wl, rank, queued, &busy)) && !queued[rank])
+            send_run(rank, -1);
     }
-    fw_progress_end(prog, res->done, res->failed);
+    if (prog)
+        fw_progress_end(prog, res->done, res->failed);
     free(queued);
+    return r;
+}
+
+/* The pending splitting jobs appended to the work list (as -2 - job). */
+static fw_status split_jobs(const fw_sweep_def *def, fw_store *st, int **items, work_list *wl,
+                            fw_error *err)
+{
+    int *jobs = NULL, n = 0;
+    fw_status r = fw_sweep_split_pending(def, st, &jobs, &n, err);
+    int *all = r ? NULL : realloc(*items, sizeof *all * (size_t)(wl->n_runs + n + 1));
+    if (!r && !all)
+        r = fw_fail(err, FW_ERUN, "out of memory");
+    if (!r) {
+        for (int i = 0; i < n; i++)
+            all[wl->n_runs + i] = -2 - jobs[i];
+        *items = all;
+        wl->items = all;
+        wl->n = wl->n_runs + n;
+    }
+    free(jobs);
     return r;
 }
 
@@ -192,6 +267,7 @@ fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_r
     double t0 = fw_sweep_now();
     fw_store *st = NULL;
     int *pending = NULL, n_pending = 0;
+    work_list wl = {0};
     char work[1024] = "";
     if (rank == 0) {
         int total = fw_study_run_count(def->study);
@@ -216,6 +292,9 @@ fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_r
         }
         free(any);
         free(ok);
+        wl = (work_list){.items = pending, .n = n_pending, .n_runs = n_pending};
+        if (!r && def->study->estimate.on)
+            r = split_jobs(def, st, &pending, &wl, err);
     }
     /* every rank learns whether rank 0 could start */
     int go = r == FW_OK;
@@ -224,7 +303,7 @@ fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_r
         work[0] = '\0';
     if (go) {
         if (rank == 0)
-            r = root(def, st, pending, n_pending, size, res, err);
+            r = root(def, st, &wl, size, res, err);
         else
             worker(def, work, err ? err->msg : "no work directory");
     }

@@ -18,15 +18,6 @@
 #include "study/store.h"
 #include "study/sweep.h"
 
-/* What a worker sends back: fixed size, well under a pipe's buffer, so the
- * worker never waits on the parent to write it. */
-typedef struct split_msg {
-    int ok, rounds;
-    double runs, sim_s, wall_s, p_collision, p_near_miss, best;
-    char reason[512];
-    char path[2048];
-} split_msg;
-
 void fw_split_cell_scenario(void *ctx, uint64_t draw, fw_scenario *out)
 {
     const fw_split_cell *c = ctx;
@@ -43,7 +34,7 @@ static uint64_t batch_seed(const fw_study *s, int b)
 
 /* The worker's part: one estimate into *m. */
 static void estimate(const fw_sweep_def *def, const char *work, int cell, int batch,
-                     split_msg *m)
+                     fw_split_msg *m)
 {
     const fw_study *s = def->study;
     double t0 = fw_sweep_now();
@@ -56,7 +47,9 @@ static void estimate(const fw_sweep_def *def, const char *work, int cell, int ba
      * (loading costs a process 0.2 s of CPU); a failure is the runs' to say */
     fw_traffic_load(def->mode.kind, NULL);
     fw_split_cell cc = {s, cell};
-    fw_split_run_def sd = {.scenario = fw_split_cell_scenario, .ctx = &cc, .work_dir = dir};
+    double q = fw_closeness(s->near_miss);
+    fw_split_run_def sd = {.scenario = fw_split_cell_scenario, .ctx = &cc, .work_dir = dir,
+                           .hidden_level = q > 0.0 && q < 1.0 ? q : 1.0};
     sd.run = fw_default_run_def();
     sd.run.mode = def->mode;
     fw_split_run *S = NULL;
@@ -66,7 +59,6 @@ static void estimate(const fw_sweep_def *def, const char *work, int cell, int ba
     fw_ams_def ad = fw_default_ams_def();
     ad.particles = s->estimate.particles;
     ad.seed = batch_seed(s, batch);
-    double q = fw_closeness(s->near_miss);
     if (q > 0.0 && q < 1.0) {
         ad.n_levels = 1;
         ad.levels[0] = q;
@@ -107,7 +99,7 @@ static fw_status spawn(const fw_sweep_def *def, const char *work, int cell, int 
         signal(SIGINT, SIG_DFL);
         signal(SIGTERM, SIG_DFL);
         fw_store_child();
-        split_msg *m = calloc(1, sizeof *m);
+        fw_split_msg *m = calloc(1, sizeof *m);
         if (!m)
             _exit(5);
         estimate(def, work, cell, batch, m);
@@ -118,23 +110,24 @@ static fw_status spawn(const fw_sweep_def *def, const char *work, int cell, int 
     return FW_OK;
 }
 
-/* Reaps the worker that ended (pid) and commits its estimate. */
-static fw_status collect(const fw_sweep_def *def, fw_store *st, worker *w, int status,
-                         fw_sweep_result *res, fw_error *err)
+/* A worker's message read and its end judged: a worker that died or sent
+ * nothing leaves a failed estimate saying so. */
+static void reap(int fd, int status, bool got, fw_split_msg *m)
 {
-    const fw_study *s = def->study;
-    int batches = s->estimate.batches, cell = w->job / batches, batch = w->job % batches;
-    split_msg *m = calloc(1, sizeof *m);
-    if (!m)
-        return fw_fail(err, FW_ERUN, "out of memory");
-    bool got = fw_fd_read(w->fd, m, sizeof *m) == 0;
-    close(w->fd);
-    w->pid = 0;
+    got = got && fw_fd_read(fd, m, sizeof *m) == 0;
+    close(fd);
     if (!got || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         memset(m, 0, sizeof *m);
         snprintf(m->reason, sizeof m->reason, "the worker %s",
                  WIFSIGNALED(status) ? strsignal(WTERMSIG(status)) : "ended without its result");
     }
+}
+
+fw_status fw_sweep_split_commit(const fw_sweep_def *def, fw_store *st, int job,
+                                const fw_split_msg *m, fw_sweep_result *res, fw_error *err)
+{
+    const fw_study *s = def->study;
+    int batches = s->estimate.batches, cell = job / batches, batch = job % batches;
     fw_study_run c = fw_study_cell(s, cell);
     char setting[256];
     fw_split_row row = {.cell = cell, .batch = batch, .domain = c.domain, .ratio = c.ratio,
@@ -153,21 +146,57 @@ static fw_status collect(const fw_sweep_def *def, fw_store *st, worker *w, int s
             fprintf(out,
                     "splitting: cell %d (domain %g m, %s%s%s) batch %d: P(collision) %.3g, "
                     "P(near miss) %.3g, %.0f runs, %.0f s\n",
-                    cell, c.domain, row.behaviour, setting[0] ? ", " : "", setting, batch, m->p_collision, m->p_near_miss, m->runs,
-                    m->wall_s);
+                    cell, c.domain, row.behaviour, setting[0] ? ", " : "", setting, batch,
+                    m->p_collision, m->p_near_miss, m->runs, m->wall_s);
         else
             fprintf(out, "splitting: cell %d batch %d failed: %s\n", cell, batch, m->reason);
     }
     res->split_done += m->ok;
     res->split_failed += !m->ok;
+    return r;
+}
+
+/* Reaps the worker that ended (pid) and commits its estimate. */
+static fw_status collect(const fw_sweep_def *def, fw_store *st, worker *w, int status,
+                         fw_sweep_result *res, fw_error *err)
+{
+    fw_split_msg *m = calloc(1, sizeof *m);
+    if (!m)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    reap(w->fd, status, true, m);
+    w->pid = 0;
+    fw_status r = fw_sweep_split_commit(def, st, w->job, m, res, err);
     free(m);
     return r;
 }
 
+void fw_sweep_split_one(const fw_sweep_def *def, const char *work, int job, fw_split_msg *m)
+{
+    int batches = def->study->estimate.batches;
+    worker w = {0};
+    fw_error err = {0};
+    if (spawn(def, work, job / batches, job % batches, &w, &err)) {
+        memset(m, 0, sizeof *m);
+        snprintf(m->reason, sizeof m->reason, "%s", err.msg);
+        m->job = job;
+        return;
+    }
+    int status = 0;
+    /* the message first (it fits the pipe's buffer), then the end */
+    bool got = fw_fd_read(w.fd, m, sizeof *m) == 0;
+    while (waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (!got || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        reap(w.fd, status, false, m);
+    else
+        close(w.fd);
+    m->job = job;
+}
+
 /* The pending jobs, batch-major (every cell's batch 0 first: a sweep cut
  * short holds paired sets), into *jobs. */
-static fw_status pending(const fw_sweep_def *def, fw_store *st, int **jobs, int *n_jobs,
-                         fw_error *err)
+fw_status fw_sweep_split_pending(const fw_sweep_def *def, fw_store *st, int **jobs, int *n_jobs,
+                                fw_error *err)
 {
     const fw_study *s = def->study;
     int cells = fw_study_cell_count(s), batches = s->estimate.batches, n = cells * batches;
@@ -191,7 +220,7 @@ fw_status fw_sweep_splits(const fw_sweep_def *def, fw_store *st, const char *wor
                           fw_sweep_result *res, fw_error *err)
 {
     int *todo = NULL, n_todo = 0;
-    fw_status r = pending(def, st, &todo, &n_todo, err);
+    fw_status r = fw_sweep_split_pending(def, st, &todo, &n_todo, err);
     worker *w = calloc((size_t)jobs, sizeof *w);
     if (!r && !w)
         r = fw_fail(err, FW_ERUN, "out of memory");

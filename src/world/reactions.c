@@ -88,6 +88,11 @@ void fw_reactions_watch_counts(const fw_reactions *r, long *pairs, long *lapsed)
     fw_watch_counts(r ? r->watch : NULL, pairs, lapsed);
 }
 
+int fw_reactions_redraw(fw_reactions *r, double t)
+{
+    return r ? fw_watch_redraw(r->watch, t) : 0;
+}
+
 void fw_reactions_destroy(fw_reactions *r)
 {
     if (!r)

@@ -210,6 +210,8 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *vessels,
 void fw_reactions_set_rng(fw_reactions *r, fw_rng_getter rng, void *ctx);
 /* Encounters its watch met and of them those it lapsed (0, 0: flawless). */
 void fw_reactions_watch_counts(const fw_reactions *r, long *pairs, long *lapsed);
+/* A split's branch at t: the watch's undetected ships drawn afresh (watch.h fw_watch_redraw). */
+int fw_reactions_redraw(fw_reactions *r, double t);
 
 /* Does it do anything (behaviour colregs)? */
 bool fw_reactions_active(const fw_reactions *r);

@@ -10,7 +10,10 @@
 
 /* One ship and one other it had to give way to. */
 typedef struct pair {
-    double t_act; /* s, when it may act at the earliest: detected + decided */
+    double t_detect; /* s, when it is detected */
+    double t_act;    /* s, when it may act at the earliest: detected + decided */
+    double r0;       /* m, the range when first met */
+    uint32_t key;    /* the acting ship's stream key */
     bool lapsed;
     bool late;    /* acts only within the late range */
 } pair;
@@ -23,6 +26,7 @@ struct fw_watch {
     pair *pairs;
     int cap;
     long n_pairs, n_lapsed;
+    double unseen; /* the largest 1 - range / first range of a ship not yet acted for */
 };
 
 fw_watch_def fw_default_watch_def(void)
@@ -105,21 +109,44 @@ int fw_watch_noticed(fw_watch *w, const fw_target *a, const fw_target *b, double
         w->cap = cap;
     }
     pair *p = &w->pairs[k];
+    double r = hypot(b->east - a->east, b->north - a->north);
     if (w->ids.n > before) { /* a new encounter: its clock, its draws (watch.h) */
-        fw_rng *s = w->rng ? w->rng(w->ctx, fw_rng_vessel_key(a->id), FW_PURPOSE_WATCH) : NULL;
+        uint32_t key = fw_rng_vessel_key(a->id);
+        fw_rng *s = w->rng ? w->rng(w->ctx, key, FW_PURPOSE_WATCH) : NULL;
         if (!s)
             return -1;
         const fw_watch_def *d = &w->def;
         bool lapsed = d->lapse > 0.0 && fw_rng_uniform(s) < d->lapse;
         double detect = d->detect > 0.0 ? d->detect * fw_rng_exponential(s) : 0.0;
         bool late = d->late > 0.0 && fw_rng_uniform(s) < d->late;
-        *p = (pair){.t_act = t + detect + d->delay, .lapsed = lapsed, .late = late};
+        *p = (pair){.t_detect = t + detect, .t_act = t + detect + d->delay, .r0 = r, .key = key,
+                    .lapsed = lapsed, .late = late};
         w->n_pairs++;
         w->n_lapsed += p->lapsed;
     }
-    if (p->lapsed || t < p->t_act - 1e-9)
-        return 0;
-    return !p->late || hypot(b->east - a->east, b->north - a->north) <= w->def.late_range;
+    int noticed = !p->lapsed && t >= p->t_act - 1e-9 && (!p->late || r <= w->def.late_range);
+    if (!noticed && p->r0 > 0.0)
+        w->unseen = fmax(w->unseen, 1.0 - r / p->r0);
+    return noticed;
+}
+
+double fw_watch_unseen(const fw_watch *w) { return w ? w->unseen : 0.0; }
+
+int fw_watch_redraw(fw_watch *w, double t)
+{
+    int n = 0;
+    for (int k = 0; w && w->def.detect > 0.0 && k < w->ids.n; k++) {
+        pair *p = &w->pairs[k];
+        if (p->lapsed || p->t_detect <= t + 1e-9)
+            continue;
+        fw_rng *s = w->rng ? w->rng(w->ctx, p->key, FW_PURPOSE_WATCH) : NULL;
+        if (!s)
+            return -1;
+        p->t_detect = t + w->def.detect * fw_rng_exponential(s);
+        p->t_act = p->t_detect + w->def.delay;
+        n++;
+    }
+    return n;
 }
 
 void fw_watch_counts(const fw_watch *w, long *pairs, long *lapsed)

@@ -88,6 +88,25 @@ bool fw_watch_active(const fw_watch *w);
  * clock and draws its lapse.  -1 when out of memory or without streams. */
 int fw_watch_noticed(fw_watch *w, const fw_target *a, const fw_target *b, double t);
 
+/* A split's branch at t (world.h fw_world_rekey, after the streams are
+ * re-keyed): every pair not yet detected draws its time to detect afresh
+ * from t, from its re-keyed stream, in the order the pairs were met.  The
+ * exponential law is memoryless: given no detection by t, the time left is
+ * again exponential with the same mean, so the branch continues with the
+ * law its parent had, and a splitting over late detections can branch after
+ * the encounter began (without this a branch repeated its parent's
+ * detection).  Lapses, late actions and decided-but-not-acted pairs keep
+ * their draws (decided at the encounter's start).  The pairs redrawn, -1
+ * without streams. */
+int fw_watch_redraw(fw_watch *w, double t);
+
+/* How near a ship not acted for (not detected, lapsed, or late and still
+ * beyond the range) has come so far: the largest 1 - range / (range when
+ * first met), 0 before any; in [0, 1], 1 only at a range of 0.  Splitting's
+ * score for a watch (study/split_run.h): every path on which the watch
+ * noticed in time is the same path, and this tells them apart. */
+double fw_watch_unseen(const fw_watch *w);
+
 /* Encounters met so far, and of them those lapsed (late ones not counted). */
 void fw_watch_counts(const fw_watch *w, long *pairs, long *lapsed);
 

@@ -443,6 +443,11 @@ void fw_world_watch_counts(const fw_world *w, long *pairs, long *lapsed)
     fw_reactions_watch_counts(w->react, pairs, lapsed);
 }
 
+double fw_world_own_unseen(const fw_world *w)
+{
+    return fw_watch_def_draws(&w->def.own_watch) ? fw_watch_unseen(w->own_watch) : -1.0;
+}
+
 void fw_world_own_watch_counts(const fw_world *w, long *pairs, long *lapsed)
 {
     fw_watch_counts(w->own_watch, pairs, lapsed);
@@ -684,7 +689,13 @@ fw_rng *fw_world_rng(fw_world *w, uint32_t vessel_key, fw_purpose purpose)
 {
     return fw_streams_get(w->streams, vessel_key, purpose);
 }
-bool fw_world_rekey(fw_world *w, uint32_t branch) { return fw_streams_rekey(w->streams, branch); }
+bool fw_world_rekey(fw_world *w, uint32_t branch)
+{
+    /* the watches' pending detections are drawn afresh (watch.h fw_watch_redraw) */
+    return fw_streams_rekey(w->streams, branch) &&
+           fw_watch_redraw(w->own_watch, fw_world_time(w)) >= 0 &&
+           fw_reactions_redraw(w->react, fw_world_time(w)) >= 0;
+}
 int fw_world_streams(const fw_world *w) { return fw_streams_count(w->streams); }
 long fw_world_steps(const fw_world *w) { return w->steps; }
 int fw_world_vessel_count(const fw_world *w) { return w->nv; }

@@ -179,7 +179,8 @@ uint64_t fw_world_seed(const fw_world *w); /* the def's seed */
  * hash of a source ship's id: rng.h) and its purpose, and keeps the pointer
  * (valid for the world's life).  fw_world_rekey gives every stream, made or
  * still to be made, fresh randomness from now on (a split's branch b > 0;
- * false when out of memory).  fw_world_streams: how many were made, 0 for a
+ * false when out of memory), and the watches' ships not yet detected a
+ * fresh time to detect (watch.h fw_watch_redraw).  fw_world_streams: how many were made, 0 for a
  * world with no randomness after its start. */
 fw_rng *fw_world_rng(fw_world *w, uint32_t vessel_key, fw_purpose purpose);
 bool fw_world_rekey(fw_world *w, uint32_t branch);
@@ -200,6 +201,9 @@ fw_sensing_counts fw_world_sensing_counts(const fw_world *w);
 void fw_world_watch_counts(const fw_world *w, long *pairs, long *lapsed);
 /* The own ship's watch: ships met, lapsed. */
 void fw_world_own_watch_counts(const fw_world *w, long *pairs, long *lapsed);
+/* The own ship's watch, when it draws: how near a ship it has not acted for
+ * has come (watch.h fw_watch_unseen); -1 without such a watch. */
+double fw_world_own_unseen(const fw_world *w);
 
 /* Every order given to the source's ships so far (reactions.h). */
 const fw_reaction *fw_world_reactions(const fw_world *w, int *n);
