@@ -71,7 +71,11 @@ foreach(bad "negative:27: environment.current.speed_kn: -2 is out of range \\[0,
             "lapse:15: traffic.watch.lapse: 1.5 is out of range \\[0, 1\\]"
             "detect:15: traffic.watch.detect_s: -5 is out of range \\[0, 3600\\]"
             "laterange:15: traffic.watch.late_range_nm: a late action .* needs the range"
-            "ownwatch:15: traffic.watch.own_ship: 'robot': expected perfect or human")
+            "ownwatch:15: traffic.watch.own_ship: 'robot': expected perfect or human"
+            "mixunknown:15: traffic.mix.reckless: unknown field \\(expected one of: compliant, late, passive"
+            "mixsum:15: traffic.mix: the shares sum to 0.7; compliant, late and passive must sum to 1"
+            "mixover:15: traffic.mix: the shares sum to 1.2"
+            "mixrange:15: traffic.mix.late_range_nm: late ships \\(late > 0\\) need the range")
   string(REGEX MATCH "^[a-z]+" name "${bad}")
   string(REGEX REPLACE "^[a-z]+" "" pattern "${bad}")
   fw_cli_test(cli_run_env_${name} 2 "bad-${name}.yaml${pattern}" run

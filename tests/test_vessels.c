@@ -443,6 +443,44 @@ static void test_watch_detect_late(void)
     CHECK(pairs == 1 && lapsed == 0);
 }
 
+/* The mix (world/watch.h): all passive, g never gives way; all late (3800 m),
+ * it gives way at the late range as a late watch does (76 s); with shares
+ * 0.2 passive and 0.1 late, over 2000 seeds the crossing's g is drawn
+ * passive, late and compliant as often as the shares say (within 4 sd of a
+ * binomial count) and acts accordingly; the same seed, the same draw. */
+static void test_mix(void)
+{
+    long pairs, lapsed;
+    fw_watch_def p = fw_default_watch_def();
+    p.mix_passive = 1.0;
+    CHECK(isnan(first_give_way(p, &pairs, &lapsed)));
+    fw_watch_def l = fw_default_watch_def();
+    l.mix_late = 1.0;
+    l.mix_range = 3800.0;
+    double late = first_give_way(l, &pairs, &lapsed);
+    CHECK(late >= 76.0 - 1.0 && late <= 76.0 + 11.0);
+    CHECK(pairs == 0 && lapsed == 0); /* a mix alone draws no encounter */
+    fw_watch_def m = fw_default_watch_def();
+    m.mix_passive = 0.2, m.mix_late = 0.1, m.mix_range = 1000.0;
+    int n = 2000, never = 0, early = 0;
+    for (int seed = 1; seed <= n; seed++) {
+        double t = first_give_way_seed(m, (uint64_t)seed, &pairs, &lapsed);
+        never += isnan(t);
+        early += !isnan(t) && t < 10.0;
+        if (seed <= 5) { /* the same seed, the same draw */
+            double again = first_give_way_seed(m, (uint64_t)seed, &pairs, &lapsed);
+            CHECK(isnan(t) ? isnan(again) : t == again);
+        }
+    }
+    /* passive and late both never act in 120 s (late: 1000 m is reached at
+     * 4243 - 1000 = 3243 m closed at 5.82 m/s, 557 s); compliant at once */
+    double exp_never = 0.3 * n, sd = sqrt(n * 0.3 * 0.7);
+    printf("mix 0.2 passive, 0.1 late: %d of %d acted at once, %d not in 120 s (expected %.0f "
+           "+- %.0f)\n", early, n, never, exp_never, sd);
+    CHECK(fabs(never - exp_never) < 4.0 * sd);
+    CHECK(early + never == n);
+}
+
 /* A started world of wd (its source set here): the own ship (policy, c3 on
  * Nomoto, the route given or its own line) at the origin heading north at
  * 10 kn, and T1 (kinematic) `north` m ahead heading south at 10 kn. */
@@ -787,6 +825,7 @@ int main(int argc, char **argv)
     TEST_RUN(test_watch);
     TEST_RUN(test_traffic_rule19);
     TEST_RUN(test_watch_detect_late);
+    TEST_RUN(test_mix);
     TEST_RUN(test_watch_detect_law);
     TEST_RUN(test_own_watch);
     TEST_RUN(test_returns_to_given_route);

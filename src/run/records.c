@@ -301,6 +301,9 @@ void fw_summary_json(FILE *f, const fw_run_summary *s, const fw_encounter *e, in
     if (s->watched)
         fprintf(f, "%s  \"watch\": {\"encounters\": %ld, \"lapsed\": %ld},\n", ind,
                 s->watch_pairs, s->watch_lapsed);
+    if (s->mixed)
+        fprintf(f, "%s  \"mix\": {\"compliant\": %ld, \"late\": %ld, \"passive\": %ld},\n", ind,
+                s->mix[FW_BEH_COMPLIANT], s->mix[FW_BEH_LATE], s->mix[FW_BEH_PASSIVE]);
     if (s->own_watched)
         fprintf(f, "%s  \"own_watch\": {\"ships\": %ld, \"lapsed\": %ld},\n", ind,
                 s->own_watch_pairs, s->own_watch_lapsed);

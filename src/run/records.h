@@ -116,6 +116,9 @@ typedef struct fw_run_summary {
     /* The own ship's watch likewise: ships noticed or lapsed. */
     bool own_watched;
     long own_watch_pairs, own_watch_lapsed;
+    /* The mix of behaviours (world/watch.h): ships drawn, by behaviour. */
+    bool mixed;
+    long mix[FW_BEH_N];
     bool ais;
     long ais_duplicates, ais_clashes, ais_unprojected;
     int ais_clash_ships;

@@ -325,6 +325,10 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
         sum->watched = true;
         fw_world_watch_counts(R->w, &sum->watch_pairs, &sum->watch_lapsed);
     }
+    if (fw_watch_def_mixed(wd)) {
+        sum->mixed = true;
+        fw_world_mix_counts(R->w, sum->mix);
+    }
     if (fw_watch_def_active(&s->own_watch)) {
         sum->own_watched = true;
         fw_world_own_watch_counts(R->w, &sum->own_watch_pairs, &sum->own_watch_lapsed);

@@ -166,7 +166,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     static const char *const keys[] = {"network", "density", "fill", "targets", "behaviour",
                                        "tracks", "ais", "ais_start", "ais_end",
                                        "ais_max_gap_s", "ais_columns", "waterway", "watch",
-                                       "give_way", NULL};
+                                       "give_way", "mix", NULL};
     const yt_node *tr, *seq = NULL;
     fw_status st;
     if ((st = yt_req_map(doc, root, "", "traffic", &tr, err)) ||
@@ -187,7 +187,7 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
     if (fw_give_way_parse(gw, &s->reactions.give_way))
         return fw_fail_at(err, doc->file, yt_key_line(tr, "give_way"), "traffic.give_way",
                           "'%s': expected speed or course", gw);
-    if ((st = fw_scn_load_watch(doc, tr, s, err)))
+    if ((st = fw_scn_load_watch(doc, tr, s, err)) || (st = fw_scn_load_mix(doc, tr, s, err)))
         return st;
     char ww[32] = "open-sea";
     if ((st = yt_opt_string(doc, tr, "traffic", "waterway", ww, sizeof ww, err)))

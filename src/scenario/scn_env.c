@@ -1,6 +1,7 @@
 /* scn_env.c - a scenario's current and wind (scn_env.h). */
 #include "scenario/scn_env.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -261,6 +262,34 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
     d->sog_sd = fw_kn_to_ms(sog);
     d->cog_sd = fw_deg_to_rad(cog);
     d->heading_sd = fw_deg_to_rad(hdg);
+    return FW_OK;
+}
+
+fw_status fw_scn_load_mix(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err)
+{
+    static const char *const keys[] = {"compliant", "late", "passive", "late_range_nm", NULL};
+    const char *P = "traffic.mix";
+    fw_watch_def *w = &s->reactions.watch;
+    const yt_node *m = NULL;
+    fw_status st;
+    if ((st = yt_opt_map(doc, tr, "traffic", "mix", &m, err)) || !m)
+        return st;
+    double compliant = -1.0, range_nm = 0.0;
+    if ((st = yt_check_keys(doc, m, P, keys, err)) ||
+        (st = yt_opt_number(doc, m, P, "late", 0.0, 1.0, &w->mix_late, err)) ||
+        (st = yt_opt_number(doc, m, P, "passive", 0.0, 1.0, &w->mix_passive, err)) ||
+        (st = yt_opt_number(doc, m, P, "compliant", 0.0, 1.0, &compliant, err)) ||
+        (st = yt_opt_number(doc, m, P, "late_range_nm", 0.01, 20.0, &range_nm, err)))
+        return st;
+    double sum = w->mix_late + w->mix_passive + (compliant >= 0.0 ? compliant : 0.0);
+    if (compliant >= 0.0 ? fabs(sum - 1.0) > 1e-6 : sum > 1.0 + 1e-6)
+        return fw_fail_at(err, doc->file, m->line, P,
+                          "the shares sum to %.6g; compliant, late and passive must sum to 1",
+                          sum);
+    if (w->mix_late > 0.0 && range_nm == 0.0)
+        return fw_fail_at(err, doc->file, yt_key_line(m, "late"), "traffic.mix.late_range_nm",
+                          "late ships (late > 0) need the range they act at");
+    w->mix_range = fw_nm_to_m(range_nm);
     return FW_OK;
 }
 

@@ -73,6 +73,14 @@ fw_status fw_scn_load_sensing(const yt_doc *doc, const yt_node *root, fw_scenari
  * s->own_watch. */
 fw_status fw_scn_load_watch(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err);
 
+/* traffic.mix (after the watch: the own ship's watch is not mixed): the
+ * shares of background ships that are compliant, late (act only within
+ * late_range_nm) or passive (never act), world/watch.h; compliant may be
+ * left out (the rest), given it makes the shares sum to 1.  An unknown
+ * behaviour, a share outside [0, 1], shares that do not sum to 1, late
+ * without its range: FILE:LINE: FIELD. */
+fw_status fw_scn_load_mix(const yt_doc *doc, const yt_node *tr, fw_scenario *s, fw_error *err);
+
 /* environment: of root into s->env (calm water and still air without it). */
 fw_status fw_scn_load_env(const yt_doc *doc, const yt_node *root, fw_scenario *s, fw_error *err);
 

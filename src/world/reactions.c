@@ -83,6 +83,11 @@ void fw_reactions_set_rng(fw_reactions *r, fw_rng_getter rng, void *ctx)
     fw_watch_set_rng(r->watch, rng, ctx);
 }
 
+void fw_reactions_mix_counts(const fw_reactions *r, long counts[FW_BEH_N])
+{
+    fw_watch_mix_counts(r ? r->watch : NULL, counts);
+}
+
 void fw_reactions_watch_counts(const fw_reactions *r, long *pairs, long *lapsed)
 {
     fw_watch_counts(r ? r->watch : NULL, pairs, lapsed);

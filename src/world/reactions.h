@@ -212,6 +212,7 @@ void fw_reactions_set_rng(fw_reactions *r, fw_rng_getter rng, void *ctx);
 void fw_reactions_watch_counts(const fw_reactions *r, long *pairs, long *lapsed);
 /* A split's branch at t: the watch's undetected ships drawn afresh (watch.h fw_watch_redraw). */
 int fw_reactions_redraw(fw_reactions *r, double t);
+void fw_reactions_mix_counts(const fw_reactions *r, long counts[FW_BEH_N]);
 
 /* Does it do anything (behaviour colregs)? */
 bool fw_reactions_active(const fw_reactions *r);

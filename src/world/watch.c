@@ -27,6 +27,10 @@ struct fw_watch {
     int cap;
     long n_pairs, n_lapsed;
     double unseen; /* the largest 1 - range / first range of a ship not yet acted for */
+    fw_idmap ships; /* id -> its behaviour (the mix) */
+    unsigned char *beh;
+    int beh_cap;
+    long n_beh[FW_BEH_N];
 };
 
 fw_watch_def fw_default_watch_def(void)
@@ -48,12 +52,23 @@ fw_status fw_watch_check(const fw_watch_def *d, fw_error *err)
     if (d->late > 0.0 && !(d->late_range > 0.0 && isfinite(d->late_range)))
         return fw_fail(err, FW_EINPUT, "watch late range %g m: must be more than 0",
                        d->late_range);
+    if (!(d->mix_late >= 0.0 && d->mix_passive >= 0.0 &&
+          d->mix_late + d->mix_passive <= 1.0 + 1e-9))
+        return fw_fail(err, FW_EINPUT, "mix late %g, passive %g: shares in [0, 1], at most 1 "
+                                       "together", d->mix_late, d->mix_passive);
+    if (d->mix_late > 0.0 && !(d->mix_range > 0.0 && isfinite(d->mix_range)))
+        return fw_fail(err, FW_EINPUT, "mix late range %g m: must be more than 0", d->mix_range);
     return FW_OK;
+}
+
+bool fw_watch_def_mixed(const fw_watch_def *d)
+{
+    return d->mix_late > 0.0 || d->mix_passive > 0.0;
 }
 
 bool fw_watch_def_draws(const fw_watch_def *d)
 {
-    return d->lapse > 0.0 || d->detect > 0.0 || d->late > 0.0;
+    return d->lapse > 0.0 || d->detect > 0.0 || d->late > 0.0 || fw_watch_def_mixed(d);
 }
 
 bool fw_watch_def_active(const fw_watch_def *d)
@@ -80,7 +95,9 @@ void fw_watch_destroy(fw_watch *w)
     if (!w)
         return;
     fw_idmap_free(&w->ids);
+    fw_idmap_free(&w->ships);
     free(w->pairs);
+    free(w->beh);
     free(w);
 }
 
@@ -95,8 +112,44 @@ bool fw_watch_active(const fw_watch *w)
     return w && fw_watch_def_active(&w->def);
 }
 
+/* Ship a's behaviour, drawn from its own stream the first time (watch.h);
+ * -1 when out of memory or without streams. */
+static int behaviour(fw_watch *w, const fw_target *a)
+{
+    int before = w->ships.n, k;
+    if (fw_idmap_intern(&w->ships, a->id, &k))
+        return -1;
+    if (k >= w->beh_cap) {
+        int cap = fw_grown_cap(w->beh_cap, k + 1);
+        if (!fw_resize((void **)&w->beh, sizeof *w->beh, (size_t)cap))
+            return -1;
+        w->beh_cap = cap;
+    }
+    if (w->ships.n > before) {
+        fw_rng *s = w->rng ? w->rng(w->ctx, fw_rng_vessel_key(a->id), FW_PURPOSE_BEHAVIOUR) : NULL;
+        if (!s)
+            return -1;
+        double u = fw_rng_uniform(s);
+        w->beh[k] = u < w->def.mix_passive                    ? FW_BEH_PASSIVE
+                    : u < w->def.mix_passive + w->def.mix_late ? FW_BEH_LATE
+                                                               : FW_BEH_COMPLIANT;
+        w->n_beh[w->beh[k]]++;
+    }
+    return w->beh[k];
+}
+
 int fw_watch_noticed(fw_watch *w, const fw_target *a, const fw_target *b, double t)
 {
+    int beh = fw_watch_def_mixed(&w->def) ? behaviour(w, a) : FW_BEH_COMPLIANT;
+    if (beh < 0)
+        return -1;
+    if (beh == FW_BEH_PASSIVE)
+        return 0;
+    if (beh == FW_BEH_LATE && hypot(b->east - a->east, b->north - a->north) > w->def.mix_range)
+        return 0;
+    const fw_watch_def *d0 = &w->def;
+    if (d0->delay == 0.0 && d0->lapse == 0.0 && d0->detect == 0.0 && d0->late == 0.0)
+        return 1; /* a mix alone: no encounter to draw for, none counted */
     char key[2 * FW_TARGET_ID_MAX + 2];
     snprintf(key, sizeof key, "%s\n%s", a->id, b->id);
     int before = w->ids.n, k;
@@ -147,6 +200,12 @@ int fw_watch_redraw(fw_watch *w, double t)
         n++;
     }
     return n;
+}
+
+void fw_watch_mix_counts(const fw_watch *w, long counts[FW_BEH_N])
+{
+    for (int i = 0; i < FW_BEH_N; i++)
+        counts[i] = w ? w->n_beh[i] : 0;
 }
 
 void fw_watch_counts(const fw_watch *w, long *pairs, long *lapsed)

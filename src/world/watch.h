@@ -22,6 +22,22 @@
  *            once it is within late_range (m) of it (a late action: the other
  *            seen or judged dangerous only close by)
  *
+ * A mix of behaviours, drawn once per ship (the first time it must give way
+ * to anyone) and kept for the run (issue 27's mix: a ship, not an
+ * encounter, is careless or not):
+ *   compliant  acts as above (the rest of the mix)
+ *   late       acts for another only once it is within mix_range (m) of it
+ *   passive    never acts: neither gives way nor, as a stand-on ship, acts
+ *              when the other does not (rule 17(b)); SUMO drives it on
+ * The mix is all compliant by default.  TUD_RL's river traffic (shared
+ * reference) makes 20 % of its target ships non-cooperative, a training
+ * setting of a reinforcement-learning environment, not an observation of
+ * ships; the observed figure, IWRAP's causation factors (below, about 1e-4
+ * per encounter), is what the lapse carries, and a passive share of the same
+ * size would be the same failures counted per ship.  No source gives how
+ * many ships act late, so the mix is the user's (a study axis:
+ * traffic.mix.passive, traffic.mix.late).
+ *
  * All are zero by default: the flawless watch fairway had before, every
  * number unchanged.  Values with sources (scenarios/README.md "The watch"
  * has the table):
@@ -37,7 +53,9 @@
  * scenarios/studies/dover-imperfect.yaml uses the crossing lapse.  Draws come from the acting
  * ship's stream (FW_PURPOSE_WATCH, key rng.h fw_rng_vessel_key of its id),
  * so splitting re-keys them and a replication draws the same lapses in every
- * setting whose encounters come in the same order.  A new encounter draws, in
+ * setting whose encounters come in the same order; a ship's behaviour comes
+ * from its own stream (FW_PURPOSE_BEHAVIOUR), one uniform draw, so a mix
+ * leaves the encounters' draws as they were.  A new encounter draws, in
  * this order and each only when its setting is not zero: the lapse (uniform),
  * the time to detect (exponential), the late action (uniform).
  */
@@ -61,7 +79,12 @@ typedef struct fw_watch_def {
     double detect;     /* s, >= 0: the mean time to detect (exponential) */
     double late;       /* probability, [0, 1]: action only within late_range */
     double late_range; /* m, > 0 when late > 0 */
+    double mix_late;    /* share of ships, [0, 1]: late ships */
+    double mix_passive; /* share of ships, [0, 1]: passive ships; the two at most 1 */
+    double mix_range;   /* m, > 0 when mix_late > 0: where a late ship acts */
 } fw_watch_def;
+
+typedef enum fw_conduct { FW_BEH_COMPLIANT, FW_BEH_LATE, FW_BEH_PASSIVE, FW_BEH_N } fw_conduct;
 
 /* Flawless: no delay, no lapse. */
 fw_watch_def fw_default_watch_def(void);
@@ -109,5 +132,9 @@ double fw_watch_unseen(const fw_watch *w);
 
 /* Encounters met so far, and of them those lapsed (late ones not counted). */
 void fw_watch_counts(const fw_watch *w, long *pairs, long *lapsed);
+/* Ships drawn from the mix so far, by behaviour (all 0 without a mix). */
+void fw_watch_mix_counts(const fw_watch *w, long counts[FW_BEH_N]);
+/* Is there a mix (some ship not compliant)? */
+bool fw_watch_def_mixed(const fw_watch_def *def);
 
 #endif

@@ -448,6 +448,11 @@ double fw_world_own_unseen(const fw_world *w)
     return fw_watch_def_draws(&w->def.own_watch) ? fw_watch_unseen(w->own_watch) : -1.0;
 }
 
+void fw_world_mix_counts(const fw_world *w, long counts[FW_BEH_N])
+{
+    fw_reactions_mix_counts(w->react, counts);
+}
+
 void fw_world_own_watch_counts(const fw_world *w, long *pairs, long *lapsed)
 {
     fw_watch_counts(w->own_watch, pairs, lapsed);

@@ -204,6 +204,8 @@ void fw_world_own_watch_counts(const fw_world *w, long *pairs, long *lapsed);
 /* The own ship's watch, when it draws: how near a ship it has not acted for
  * has come (watch.h fw_watch_unseen); -1 without such a watch. */
 double fw_world_own_unseen(const fw_world *w);
+/* The background ships drawn from the mix so far, by behaviour (watch.h). */
+void fw_world_mix_counts(const fw_world *w, long counts[FW_BEH_N]);
 
 /* Every order given to the source's ships so far (reactions.h). */
 const fw_reaction *fw_world_reactions(const fw_world *w, int *n);
