@@ -34,6 +34,12 @@ fw_cli_test(identify_small_grid 0 "^wrote .*c3-identified-test.yaml"
 fw_cli_test(identify_both_sides 0 "^port: drift [0-9.]+ rad per unit"
             identify --ship c3 --speeds 14.55,20.12,26.7 --rudders 10,20,35 --sides both --duration 600
             --out ${CMAKE_CURRENT_BINARY_DIR}/c3-identified-both.yaml --force)
+# c3-mmg's knowledge base is reproduced by the command in its header (about 1 s)
+fw_script_test(identify_c3mmg 0 "ok: c3-mmg's knowledge base is its command's" identify_c3mmg.sh)
+fw_cli_test(identify_bad_slip_from 2 "unknown ship 'nosuch'"
+            identify --ship c3 --slip-from nosuch --out ${CMAKE_CURRENT_BINARY_DIR}/c3-slip.yaml)
+fw_cli_test(identify_slip_from_no_kb 2 "--slip-from: ship 'kvlcc2' has no knowledge base"
+            identify --ship c3 --slip-from kvlcc2 --out ${CMAKE_CURRENT_BINARY_DIR}/c3-slip.yaml)
 fw_cli_test(identify_bad_speed 2 "--speeds: 'x' is not a number" identify --ship c3 --speeds 10,x)
 fw_cli_test(identify_unknown_ship 2 "unknown ship 'nosuch'" identify --ship nosuch)
 fw_cli_test(identify_bad_rudder 2 "--rudders: 50 deg outside" identify --ship c3 --rudders 10,50)

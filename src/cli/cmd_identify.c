@@ -16,7 +16,7 @@ static void help(void)
 {
     printf("usage: fairway identify --ship NAME [--speeds 14.55,20.12,26.7]\n"
            "                        [--rudders 5,10,15,20,25,30,35] [--sides both|starboard|port]\n"
-           "                        [--duration 300] [--out FILE] [--force]\n"
+           "                        [--duration 300] [--slip-from SHIP] [--out FILE] [--force]\n"
            "\n"
            "Runs MMG turning tests (straight steady running at each speed in knots, then\n"
            "the helm in degrees, 1 s samples of the yaw rate for --duration seconds: the\n"
@@ -31,7 +31,8 @@ static void help(void)
            "ship file, fits the drift angle and speed loss in turns that the track\n"
            "prediction adds to Nomoto's model (drift per unit r' = r L / U, speed_loss per\n"
            "unit |r'| and speed_loss_drift per unit |beta r'|, each with a first-order lag,\n"
-           "from the first 300 s of the same tests), and writes a copy of the\n"
+           "from the first 300 s of the same tests; with --slip-from, SHIP's own terms\n"
+           "instead, each side's from its block), and writes a copy of the\n"
            "ship file with the new nomoto: block(s)\n"
            "(default FILE: NAME-identified.yaml in the current directory; an existing\n"
            "FILE is replaced only with --force).  The file is written complete or not at\n"
@@ -50,7 +51,7 @@ static void write_index(FILE *f, const char *name, const fw_nomoto_index *ix)
 }
 
 typedef struct ident_opts {
-    const char *ship_name, *out_path, *sides;
+    const char *ship_name, *out_path, *sides, *slip_from;
     bool force;
     double speeds[MAXV], rudders[MAXV];
     int ns, nr;
@@ -71,6 +72,7 @@ static int parse_options(int argc, char **argv, ident_opts *o, fw_error *err)
     const fw_opt opts[] = {
         FW_OPT("--force", FW_OPT_FLAG, &o->force),  FW_OPT("--ship", FW_OPT_TEXT, &o->ship_name),
         FW_OPT("--out", FW_OPT_TEXT, &o->out_path), FW_OPT("--sides", FW_OPT_TEXT, &o->sides),
+        FW_OPT("--slip-from", FW_OPT_TEXT, &o->slip_from),
         FW_OPT_LISTOF("--speeds", o->speeds, MAXV, &o->ns),
         FW_OPT_LISTOF("--rudders", o->rudders, MAXV, &o->nr),
         FW_OPT("--duration", FW_OPT_DOUBLE, &o->duration), FW_OPT_END,
@@ -90,6 +92,12 @@ static int parse_options(int argc, char **argv, ident_opts *o, fw_error *err)
     for (int i = 0; i < o->ns; i++)
         if (fw_check_speed("--speeds", o->speeds[i], 1.0, err))
             return fw_report(err);
+    fw_ship from; /* refused before the tests are run */
+    if (o->slip_from && fw_ship_load(o->slip_from, &from, err))
+        return fw_report(err);
+    if (o->slip_from && !from.nomoto.present)
+        return fw_report((fw_fail(err, FW_EINPUT, "--slip-from: ship '%s' has no knowledge base",
+                                  o->slip_from), err));
     return -1;
 }
 
@@ -268,6 +276,25 @@ static fw_status write_copy(const fw_ship *ship, const char *out_path, const cha
     return st;
 }
 
+/* The drift and speed-loss terms of another ship file's knowledge base (each
+ * side's from that side's block) in place of the fitted ones. */
+static fw_status keep_slip(const char *name, fw_nomoto_kb *kb, fw_nomoto_kb *kbp, fw_error *err)
+{
+    fw_ship from;
+    fw_status st = fw_ship_load(name, &from, err);
+    if (st)
+        return st;
+    fw_nomoto_kb *to[2] = {kb, kbp};
+    for (int i = 0; i < 2; i++) {
+        const fw_nomoto_kb *f = fw_ship_kb(&from, i ? -1.0 : 1.0);
+        to[i]->drift = f->drift, to[i]->drift_lag_s = f->drift_lag_s;
+        to[i]->speed_loss = f->speed_loss, to[i]->speed_loss_drift = f->speed_loss_drift;
+        to[i]->speed_lag_s = f->speed_lag_s;
+    }
+    printf("drift and speed loss kept from %s (%s), not the fitted ones\n", from.name, from.file);
+    return FW_OK;
+}
+
 /* Both sides: one block each (ship.h); one side: nomoto: from it, and a
  * nomoto_port: block the file already has gets the same, not left stale. */
 static fw_status identify_write(const fw_ship *ship, const ident_opts *o, const ident_grid *g,
@@ -278,6 +305,8 @@ static fw_status identify_write(const fw_ship *ship, const ident_opts *o, const 
     fw_status st = fit_kb(ship, g, both ? 1 : 0, &kb, err);
     if (!st && both)
         st = fit_kb(ship, g, -1, &kbp, err);
+    if (!st && o->slip_from)
+        st = keep_slip(o->slip_from, &kb, &kbp, err);
     if (st)
         return st;
     if (!both)
