@@ -87,8 +87,9 @@
  * situation cannot be avoided (the domain cannot be kept, above), the ship
  * reduces speed to the minimum at which she can be kept on her course:
  * taken as the knowledge base's lowest fitted speed (band.h
- * fw_rule19e_speed: 8 kn for c3-mmg, a model limit above the hull's real
- * steerage way), not above the planned speed; it steers as before; the
+ * fw_rule19e_speed: 4 kn for c3-mmg's widened knowledge base, a model
+ * limit, not the hull's steerage way), not above the planned speed; it
+ * steers as before; the
  * speed is kept until the last target that called for it is past (its
  * closest approach behind, or out of view) and none has called for
  * min_avoid_time ("until danger of collision is over"), then the planned

@@ -178,6 +178,8 @@ static fw_ais_sent make_report(const fw_sensing_def *d, fw_rng *noise, const fw_
     r.sog = fmax(0.0, a->speed + d->sog_sd * fw_rng_normal(noise));
     r.cog = fw_wrap_2pi(a->course + d->cog_sd * fw_rng_normal(noise));
     r.heading = fw_wrap_2pi(a->heading + d->heading_sd * fw_rng_normal(noise));
+    r.sog_e = r.sog * sin(r.cog);
+    r.sog_n = r.sog * cos(r.cog);
     return r;
 }
 
@@ -232,8 +234,8 @@ bool fw_ais_tx_known(const fw_sensing_def *d, const fw_ais_tx *l, const fw_targe
     const fw_ais_sent *r = &l->last;
     double age = t - r->t;
     *out = *a; /* id, type, length, breadth, key, own: its static data */
-    out->east = r->east + r->sog * age * sin(r->cog);
-    out->north = r->north + r->sog * age * cos(r->cog);
+    out->east = r->east + r->sog_e * age;
+    out->north = r->north + r->sog_n * age;
     out->course = r->cog;
     out->speed = r->sog;
     out->heading = r->heading;

@@ -120,6 +120,7 @@ typedef struct fw_sensing_counts {
  * arrived. */
 typedef struct fw_ais_sent {
     double t, east, north, sog, cog, heading;
+    double sog_e, sog_n; /* m/s, its velocity over ground (SOG along COG), for dead reckoning */
 } fw_ais_sent;
 /* Reports on their way at once: the latency is at most 2 s, the shortest
  * interval 2 s (and a first phase may be shorter). */
