@@ -22,6 +22,9 @@ fw_cli_test(cli_sweep_no_db 2 "--db FILE is required" sweep ${CMAKE_SOURCE_DIR}/
 fw_cli_test(cli_sweep_jobs 2 "--jobs 0: give 1 to 1024" sweep x.yaml --db x.db --jobs 0)
 fw_cli_test(cli_sweep_gui 2 "a sweep runs without windows" sweep x.yaml --db x.db --sumo gui)
 fw_cli_test(cli_sweep_dry 0 "^study small .*10 runs" sweep ${CMAKE_SOURCE_DIR}/tests/data/study/small.yaml --dry-run)
+# the shipped splitting study with an exact answer reads (bench/split_watch.sh runs it)
+fw_cli_test(cli_sweep_dry_headon_watch 0 "^study headon-watch .*200 runs" sweep
+            ${CMAKE_SOURCE_DIR}/scenarios/studies/headon-watch.yaml --dry-run)
 foreach(bad "domain:4: domains_m\\[1\\]: 'abc' is not a number"
             "key:5: replicas: unknown field"
             "missing:1: replications: required field is missing"
