@@ -34,7 +34,8 @@ static void turning_path(const fw_predictor *self, const fw_target *t, double dt
     }
 }
 
-static const turning kTurnPort = {{turning_path}, -0.004}, kTurnStbd = {{turning_path}, 0.003};
+static const turning kTurnPort = {{turning_path, NULL}, -0.004},
+                     kTurnStbd = {{turning_path, NULL}, 0.003};
 
 void decide_scene(const fw_own_state *own, bool dense, fw_target *tg, int n)
 {

@@ -452,7 +452,7 @@ static void test_predictor_is_used(void)
     fw_helm_def hdef = fw_default_helm_def();
     fw_helm_ctx *ctx = make_ctx(&hdef);
     fw_own_state own = {.U = fw_kn_to_ms(10)};
-    turn_pred never = {.base = {turn_path}, .t_turn = 1e9};
+    turn_pred never = {.base = {.path = turn_path}, .t_turn = 1e9};
     /* a crossing give-way, a head-on and one passing clear */
     fw_target scene[3] = {target_at(45, 3000, 270, 10), target_at(2, 4000, 180, 12),
                           target_at(300, 5000, 0, 8)};
@@ -486,7 +486,7 @@ static void test_predictor_is_used(void)
      * the own track just as the own ship gets there (both at 10 kn: at 535 s) */
     fw_target t = {.id = "T", .east = 2000, .north = 3500, .course = FW_PI, .heading = FW_PI,
                    .speed = fw_kn_to_ms(10), .length = 200, .breadth = 32};
-    turn_pred turn = {.base = {turn_path}, .t_turn = 146.0, .new_course = 1.5 * FW_PI};
+    turn_pred turn = {.base = {.path = turn_path}, .t_turn = 146.0, .new_course = 1.5 * FW_PI};
     fw_assess(&hdef.colregs, &hdef.domain, hdef.track.horizon, &own, &t, 1, a0, NULL);
     CHECK(!a0[0].enters_domain);
     t.pred = &turn.base;

@@ -62,6 +62,10 @@ typedef struct fw_target {
 struct fw_predictor {
     void (*path)(const fw_predictor *self, const fw_target *now, double dt, int n,
                  double *east, double *north, double *heading);
+    /* Is its path now the constant-velocity one (NULL: never)?  Then the
+     * record carrying it is given no predictor (world/vessel.h), and every
+     * reader takes constant velocity's closed forms instead of a path. */
+    bool (*steady)(const fw_predictor *self);
 };
 
 /* Fills the path of t (its predictor, or constant velocity: positions along

@@ -271,6 +271,18 @@ static int cmp_id(const void *a, const void *b)
     return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
+/* The index of ship t among the taken ones (-1: not taken): by the run's
+ * key where both have one (an int compare, not a string's, for every ship
+ * of every list), else by id. */
+static int find_taken(const sumo_source *k, const fw_target *t)
+{
+    for (int j = 0; j < k->n_taken; j++)
+        if (t->key > 0 && k->taken[j].key > 0 ? t->key == k->taken[j].key
+                                              : strcmp(t->id, k->taken[j].id) == 0)
+            return j;
+    return -1;
+}
+
 static fw_status ss_around(fw_source *s, const fw_target **v, int *n, fw_error *err)
 {
     sumo_source *k = (sumo_source *)s;
@@ -298,7 +310,7 @@ static fw_status ss_around(fw_source *s, const fw_target **v, int *n, fw_error *
         qsort(k->sorted, (size_t)m, sizeof *k->sorted, cmp_id);
     int kept = 0;
     for (int i = 0; i < m; i++)
-        if (k->n_taken == 0 || fw_target_find(k->taken, k->n_taken, k->sorted[i].id) < 0)
+        if (k->n_taken == 0 || find_taken(k, &k->sorted[i]) < 0)
             k->sorted[kept++] = k->sorted[i];
     *v = k->sorted;
     *n = kept;
@@ -316,7 +328,7 @@ static fw_status see_to_taken(sumo_source *k, bool area, const fw_target **v, in
         return fw_fail(err, FW_ERUN, "out of memory for %d ships", *n);
     int m = 0;
     for (int i = 0; i < *n; i++) {
-        int j = fw_target_find(k->taken, k->n_taken, (*v)[i].id);
+        int j = find_taken(k, &(*v)[i]);
         if (j < 0)
             k->listed[m++] = (*v)[i];
         else if (area)

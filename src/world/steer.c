@@ -75,23 +75,44 @@ static void pred_path(const fw_predictor *self, const fw_target *now, double dt,
     const fw_steer_pred *p = (const fw_steer_pred *)self;
     /* its drift (course over ground less heading) kept through the turn */
     double psi = now->heading, drift = fw_wrap_pi(now->course - now->heading);
-    double e = now->east, no = now->north, v = now->speed;
-    for (int k = 0; k < n; k++) {
-        east[k] = e, north[k] = no, heading[k] = psi;
-        double step = 0.0;
-        if (p->turning) {
-            double left = fw_wrap_pi(p->heading - psi), turn = p->rate * dt;
-            step = fabs(left) <= turn ? left : copysign(turn, left);
+    double e = now->east, no = now->north, run = now->speed * dt;
+    double turn = p->rate * dt, left = p->turning ? fw_wrap_pi(p->heading - psi) : 0.0;
+    int k = 0;
+    if (p->turning && turn > 0.0 && fabs(left) > turn) {
+        /* whole steps of the turn: the direction of each step's run (its
+         * middle heading) rotated by the step, not recomputed */
+        double step = copysign(turn, left), cs = cos(step), ss = sin(step);
+        double sm = sin(psi + 0.5 * step + drift), cm = cos(psi + 0.5 * step + drift);
+        for (; k < n && fabs(left) > turn; k++) {
+            east[k] = e, north[k] = no, heading[k] = psi;
+            e += run * sm, no += run * cm;
+            psi += step, left -= step;
+            double s2 = sm * cs + cm * ss;
+            cm = cm * cs - sm * ss, sm = s2;
         }
-        double mid = psi + 0.5 * step + drift;
-        e += v * dt * sin(mid), no += v * dt * cos(mid);
-        psi += step;
     }
+    if (k < n && p->turning && left != 0.0) { /* the last, part step onto its heading */
+        east[k] = e, north[k] = no, heading[k] = psi;
+        double mid = psi + 0.5 * left + drift;
+        e += run * sin(mid), no += run * cos(mid);
+        psi += left;
+        k++;
+    }
+    double se = run * sin(psi + drift), sn = run * cos(psi + drift);
+    for (; k < n; k++) { /* straight on */
+        east[k] = e, north[k] = no, heading[k] = psi;
+        e += se, no += sn;
+    }
+}
+
+static bool pred_steady(const fw_predictor *self)
+{
+    return !((const fw_steer_pred *)self)->turning;
 }
 
 void fw_steer_pred_init(fw_steer_pred *p)
 {
-    *p = (fw_steer_pred){.base = {.path = pred_path}};
+    *p = (fw_steer_pred){.base = {.path = pred_path, .steady = pred_steady}};
 }
 
 /* s: how often a steered ship looks round (as reactions.h's officer), and
@@ -181,12 +202,18 @@ static bool conflicts(const steer_ctl *c, const fw_sense *in, double chi)
     return false;
 }
 
-/* Ship t's closest approach to it on course chi over ground at its speed. */
-static void cpa_on(const fw_own_state *o, const fw_target *t, double chi, double *tc, double *dc)
+/* Its velocity over ground (m/s east, north) on course chi at its speed. */
+static void own_velocity(const fw_own_state *o, double chi, double *oe, double *on)
 {
-    double oe, on, te, tn;
-    fw_velocity(o->U, chi, &oe, &on);
-    oe += o->cur_e, on += o->cur_n;
+    fw_velocity(o->U, chi, oe, on);
+    *oe += o->cur_e, *on += o->cur_n;
+}
+
+/* Ship t's closest approach to it sailing (oe, on) over ground. */
+static void cpa_on(const fw_own_state *o, const fw_target *t, double oe, double on, double *tc,
+                   double *dc)
+{
+    double te, tn;
     fw_velocity(t->speed, t->course, &te, &tn);
     fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, tc, dc);
 }
@@ -205,12 +232,13 @@ static bool same_way(const fw_target *t, double chi)
 static int must_give_way(const steer_ctl *c, const fw_sense *in, double chi, fw_situation *sit)
 {
     int best = -1;
-    double tbest = INFINITY;
+    double tbest = INFINITY, oe, on;
+    own_velocity(in->own, chi, &oe, &on);
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
         if (same_way(&in->targets[i], in->own->psi))
             continue;
-        cpa_on(in->own, &in->targets[i], chi, &tc, &dc);
+        cpa_on(in->own, &in->targets[i], oe, on, &tc, &dc);
         if (!(tc > 0.0 && tc < kHorizonS && dc < c->def.cpa && tc < tbest))
             continue;
         fw_situation s = fw_classify(&c->colregs, in->own, &in->targets[i]);
@@ -225,12 +253,13 @@ static int must_give_way(const steer_ctl *c, const fw_sense *in, double chi, fw_
 static double pass_within(const fw_sense *in, double chi, double horizon, bool cross_only,
                           int *who)
 {
-    double best = INFINITY;
+    double best = INFINITY, oe, on;
+    own_velocity(in->own, chi, &oe, &on);
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
         if (cross_only && same_way(&in->targets[i], in->own->psi))
             continue;
-        cpa_on(in->own, &in->targets[i], chi, &tc, &dc);
+        cpa_on(in->own, &in->targets[i], oe, on, &tc, &dc);
         if (tc > 0.0 && tc < horizon && dc < best)
             best = dc, *who = i;
     }
@@ -321,17 +350,23 @@ static const double kAccel = 0.05, kDecel = 0.1, kSteerageWay = 1.0, kSlowFracti
 static double follow_speed(const steer_ctl *c, const fw_sense *in, double chi, double want)
 {
     const fw_own_state *o = in->own;
-    double v = want;
+    double v = want, sc = sin(chi), cc = cos(chi), oe, on;
+    own_velocity(o, chi, &oe, &on);
+    /* m: beyond this gap no ship ahead slows it (the law below at want) */
+    double reach = kMinGapM + (kHeadwayS + kRelaxS) * want + 0.5 * c->def.length + 500.0;
     for (int i = 0; i < in->n; i++) {
         const fw_target *t = &in->targets[i];
-        double dc = fw_wrap_pi(t->course - chi);
         double dx = t->east - o->east, dy = t->north - o->north;
-        double ahead = dx * sin(chi) + dy * cos(chi), across = dx * cos(chi) - dy * sin(chi);
-        if (!(ahead > 0.0) || fabs(dc) > 0.25 * FW_PI)
+        double ahead = dx * sc + dy * cc;
+        if (!(ahead > 0.0) || ahead > reach + 0.5 * t->length)
             continue;
+        double dc = fw_wrap_pi(t->course - chi);
+        if (fabs(dc) > 0.25 * FW_PI)
+            continue;
+        double across = dx * cc - dy * sc;
         double w = 0.5 * (c->def.breadth + t->breadth) + kSideM, tc, dcpa;
         if (fabs(across) > w) {
-            cpa_on(o, t, chi, &tc, &dcpa);
+            cpa_on(o, t, oe, on, &tc, &dcpa);
             if (!(tc > 0.0 && tc < kPathS && dcpa < w))
                 continue;
         }

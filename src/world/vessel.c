@@ -37,6 +37,7 @@ static void refresh(fw_vessel *v, double dt)
         v->own.cur_e = ce, v->own.cur_n = cn;
     }
     fw_target *t = &v->record;
+    t->pred = v->pred && !(v->pred->steady && v->pred->steady(v->pred)) ? v->pred : NULL;
     t->east = x->east;
     t->north = x->north;
     t->heading = x->psi;
@@ -98,6 +99,7 @@ fw_status fw_vessel_init(fw_vessel *v, const fw_vessel_def *def, double dt, cons
     v->role = def->role;
     v->radius = def->radius;
     v->U0 = def->speed;
+    v->pred = def->predictor;
     v->record = (fw_target){.length = def->ship->Loa, .breadth = def->ship->B,
                             .pred = def->predictor};
     snprintf(v->record.id, sizeof v->record.id, "%s", def->id);

@@ -28,6 +28,7 @@ struct fw_vessel {
     fw_mmg_state motion;
     fw_own_state own;
     fw_target record;
+    const fw_predictor *pred; /* its predictor, in the record only when not steady */
     /* control */
     fw_controller *ctl;
     fw_decision d;
