@@ -1,10 +1,15 @@
-/* libFuzzer target: the JSON reader (core/json_read.h).  Each input is parsed
- * and, when it is JSON, walked whole through the reader's accessors: every
- * member and element, every value read as the type it has and as a type it
- * has not (the message path built each time). */
+/* libFuzzer target: the JSON reader (core/json_read.h) and the DNV traffic
+ * situation loader on it (scenario/scn_dnv.h).  Each input is parsed and,
+ * when it is JSON, walked whole through the reader's accessors: every member
+ * and element, every value read as the type it has and as a type it has not
+ * (the message path built each time); then loaded as a situation, as
+ * `fairway run situation.json` does (own ship c3-mmg). */
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "core/json_read.h"
+#include "fuzz_common.h"
+#include "scenario/scn_dnv.h"
 
 static void walk(const fw_jnode *n, int depth)
 {
@@ -37,12 +42,20 @@ static void walk(const fw_jnode *n, int depth)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    static fw_scenario *s;
+    if (!s && !(s = malloc(sizeof *s)))
+        abort();
     fw_jdoc *doc = NULL;
     fw_error err = {0};
-    if (fw_jdoc_parse("fuzz.json", (const char *)data, size, &doc, &err) == FW_OK) {
+    bool parsed = fw_jdoc_parse("fuzz.json", (const char *)data, size, &doc, &err) == FW_OK;
+    if (parsed) {
         fw_jnode root = fw_jdoc_root(doc);
         walk(&root, 0);
     }
     fw_jdoc_free(doc);
+    if (parsed) { /* JSON: the situation loader reads it as a file */
+        fw_error lerr = {0};
+        fw_scn_dnv_load(fuzz_write_input("situation-in", data, size), NULL, s, &lerr);
+    }
     return 0;
 }

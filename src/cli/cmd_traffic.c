@@ -8,6 +8,7 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "core/files.h"
 #include "core/units.h"
 #include "traffic/demand.h"
 #include "traffic/traffic.h"
@@ -83,7 +84,13 @@ static int run(const char *network, long ships, double density, double duration,
     dd.fill = (int)ships;
     dd.end = duration + step;
     dd.seed = (unsigned long)seed;
-    if (fw_demand_write(&dm, &dd, routes, &err))
+    /* SUMO opens its logs itself, following a symlink planted at the name:
+     * fairway makes them first (an empty file renamed over whatever is there) */
+    char gui_log[1100];
+    if (fw_demand_write(&dm, &dd, routes, &err) || fw_file_write(log, "", 0, &err) ||
+        (d.mode.kind == FW_TRAFFIC_GUI &&
+         (fw_path(gui_log, sizeof gui_log, &err, "%s.gui", log) ||
+          fw_file_write(gui_log, "", 0, &err))))
         return fw_report(&err);
     d.net_file = nf.net;
     d.route_file = routes;
@@ -183,7 +190,8 @@ int fw_cmd_traffic(int argc, char **argv)
     if (fw_traffic_mode_parse(mode, &m, &err) || fw_check_sumo_mode("--sumo", &m, &err) ||
         (m.kind == FW_TRAFFIC_GUI && fw_traffic_gui_check("--sumo", &err)) ||
         fw_check_out_file("--routes", routes, true, &err) ||
-        fw_check_out_file("--log", log, true, &err))
+        fw_check_out_file("--log", log, true, &err) ||
+        fw_sumo_path_check("--routes", routes, &err))
         return fw_report(&err);
     return run(network, ships, density, duration, step, radius, speed, seed, every, mode, log,
                routes, demand);

@@ -1,6 +1,7 @@
 /* json_read.c - see json_read.h.  Jansson parses; this file checks and names. */
 #include "core/json_read.h"
 
+#include <errno.h>
 #include <jansson.h>
 #include <math.h>
 #include <stdarg.h>
@@ -19,6 +20,16 @@ fw_status fw_jdoc_parse(const char *name, const char *text, size_t n, fw_jdoc **
     if (n > FW_JSON_MAX_BYTES)
         return fw_fail(err, FW_EINPUT, "%s: $: more than %u bytes, the most a JSON input may have", name,
                        FW_JSON_MAX_BYTES);
+    /* a file of another kind is not quoted (Jansson's message shows the text
+     * near the error: the first word of /etc/shadow, say) */
+    size_t k = 0;
+    int line = 1;
+    for (; k < n && text[k] && strchr(" \t\r\n", text[k]); k++)
+        line += text[k] == '\n';
+    if (k == n || (text[k] != '{' && text[k] != '['))
+        return fw_fail_at(err, name, line, "$",
+                          "not JSON: %s (not the kind of file expected?)",
+                          k == n ? "empty" : "it does not begin with '{' or '['");
     json_error_t je;
     json_t *root = json_loadb(text, n, JSON_REJECT_DUPLICATES, &je);
     if (!root)
@@ -39,7 +50,7 @@ fw_status fw_jdoc_load(const char *path, fw_jdoc **out, fw_error *err)
     *out = NULL;
     FILE *f = fopen(path, "rb");
     if (!f)
-        return fw_fail(err, FW_EINPUT, "%s: cannot open", path);
+        return fw_fail(err, FW_EINPUT, "%s: cannot open: %s", path, strerror(errno));
     size_t cap = FW_JSON_MAX_BYTES + 1, n = 0;
     char *buf = malloc(cap);
     if (!buf) {
@@ -47,9 +58,9 @@ fw_status fw_jdoc_load(const char *path, fw_jdoc **out, fw_error *err)
         return fw_fail(err, FW_ERUN, "%s: out of memory", path);
     }
     n = fread(buf, 1, cap, f);
-    int bad = ferror(f);
+    int bad = ferror(f) ? (errno ? errno : EIO) : 0;
     fclose(f);
-    fw_status st = bad ? fw_fail(err, FW_EINPUT, "%s: cannot read", path)
+    fw_status st = bad ? fw_fail(err, FW_EINPUT, "%s: cannot read: %s", path, strerror(bad))
                        : fw_jdoc_parse(path, buf, n, out, err);
     free(buf);
     return st;

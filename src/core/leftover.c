@@ -53,6 +53,13 @@ fw_status fw_leftover_mark(const char *dir, fw_error *err)
     return FW_OK;
 }
 
+void fw_leftover_unmark(const char *dir)
+{
+    char path[1200];
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, kOwner) < sizeof path)
+        unlink(path);
+}
+
 /* Is the directory's owner gone?  false when it has no owner file (not
  * ours to judge) or the owner still runs. */
 static bool owner_gone(const char *dir, long *pid)

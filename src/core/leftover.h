@@ -18,6 +18,10 @@
 /* Marks dir (existing, made by this process) as this process's. */
 fw_status fw_leftover_mark(const char *dir, fw_error *err);
 
+/* Takes the mark off dir again (a directory about to become an output that
+ * holds only its own files: a report's). */
+void fw_leftover_unmark(const char *dir);
+
 /* Removes the directories parent/PREFIX* marked by a process that is gone;
  * `what` names them in the message ("an interrupted run").  The number
  * removed. */

@@ -18,7 +18,9 @@ static void child(const fw_spawn_def *d, int report)
     /* nothing fairway starts outlives it: a sumo-gui, netconvert or plot of a
      * SIGKILLed fairway dies with it (the flag survives exec) */
     prctl(PR_SET_PDEATHSIG, SIGKILL);
-    int flags = O_WRONLY | O_CREAT | (d->append ? O_APPEND : O_TRUNC);
+    /* never through a symlink planted at the log's name (the caller makes
+     * the log first: core/files.h); one there leaves the output unredirected */
+    int flags = O_WRONLY | O_CREAT | O_NOFOLLOW | (d->append ? O_APPEND : O_TRUNC);
     int fd = open(d->log ? d->log : "/dev/null", flags, 0644);
     if (fd >= 0) {
         dup2(fd, STDOUT_FILENO);

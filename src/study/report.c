@@ -17,11 +17,15 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "core/files.h"
+#include "core/leftover.h"
 #include "ship/ship.h"
 #include "study/report_data.h"
 
@@ -259,6 +263,10 @@ static void draw_plots(const fw_study_report_def *def, const fw_study_report *re
         return;
     }
     if (pid == 0) {
+        /* nothing outlives a SIGKILLed fairway: the plotter dies with it */
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() == 1)
+            _exit(127);
         int fd = open(logp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0) {
             dup2(fd, 1);
@@ -307,14 +315,24 @@ fw_status fw_study_report_write(const fw_study_report *rep, const fw_study_repor
     char parent[1024], name[256], tmp[1400], old[1400];
     split_path(res->out, parent, sizeof parent, name, sizeof name);
     bool exists;
-    if (check_target(res->out, &exists, err) || mkdirs(parent, err))
+    if (check_target(res->out, &exists, err) || mkdirs(parent, err) ||
+        fw_check_parent_dir("--out", res->out, "cannot write in", err))
         return err->status;
+    char prefix[300];
     if (!fit(tmp, sizeof tmp, "%s/.%s.tmp.%ld", parent, name, (long)getpid()) ||
-        !fit(old, sizeof old, "%s/.%s.old.%ld", parent, name, (long)getpid()))
+        !fit(old, sizeof old, "%s/.%s.old.%ld", parent, name, (long)getpid()) ||
+        !fit(prefix, sizeof prefix, ".%s.tmp.", name))
         return fw_fail(err, FW_EINPUT, "%.100s...: path too long", res->out);
+    /* what a SIGKILLed report left (core/leftover.h), then ours, marked */
+    fw_leftover_clean(parent, prefix, "an interrupted fairway report");
     rm_tree(tmp);
     if (mkdir(tmp, 0777) != 0)
-        return fw_fail(err, FW_ERUN, "cannot create %.400s: %s", tmp, strerror(errno));
+        return fw_fail(err, FW_EINPUT, "--out %.400s: cannot write in %.400s: %s", res->out,
+                       parent, strerror(errno));
+    if (fw_leftover_mark(tmp, err)) {
+        rm_tree(tmp);
+        return err->status;
+    }
     res->plots = FW_PLOTS_SKIPPED;
     if (fw_rep_write_csvs(rep, tmp, err)) {
         rm_tree(tmp);
@@ -327,16 +345,21 @@ fw_status fw_study_report_write(const fw_study_report *rep, const fw_study_repor
         return err->status;
     }
     /* swap: the old report is moved aside first so a failed rename can put it back */
+    fw_leftover_unmark(tmp);
     rm_tree(old);
     if (exists && rename(res->out, old) != 0) {
+        int e = errno;
         rm_tree(tmp);
-        return fw_fail(err, FW_ERUN, "cannot move the old report %.400s aside", res->out);
+        return fw_fail(err, FW_ERUN, "--out %.400s: cannot move the old report aside: %s",
+                       res->out, strerror(e));
     }
     if (rename(tmp, res->out) != 0) {
+        int e = errno;
         if (exists)
             rename(old, res->out);
         rm_tree(tmp);
-        return fw_fail(err, FW_ERUN, "cannot rename %.400s to %.400s", tmp, res->out);
+        return fw_fail(err, FW_ERUN, "--out %.400s: cannot put the report in place: %s",
+                       res->out, strerror(e));
     }
     rm_tree(old);
     if (res->plots == FW_PLOTS_FAILED)

@@ -3,7 +3,8 @@
 # Files): a symlink planted at the temporary name fairway used to write
 # through (OUT.tmp) or at the output itself leaves the file it points to
 # byte for byte as it was, and the output is written in its own place
-# (manoeuvre --csv, ais tracks and demand --out, traffic --routes); "-",
+# (manoeuvre --csv, ais tracks and demand --out, traffic --routes and the
+# SUMO log it names); "-",
 # /dev/stdout and a link to this process's standard output are written as a
 # stream and printed, never replaced by a regular file (manoeuvre, ais
 # tracks, identify).
@@ -47,9 +48,14 @@ done
 
 # fairway traffic's route file (it runs in $dir: its log and run.sumocfg go there)
 ln -s "$dir/victim" "$dir/r.rou.xml" && ln -s "$dir/victim" "$dir/r.rou.xml.tmp"
+# and SUMO's log (default fairway-traffic.log), which SUMO itself opens: SUMO
+# wrote its messages into the victim
+ln -s "$dir/victim" "$dir/fairway-traffic.log"
 msg=$(cd "$dir" && "$FAIRWAY" traffic --network channel --ships 5 --duration 60 --every 60 \
         --routes "$dir/r.rou.xml" 2>&1) || fail "traffic: exit $?: $msg"
-victim_intact "traffic --routes, links at r.rou.xml and r.rou.xml.tmp"
+victim_intact "traffic --routes, links at r.rou.xml, r.rou.xml.tmp and fairway-traffic.log"
+[ -f "$dir/fairway-traffic.log" ] && [ ! -L "$dir/fairway-traffic.log" ] &&
+  grep -q "Simulation ended" "$dir/fairway-traffic.log" || fail "traffic: SUMO's log not in its place"
 [ -f "$dir/r.rou.xml" ] && [ ! -L "$dir/r.rou.xml" ] && grep -q "<routes>" "$dir/r.rou.xml" ||
   fail "traffic: no route file"
 rm -f "$dir"/r.rou.xml* "$dir/run.sumocfg" "$dir/fairway-traffic.log"

@@ -58,4 +58,29 @@ grep -q "removed $tmp/t/fairway-sweep-.*, left by an interrupted sweep" "$tmp/er
   { echo "no removal said:"; cat "$tmp/err"; exit 1; }
 [ "$(ls -d "$tmp"/t/fairway-sweep-* 2>/dev/null | wc -l)" -eq 0 ] ||
   { echo "work directories left:"; ls -la "$tmp/t"; exit 1; }
+
+# a report, killed while its plotter runs (a stand-in that sleeps): the
+# plotter dies with it (it went on, then drew into the leftover), and the
+# next report into the same place removes the .NAME.tmp.PID directory
+printf '#!/bin/sh\necho $$ > "$2.plotter"\nexec sleep 60\n' > "$tmp/slowplot"
+chmod +x "$tmp/slowplot"
+FAIRWAY_PYTHON=$tmp/slowplot "$FAIRWAY" report "$tmp/s.db" --out "$tmp/rep" > /dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 200); do
+  [ -s "$(ls "$tmp"/.rep.tmp.*.plotter 2>/dev/null | head -1)" ] && break
+  sleep 0.02
+done
+plotter=$(cat "$tmp"/.rep.tmp.*.plotter 2>/dev/null) || { echo "the plotter did not start"; exit 1; }
+kill -9 $pid
+wait $pid 2>/dev/null || true
+sleep 0.3
+# gone, or a zombie (killed, not yet reaped by whatever adopted it)
+state=$(awk '{print $3}' "/proc/$plotter/stat" 2>/dev/null || true)
+[ -z "$state" ] || [ "$state" = Z ] || { kill "$plotter"; echo "the plotter outlived the report"; exit 1; }
+"$FAIRWAY" report "$tmp/s.db" --out "$tmp/rep" --no-plots > /dev/null 2> "$tmp/err" ||
+  { cat "$tmp/err"; exit 1; }
+grep -q "removed $tmp/.rep.tmp.[0-9]*, left by an interrupted fairway report" "$tmp/err" ||
+  { echo "no removal said:"; cat "$tmp/err"; exit 1; }
+[ -z "$(ls -d "$tmp"/.rep.tmp.*[0-9] 2>/dev/null)" ] || { echo "report leftover kept"; exit 1; }
+[ ! -e "$tmp/rep/.fairway-owner" ] || { echo "the owner mark is in the report"; exit 1; }
 echo "ok: nothing outlives a SIGKILL, leftovers removed"

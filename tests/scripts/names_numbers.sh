@@ -57,4 +57,8 @@ cp -r "$FAIRWAY_DATA/networks" "$FAIRWAY_DATA/scenarios" "$dir/d,ata/"
 comma "fairway: FAIRWAY_DATA: '$dir/d,ata' has a comma" \
   env FAIRWAY_DATA="$dir/d,ata" "$FAIRWAY" run "$FAIRWAY_DATA/scenarios/traffic/dover-crossing.yaml" \
   --out "$dir/o2"
+# fairway traffic's route file, which SUMO reads: refused before it is written
+comma "fairway: --routes: '$dir/r,b.rou.xml' has a comma" \
+  "$FAIRWAY" traffic --network channel --duration 10 --routes "$dir/r,b.rou.xml" --log "$dir/t.log"
+[ ! -e "$dir/r,b.rou.xml" ] && [ ! -e "$dir/t.log" ] || { echo "traffic wrote its files"; exit 1; }
 echo "ok: names and numbers refused as written"

@@ -27,4 +27,12 @@ rc=$?
 out=$("${as[@]}" "$FAIRWAY" report "$dir/ro/w.db" --out "$dir/out/rep2" --no-plots 2>&1)
 [ $? -eq 0 ] && [ -s "$dir/out/rep2/report.md" ] || { echo "WAL database: $out"; exit 1; }
 [ "$(ls "$dir/ro" | tr '\n' ' ')" = "s.db w.db " ] || { echo "left beside the database: $(ls "$dir/ro")"; exit 1; }
+# a report into a directory the reader cannot write: refused before anything
+# is computed, naming --out, the directory and the reason (was "cannot create
+# DIR/.rep.tmp.PID", a path that is never made, and no reason)
+out=$("${as[@]}" "$FAIRWAY" report "$dir/ro/s.db" --out "$dir/ro/rep" --no-plots 2>&1)
+rc=$?
+[ $rc -eq 2 ] && grep -qxF "fairway: --out $dir/ro/rep: cannot write in $dir/ro: Permission denied" \
+  <<<"$out" || { echo "report into a read-only directory: exit $rc: $out"; exit 1; }
+[ "$(ls "$dir/ro" | tr '\n' ' ')" = "s.db w.db " ] || { echo "left: $(ls "$dir/ro")"; exit 1; }
 echo "ok: read-only database reported"
