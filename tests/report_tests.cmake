@@ -23,4 +23,4 @@ fw_script_test(cli_report_bad 0 "^ok: refused, nothing written" report_bad.sh $<
 set_tests_properties(cli_report_plots PROPERTIES TIMEOUT 120)
 fw_script_test(cli_report_monitors 0 "^ok: the report says whether the traffic behaved" report_monitors.sh $<TARGET_FILE:make_study_db>)
 # A damaged or tampered database is refused naming table, row, run and column (db_check.h).
-fw_script_test(cli_report_tampered 0 "^ok: 32 tampered databases refused" report_tampered.sh $<TARGET_FILE:make_study_db>)
+fw_script_test(cli_report_tampered 0 "^ok: 42 tampered databases refused" report_tampered.sh $<TARGET_FILE:make_study_db>)

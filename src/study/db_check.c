@@ -2,6 +2,7 @@
 #include "study/db_check.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -17,7 +18,9 @@ enum {
     F_NN = 1,   /* NOT NULL */
     F_POS = 2,  /* strictly above lo */
     F_REPS = 4, /* below meta's replications */
-    F_RUNS = 8  /* below meta's runs (the study's run list) */
+    F_RUNS = 8, /* below meta's runs (the study's run list) */
+    F_DUR = 16, /* at most meta's duration_s (a run's simulated time) */
+    F_LINES = 32 /* text: line breaks and tabs allowed (a failed run's reason) */
 };
 
 /* A column's rule: its kind, the closed range [lo, hi] (F_POS: (lo, hi]),
@@ -43,10 +46,11 @@ static const rule runs_rules[] = {
     {"fore_aft_ratio", K_NUM, NONNEG, F_POS, "a domain shape (fore-aft ratio)"},
     {"density", K_NUM, NONNEG, F_NN, "a traffic density"},
     {"replication", K_INT, 0, 999999, F_NN | F_REPS, "a replication"},
-    {"seed", K_INT, ANY, F_NN, "a seed"},
+    {"seed", K_INT, 1, 2147483646, F_NN, "a run's seed"}, /* study.c: 1 to 2^31 - 2 */
     {"status", K_TEXT, ANY, F_NN, "a status"},
-    {"reason", K_TEXT, ANY, F_NN, "a reason"},
-    {"sim_s", K_NUM, 0, 1e9, 0, "a simulated time"}, /* >= 1 ms when ok: report_load.c */
+    {"reason", K_TEXT, ANY, F_NN | F_LINES, "a reason"},
+    /* >= 1 ms when ok: report_load.c */
+    {"sim_s", K_NUM, 0, 1e9, F_DUR, "a simulated time"},
     {"wall_s", K_NUM, NONNEG, 0, "a time"},
     {"sumo_s", K_NUM, NONNEG, 0, "a time"},
     {"n_encounters", K_INT, COUNT, 0, "a count"},
@@ -57,7 +61,7 @@ static const rule runs_rules[] = {
     {"near_miss_centre", K_FLAG, 0, 1, 0, "a flag"},
     {"collision", K_FLAG, 0, 1, 0, "a flag"},
     {"colregs_ok", K_FLAG, 0, 1, 0, "a flag"},
-    {"max_helm_deg", K_NUM, ANY, 0, "an angle"},
+    {"max_helm_deg", K_NUM, 0, 90, 0, "a helm angle"},
     {"path_length_m", K_NUM, DIST, 0, "a distance"},
     {"path_lengthening_m", K_NUM, -1e8, 1e8, 0, "a distance"},
     {"time_lost_s", K_NUM, ANY, 0, "a time"},
@@ -77,6 +81,7 @@ static const rule runs_rules[] = {
     {"max_lateral_mps", K_NUM, NONNEG, 0, "a speed"},
     {"min_hull_m", K_NUM, DIST, 0, "a distance"},
     {"closeness", K_NUM, 0, 1, 0, "a closeness (0-1)"},
+    {"setting", K_TEXT, ANY, 0, "a setting"},
 };
 
 static const rule traffic_rules[] = {
@@ -106,7 +111,7 @@ static const rule split_rules[] = {
     {"behaviour", K_TEXT, ANY, 0, "a behaviour"},
     {"particles", K_INT, 2, 1e6, F_NN, "a number of particles"},
     {"status", K_TEXT, ANY, F_NN, "a status"},
-    {"reason", K_TEXT, ANY, F_NN, "a reason"},
+    {"reason", K_TEXT, ANY, F_NN | F_LINES, "a reason"},
     {"rounds", K_INT, COUNT, 0, "a count"},
     {"runs", K_NUM, 0, 1e12, 0, "a number of runs"},
     {"sim_s", K_NUM, 0, 1e15, 0, "a simulated time"},
@@ -159,6 +164,22 @@ static void show_text(char *buf, size_t sz, const unsigned char *t)
     if (t && *t)
         k += (size_t)snprintf(buf + k, sz - k, "...");
     snprintf(buf + k, sz - k, "'");
+}
+
+/* A text holding a control character (an escape sequence would reach the
+ * terminal, a line break split a one-line message or a table row): why, or
+ * false.  lines: line breaks and tabs allowed. */
+static bool control_char(const unsigned char *t, bool lines, char *why, size_t sz)
+{
+    for (size_t k = 0; t && t[k]; k++) {
+        if ((t[k] >= 0x20 && t[k] != 0x7f) || (lines && (t[k] == '\n' || t[k] == '\t')))
+            continue;
+        char shown[64];
+        show_text(shown, sizeof shown, t);
+        snprintf(why, sz, "%s holds a control character (byte 0x%02x at %zu)", shown, t[k], k + 1);
+        return true;
+    }
+    return false;
 }
 
 /* A text not among names: why (into why), or false when it is one. */
@@ -222,7 +243,7 @@ static int enc_rules(rule *out)
 /* Why the value in column i breaks rule r or is not among nr's names (nr NULL:
  * any text), into why; false when it keeps them. */
 static bool breaks(const rule *r, const names_rule *nr, sqlite3_stmt *st, int i,
-                   const int study[2], char *why, size_t sz)
+                   const int study[2], double duration, char *why, size_t sz)
 {
     int type = sqlite3_column_type(st, i);
     char shown[64];
@@ -238,7 +259,9 @@ static bool breaks(const rule *r, const names_rule *nr, sqlite3_stmt *st, int i,
     if (r->k == K_TEXT) {
         if (type != SQLITE_TEXT)
             snprintf(why, sz, "a number is not %s", r->what);
-        return type != SQLITE_TEXT || (nr && not_named(nr, sqlite3_column_text(st, i), why, sz));
+        return type != SQLITE_TEXT ||
+               control_char(sqlite3_column_text(st, i), (r->f & F_LINES) != 0, why, sz) ||
+               (nr && not_named(nr, sqlite3_column_text(st, i), why, sz));
     }
     if (type == SQLITE_TEXT) {
         show_text(shown, sizeof shown, sqlite3_column_text(st, i));
@@ -257,6 +280,11 @@ static bool breaks(const rule *r, const names_rule *nr, sqlite3_stmt *st, int i,
     /* study[0], study[1]: meta's replications and runs (0: not recorded) */
     int of = (r->f & F_REPS) ? study[0] : (r->f & F_RUNS) ? study[1] : 0;
     double hi = of > 0 ? of - 1 : r->hi;
+    if ((r->f & F_DUR) && duration > 0.0 && v > duration + 1e-3) { /* meta: %.3f */
+        snprintf(why, sz, "%.15g s is longer than the study's runs (meta says duration_s %.15g)",
+                 v, duration);
+        return true;
+    }
     if (!(v < r->lo || ((r->f & F_POS) && v <= r->lo) || v > hi))
         return false;
     if (r->k == K_FLAG)
@@ -277,6 +305,7 @@ typedef struct checker {
     const char *file;
     char study[128]; /* meta's study_name: runs are named study-%06d */
     int study_n[2];  /* meta's replications and runs; 0: not recorded */
+    double duration; /* meta's duration_s; 0: not recorded */
     fw_error *err;
 } checker;
 
@@ -309,7 +338,8 @@ static fw_status check_table(checker *C, const char *table, const rule *rules, i
     char why[200];
     while (!s && (rc = sqlite3_step(st)) == SQLITE_ROW) {
         for (int i = 1; i < n_col && !s; i++) {
-            if (!map[i] || !breaks(map[i], names[i], st, i, C->study_n, why, sizeof why))
+            if (!map[i] ||
+                !breaks(map[i], names[i], st, i, C->study_n, C->duration, why, sizeof why))
                 continue;
             char run[200] = "";
             if (run_col > 0 && sqlite3_column_type(st, run_col) == SQLITE_INTEGER &&
@@ -329,36 +359,110 @@ static fw_status check_table(checker *C, const char *table, const rule *rules, i
     return s;
 }
 
-/* meta's study_name, replications and runs (positive whole numbers when there). */
+/* meta's numbers as the sweep writes them (store.c write_meta): whole
+ * numbers, or a list of numbers (F_LIST); a key not named is text, checked
+ * for control characters only. */
+enum { M_INT = 1, M_LIST = 2, M_POS = 4 };
+typedef struct meta_rule {
+    const char *key;
+    double lo, hi;
+    unsigned f;
+    const char *what;
+} meta_rule;
+
+static const meta_rule meta_rules[] = {
+    {"replications", 1, 1000000, M_INT, "a number of replications"},
+    {"runs", 1, 1000000000, M_INT, "a number of runs"},
+    {"seed", 0, 18446744073709551615.0, M_INT, "a seed"},
+    {"survey", 0, 1, M_INT, "a flag (0 or 1)"},
+    {"duration_s", 0, 1e9, M_POS, "a duration"},
+    {"step_s", 0, 3600, M_POS, "a time step"},
+    {"speed_kn", 0, 100, 0, "a speed"},
+    {"encounter_m", 0, 1e8, M_POS, "a range"},
+    {"near_miss_m", 0, 1e8, M_POS, "a distance"},
+    {"audit_risk_dcpa_m", 0, 1e8, 0, "a distance"},
+    {"audit_risk_tcpa_s", 0, 1e9, 0, "a time"},
+    {"audit_course_change_deg", 0, 360, 0, "an angle"},
+    {"audit_speed_change", 0, 1e3, 0, "a fraction"},
+    {"audit_early_tcpa_s", 0, 1e9, 0, "a time"},
+    {"audit_prompt_s", 0, 1e9, 0, "a time"},
+    {"audit_rule17_may_tcpa_s", 0, 1e9, 0, "a time"},
+    {"audit_rule17_must_tcpa_s", 0, 1e9, 0, "a time"},
+    {"survey_radius_m", 0, 1e8, M_POS, "a distance"},
+    {"survey_range_m", 0, 1e8, M_POS, "a distance"},
+    {"survey_dcpa_m", 0, 1e8, 0, "a distance"},
+    {"survey_tcpa_s", 0, 1e9, 0, "a time"},
+    {"domains_m", 0, 1e8, M_LIST | M_POS, "a list of domain sizes"},
+    {"domains_l", 0, 1e3, M_LIST | M_POS, "a list of domain sizes (ship lengths)"},
+    {"densities", 0, 1e6, M_LIST, "a list of traffic densities"},
+    {"fore_aft_ratios", 0, 1e3, M_LIST | M_POS, "a list of domain shapes"},
+};
+
+/* Does v (one number, or a comma-separated list for M_LIST) keep m?  The
+ * number read into *x (the last of a list). */
+static bool meta_ok(const meta_rule *m, const char *v, double *x)
+{
+    const char *p = v;
+    do {
+        char *end;
+        errno = 0;
+        *x = strtod(p, &end);
+        bool whole = !(m->f & M_INT) || (*x == floor(*x) && !strpbrk(v, ".eE"));
+        if (end == p || isspace((unsigned char)*p) || !isfinite(*x) || !whole || *x < m->lo ||
+            ((m->f & M_POS) && *x <= m->lo) || *x > m->hi)
+            return false;
+        p = end;
+    } while ((m->f & M_LIST) && *p == ',' && *++p);
+    return *p == '\0';
+}
+
+/* One row of meta: its value against the key's rule, or (any key) free of
+ * control characters (the study's description may have line breaks). */
+static fw_status check_meta_row(checker *C, long long row, const char *k, const char *v)
+{
+    char why[200] = "", shown[64];
+    double x = 0;
+    const meta_rule *m = NULL;
+    for (size_t i = 0; i < sizeof meta_rules / sizeof *meta_rules && !m; i++)
+        m = strcmp(meta_rules[i].key, k) == 0 ? &meta_rules[i] : NULL;
+    show_text(shown, sizeof shown, (const unsigned char *)v);
+    if (m && !meta_ok(m, v, &x))
+        snprintf(why, sizeof why, "%s is not %s (%s %.15g, at most %.15g)", shown, m->what,
+                 (m->f & M_POS) ? "above" : "from", m->lo, m->hi);
+    else if (!m)
+        control_char((const unsigned char *)v, strcmp(k, "study_description") == 0, why,
+                     sizeof why);
+    if (!why[0] && strcmp(k, "study_name") == 0 && !v[0])
+        snprintf(why, sizeof why, "an empty study name (it names the runs)");
+    if (why[0]) {
+        char key[64]; /* as shown, without its quotes */
+        show_text(key, sizeof key, (const unsigned char *)k);
+        memmove(key, key + 1, strlen(key));
+        key[strlen(key) - 1] = '\0';
+        return fw_fail(C->err, FW_EINPUT, "%s: table meta, row %lld (key %s), column value: %s",
+                       C->file, row, key, why);
+    }
+    if (strcmp(k, "study_name") == 0)
+        snprintf(C->study, sizeof C->study, "%s", v);
+    else if (strcmp(k, "replications") == 0 || strcmp(k, "runs") == 0)
+        C->study_n[k[0] == 'r' && k[1] == 'e' ? 0 : 1] = (int)x;
+    else if (strcmp(k, "duration_s") == 0)
+        C->duration = x;
+    return FW_OK;
+}
+
+/* Every row of meta; study_name, replications, runs and duration_s kept. */
 static fw_status read_meta(checker *C)
 {
     sqlite3_stmt *st;
-    if (sqlite3_prepare_v2(C->db, "SELECT rowid, key, value FROM meta WHERE key IN "
-                                  "('study_name', 'replications', 'runs')", -1, &st, NULL) != SQLITE_OK)
+    if (sqlite3_prepare_v2(C->db, "SELECT rowid, key, value FROM meta", -1, &st, NULL) !=
+        SQLITE_OK)
         return FW_OK; /* the readers refuse a database without meta */
     fw_status s = FW_OK;
     while (!s && sqlite3_step(st) == SQLITE_ROW) {
         const char *k = (const char *)sqlite3_column_text(st, 1);
         const char *v = (const char *)sqlite3_column_text(st, 2);
-        v = v ? v : "";
-        if (strcmp(k, "study_name") == 0) {
-            for (size_t i = 0; v[i] && i + 1 < sizeof C->study; i++)
-                C->study[i] = isprint((unsigned char)v[i]) ? v[i] : '?', C->study[i + 1] = 0;
-            continue;
-        }
-        int reps = strcmp(k, "replications") == 0;
-        long most = reps ? 1000000 : 1000000000;
-        char *end;
-        long n = strtol(v, &end, 10);
-        if (end == v || *end || n < 1 || n > most) {
-            char shown[64];
-            show_text(shown, sizeof shown, (const unsigned char *)v);
-            s = fw_fail(C->err, FW_EINPUT,
-                        "%s: table meta, row %lld (key %s), column value: %s is not a number of "
-                        "%s (1 to %ld)", C->file, (long long)sqlite3_column_int64(st, 0), k, shown,
-                        k, most);
-        }
-        C->study_n[reps ? 0 : 1] = (int)n;
+        s = check_meta_row(C, (long long)sqlite3_column_int64(st, 0), k ? k : "", v ? v : "");
     }
     sqlite3_finalize(st);
     return s;

@@ -14,7 +14,15 @@
  * replication below meta's replications, a run id below meta's runs), NOT
  * NULL where the schema says so,
  * and the names the report counts by (situation, traffic type, outcome) among
- * the ones it knows.
+ * the ones it knows; texts without control characters (an escape sequence
+ * would reach the terminal, a line break split a message; a failed run's
+ * reason may have line breaks); a run's seed 1 to 2^31 - 2 (study.c), its
+ * largest helm 0 to 90 deg, its simulated time at most meta's duration_s.
+ * Every row of meta too: the numbers the sweep writes there (store.c) as
+ * numbers in their ranges (replications, runs and seed whole; duration,
+ * step, ranges above 0; domains_m and the other levels lists of numbers),
+ * the study name not empty, every value without control characters (the
+ * study's description may have line breaks): the report prints them.
  * The rules for encounters come from the encounter field table
  * (run/encounter_record.h: type and unit), the others from a column table in
  * db_check.c; a column the table does not name is not checked (an older or
@@ -23,10 +31,11 @@
  * (runs.n_encounters against the rows: report warns; encounters of a run that
  * is not in runs: skipped), relations between columns (t_min_s after
  * t_detect_s, min_hull_m <= min_dist_m), other names (behaviour, role,
- * act_side, target_type) and meta's other values (shown as text).
+ * act_side, target_type) and meta's other texts beyond control characters.
  *
  * The first bad value fails with FW_EINPUT:
  *   "FILE: table encounters, row 17 (run dover-000003), column min_hull_m: -inf is not a distance"
+ *   "FILE: table meta, row 23 (key duration_s), column value: '-5' is not a duration (...)"
  * (row: SQLite's rowid; run: meta's study_name and the run_id, as the sweep
  * names its runs).
  */

@@ -102,6 +102,31 @@ tampered "UPDATE traffic_encounters SET type = 'zigzag' WHERE rowid = 1" \
   "table traffic_encounters, row 1 (run synthetic-000000), column type: 'zigzag' is not one of head-on, overtaking, crossing"
 tampered "UPDATE encounters SET candidate = 1, outcome = 'sunk' WHERE rowid = 2" \
   "$enc 2 (run synthetic-000000), column outcome: 'sunk' is not one of collision, near miss, domain, passed"
+# meta: its numbers as the sweep writes them, its texts one printable line
+# (each was printed into report.md, or named the runs, with exit 0)
+meta="table meta, row"
+tampered "INSERT INTO meta VALUES('duration_s', '-5')" \
+  "$meta 4 (key duration_s), column value: '-5' is not a duration (above 0, at most 1000000000)"
+tampered "UPDATE meta SET value = 'abc' WHERE key = 'near_miss_m'" \
+  "$meta 3 (key near_miss_m), column value: 'abc' is not a distance (above 0"
+tampered "INSERT INTO meta VALUES('domains_m', '-200,800')" \
+  "$meta 4 (key domains_m), column value: '-200,800' is not a list of domain sizes"
+tampered "UPDATE meta SET value = '' WHERE key = 'study_name'" \
+  "$meta 2 (key study_name), column value: an empty study name (it names the runs)"
+tampered "UPDATE meta SET value = 'a' || char(10) || 'b' WHERE key = 'study_name'" \
+  "$meta 2 (key study_name), column value: 'a?b' holds a control character (byte 0x0a at 2)"
+# texts of runs: an escape sequence reached the terminal, a line break split the warning
+tampered "UPDATE runs SET setting = 'x' || char(27) || '[2J' WHERE run_id = 1" \
+  "$runs 1 (run synthetic-000001), column setting: 'x?[2J' holds a control character (byte 0x1b at 2)"
+tampered "UPDATE runs SET behaviour = 'a' || char(10) || 'b' WHERE run_id = 1" \
+  "$runs 1 (run synthetic-000001), column behaviour: 'a?b' holds a control character"
+# a seed no study draws, a helm beyond any rudder, a run longer than the study's
+tampered "UPDATE runs SET seed = -1 WHERE run_id = 2" \
+  "$runs 2 (run synthetic-000002), column seed: -1 is not a run's seed (must be >= 1)"
+tampered "UPDATE runs SET max_helm_deg = 1e9 WHERE run_id = 2" \
+  "$runs 2 (run synthetic-000002), column max_helm_deg: 1000000000 is not a helm angle (at most 90)"
+tampered "INSERT INTO meta VALUES('duration_s', '900.000')" \
+  "$runs 0 (run synthetic-000000), column sim_s: 1800 s is longer than the study's runs (meta says duration_s 900)"
 # fairway worst reads the same database: refused before any run is sailed
 tampered "UPDATE encounters SET min_hull_m = -9e999 WHERE rowid = 3" \
   "$enc 3 (run synthetic-000000), column min_hull_m: -inf is not a distance" worst
