@@ -1,6 +1,7 @@
 /* ais_track.c - AIS reports into per-ship tracks in the plane (ais_track.h). */
 #include "ais/ais_track.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -274,7 +275,8 @@ fw_status fw_ais_tracks_print_csv(const fw_ais_tracks *t, FILE *f, fw_error *err
                     tr->info.length, tr->info.breadth);
         }
     }
-    return ferror(f) ? fw_fail(err, FW_ERUN, "cannot write the tracks") : FW_OK;
+    return ferror(f) ? fw_fail(err, FW_ERUN, "cannot write the tracks: %s", strerror(errno ? errno : EIO))
+                    : FW_OK;
 }
 
 fw_status fw_ais_tracks_write_csv(const fw_ais_tracks *t, const char *path, fw_error *err)

@@ -4,6 +4,7 @@
  * Numbers are printed with fixed formats (no %g, whose width depends on the
  * value) and no clock time is written, so reruns are byte-identical.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -354,7 +355,7 @@ fw_status fw_records_survey(fw_records *r, const fw_survey_record *rec, int n, f
                 e->breadth_b);
     }
     if (fclose(f) != 0)
-        return fw_fail(err, FW_ERUN, "cannot write %s/traffic_encounters.csv", r->dir);
+        return fw_fail(err, FW_ERUN, "cannot write %s/traffic_encounters.csv: %s", r->dir, strerror(errno));
     return FW_OK;
 }
 
@@ -372,13 +373,13 @@ fw_status fw_records_finish(fw_records *r, fw_run_summary *sum, fw_error *err)
     for (int i = 0; i < n; i++)
         fw_enc_csv_row(f, &e[i]);
     if (fclose(f) != 0)
-        return fw_fail(err, FW_ERUN, "cannot write %s/encounters.csv", r->dir);
+        return fw_fail(err, FW_ERUN, "cannot write %s/encounters.csv: %s", r->dir, strerror(errno));
     f = open_in(r->dir, "summary.json", err);
     if (!f)
         return FW_ERUN;
     fw_summary_json(f, sum, e, n, "");
     fputc('\n', f);
     if (fclose(f) != 0)
-        return fw_fail(err, FW_ERUN, "cannot write %s/summary.json", r->dir);
+        return fw_fail(err, FW_ERUN, "cannot write %s/summary.json: %s", r->dir, strerror(errno));
     return FW_OK;
 }

@@ -33,16 +33,34 @@ static int g_lock_fd = -1;
 sqlite3 *fw_store_sqlite(fw_store *st) { return st->db; }
 const char *fw_store_path(const fw_store *st) { return st->path; }
 
+/* Is the disk that holds the database full (SQLite's "database or disk is
+ * full", or "disk I/O error" from a write that found no space)? */
+static bool disk_full(fw_store *st)
+{
+    int e = sqlite3_system_errno(st->db);
+    return sqlite3_errcode(st->db) == SQLITE_FULL || e == ENOSPC || e == EDQUOT;
+}
+
+/* What a failure on a full disk adds to SQLite's words. */
+static const char *full_note(fw_store *st)
+{
+    return disk_full(st) ? " (the disk holding the database is full: free space, then run the "
+                           "same command again to resume)"
+                         : "";
+}
+
 static fw_status db_fail(fw_store *st, fw_error *err, const char *what)
 {
-    return fw_fail(err, FW_ERUN, "%s: %s: %s", st->path, what, sqlite3_errmsg(st->db));
+    return fw_fail(err, FW_ERUN, "%s: %s: %s%s", st->path, what, sqlite3_errmsg(st->db),
+                   full_note(st));
 }
 
 static fw_status exec(fw_store *st, const char *sql, fw_error *err)
 {
     char *msg = NULL;
     if (sqlite3_exec(st->db, sql, NULL, NULL, &msg) != SQLITE_OK) {
-        fw_status s = fw_fail(err, FW_ERUN, "%s: %s", st->path, msg ? msg : "error");
+        fw_status s = fw_fail(err, FW_ERUN, "%s: %s%s", st->path, msg ? msg : "error",
+                              full_note(st));
         sqlite3_free(msg);
         return s;
     }
@@ -285,12 +303,13 @@ static fw_status setup(fw_store *st, const fw_study *s, fw_error *err)
         r = fw_fail(err, FW_ERUN, "the schema is longer than %zu bytes", sizeof schema);
     else
         r = exec(st, schema, err);
-    if (r) {
+    if (r && !disk_full(st)) { /* not a schema fairway can extend: another file */
         if (err)
             err->status = FW_EINPUT;
         r = FW_EINPUT;
-        goto rollback;
     }
+    if (r)
+        goto rollback;
     char version[64], old[64], digest[32];
     snprintf(digest, sizeof digest, "%016" PRIx64, s->digest);
     if ((r = meta_get(st, "schema_version", version, sizeof version, err)) ||
@@ -337,8 +356,10 @@ fw_status fw_store_open(const char *path, const fw_study *s, fw_store **out, fw_
     char *msg = NULL;
     if (sqlite3_exec(st->db, "PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL;", NULL, NULL,
                      &msg) != SQLITE_OK) {
-        r = fw_fail(err, FW_EINPUT, "%s: not a usable SQLite database: %s", path,
-                    msg ? msg : "error");
+        r = disk_full(st) ? fw_fail(err, FW_ERUN, "%s: cannot create the database: %s%s", path,
+                                    msg ? msg : "error", full_note(st))
+                          : fw_fail(err, FW_EINPUT, "%s: not a usable SQLite database: %s", path,
+                                    msg ? msg : "error");
         sqlite3_free(msg);
         goto fail;
     }

@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include "core/files.h"
@@ -104,6 +105,42 @@ static fw_status work_dir(const fw_sweep_def *def, char *work, size_t n, fw_erro
     return r;
 }
 
+/* A run that failed because the work directory's disk is full (it says "No
+ * space left on device" or "Disk quota exceeded", or too little is left
+ * there): every run after it would fail the same way, so the sweep stops
+ * with this message and the run is not recorded (a resume runs it). */
+bool fw_sweep_disk_full(const fw_study *s, const fw_outcome *o, const char *work, int left,
+                        fw_error *err)
+{
+    if (strcmp(o->status, "ok") == 0)
+        return false;
+    struct statvfs vf;
+    bool low = work && statvfs(work, &vf) == 0 &&
+               (double)vf.f_bavail * (double)vf.f_frsize < 65536.0;
+    if (!low && !strstr(o->reason, strerror(ENOSPC)) && !strstr(o->reason, strerror(EDQUOT)))
+        return false;
+    /* the reason without the work directory, which is removed as the sweep ends */
+    char why[512] = "";
+    size_t wl = work ? strlen(work) : 0, k = 0;
+    for (const char *p = o->reason; *p && k + 1 < sizeof why; p++) {
+        if (wl && strncmp(p, work, wl) == 0 && p[wl] == '/')
+            p += wl + 1;
+        why[k++] = *p;
+    }
+    why[k] = '\0';
+    /* where: --keep's directory, or the temporary one's parent (TMPDIR) */
+    const char *slash = work ? strrchr(work, '/') : NULL;
+    int n = slash && strncmp(slash + 1, "fairway-sweep-", 14) == 0 ? (int)(slash - work)
+                                                                  : (int)wl;
+    fw_fail(err, FW_ERUN,
+            "the disk of the sweep's work directory%s%.*s is full: run %s-%06d failed (%.200s); "
+            "the sweep stopped there, that run and %d more are not recorded: free space (or "
+            "set TMPDIR, or --keep, to a larger disk), then run the same command again to "
+            "resume", work ? " in " : "", n > 300 ? 300 : n, work ? work : "", s->name,
+            o->run_id, why, left);
+    return true;
+}
+
 fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error *err)
 {
     memset(res, 0, sizeof *res);
@@ -170,6 +207,11 @@ fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error
             fw_sweep_collect(&kids[i], &o);
             running--;
             m++;
+            if (fw_sweep_disk_full(s, &o, work, n_pending - res->done - res->failed - 1, err)) {
+                r = FW_ERUN;
+                fw_outcome_free(&o);
+                break;
+            }
             /* the one writer: a run is wholly in the database or not at all */
             if ((r = fw_store_commit(st, s, &o, err))) {
                 fw_outcome_free(&o);

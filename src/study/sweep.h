@@ -87,6 +87,12 @@ bool fw_sweep_read(fw_child *c);
 void fw_sweep_collect(fw_child *c, fw_outcome *out);
 void fw_sweep_kill(fw_child *c);
 
+/* Did run o fail on a full disk (its reason says so, or work, the work
+ * directory, when not NULL, has less than 64 kB left)?  Then err says so,
+ * with left, the runs not recorded after it (sweep.c). */
+bool fw_sweep_disk_full(const fw_study *s, const fw_outcome *o, const char *work, int left,
+                        fw_error *err);
+
 /* A fresh work directory for run directories (mkdtemp; --keep: that one). */
 fw_status fw_sweep_workdir(const fw_sweep_def *def, char *out, size_t outsz, fw_error *err);
 

@@ -150,7 +150,7 @@ static bool hand_out(work_list *wl, int rank, int *queued, int *busy)
 
 /* A result from a rank (tag RESULT or SPLIT) committed. */
 static fw_status take_result(const fw_sweep_def *def, fw_store *st, const MPI_Status *stt,
-                             fw_progress *prog, fw_sweep_result *res, fw_error *err)
+                             int left, fw_progress *prog, fw_sweep_result *res, fw_error *err)
 {
     int n = 0;
     MPI_Get_count(stt, MPI_BYTE, &n);
@@ -175,7 +175,11 @@ static fw_status take_result(const fw_sweep_def *def, fw_store *st, const MPI_St
     free(buf);
     if (!unpacked)
         return fw_fail(err, FW_ERUN, "rank %d: %s", stt->MPI_SOURCE, uerr.msg);
-    fw_status r = fw_store_commit(st, def->study, &o, err);
+    /* a rank's disk full: stop, that run not recorded (its work directory is
+     * on the rank's host: the reason alone tells) */
+    fw_status r = fw_sweep_disk_full(def->study, &o, NULL, left, err)
+                      ? FW_ERUN
+                      : fw_store_commit(st, def->study, &o, err);
     if (!r)
         fw_progress_count(prog, def->study, &o, res);
     fw_outcome_free(&o);
@@ -209,7 +213,7 @@ static fw_status root(const fw_sweep_def *def, fw_store *st, work_list *wl, int 
         busy--;
         queued[rank]--;
         runs_out -= stt.MPI_TAG == TAG_RESULT;
-        fw_status tr = take_result(def, st, &stt, prog, res, err);
+        fw_status tr = take_result(def, st, &stt, runs_out, prog, res, err);
         if (!r)
             r = tr;
         if (runs_out == 0 && prog) { /* the runs are all in: their last line */

@@ -1,6 +1,7 @@
 /* fcd.c - a run's floating car data in SUMO's layout (fcd.h). */
 #include "traffic/fcd.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,7 +65,7 @@ fw_status fw_fcd_step(fw_fcd *d, double time, const fw_sumo_raw *v, int n, fw_er
     fputs("    </timestep>\n", f);
     if (ferror(f)) {
         d->failed = true;
-        return fw_fail(err, FW_ERUN, "cannot write %s", d->tmp);
+        return fw_fail(err, FW_ERUN, "cannot write %s: %s", d->path, strerror(errno ? errno : EIO));
     }
     return FW_OK;
 }
