@@ -148,7 +148,9 @@ fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error
     const fw_study *s = def->study;
     fw_store *st = NULL;
     /* every run would fail on it in SUMO: refused once, before any */
-    fw_status r = fw_sumo_path_check("--keep", def->keep_dir, err);
+    const char *tmpdir = getenv("TMPDIR");
+    fw_status r = def->keep_dir ? fw_sumo_path_check("--keep", def->keep_dir, err)
+                                : fw_sumo_path_check("the work directory (TMPDIR)", tmpdir, err);
     if (r || (r = fw_store_open(def->db, s, &st, err)))
         return r;
     int *pending = NULL, n_pending = 0;

@@ -52,6 +52,10 @@ comma "fairway: the run directory: '$dir/o,ut' has a comma: SUMO splits its file
 comma "fairway: --keep: '$dir/k,eep' has a comma" \
   "$FAIRWAY" sweep "$dir/small.yaml" --db "$dir/s.db" --keep "$dir/k,eep"
 [ ! -e "$dir/s.db" ] || { echo "the sweep began"; exit 1; }
+mkdir -p "$dir/t,mp"
+comma "fairway: the work directory \(TMPDIR\): '$dir/t,mp' has a comma" \
+  env TMPDIR="$dir/t,mp" "$FAIRWAY" sweep "$dir/small.yaml" --db "$dir/s.db"
+[ ! -e "$dir/s.db" ] || { echo "the sweep made its database first"; exit 1; }
 mkdir -p "$dir/d,ata"
 cp -r "$FAIRWAY_DATA/networks" "$FAIRWAY_DATA/scenarios" "$dir/d,ata/"
 comma "fairway: FAIRWAY_DATA: '$dir/d,ata' has a comma" \
