@@ -141,16 +141,21 @@ bool fw_sweep_disk_full(const fw_study *s, const fw_outcome *o, const char *work
     return true;
 }
 
+/* Where the runs go: every run would fail on a comma in it in SUMO, so it is
+ * refused once, before the database is made. */
+static fw_status paths_check(const fw_sweep_def *def, fw_error *err)
+{
+    return def->keep_dir ? fw_sumo_path_check("--keep", def->keep_dir, err)
+                         : fw_sumo_path_check("the work directory (TMPDIR)", getenv("TMPDIR"), err);
+}
+
 fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error *err)
 {
     memset(res, 0, sizeof *res);
     double t0 = fw_sweep_now();
     const fw_study *s = def->study;
     fw_store *st = NULL;
-    /* every run would fail on it in SUMO: refused once, before any */
-    const char *tmpdir = getenv("TMPDIR");
-    fw_status r = def->keep_dir ? fw_sumo_path_check("--keep", def->keep_dir, err)
-                                : fw_sumo_path_check("the work directory (TMPDIR)", tmpdir, err);
+    fw_status r = paths_check(def, err);
     if (r || (r = fw_store_open(def->db, s, &st, err)))
         return r;
     int *pending = NULL, n_pending = 0;

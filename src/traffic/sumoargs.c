@@ -36,6 +36,15 @@ fw_status fw_traffic_mode_parse(const char *text, fw_traffic_mode *out, fw_error
         out->host[hl] = '\0';
         out->port = (int)port;
         out->kind = FW_TRAFFIC_REMOTE;
+        const char *t = getenv("FAIRWAY_SUMO_TIMEOUT");
+        if (t && t[0]) {
+            out->timeout = strtod(t, &end);
+            if (end == t || *end || !(out->timeout >= 0.1 && out->timeout <= 86400.0))
+                return fw_fail(err, FW_EINPUT,
+                               "FAIRWAY_SUMO_TIMEOUT '%.40s': expected seconds, 0.1 to 86400 (how "
+                               "long the SUMO at %s may take to connect and to begin each answer)",
+                               t, text + 7);
+        }
         return FW_OK;
     }
     return fw_fail(err, FW_EINPUT,

@@ -139,14 +139,16 @@ static fw_status connect_quietly(fw_traffic *t, const char *host, int port, bool
                                  fw_error *err)
 {
     *broken = false;
-    double deadline = fw_clock_s() + t->def.connect_timeout;
+    const fw_traffic_mode *m = &t->def.mode;
+    double deadline = fw_clock_s() + (m->timeout > 0.0 ? m->timeout : t->def.connect_timeout);
     for (;;) {
         /* libtraci talks to the peer through the checking relay only
          * (traci_guard.h): no byte from the wire can crash or hang fairway */
         fw_traci_guard_def gd = {.host = host, .port = port,
                                  .connect_timeout = fmax(0.1, deadline - fw_clock_s()),
-                                 .reply_timeout = t->def.mode.kind == FW_TRAFFIC_GUI
-                                                      ? 0.0 : t->def.reply_timeout};
+                                 .reply_timeout = m->kind == FW_TRAFFIC_GUI ? 0.0
+                                                  : m->timeout > 0.0     ? m->timeout
+                                                                         : t->def.reply_timeout};
         int local;
         fw_status st = fw_traci_guard_start(&gd, &t->guard, &local, err);
         if (!st) {

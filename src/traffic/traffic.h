@@ -58,10 +58,16 @@ typedef struct fw_traffic_mode {
     fw_traffic_kind kind;
     char host[256]; /* remote only */
     int port;       /* remote only */
+    /* s, remote only: the connect and the reply timeout (traci_guard.h), from
+     * FAIRWAY_SUMO_TIMEOUT; 0: the defaults (10 s to connect, 60 s a reply) */
+    double timeout;
     fw_traffic_gui gui; /* gui only */
 } fw_traffic_mode;
 
-/* "embedded", "gui" or "remote:HOST:PORT" (port 1..65535); gui settings zero. */
+/* "embedded", "gui" or "remote:HOST:PORT" (port 1..65535); gui settings zero.
+ * Remote: FAIRWAY_SUMO_TIMEOUT, when set, is the seconds (0.1 to 86400) the
+ * peer has to accept the connection and to begin each answer (a bad value:
+ * FW_EINPUT naming the variable). */
 fw_status fw_traffic_mode_parse(const char *text, fw_traffic_mode *out, fw_error *err);
 /* Can a sumo-gui open a window here?  FW_EINPUT at once, naming opt, when
  * there is no display ($DISPLAY unset): sumo-gui would only fail to start. */
