@@ -229,7 +229,7 @@ fw_status fw_check_out_file(const char *opt, const char *path, bool replace, fw_
 fw_status fw_check_speed(const char *opt, double kn, double lo, fw_error *err)
 {
     if (!(kn >= lo && kn <= FW_SPEED_MAX_KN))
-        return fw_fail(err, FW_EINPUT, "%s: %g kn outside %g-%g kn", opt, kn, lo,
+        return fw_fail(err, FW_EINPUT, "%s: %.15g kn outside %.15g-%.15g kn", opt, kn, lo,
                        FW_SPEED_MAX_KN);
     return FW_OK;
 }
@@ -240,7 +240,7 @@ void fw_warn_nomoto_speed(const fw_ship *ship, double kn, const char *file, cons
     if (!kb->present || (kn >= kb->speed_min_kn - 1e-9 && kn <= kb->speed_max_kn + 1e-9))
         return;
     fprintf(stderr,
-            "fairway: warning: %s%s%s: %g kn is outside %g-%g kn, the speeds %s's Nomoto "
+            "fairway: warning: %s%s%s: %.15g kn is outside %.15g-%.15g kn, the speeds %s's Nomoto "
             "knowledge base was fitted over (%s): its predictions are extrapolated\n",
             file ? file : "", file ? ": " : "", field, kn, kb->speed_min_kn, kb->speed_max_kn,
             ship->name, ship->file);

@@ -102,7 +102,7 @@ static fw_status track_def(const ais_opts *o, double gap, const char *proj, cons
     d->cols = &o->cols;
     d->max_gap = o->has_gap ? o->max_gap : gap;
     if (!(d->max_gap > 0 && d->max_gap <= 86400))
-        return fw_fail(err, FW_EINPUT, "--max-gap %g: give 0 to 86400 s", d->max_gap);
+        return fw_fail(err, FW_EINPUT, "--max-gap %.15g: give 0 to 86400 s", d->max_gap);
     fw_status st;
     if ((st = window_opt("--start", o->start, &d->start, &d->start_rel, err)) ||
         (st = window_opt("--end", o->end, &d->end, &d->end_rel, err)))
@@ -189,7 +189,7 @@ static int demand(const ais_opts *o, fw_error *err)
     dd.network = o->network;
     dd.tolerance = fw_nm_to_m(o->tolerance_nm);
     if (!(dd.tolerance > 0))
-        return fw_report((fw_fail(err, FW_EINPUT, "--tolerance %g: must be > 0 nm",
+        return fw_report((fw_fail(err, FW_EINPUT, "--tolerance %.15g: must be > 0 nm",
                                   o->tolerance_nm), err));
     fw_ais_tracks t;
     fw_ais_demand_result res;

@@ -62,12 +62,12 @@ static fw_status parse_ship_state(const char *opt, const char *text, bool target
         return fw_fail(err, FW_EINPUT, "%s: expected E,N,COURSE,SPEED%s, got '%s'", opt,
                        target ? "[,LENGTH,BREADTH]" : "", text);
     if (fabs(v[0]) > MAX_POSITION_M || fabs(v[1]) > MAX_POSITION_M)
-        return fw_fail(err, FW_EINPUT, "%s: position (%g, %g) m is beyond %g km", opt, v[0], v[1],
+        return fw_fail(err, FW_EINPUT, "%s: position (%.15g, %.15g) m is beyond %.15g km", opt, v[0], v[1],
                        MAX_POSITION_M / 1000);
     if (v[3] < 0.0)
-        return fw_fail(err, FW_EINPUT, "%s: speed %g kn is negative", opt, v[3]);
+        return fw_fail(err, FW_EINPUT, "%s: speed %.15g kn is negative", opt, v[3]);
     if (v[3] > FW_SPEED_MAX_KN)
-        return fw_fail(err, FW_EINPUT, "%s: speed %g kn is above %g kn", opt, v[3],
+        return fw_fail(err, FW_EINPUT, "%s: speed %.15g kn is above %.15g kn", opt, v[3],
                        FW_SPEED_MAX_KN);
     if (n == 6 && (v[4] < 0.0 || v[5] < 0.0 || v[4] > 1000.0 || v[5] > 1000.0))
         return fw_fail(err, FW_EINPUT, "%s: length and breadth must be 0 to 1000 m", opt);
@@ -161,7 +161,7 @@ static int parse_options(int argc, char **argv, helm_in *in, fw_error *err)
     for (int i = 0; i < in->n; i++)
         if (hypot(in->tg[i].east - in->own_v[0], in->tg[i].north - in->own_v[1]) < 1.0)
             return fw_report((fw_fail(err, FW_EINPUT,
-                                      "--target %d: at the own ship's position (%g, %g) m: a "
+                                      "--target %d: at the own ship's position (%.15g, %.15g) m: a "
                                       "target must be apart from the own ship",
                                       i + 1, in->own_v[0], in->own_v[1]), err));
     return -1;

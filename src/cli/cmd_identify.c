@@ -348,7 +348,7 @@ int fw_cmd_identify(int argc, char **argv)
         return fw_report(&err);
     for (int j = 0; j < o.nr; j++)
         if (!(o.rudders[j] >= 1.0 && fw_deg_to_rad(o.rudders[j]) <= ship.rudder_max * (1 + 1e-12)))
-            return fw_report((fw_fail(&err, FW_EINPUT, "--rudders: %g deg outside 1 to the maximum",
+            return fw_report((fw_fail(&err, FW_EINPUT, "--rudders: %.15g deg outside 1 to the maximum",
                                       o.rudders[j]), &err));
     char *def_out = NULL;
     if (!o.out_path) {

@@ -100,10 +100,10 @@ static fw_status parse(int argc, char **argv, opts *o, fw_error *err)
     if (o->side && strcmp(o->side, "starboard") && strcmp(o->side, "port"))
         return fw_fail(err, FW_EINPUT, "--side: '%s' is not starboard or port", o->side);
     if (o->have_speed && !(o->speed > 0.0))
-        return fw_fail(err, FW_EINPUT, "--speed: must be positive (got %g kn)", o->speed);
+        return fw_fail(err, FW_EINPUT, "--speed: must be positive (got %.15g kn)", o->speed);
     if (o->have_speed && o->speed > FW_SPEED_MAX_KN)
         return fw_fail(err, FW_EINPUT,
-                       "--speed: %g kn is above %g kn, the fastest fairway accepts (as scenarios)",
+                       "--speed: %.15g kn is above %.15g kn, the fastest fairway accepts (as scenarios)",
                        o->speed, FW_SPEED_MAX_KN);
     /* output paths are checked before the simulation, not after it */
     if (o->csv && fw_check_out_file("--csv", o->csv, true, err))
@@ -523,10 +523,10 @@ int fw_cmd_manoeuvre(int argc, char **argv)
     if (fw_ship_load(o.ship ? o.ship : "c3", &ship, &err))
         return fw_report(&err);
     if (o.have_rudder && fw_deg_to_rad(o.rudder) > ship.rudder_max * (1 + 1e-12))
-        return fw_report((fw_fail(&err, FW_EINPUT, "--rudder: %g deg is beyond %s's maximum of %g deg",
+        return fw_report((fw_fail(&err, FW_EINPUT, "--rudder: %.15g deg is beyond %s's maximum of %.15g deg",
                                   o.rudder, ship.name, fw_rad_to_deg(ship.rudder_max)), &err));
     if (o.have_angle && fw_deg_to_rad(o.angle) > ship.rudder_max * (1 + 1e-12))
-        return fw_report((fw_fail(&err, FW_EINPUT, "--angle: %g deg is beyond %s's maximum rudder of %g deg",
+        return fw_report((fw_fail(&err, FW_EINPUT, "--angle: %.15g deg is beyond %s's maximum rudder of %.15g deg",
                                   o.angle, ship.name, fw_rad_to_deg(ship.rudder_max)), &err));
     if (report && o.n_wind)
         return fw_report((fw_fail(&err, FW_EINPUT, "--wind: not with report, which compares "

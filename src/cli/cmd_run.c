@@ -140,12 +140,12 @@ static fw_status check_gui(const gui_opts *g, const bool *seen, fw_traffic_mode 
     if (seen[0] && seen[1])
         return fw_fail(err, FW_EINPUT, "--realtime: give it or --gui-delay, not both");
     if (!(g->delay_ms >= 0.0 && g->delay_ms <= 60000.0))
-        return fw_fail(err, FW_EINPUT, "--gui-delay %g: must be 0..60000 ms", g->delay_ms);
+        return fw_fail(err, FW_EINPUT, "--gui-delay %.15g: must be 0..60000 ms", g->delay_ms);
     if (seen[1] && !(g->realtime > 0.0 && g->realtime <= 1e6))
-        return fw_fail(err, FW_EINPUT, "--realtime %g: must be above 0 (1 = real time)",
+        return fw_fail(err, FW_EINPUT, "--realtime %.15g: must be above 0 (1 = real time)",
                        g->realtime);
     if (!(g->view_nm > 0.0 && g->view_nm <= 500.0))
-        return fw_fail(err, FW_EINPUT, "--gui-view %g: must be in (0, 500] nm", g->view_nm);
+        return fw_fail(err, FW_EINPUT, "--gui-view %.15g: must be in (0, 500] nm", g->view_nm);
     int w = 0, h = 0, used = 0;
     if (sscanf(g->size, "%dx%d%n", &w, &h, &used) != 2 || g->size[used] != '\0' || w < 200 ||
         h < 150 || w > 10000 || h > 10000)

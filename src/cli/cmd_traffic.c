@@ -171,19 +171,19 @@ int fw_cmd_traffic(int argc, char **argv)
     if (ships < 0 || ships > 100000)
         return fw_report((fw_fail(&err, FW_EINPUT, "--ships %ld: must be 0..100000", ships), &err));
     if (!(duration > 0.0 && duration <= 30 * 86400.0))
-        return fw_report((fw_fail(&err, FW_EINPUT, "--duration %g: must be in (0, 30 days]", duration), &err));
+        return fw_report((fw_fail(&err, FW_EINPUT, "--duration %.15g: must be in (0, 30 days]", duration), &err));
     /* SUMO's clock counts milliseconds; scenarios step 0.1 to 10 s */
     if (!(step >= 0.1 && step <= 60.0))
-        return fw_report((fw_fail(&err, FW_EINPUT, "--step %g: must be 0.1 to 60 s", step), &err));
+        return fw_report((fw_fail(&err, FW_EINPUT, "--step %.15g: must be 0.1 to 60 s", step), &err));
     if (duration / step > 1e7)
-        return fw_report((fw_fail(&err, FW_EINPUT, "--duration %g with --step %g: %.0f steps, at "
+        return fw_report((fw_fail(&err, FW_EINPUT, "--duration %.15g with --step %.15g: %.0f steps, at "
                                   "most 10000000", duration, step, ceil(duration / step)), &err));
     if (!(density >= 0.0 && density <= 100.0))
-        return fw_report((fw_fail(&err, FW_EINPUT, "--density %g: must be 0..100", density), &err));
+        return fw_report((fw_fail(&err, FW_EINPUT, "--density %.15g: must be 0..100", density), &err));
     if (!(radius > 0.0 && radius <= 100.0))
-        return fw_report((fw_fail(&err, FW_EINPUT, "--radius %g: must be in (0, 100] nm", radius), &err));
+        return fw_report((fw_fail(&err, FW_EINPUT, "--radius %.15g: must be in (0, 100] nm", radius), &err));
     if (!(speed >= 0.0 && speed <= 40.0))
-        return fw_report((fw_fail(&err, FW_EINPUT, "--speed %g: must be 0..40 kn", speed), &err));
+        return fw_report((fw_fail(&err, FW_EINPUT, "--speed %.15g: must be 0..40 kn", speed), &err));
     if (every < 1)
         return fw_report((fw_fail(&err, FW_EINPUT, "--every %ld: must be 1 or more", every), &err));
     if (seed < 0)

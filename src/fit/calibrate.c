@@ -140,7 +140,7 @@ static fw_status check_rows(const fw_ship *ship, const fw_trial *trial, fw_error
         if (deg > fw_rad_to_deg(ship->rudder_max) + 1e-9)
             return fw_fail_at(err, trial->file, t->line,
                               t->from_kb ? "nomoto_targets.rudders_deg" : "rudder_deg",
-                              "%g deg is beyond %s's maximum rudder of %g deg", deg, ship->name,
+                              "%.15g deg is beyond %s's maximum rudder of %.15g deg", deg, ship->name,
                               fw_rad_to_deg(ship->rudder_max));
     }
     return FW_OK;

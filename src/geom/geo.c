@@ -46,7 +46,7 @@ fw_status fw_geo_create(double lat_deg, double lon_deg, fw_geo **out, fw_error *
 {
     *out = NULL;
     if (!(fabs(lat_deg) <= 80.0) || !(fabs(lon_deg) <= 180.0))
-        return fw_fail(err, FW_EINPUT, "origin %g, %g: latitude must be within 80 deg of the "
+        return fw_fail(err, FW_EINPUT, "origin %.15g, %.15g: latitude must be within 80 deg of the "
                                        "equator and longitude within 180 deg", lat_deg, lon_deg);
     fw_geo *g = calloc(1, sizeof *g);
     if (!g)
@@ -69,7 +69,7 @@ fw_status fw_geo_create_proj(const char *proj, double off_e, double off_n, fw_ge
     if (!proj || !proj[0] || strlen(proj) >= sizeof ((fw_geo *)0)->proj)
         return fw_fail(err, FW_EINPUT, "projection '%.60s': empty or too long", proj ? proj : "");
     if (!isfinite(off_e) || !isfinite(off_n))
-        return fw_fail(err, FW_EINPUT, "projection offset %g, %g: not a number", off_e, off_n);
+        return fw_fail(err, FW_EINPUT, "projection offset %.15g, %.15g: not a number", off_e, off_n);
     fw_geo *g = calloc(1, sizeof *g);
     if (!g)
         return fw_fail(err, FW_ERUN, "out of memory");
@@ -106,7 +106,7 @@ static fw_status trans(const fw_geo *g, PJ_DIRECTION dir, double a, double b, do
                                 : proj_coord(a - g->off_e, b - g->off_n, 0.0, 0.0);
     PJ_COORD c = proj_trans(g->pj, dir, in);
     if (!isfinite(c.xy.x) || !isfinite(c.xy.y) || c.xy.x == HUGE_VAL)
-        return fw_fail(err, FW_EINPUT, "%g, %g cannot be converted (%s)", a, b,
+        return fw_fail(err, FW_EINPUT, "%.15g, %.15g cannot be converted (%s)", a, b,
                        dir == PJ_FWD ? "longitude, latitude" : "east, north");
     *x = dir == PJ_FWD ? c.xy.x + g->off_e : proj_todeg(c.lp.lam);
     *y = dir == PJ_FWD ? c.xy.y + g->off_n : proj_todeg(c.lp.phi);
@@ -117,7 +117,7 @@ fw_status fw_geo_to_plane(const fw_geo *g, double lat_deg, double lon_deg, doubl
                           double *north, fw_error *err)
 {
     if (!(fabs(lat_deg) <= 90.0) || !(fabs(lon_deg) <= 180.0))
-        return fw_fail(err, FW_EINPUT, "latitude %g, longitude %g: not a position", lat_deg,
+        return fw_fail(err, FW_EINPUT, "latitude %.15g, longitude %.15g: not a position", lat_deg,
                        lon_deg);
     return trans(g, PJ_FWD, lon_deg, lat_deg, east, north, err);
 }

@@ -33,6 +33,14 @@ sed -e 's/^name: .*/name: geo\norigin: {lat_deg: 80, lon_deg: 0}/' \
 grep -q "^  lat_deg: 90$" "$dir/e.yaml" || { echo "e.yaml not made"; exit 1; }
 expect "e.yaml:[0-9]+: own_ship.lat_deg: 90, 0 is more than 1000 km from the origin" \
   "$FAIRWAY" run "$dir/e.yaml" --out "$dir/runs"
+# options too: the number as typed ("--speed: 40 kn is above 40 kn" before)
+expect "^fairway: --speed: 40.0000001 kn is above 40 kn" \
+  "$FAIRWAY" manoeuvre turning --ship c3 --speed 40.0000001 --rudder 35
+expect "^fairway: --radius 100.0000001: must be in \(0, 100\] nm" "$FAIRWAY" traffic --radius 100.0000001
+expect "^fairway: origin 80.0000001, 11.5: latitude must be within 80 deg" \
+  "$FAIRWAY" ais tracks "$FAIRWAY_DATA/scenarios/ais/aisdk-2026-03-01.csv" --origin 80.0000001,11.5
+expect "^fairway: --own: speed 40.0000001 kn is above 40 kn" \
+  "$FAIRWAY" helm --ship c3 --own 0,0,0,40.0000001 --target 100,200,180,10
 cp "$FAIRWAY_DATA/tests/data/study/"*.yaml "$dir/"
 sed -i 's/^name: .*/name: ""/' "$dir/small.yaml"
 expect "small.yaml:2: name: is empty: use letters, digits, '-' or '_' \(it names the runs\)" \
