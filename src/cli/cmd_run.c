@@ -187,35 +187,13 @@ static int parse_options(int argc, char **argv, run_opts *o, fw_error *err)
 }
 
 /* Every scenario loaded and checked, and --out made, before any run. */
-/* DIR/NAME is replaced whole by the run: only if it is not there, or is a
- * run directory fairway made (a real directory holding its run.log or
- * own.csv, which the run opens first), or empty.  Anything else there is the
- * user's and is refused before any run. */
+/* DIR/NAME is replaced whole by the run (core/files.h fw_check_run_dir). */
 static fw_status check_run_dir(const char *out, const char *name, fw_error *err)
 {
-    char dst[1024], p[1100];
-    struct stat sb;
+    char dst[1024];
     if (fw_path(dst, sizeof dst, err, "%s/%s", out, name))
         return err->status;
-    if (lstat(dst, &sb) != 0)
-        return FW_OK;
-    if (!S_ISDIR(sb.st_mode))
-        return fw_fail(err, FW_EINPUT, "--out: %s exists and is not a run directory (%s): "
-                       "not replacing it", dst, S_ISLNK(sb.st_mode) ? "a symlink" : "not a directory");
-    bool ours = false;
-    for (int i = 0; i < 2 && !ours; i++)
-        ours = !fw_path(p, sizeof p, NULL, "%s/%s", dst, i ? "own.csv" : "run.log") &&
-               lstat(p, &sb) == 0 && S_ISREG(sb.st_mode);
-    DIR *d = ours ? NULL : opendir(dst);
-    bool empty = true;
-    for (struct dirent *e; d && empty && (e = readdir(d));)
-        empty = strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0;
-    if (d)
-        closedir(d);
-    if (!ours && !empty)
-        return fw_fail(err, FW_EINPUT, "--out: %s is not a run directory of fairway (no run.log "
-                       "in it): not replacing it", dst);
-    return FW_OK;
+    return fw_check_run_dir("--out", dst, err);
 }
 
 static int load_all(run_opts *o, fw_error *err)

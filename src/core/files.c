@@ -1,6 +1,7 @@
 /* files.c - see files.h. */
 #define _XOPEN_SOURCE 700
 #include <stdarg.h>
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
@@ -257,6 +258,31 @@ fw_status fw_file_write(const char *path, const void *data, size_t n, fw_error *
         return fw_fail(err, FW_ERUN, "%s: write failed", path);
     }
     return fw_file_commit(f, tmp, path, err);
+}
+
+fw_status fw_check_run_dir(const char *opt, const char *dst, fw_error *err)
+{
+    char p[PATH_MAX + 16];
+    struct stat sb;
+    if (lstat(dst, &sb) != 0)
+        return FW_OK;
+    if (!S_ISDIR(sb.st_mode))
+        return fw_fail(err, FW_EINPUT, "%s: %s exists and is not a run directory (%s): "
+                       "not replacing it", opt, dst, S_ISLNK(sb.st_mode) ? "a symlink" : "not a directory");
+    bool ours = false;
+    for (int i = 0; i < 2 && !ours; i++)
+        ours = !fw_path(p, sizeof p, NULL, "%s/%s", dst, i ? "own.csv" : "run.log") &&
+               lstat(p, &sb) == 0 && S_ISREG(sb.st_mode);
+    DIR *d = ours ? NULL : opendir(dst);
+    bool empty = true;
+    for (struct dirent *e; d && empty && (e = readdir(d));)
+        empty = strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0;
+    if (d)
+        closedir(d);
+    if (!ours && !empty)
+        return fw_fail(err, FW_EINPUT, "%s: %s is not a run directory of fairway (no run.log "
+                       "in it): not replacing it", opt, dst);
+    return FW_OK;
 }
 
 fw_status fw_check_parent_dir(const char *opt, const char *path, const char *cannot,

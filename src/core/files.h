@@ -24,6 +24,14 @@ fw_status fw_mkdirs(const char *dir, const char *what, fw_error *err);
  * whatever a link planted in an output points to. */
 fw_status fw_mkdir_own(const char *path, const char *what, fw_error *err);
 
+/* dir, about to be replaced whole by a run: only if it is not there, or is
+ * a run directory fairway made (a real directory holding its run.log or
+ * own.csv, which a run opens first), or empty.  Anything else there is the
+ * user's: FW_EINPUT "OPT: DIR exists and is not a run directory (a symlink):
+ * not replacing it" or "OPT: DIR is not a run directory of fairway (no
+ * run.log in it): not replacing it". */
+fw_status fw_check_run_dir(const char *opt, const char *dir, fw_error *err);
+
 /* The directory a file is to be written in: there, a directory, and ours to
  * write in.  FW_EINPUT "OPT PATH: no directory DIR" or "OPT PATH: CANNOT DIR:
  * reason" (cannot: "cannot write in", "cannot create it in"). */

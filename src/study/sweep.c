@@ -141,12 +141,21 @@ bool fw_sweep_disk_full(const fw_study *s, const fw_outcome *o, const char *work
     return true;
 }
 
-/* Where the runs go: every run would fail on a comma in it in SUMO, so it is
- * refused once, before the database is made. */
+/* Where the runs go, checked before the database is made: every run would
+ * fail on a comma in it in SUMO; with --keep DIR each run replaces DIR/NAME
+ * whole, so a directory of the user's there (not a run directory of
+ * fairway's: the sweep deleted it) or a symlink is refused before any run. */
 static fw_status paths_check(const fw_sweep_def *def, fw_error *err)
 {
-    return def->keep_dir ? fw_sumo_path_check("--keep", def->keep_dir, err)
-                         : fw_sumo_path_check("the work directory (TMPDIR)", getenv("TMPDIR"), err);
+    if (!def->keep_dir)
+        return fw_sumo_path_check("the work directory (TMPDIR)", getenv("TMPDIR"), err);
+    fw_status r = fw_sumo_path_check("--keep", def->keep_dir, err);
+    char dir[1200];
+    for (int i = 0, n = fw_study_run_count(def->study); i < n && !r; i++)
+        if (!(r = fw_path(dir, sizeof dir, err, "%s/%.40s-%06d", def->keep_dir, def->study->name,
+                          i)))
+            r = fw_check_run_dir("--keep", dir, err);
+    return r;
 }
 
 fw_status fw_sweep_local(const fw_sweep_def *def, fw_sweep_result *res, fw_error *err)

@@ -4,7 +4,8 @@
 # DIR as it was; `worst --out DIR` with DIR/case-1 a planted symlink writes
 # nothing into, and deletes nothing from, what it points to; links planted at
 # a case's tracks.csv and scenario.yaml are replaced, never written through;
-# `run --out DIR` refuses a DIR/NAME that is not a run directory.
+# `run --out DIR` and `sweep --keep DIR` refuse a DIR/NAME that is not a run
+# directory.
 set -u
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -65,4 +66,18 @@ msg=$("$FAIRWAY" run "$scn" --out "$dir/runs" 2>&1)
 [ $? -eq 2 ] && grep -qF "exists and is not a run directory (a symlink)" <<<"$msg" ||
   fail "run into a link: $msg"
 [ "$(tree "$dir/victim")" = "$before" ] || fail "run changed the link's target"
+# sweep --keep DIR: DIR/NAME of the user's (a directory with a file, a link)
+# refused before the database is made (the sweep replaced them, deleting
+# notes.txt); an earlier sweep's run directories are replaced
+small=$FAIRWAY_DATA/tests/data/study/small.yaml
+mkdir -p "$dir/keep/small-000001" && echo mine > "$dir/keep/small-000001/notes.txt"
+msg=$("$FAIRWAY" sweep "$small" --db "$dir/k.db" --keep "$dir/keep" --limit 2 --progress none 2>&1)
+[ $? -eq 2 ] && grep -qF -- "--keep: $dir/keep/small-000001 is not a run directory of fairway" <<<"$msg" ||
+  fail "sweep --keep into a foreign DIR/NAME: $msg"
+[ "$(cat "$dir/keep/small-000001/notes.txt")" = mine ] && [ ! -e "$dir/k.db" ] || fail "notes.txt lost or k.db made"
+rm -r "$dir/keep/small-000001" && ln -s "$dir/victim" "$dir/keep/small-000001"
+msg=$("$FAIRWAY" sweep "$small" --db "$dir/k.db" --keep "$dir/keep" --limit 2 --progress none 2>&1)
+[ $? -eq 2 ] && grep -qF "small-000001 exists and is not a run directory (a symlink)" <<<"$msg" ||
+  fail "sweep --keep into a link: $msg"
+[ "$(tree "$dir/victim")" = "$before" ] || fail "sweep changed the link's target"
 echo "ok: only fairway's own files replaced"
