@@ -9,7 +9,6 @@
  * the child is stopped, its unfinished temporary directory removed, and the
  * message says which finished runs were kept.
  */
-#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
