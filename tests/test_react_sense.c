@@ -19,6 +19,9 @@
  *     first)
  *   radar, fog: g tracks t by its own radar: no action before the track is
  *     shown (60 s), then on the track (known_how radar)
+ *   a ship taken from the traffic (t) sees g through the same sensing: in
+ *     its view g is g's AIS report dead reckoned (more than 0.1 m, less than
+ *     100 m from g's truth, which its truth list keeps); perfect: the truth
  *
  * Rule 19(e) (reactions.h, avoid/policy.h):
  *   background: in 1 km fog g first slows (t out of sight forward of its
@@ -206,6 +209,43 @@ static double g_to_t(fw_world *w, double *audible)
     return NAN;
 }
 
+/* How far t's view puts g from where g is after 30 s (t's truth list). */
+static double taken_view_error(const fw_sensing_def *d)
+{
+    fw_error err = {0};
+    fw_world *w = crossing(d, 0.0, 1);
+    for (int k = 0; k < 30; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    double off = NAN;
+    for (int i = 0; i < fw_world_vessel_count(w); i++) {
+        const fw_vessel *v = fw_world_vessel(w, fw_world_vessel_at(w, i));
+        const fw_target *tg, *tr;
+        const fw_assessment *as;
+        int n, nt;
+        bool sensed;
+        if (strcmp(fw_vessel_record(v)->id, "t") != 0)
+            continue;
+        fw_vessel_view(v, &tg, &as, &n);
+        fw_vessel_truth(v, &tr, &nt, &sensed);
+        for (int j = 0; j < n; j++)
+            for (int q = 0; q < nt; q++)
+                if (strcmp(tg[j].id, "g") == 0 && strcmp(tr[q].id, "g") == 0)
+                    off = hypot(tg[j].east - tr[q].east, tg[j].north - tr[q].north);
+    }
+    fw_world_destroy(w);
+    return off;
+}
+
+static void test_taken_sees(void)
+{
+    fw_sensing_def d = fw_default_sensing_def();
+    double perfect = taken_view_error(&d);
+    d.mode = FW_SENSE_AIS;
+    double ais = taken_view_error(&d);
+    printf("a taken ship's view of g: perfect %.3f m, AIS %.1f m from g's truth\n", perfect, ais);
+    CHECK(perfect == 0.0 && ais > 0.1 && ais < 100.0);
+}
+
 static void test_rule19e_background(void)
 {
     fw_error err = {0};
@@ -310,6 +350,7 @@ int main(void)
     TEST_RUN(test_ais);
     TEST_RUN(test_ais_radar_clear);
     TEST_RUN(test_radar_fog);
+    TEST_RUN(test_taken_sees);
     TEST_RUN(test_rule19e_background);
     TEST_RUN(test_rule19e_own);
     return TEST_EXIT();

@@ -91,9 +91,12 @@
  *            within range, out of sight, without a report
  *   else     not known: not given way to, not avoided.
  * A record says how the acting ship knew the other and where it took it to
- * be beside where it was (fw_reaction known_*).  Not modelled: per-receiver
- * AIS losses, what a ship sees of a ship in sight (the truth), steered ships
- * (give_way course) once taken: they steer on the truth (world/steer.h).
+ * be beside where it was (fw_reaction known_*).  A ship taken to steer
+ * (give_way course, world/steer.h) sees through the same reports
+ * (fw_reactions_known: the reports as of the last reactions step, dead
+ * reckoned to now; in sight without one, seen), but has no radar: a ship
+ * out of its sight without a report is not in its view.  Not modelled:
+ * per-receiver AIS losses, what a ship sees of a ship in sight (the truth).
  */
 #ifndef FW_WORLD_REACTIONS_H
 #define FW_WORLD_REACTIONS_H
@@ -213,6 +216,12 @@ void fw_reactions_watch_counts(const fw_reactions *r, long *pairs, long *lapsed)
 /* A split's branch at t: the watch's undetected ships drawn afresh (watch.h fw_watch_redraw). */
 int fw_reactions_redraw(fw_reactions *r, double t);
 void fw_reactions_mix_counts(const fw_reactions *r, long counts[FW_BEH_N]);
+
+/* What ship self (a ship fairway steers for the traffic) knows at t of
+ * ship o (Sensing, above) into *out: false when it does not know it (out of
+ * sight without a current AIS report).  Perfect sensing: o itself. */
+bool fw_reactions_known(const fw_reactions *r, const fw_target *self, const fw_target *o,
+                        double t, fw_target *out);
 
 /* Does it do anything (behaviour colregs)? */
 bool fw_reactions_active(const fw_reactions *r);

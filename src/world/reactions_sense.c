@@ -155,6 +155,19 @@ void fw_react_sense_note(const fw_reactions *r, int j, fw_reaction *x)
     x->true_e = r->truth[j].east, x->true_n = r->truth[j].north;
 }
 
+bool fw_reactions_known(const fw_reactions *r, const fw_target *self, const fw_target *o,
+                        double t, fw_target *out)
+{
+    *out = *o;
+    if (!r || !fw_react_sensing(r))
+        return true;
+    int k = has_ais(r) ? fw_idmap_find_keyed(&r->ids, o->key, o->id) : -1;
+    if (k >= 0 && k < r->cap && fw_ais_tx_known(&r->def.sensing, &r->s[k].ais, o, t, out))
+        return true;
+    *out = *o; /* in sight: seen */
+    return !fw_not_in_sight(&r->def.colregs, hypot(o->east - self->east, o->north - self->north));
+}
+
 void fw_react_sense_free(fw_reactions *r)
 {
     for (int i = 0; i < r->cap; i++)

@@ -423,7 +423,11 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
     v->n_view = n;
     bool sensor = i == w->own && w->def.own_sensing.mode != FW_SENSE_PERFECT;
     bool watch = i == w->own && fw_watch_active(w->own_watch);
-    if (sensor || watch) {
+    /* a ship taken from the traffic (steered for it, world/steer.h) sees as
+     * the reacting traffic does */
+    bool traffic = i != w->own && v->taken && fw_reactions_active(w->react) &&
+                   w->def.reactions.sensing.mode != FW_SENSE_PERFECT;
+    if (sensor || watch || traffic) {
         /* the truth kept for the records; the view is what the sensor knows
          * and the watch has noticed */
         memcpy(v->truth, v->view, sizeof *v->view * (size_t)n);
@@ -435,6 +439,13 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
     if (sensor && (st = fw_sensor_update(w->sensor, fw_world_time(w), v->truth, n, v->view,
                                          &v->n_view, err)))
         return st;
+    if (traffic) {
+        int m = 0;
+        for (int j = 0; j < n; j++)
+            m += fw_reactions_known(w->react, &v->record, &v->truth[j], fw_world_time(w),
+                                    &v->view[m]);
+        v->n_view = m;
+    }
     return watch ? own_watch(w, v, err) : FW_OK;
 }
 
