@@ -55,6 +55,7 @@ fw_test(test_decide_parts test_decide_parts.c decide_scenes.c)
 # the environment (src/env) in the world, the dynamics and the helm search
 fw_test(test_env test_env.c decide_scenes.c)
 target_link_libraries(test_env PRIVATE fw_helm_reference)
+fw_test(test_env_predict test_env_predict.c)
 
 # The environment: section of a scenario (scenario/scn_env.h) and the manoeuvres' --current
 fw_script_test(env_run 0 "ok: the current carries the own ship" env_run.sh)
