@@ -89,6 +89,11 @@ fw_test(test_react_sense test_react_sense.c)
 target_link_libraries(test_react_sense PRIVATE fairway_run)
 set_tests_properties(test_react_sense PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+# a give-way background ship judges every ship it gives way to (reactions.c)
+fw_test(test_react_judge test_react_judge.c)
+target_link_libraries(test_react_judge PRIVATE fairway_run)
+set_tests_properties(test_react_judge PROPERTIES TIMEOUT 60
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 
 # Snapshot and restore of a running run (src/run/branch.h): a run of each
 # source kind branched at three steps ends byte-identical to the unbranched one

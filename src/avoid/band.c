@@ -1,18 +1,21 @@
 /* band.c - the band about the route (band.h). */
 #include "avoid/band.h"
 
+#include "avoid/helm_ctx.h"
+
 #include <math.h>
 
 #include "core/units.h"
 #include "nomoto/nomoto.h"
 
 /* Clearance of steering heading psi with the policy's autopilot (policy.c's
- * steer, the same prediction). */
-static fw_status steer(const fw_policy *p, const fw_policy_input *in, double psi, bool beyond,
-                       double *clearance, fw_error *err)
+ * steer, the same prediction), at the straight-course speed U0 (0: the
+ * present one). */
+static fw_status steer(const fw_policy *p, const fw_policy_input *in, double psi, double U0,
+                       bool beyond, double *clearance, fw_error *err)
 {
     fw_steer_def ap = {.psi_ref = psi, .kp = p->def.ap_kp, .kd = p->def.ap_kd,
-                       .max_helm = p->def.ap_max_helm};
+                       .max_helm = p->def.ap_max_helm, .U0 = U0};
     return fw_helm_steer_clearance(in->ctx, in->targets, in->n, &ap, beyond, clearance, err);
 }
 
@@ -54,9 +57,14 @@ bool fw_band_edge(const fw_policy *p, const fw_own_state *own, int side)
     return s * p->dev >= p->def.band_turn || s * across(p, own) >= p->def.band_xte;
 }
 
+double fw_band_planned(const fw_policy *p)
+{
+    return p->def.route.n > 0 ? p->def.route.leg[p->leg].speed : 0.0;
+}
+
 double fw_band_slow(const fw_policy *p, const fw_nomoto_kb *kb)
 {
-    double planned = p->def.route.n > 0 ? p->def.route.leg[p->leg].speed : 0.0;
+    double planned = fw_band_planned(p);
     /* not below the knowledge base's fitted speeds: the helm search predicts
      * with it, and its regressions extrapolated to 5.4 kn gave c3-mmg an
      * unstable model (a Dover run at 1000 m domain failed so) */
@@ -83,7 +91,7 @@ fw_status fw_band_hold(fw_policy *p, const fw_policy_input *in, fw_error *err)
         return FW_OK;
     }
     double cl;
-    fw_status st = steer(p, in, p->psi_ref, false, &cl, err);
+    fw_status st = steer(p, in, p->psi_ref, 0.0, false, &cl, err);
     if (!st && cl >= 1.0)
         p->psi_hold = p->psi_ref;
     else if (!st)
@@ -94,25 +102,32 @@ fw_status fw_band_hold(fw_policy *p, const fw_policy_input *in, fw_error *err)
 /* The domain cannot be kept: the least bad heading within the band, the one
  * of the leg's course +-15, 30 .. band_turn (none further out past
  * band_xte) whose steering keeps the targets farthest out (to the horizon
- * and beyond, the return's check), the nearest the course among equals. */
+ * and beyond, the return's check), the nearest the course among equals;
+ * and the speed, slowed or the planned one, that keeps them farther out on
+ * it (slowed among equals). */
 fw_status fw_band_least_bad(fw_policy *p, const fw_policy_input *in, fw_error *err)
 {
     const double step = fw_deg_to_rad(15.0);
     int kmax = (int)floor(p->def.band_turn / step + 1e-9);
     double best = -1.0, psi = p->psi_hold;
+    double speed[2] = {fw_band_slow(p, &in->ctx->ship->nomoto), fw_band_planned(p)};
+    bool slow = true;
     for (int m = 0; m <= 2 * kmax; m++) {
         int k = (m + 1) / 2 * (m % 2 ? 1 : -1); /* 0, 1, -1, 2, -2 ... */
         if (k != 0 && fw_band_edge(p, in->own, k > 0 ? FW_SIDE_STARBOARD : FW_SIDE_PORT) &&
             fabs(fw_wrap_pi(p->psi_ref + k * step - in->own->psi)) > 0.5 * step &&
             k * fw_wrap_pi(p->psi_ref + k * step - in->own->psi) > 0.0)
             continue; /* at that side's edge: no heading further out */
-        double cl;
-        fw_status st = steer(p, in, p->psi_ref + k * step, true, &cl, err);
-        if (st)
-            return st;
-        if (cl > best + 0.02)
-            best = cl, psi = p->psi_ref + k * step;
+        for (int s = 0; s < (speed[1] > speed[0] ? 2 : 1); s++) {
+            double cl;
+            fw_status st = steer(p, in, p->psi_ref + k * step, speed[s], true, &cl, err);
+            if (st)
+                return st;
+            if (cl > best + 0.02)
+                best = cl, psi = p->psi_ref + k * step, slow = s == 0;
+        }
     }
     p->psi_hold = fw_wrap_2pi(psi);
+    p->slow = slow;
     return FW_OK;
 }

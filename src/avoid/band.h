@@ -23,8 +23,12 @@ int fw_band_sides(const fw_policy *p, const fw_own_state *own);
  * way, or band_xte across to it. */
 bool fw_band_edge(const fw_policy *p, const fw_own_state *own, int side);
 
-/* m/s: the speed ordered when the domain cannot be kept: slow_factor of the
- * planned (the active leg's) speed, not below kb's lowest fitted speed. */
+/* m/s: the planned speed (the active leg's; 0 without a route). */
+double fw_band_planned(const fw_policy *p);
+
+/* m/s: the speed ordered when the domain cannot be kept and slowing keeps the
+ * targets farther out (fw_band_least_bad): slow_factor of the planned speed,
+ * not below kb's lowest fitted speed. */
 double fw_band_slow(const fw_policy *p, const fw_nomoto_kb *kb);
 
 /* m/s: rule 19(e)'s speed, "the minimum at which she can be kept on her
@@ -42,7 +46,12 @@ fw_status fw_band_hold(fw_policy *p, const fw_policy_input *in, fw_error *err);
  * the band (the leg's course +-15, 30 .. band_turn deg, none further out past
  * band_xte): the one whose steering keeps the targets farthest out, over the
  * horizon and beyond (the return's check), the nearest the course among
- * equals (within 0.02 of the normalised domain radius). */
+ * equals (within 0.02 of the normalised domain radius); p->slow: whether at
+ * the slowed speed (fw_band_slow) or the planned one, whichever keeps them
+ * farther out on it, slowed among equals (each predicted with the speed
+ * relaxing to it: nomoto/track.h fw_steer_def.U0).  Slowing gives a ship
+ * ahead or crossing time and room (rule 8(e)); for one coming up from astern
+ * or across the quarter it only lets it in sooner. */
 fw_status fw_band_least_bad(fw_policy *p, const fw_policy_input *in, fw_error *err);
 
 #endif

@@ -527,10 +527,11 @@ static void target_at_end(const fw_helm_ctx *c, const fw_target *t, int k, doubl
 /* The closest approach of every target after the track's end, the own ship
  * going on at its straight-course speed on the last heading (carried by the
  * current it knows). */
-static double beyond_horizon(const fw_helm_ctx *c, const fw_track *tr, const fw_target *t, int n)
+static double beyond_horizon(const fw_helm_ctx *c, const fw_track *tr, double U0,
+                             const fw_target *t, int n)
 {
     int k = tr->n - 1;
-    double U = c->own.U0 > 0.0 ? c->own.U0 : c->own.U, cl = INFINITY;
+    double U = U0 > 0.0 ? U0 : c->own.U0 > 0.0 ? c->own.U0 : c->own.U, cl = INFINITY;
     double oe = U * tr->sin_psi[k], on = U * tr->cos_psi[k];
     if (c->own.cur_e != 0.0 || c->own.cur_n != 0.0)
         oe += c->own.cur_e, on += c->own.cur_n;
@@ -560,7 +561,7 @@ fw_status fw_helm_steer_clearance(fw_helm_ctx *c, const fw_target *t, int n,
     c->computed++;
     double cl = spare_clearance(c, t, n, 0.0, false);
     if (beyond && tr->n > 0)
-        cl = fmin(cl, beyond_horizon(c, tr, t, n));
+        cl = fmin(cl, beyond_horizon(c, tr, ap->U0, t, n));
     *clearance = cl;
     return FW_OK;
 }

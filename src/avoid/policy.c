@@ -114,6 +114,7 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->wo = 0.0;
     p->dev = p->psi_last = 0.0;
     p->unkept = p->no_room = p->r19e = false;
+    p->slow = true;
     p->speed_order = 0.0;
     p->t_kept = p->t_19e = -1.0;
 }
@@ -162,6 +163,39 @@ static bool gives_way(fw_situation s)
     return s == FW_SIT_HEAD_ON || s == FW_SIT_GIVE_WAY || s == FW_SIT_OVERTAKING;
 }
 
+/* Rule 17(b) for a stand-on own ship: is this the last moment its action
+ * alone still avoids one of the ships it stands on for, that is, would its
+ * largest helm, ordered standon_lookahead s from now, no longer keep that
+ * ship out of the domain?  Each such ship (entering the domain, the own ship
+ * standing on) is judged alone: 17(b) is about a give-way ship so close that
+ * its action alone can no longer avoid a collision, not about the crowd
+ * around.  Judged against every target at once, a dense scheme made the
+ * largest helm fail for ships that were not the give-way ship and the own
+ * ship acted "alone" for a ferry 10.2 km off (TCPA 619 s: a Dover run at
+ * 150 m domain); and no helm clearing every target (the search infeasible)
+ * is no ground for a stand-on ship to act either (rule 17(a)(i)). */
+static fw_status standon_last(const fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg, int n,
+                              const fw_assessment *as, const fw_helm_result *res, bool *last,
+                              fw_error *err)
+{
+    *last = false;
+    if (!(p->def.standon_lookahead > 0.0) || res->side == FW_SIDE_NONE)
+        return FW_OK;
+    double h = fw_helm_value(ctx, res->side, fw_helm_count(ctx) - 1);
+    for (int i = 0; i < n && !*last; i++) {
+        if (!as[i].enters_domain || as[i].rule19 ||
+            (as[i].situation != FW_SIT_STAND_ON && as[i].situation != FW_SIT_OVERTAKEN))
+            continue;
+        bool later;
+        fw_status st = fw_helm_clears_after(ctx, &tg[i], 1, h, p->def.standon_lookahead, &later,
+                                            err);
+        if (st)
+            return st;
+        *last = !later;
+    }
+    return FW_OK;
+}
+
 /* Should a STANDBY (or STEADY) ship act now against the threats?  Sets *why,
  * and *least: the smallest helm the action may take (rad). */
 static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg, int n,
@@ -200,22 +234,14 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
     const fw_assessment *a = &as[primary];
     if (!give_way) {
         bool last = false;
-        if (res->feasible && p->def.standon_lookahead > 0.0) {
-            /* rule 17(b): the last moment the own ship's action alone still
-             * avoids it, with the largest helm, lookahead s from now */
-            double h = fw_helm_value(ctx, res->side, fw_helm_count(ctx) - 1);
-            bool later;
-            fw_status st =
-                fw_helm_clears_after(ctx, tg, n, h, p->def.standon_lookahead, &later, err);
-            if (st)
-                return st;
-            last = !later;
-        }
+        fw_status st = standon_last(p, ctx, tg, n, as, res, &last, err);
+        if (st)
+            return st;
         if (a->range <= p->def.standon_act_range) {
             *act = true, *why = "stand-on: give-way ship has not acted, range below the stand-on limit";
         } else if (a->t_enter <= p->def.standon_act_time) {
             *act = true, *why = "stand-on: give-way ship has not acted, domain entry imminent";
-        } else if (!res->feasible || last) {
+        } else if (last) {
             *act = true;
             *why = "stand-on: give-way ship has not acted, the own ship alone must act now "
                    "(rule 17(b))";
@@ -559,7 +585,7 @@ static void order_speed(fw_policy *p, const fw_policy_input *in, fw_decision *d)
         p->speed_order = fw_rule19e_speed(&in->ctx->ship->nomoto,
                                           r->n > 0 ? r->leg[p->leg].speed : in->own->U);
     else if (p->unkept)
-        p->speed_order = fw_band_slow(p, &in->ctx->ship->nomoto);
+        p->speed_order = p->slow ? fw_band_slow(p, &in->ctx->ship->nomoto) : fw_band_planned(p);
     else if (r->steered || p->speed_order > 0.0)
         p->speed_order = r->leg[p->leg].speed;
     d->speed = p->speed_order;
@@ -598,6 +624,14 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
     p->no_room = room == 0;
     if ((st = fw_helm_search(in->ctx, in->targets, in->n, room ? room : allowed, &d->search, err)))
         return st;
+    /* a side the band took away, and no helm on the others clears: the
+     * domain cannot be kept within the band either (band.h: the least bad
+     * heading, not the best available helm on the side left, which is held
+     * through up to 90 deg of turn: in the strait study port turns of 10-17
+     * deg held for 7-10 minutes across the lanes, 5 before the band, 63 with
+     * it, and most of its collisions) */
+    if (room != allowed && d->search.threat && !d->search.feasible)
+        p->no_room = true;
     d->primary = in->n > 0 ? in->order[0] : -1;
     d->acted = false;
     d->reason = "";

@@ -46,8 +46,10 @@
  * overtaken) keep course and speed while the give-way ship may still act; act
  * when the predicted domain entry is closer than standon_act_time, the range
  * below standon_act_range, or the largest helm ordered standon_lookahead s
- * later would no longer keep every target out (rule 17(b): the own ship's
- * action alone must then avoid it, and a 333 m ship needs minutes), with at
+ * later would no longer keep a ship it stands on for out, that ship judged
+ * alone (rule 17(b): the own ship's action alone must then avoid it, and a
+ * 333 m ship needs minutes; the crowd around, or no helm clearing every
+ * target, is no ground for a stand-on ship to act), with at
  * least standon_min_helm (the action that best aids, not the least that
  * clears), and never to port for a target on the port side.
  *
@@ -62,7 +64,11 @@
  * the one of the leg's course +-15, 30 .. 90 deg that keeps the targets
  * farthest out) and reduces speed to slow_factor of the planned speed (not
  * below the knowledge base's lowest fitted speed: its predictions hold
- * there), until keeping the course has let no target in for min_avoid_time.
+ * there) where that keeps them farther out than the planned speed (each
+ * predicted; a ship coming up from astern is let in sooner by slowing: in
+ * the strait study a ship slowed at the band's edge, 90 deg off its route
+ * and so running along the lane, was run down from astern), until keeping
+ * the course has let no target in for min_avoid_time.
  * Why: in a traffic separation scheme
  * or a channel a master who cannot open the range by altering course does not
  * circle through the lanes (rule 10 asks a crossing ship to cross at right
@@ -200,7 +206,8 @@ typedef struct fw_policy {
     double dev;       /* rad, the heading's turn from the active leg's course, counted
                          through every turn (not wrapped) */
     double psi_last;  /* rad, the heading at the last step */
-    bool unkept;      /* the domain cannot be kept within the band: slowed */
+    bool unkept;      /* the domain cannot be kept within the band */
+    bool slow;        /* ... and slowing keeps the targets farther out (band.h) */
     bool r19e;        /* rule 19(e)'s speed held (above) ... */
     double t_19e;     /* s, ... since when no target has called for it (< 0: one does) */
     char r19e_id[FW_TARGET_ID_MAX]; /* the last target that called for it */

@@ -443,6 +443,8 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
     kin kn;
     /* the slip terms of the starboard block: the order changes side */
     kin_init(&kn, ship, &ship->nomoto, s, h);
+    if (ap->U0 > 0.0)
+        kn.U0 = ap->U0;
     double psi = s->psi, r = s->r, v = s->rdot, delta = s->delta;
     double sn = sin(psi), cs = cos(psi);
     out->n = n;

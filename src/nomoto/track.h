@@ -132,6 +132,9 @@ typedef struct fw_steer_def {
     double kp;        /* rad of helm per rad of heading error */
     double kd;        /* s */
     double max_helm;  /* rad */
+    double U0;        /* m/s, the straight-course speed predicted (a speed ordered
+                         now: the speed relaxes to it with the knowledge base's
+                         speed lag); 0: the state's own U0 */
 } fw_steer_def;
 
 /* Predicts the track under that autopilot, the order re-evaluated every 5 s

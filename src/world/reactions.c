@@ -315,10 +315,58 @@ static bool clears_at(const fw_reactions *r, int self, const fw_target *all, dou
     return *dcpa >= r->def.cpa;
 }
 
+/* The passes of ship a at speed v closer than cpa (within the horizon,
+ * ahead) of the ships near it (r->nb), the kLexi closest, ascending, into d;
+ * their count. */
+enum { kLexi = 16 };
+static int passes_within(const fw_reactions *r, int self, const fw_target *all, double v,
+                         double *d)
+{
+    int m = 0;
+    double cpa2 = r->def.cpa * r->def.cpa;
+    for (int q = 0; q < r->nnb; q++) {
+        double tc, d2;
+        cpa_sq_at(r, &all[self], v, &all[r->nb[q]], &tc, &d2);
+        if (!(tc > 0.0 && tc < r->def.horizon && d2 < cpa2))
+            continue;
+        double x = sqrt(d2);
+        if (m == kLexi && x >= d[m - 1])
+            continue;
+        int i = m < kLexi ? m++ : m - 1;
+        for (; i > 0 && d[i - 1] > x; i--)
+            d[i] = d[i - 1];
+        d[i] = x;
+    }
+    return m;
+}
+
+/* Passes a (na, ascending) better than b (nb) by more than tol at the
+ * first place they differ by that much (a ship passing at cpa or more
+ * counts as cpa)?  The closest pass decides, and where two speeds bring
+ * the closest ship equally near (one it cannot get away from by its
+ * speed), the next closest: compared by the closest alone, a ship holding
+ * a speed for one ship that passes near whatever it does never judged a
+ * ship it must give way to anew (strait study: a ferry overtaking the own
+ * ship held the speed it had taken for another ship until it ran the own
+ * ship down). */
+static bool lexi_better(const double *a, int na, const double *b, int nb, double cpa,
+                        double tol)
+{
+    for (int i = 0; i < na || i < nb; i++) {
+        double x = i < na ? a[i] : cpa, y = i < nb ? b[i] : cpa;
+        if (x > y + tol)
+            return true;
+        if (y > x + tol)
+            return false;
+    }
+    return false;
+}
+
 /* The fastest speed from v0 (or the speed it holds, vh) down to min_speed v0
  * (5 % steps) at which a passes every ship near it at cpa or more (those it
  * gives way to and all the others); *enough false if none: then the speed, from v0
- * down, that passes farthest from every ship near it. */
+ * down, that passes farthest from every ship near it (the closest pass first, then the next:
+ * lexi_better). */
 static double yielding_speed(const fw_reactions *r, int self, const fw_target *all,
                              const int *list, int m, double v0, double vh, bool *enough,
                              double *dcpa_after)
@@ -348,17 +396,20 @@ static double yielding_speed(const fw_reactions *r, int self, const fw_target *a
     *dcpa_after = NAN;
     /* held already, it changes only for a clearly better speed (50 m):
      * between two alike it would otherwise swing from one to the other */
-    double best = vh >= 0.0 ? vh : v0;
-    double dbest = fw_react_min_pass(r, self, all, best, -1, 0.0) + (vh >= 0.0 ? 50.0 : 0.0);
+    double best = vh >= 0.0 ? vh : v0, db[kLexi], dv[kLexi];
+    int nbest = passes_within(r, self, all, best, db);
+    bool held = vh >= 0.0;
     for (int k = 0; k <= 20; k++) {
         double v = v0 * (1.0 - 0.05 * k);
         if (v < r->def.min_speed * v0 - 1e-12)
             break;
         if (own && vh >= 0.0 && v > vh + 1e-9)
             continue;
-        double d = fw_react_min_pass(r, self, all, v, -1, 0.0);
-        if (d > dbest + 1e-6)
-            best = v, dbest = d;
+        int nv = passes_within(r, self, all, v, dv);
+        if (lexi_better(dv, nv, db, nbest, r->def.cpa, held ? 50.0 : 1e-6)) {
+            best = v, nbest = nv, held = false;
+            memcpy(db, dv, (size_t)nv * sizeof *dv);
+        }
     }
     return best;
 }

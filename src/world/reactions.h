@@ -19,7 +19,11 @@
  *               rule 16: early and substantial), to the fastest of the speeds
  *               from its own down to min_speed of it (in 5 % steps) at which
  *               every ship it gives way to passes at cpa or more; if none does,
- *               to min_speed (and the record says so).  A lane-bound ship has
+ *               to the one that passes farthest (and the record says so): the
+ *               closest pass compared first, then the next closest, so that a
+ *               ship passing near at any speed does not hide one it must give
+ *               way to (a ship holding a speed taken for another judges a new
+ *               one anew).  A lane-bound ship has
  *               no other readily apparent action than its speed.
  *   resumption  once at its former speed it would pass every such ship at
  *               1.25 cpa or more, or they are past, it is given its speed back

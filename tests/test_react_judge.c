@@ -1,0 +1,86 @@
+/* test_react_judge.c - a give-way background ship judges every ship it must
+ * give way to, not only the closest pass (world/reactions.h, the speed that
+ * passes farthest when none keeps the passing distance).
+ *
+ * g (the kinematic source's, 090 at 16 kn from the origin) overtakes the own
+ * ship (fairway's, Nomoto c3-paper holding 090 at 6 kn, 1500 m ahead and
+ * `own_off` m to g's port side): by rule 13 it must keep out of the way.
+ * y (the source's, 270 at 12 kn from 4000 m east) meets g nearly head-on,
+ * passing 30 m to its port side whatever speed g takes (the relative
+ * motion stays along one line): no speed keeps 0.5 nm from every ship.
+ *
+ *   without y, g slows at its first look to the fastest speed that keeps
+ *     0.5 nm from the own ship (8.8 kn: the plain case)
+ *   with y, the own ship passing 120 m off at g's speed, g slows to that
+ *     same speed (y's 30 m is the same at every speed; the next closest
+ *     pass, the own ship's, decides); compared by the closest pass alone
+ *     it found no speed better than its 16 kn and ran on to pass the own
+ *     ship at 120 m
+ */
+#include <math.h>
+#include <string.h>
+
+#include "core/units.h"
+#include "test.h"
+#include "test_ship.h"
+#include "traffic/source.h"
+#include "world/world.h"
+
+static fw_ship c3p;
+
+/* g's first order in 30 s (false: none). */
+static bool first_order(bool with_y, fw_reaction *out)
+{
+    fw_error err = {0};
+    fw_kin_ship ks[2] = {
+        {.start = {.id = "g", .east = 0, .north = 0, .course = 0.5 * FW_PI,
+                   .speed = fw_kn_to_ms(16), .length = 150, .breadth = 25}},
+        {.start = {.id = "y", .east = 4000, .north = 30, .course = 1.5 * FW_PI,
+                   .speed = fw_kn_to_ms(12), .length = 150, .breadth = 25}}};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ks;
+    kd.n = with_y ? 2 : 1;
+    fw_world_def wd = fw_default_world_def();
+    wd.reactions = fw_default_reactions_def();
+    wd.reactions.give_way = FW_GIVE_WAY_SPEED; /* the speed orders this test reads */
+    fw_world *w = NULL;
+    CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
+    CHECK_MSG(fw_world_create(&wd, &w, &err) == FW_OK, "%s", err.msg);
+    fw_vessel_def own = fw_default_vessel_def();
+    own.id = "own", own.role = FW_ROLE_OWN, own.ship = &c3p, own.dynamics = FW_DYN_NOMOTO;
+    own.east = 1500, own.north = 120, own.course = 0.5 * FW_PI, own.speed = fw_kn_to_ms(6);
+    CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    for (int k = 0; k < 30; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    int n;
+    const fw_reaction *r = fw_world_reactions(w, &n);
+    bool found = false;
+    for (int i = 0; i < n && !found; i++)
+        if (strcmp(r[i].ship, "g") == 0 && r[i].kind == FW_REACT_SLOW)
+            *out = r[i], found = true;
+    fw_world_destroy(w);
+    return found;
+}
+
+static void test_masked_by_a_close_pass(void)
+{
+    fw_reaction a = {0}, b = {0};
+    CHECK(first_order(true, &a));
+    CHECK(first_order(false, &b));
+    printf("  with y: g slows from %.1f to %.1f kn for %s at %.0f s (enough: %d); without y: "
+           "to %.1f kn for %s (enough: %d)\n",
+           fw_ms_to_kn(a.speed_from), fw_ms_to_kn(a.speed_to), a.other, a.t, a.enough,
+           fw_ms_to_kn(b.speed_to), b.other, b.enough);
+    CHECK(strcmp(a.other, "own") == 0 && !a.enough);
+    CHECK(strcmp(b.other, "own") == 0 && b.enough);
+    CHECK(b.speed_to < fw_kn_to_ms(16) * 0.96);
+    CHECK_NEAR(fw_ms_to_kn(a.speed_to), fw_ms_to_kn(b.speed_to), 1e-9);
+}
+
+int main(void)
+{
+    c3p = test_load_ship("c3-paper");
+    TEST_RUN(test_masked_by_a_close_pass);
+    return TEST_EXIT();
+}
