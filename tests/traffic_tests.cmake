@@ -68,6 +68,11 @@ set_tests_properties(worst_replay PROPERTIES TIMEOUT 300 ENVIRONMENT "FAIRWAY_DA
 # ships on a bent channel (networks/bend) never move sideways like no ship can
 fw_script_test(bend_traffic 0 "ok: no ship jumps on the bend" bend_traffic.sh)
 set_tests_properties(bend_traffic PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
+# the geometry of it: ships meeting along one waterway, ships of one stream, a crossing ship
+fw_test(test_lanes test_lanes.c)
+# ships meeting round the bend are meeting ships (rules 9 and 14), not crossing ones
+fw_script_test(bend_meeting 0 "ok: ships meet round the bend head-on" bend_meeting.sh)
+set_tests_properties(bend_meeting PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
 # the start-up fill puts no two ships on a collision course, network-wide
 fw_script_test(fill_pairs 0 "ok: no fill pair on a collision course" fill_pairs.sh)
 set_tests_properties(fill_pairs PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)

@@ -57,6 +57,21 @@ fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
     return classify(def, own, t, atan2(t->east - own->east, t->north - own->north));
 }
 
+fw_situation fw_classify_lanes(const fw_colregs_def *def, const fw_own_state *own,
+                               const fw_target *own_ship, const fw_lane_info *own_lane,
+                               const fw_target *t, const fw_lane_info *t_lane)
+{
+    if (own_lane && t_lane && fw_lanes_meet(own_ship, own_lane, t, t_lane))
+        return FW_SIT_HEAD_ON;
+    fw_situation s = fw_classify(def, own, t);
+    /* one ahead of the other along one waterway round a bend: overtaking
+     * (rule 13), whatever their bearings and courses say */
+    if ((s == FW_SIT_GIVE_WAY || s == FW_SIT_STAND_ON) && own_lane && t_lane &&
+        fw_lanes_along(own_ship, own_lane, t, t_lane))
+        return own->U > t->speed ? FW_SIT_OVERTAKING : FW_SIT_OVERTAKEN;
+    return s;
+}
+
 static bool more_dangerous(const fw_assessment *p, int i, const fw_assessment *q, int j)
 {
     if (p->enters_domain != q->enters_domain)

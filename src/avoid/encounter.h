@@ -18,6 +18,7 @@
 
 #include "geom/geom.h"
 #include "nomoto/track.h"
+#include "traffic/lane.h"
 
 
 
@@ -71,6 +72,16 @@ typedef struct fw_assessment {
 
 fw_situation fw_classify(const fw_colregs_def *def, const fw_own_state *own,
                          const fw_target *t);
+
+/* fw_classify for two ships whose lanes are known (lane.h; NULL: not on a
+ * lane): ships meeting along one waterway (fw_lanes_meet) are head-on
+ * (rules 9 and 14: round a bend they meet, they do not cross), whatever
+ * their bearings; ships one ahead of the other along it (fw_lanes_along)
+ * that fw_classify calls crossing are overtaking (the faster, own->U
+ * against t->speed) or being overtaken. */
+fw_situation fw_classify_lanes(const fw_colregs_def *def, const fw_own_state *own,
+                               const fw_target *own_ship, const fw_lane_info *own_lane,
+                               const fw_target *t, const fw_lane_info *t_lane);
 
 /* Is a ship at this range out of sight (rule 19 governs)? */
 static inline bool fw_not_in_sight(const fw_colregs_def *def, double range)

@@ -75,12 +75,26 @@ static void note(fw_run *R, const char *fmt, ...)
     va_end(ap);
 }
 
-/* The survey's step: every ship in the area, the own ship included. */
+/* The survey's lanes: the world's (fw_survey_def.lane; ctx the run). */
+static fw_status survey_lane(void *ctx, const fw_target *s, const fw_lane_info **out,
+                             fw_error *err)
+{
+    fw_run *R = ctx;
+    *out = NULL;
+    return R->w ? fw_world_lane(R->w, s, out, err) : FW_OK;
+}
+
+/* The survey's step: every ship in the area, the own ship included.  Their
+ * lanes are read as they go (every FW_LANE_REFRESH_S), so that one is known
+ * for a ship in a junction when an encounter opens there. */
 static fw_status survey_step(fw_run *R, double t, fw_error *err)
 {
     const fw_target *a;
+    const fw_lane_info *lane;
     int n;
     fw_status st = fw_world_area(R->w, &a, &n, err);
+    for (int i = 0; i < n && !st; i++)
+        st = fw_world_lane(R->w, &a[i], &lane, err);
     return st ? st : fw_survey_step(R->sv, t, a, n, err);
 }
 
@@ -535,10 +549,12 @@ static fw_status set_up(fw_run *R, fw_error *err)
 {
     const fw_scenario *s = R->s;
     fw_monitor_def md = fw_default_monitor_def();
+    fw_survey_def sd = s->survey_def;
+    sd.lane = survey_lane, sd.lane_ctx = R;
     fw_status st;
     if ((st = fw_records_open(&R->rec, s, R->def.dir, err)) ||
         (st = fw_monitor_create(&md, fw_records_log(R->rec), &R->mon, err)) ||
-        (s->survey && (st = fw_survey_create(&s->survey_def, &R->sv, err))) ||
+        (s->survey && (st = fw_survey_create(&sd, &R->sv, err))) ||
         (s->situation_output && R->def.dir && (st = fw_dnv_out_create(s, &R->dnv, err)))) {
         fw_controller_destroy(R->def.controller);
         return st;

@@ -43,6 +43,7 @@ struct fw_survey {
     bool *is_open;
     int nactive;
     bool oom;            /* set inside the pair callback */
+    fw_error lane_err;   /* the first failure of def.lane in a step */
 };
 
 fw_survey_def fw_default_survey_def(void)
@@ -140,13 +141,18 @@ static bool reserve_records(fw_survey *sv)
     return true;
 }
 
-static fw_survey_type pair_type(const fw_colregs_def *c, const fw_target *a,
-                                const fw_target *b)
+static fw_survey_type pair_type(fw_survey *sv, const fw_target *a, const fw_target *b)
 {
     fw_own_state own = {.east = a->east, .north = a->north, .psi = a->heading, .U = a->speed};
+    const fw_lane_info *la = NULL, *lb = NULL;
+    if (sv->def.lane && !sv->lane_err.status &&
+        (sv->def.lane(sv->def.lane_ctx, a, &la, &sv->lane_err) ||
+         sv->def.lane(sv->def.lane_ctx, b, &lb, &sv->lane_err)))
+        la = lb = NULL; /* the step fails with lane_err */
     /* fw_classify's roles swap with the ships (give-way <-> stand-on,
-     * overtaking <-> being overtaken), so the pair's type is symmetric */
-    switch (fw_classify(c, &own, b)) {
+     * overtaking <-> being overtaken), so the pair's type is symmetric
+     * (fw_lanes_meet is) */
+    switch (fw_classify_lanes(&sv->def.colregs, &own, a, la, b, lb)) {
     case FW_SIT_HEAD_ON: return FW_SURVEY_HEAD_ON;
     case FW_SIT_OVERTAKING:
     case FW_SIT_OVERTAKEN: return FW_SURVEY_OVERTAKING;
@@ -222,7 +228,7 @@ static void on_pair(void *ctx, int i, int j, double d2)
     memset(o, 0, sizeof *o);
     snprintf(o->ship_a, sizeof o->ship_a, "%s", sa->id);
     snprintf(o->ship_b, sizeof o->ship_b, "%s", sb->id);
-    o->type = pair_type(&sv->def.colregs, sa, sb);
+    o->type = pair_type(sv, sa, sb);
     o->own = sa->own || sb->own;
     o->t_first = sv->t;
     o->range0 = d;
@@ -312,6 +318,7 @@ fw_status fw_survey_step(fw_survey *sv, double t, const fw_target *ships, int n,
     sv->in = ships;
     sv->t = t;
     sv->oom = false;
+    sv->lane_err = (fw_error){0};
     /* a handful of ships (the usual area about one own ship): all pairs
      * cost less than building the grid; the records are the same either
      * way (the pair order is lost in the final sort, test_survey) */
@@ -322,6 +329,10 @@ fw_status fw_survey_step(fw_survey *sv, double t, const fw_target *ships, int n,
     sv->in = NULL;
     if (sv->oom)
         return fw_fail(err, FW_ERUN, "survey: out of memory at t = %g s", t);
+    if (sv->lane_err.status) {
+        *err = sv->lane_err;
+        return err->status;
+    }
     /* an episode ends when both ships are here and no longer close, or when
      * one has been missing longer than max_gap (it left the area): a short
      * absence keeps it open, and the open list stays as long as the traffic

@@ -9,7 +9,9 @@
  * record per pair and episode: an episode opens at the first step the test
  * holds and is classified then (head-on, overtaking or crossing: fw_classify
  * from the smaller id's side, its roles folded into the pair's type, its
- * head-on test the reciprocal-course one, see fw_default_survey_def); it
+ * head-on test the reciprocal-course one, see fw_default_survey_def; with
+ * the ships' lanes, fw_classify_lanes: ships meeting along one waterway are
+ * head-on); it
  * tracks the smallest distance (centre to centre, and hull to hull when
  * close) and ends when both ships are seen farther
  * apart than range + hysteresis, so one pass is one record.  A ship missing
@@ -56,6 +58,12 @@ typedef struct fw_survey_def {
     double max_gap;        /* s, 60: ... or when the pair has not been seen for longer */
     fw_colregs_def colregs;/* fw_classify's thresholds; head-on bearing test off (180) */
     bool brute_force;      /* every pair instead of the grid: tests and benchmarks */
+    /* optional: a ship's lane (*out NULL: none known; the own ship has
+     * none), so that two ships meeting along one waterway are head-on
+     * (encounter.h fw_classify_lanes: round a bend, not crossing); NULL: no
+     * lanes.  Asked when an episode opens; a failure fails the step. */
+    fw_status (*lane)(void *ctx, const fw_target *s, const fw_lane_info **out, fw_error *err);
+    void *lane_ctx;
 } fw_survey_def;
 
 fw_survey_def fw_default_survey_def(void);

@@ -50,23 +50,10 @@
 
 #include "core/error.h"
 #include "geom/target.h"
+#include "traffic/lane.h"
 
 typedef struct fw_source fw_source;
 
-/* A ship's lane (source.h lane()): the centre line of the lane it is on,
- * along its route ahead from about where it is (the plane's metres east and
- * north, np points, at least 2), and the sea room from that line to the edge
- * of the waterway its route uses on its starboard and port sides (m, from
- * the ship's hull centre line; INFINITY in open water).  What a ship that
- * alters course needs to know: whether it has the room, and where to come
- * back to. */
-enum { FW_LANE_POINTS = 64 };
-typedef struct fw_lane_info {
-    int np;
-    double e[FW_LANE_POINTS], n[FW_LANE_POINTS];
-    double room_starboard, room_port;
-    bool traffic_lane; /* a separation scheme's traffic lane (traffic.h fw_traffic_lane) */
-} fw_lane_info;
 
 typedef struct fw_source_ops {
     const char *name;
@@ -153,6 +140,26 @@ static inline fw_status fw_source_lane(fw_source *s, const char *id, fw_lane_inf
         return fw_fail(err, FW_EINPUT, "the %s source has no lanes ('%s')", s->ops->name, id);
     return s->ops->lane(s, id, out, err);
 }
+/* Ships' lanes as their source last said them, for judging encounters
+ * (lane.h fw_lanes_meet): a ship's lane is read again once the one kept is
+ * FW_LANE_REFRESH_S old, and a ship whose lane cannot be said now (in a
+ * junction) keeps the last one said for FW_LANE_KEEP_S (its line runs on
+ * along its route).  Keyed by fw_target.key; zero-initialised is empty. */
+#define FW_LANE_REFRESH_S 10.0
+#define FW_LANE_KEEP_S 120.0
+typedef struct fw_lane_entry fw_lane_entry;
+typedef struct fw_lane_cache {
+    fw_lane_entry **v; /* by key - 1; NULL: none yet */
+    int cap;
+} fw_lane_cache;
+/* Ship s's lane at time t into *out (NULL: none known: a source without
+ * lanes, a ship without a key, or none said for FW_LANE_KEEP_S), valid
+ * until the cache is freed (its contents until s's next read); FW_ERUN
+ * when the source fails or memory runs out. */
+fw_status fw_lane_cache_get(fw_lane_cache *c, fw_source *src, const fw_target *s, double t,
+                            const fw_lane_info **out, fw_error *err);
+void fw_lane_cache_free(fw_lane_cache *c);
+
 static inline double fw_source_time(const fw_source *s) { return s->ops->time(s); }
 static inline double fw_source_step_length(const fw_source *s) { return s->ops->step_length(s); }
 /* Safe on NULL. */

@@ -63,12 +63,17 @@ fw_status fw_reactions_create(const fw_reactions_def *def, fw_reactions **out, f
     if (s0)
         return s0;
     fw_reactions *r = calloc(1, sizeof *r);
+    if (r && !(r->lanes = calloc(1, sizeof *r->lanes))) {
+        free(r);
+        r = NULL;
+    }
     if (!r)
         return fw_fail(err, FW_ERUN, "out of memory");
     r->def = *def;
     r->cos_parallel = cos(def->parallel);
     fw_status st = fw_watch_create(&def->watch, &r->watch, err);
     if (st) {
+        free(r->lanes);
         free(r);
         return st;
     }
@@ -105,7 +110,8 @@ void fw_reactions_destroy(fw_reactions *r)
     fw_idmap_free(&r->ids);
     fw_watch_destroy(r->watch);
     fw_react_sense_free(r);
-    fw_free_each(10, r->s, r->list, r->nb, r->all_buf, r->idx, r->sn, r->cs, r->log,
+    fw_lane_cache_free(&r->lanes->cache);
+    fw_free_each(11, r->lanes, r->s, r->list, r->nb, r->all_buf, r->idx, r->sn, r->cs, r->log,
                  r->takes, r);
 }
 
@@ -132,6 +138,20 @@ fw_status fw_reactions_note(fw_reactions *r, const fw_reaction *x, fw_error *err
 }
 
 static const double kResume = 1.25;
+
+fw_situation fw_react_classify(const fw_reactions *r, const fw_own_state *me,
+                               const fw_target *a, const fw_target *b)
+{
+    fw_situation s = fw_classify(&r->def.colregs, me, b);
+    struct react_lanes *L = r->lanes;
+    if (s == FW_SIT_HEAD_ON || a->own || b->own || !L->src || L->err.status)
+        return s;
+    const fw_lane_info *la, *lb;
+    if (fw_lane_cache_get(&L->cache, L->src, a, L->t, &la, &L->err) ||
+        fw_lane_cache_get(&L->cache, L->src, b, L->t, &lb, &L->err))
+        return s; /* the step fails with L->err */
+    return fw_classify_lanes(&r->def.colregs, me, a, la, b, lb);
+}
 
 /* Velocity of ship t (one of r->all) at speed v on its course. */
 static void vel(const fw_reactions *r, const fw_target *t, double v, double *ve, double *vn)
@@ -192,7 +212,7 @@ static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
     *tcpa = tc;
     *dcpa = sqrt(d2);
     fw_own_state me = {.east = a->east, .north = a->north, .psi = a->heading, .U = va};
-    *sit = fw_classify(&r->def.colregs, &me, b);
+    *sit = fw_react_classify(r, &me, a, b);
     /* a give-way ship stays one until the other is past and clear (rule 8):
      * the ship it is giving way to counts while the risk lasts, whatever the
      * bearing says now (passing ahead, it moves onto the port bow) */
@@ -274,7 +294,7 @@ static void nearest_of(const fw_reactions *r, int self, const fw_target *all, co
                                .psi = all[self].heading, .U = v0};
             tbest = tc;
             *nearest = list[q];
-            *sit = fw_classify(&r->def.colregs, &me, &all[list[q]]);
+            *sit = fw_react_classify(r, &me, &all[self], &all[list[q]]);
             *dcpa = dc;
         }
     }
@@ -447,7 +467,7 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
         if (!(tc > 0.0 && tc < r->def.last_time && dc < r->def.last_cpa))
             continue;
         fw_own_state me = {.east = a->east, .north = a->north, .psi = a->heading, .U = v0};
-        fw_situation s = fw_classify(&r->def.colregs, &me, &all[j]);
+        fw_situation s = fw_react_classify(r, &me, a, &all[j]);
         if ((s == FW_SIT_STAND_ON || s == FW_SIT_OVERTAKEN) && tc < tbest) {
             tbest = tc;
             *j_out = j;
@@ -555,25 +575,56 @@ static bool rule19e_heard(const fw_reactions *r, int self, const fw_target *all,
     return false;
 }
 
-/* Ship self's look round (react): all[self] its truth, the others as it
- * knows them. */
-static fw_status look(fw_reactions *r, double t, int self, const fw_target *all, int n,
-                      react_state *st, fw_source *src, fw_error *err)
+/* Two background ships following one waterway the same way round a bend
+ * (lane.h fw_lanes_along): they share the lanes like ships on parallel
+ * courses, SUMO's to keep apart. */
+static bool same_way(const fw_reactions *r, const fw_target *a, const fw_target *b)
+{
+    struct react_lanes *L = r->lanes;
+    if (a->own || b->own || !L->src || L->err.status)
+        return false;
+    const fw_lane_info *la, *lb;
+    if (fw_lane_cache_get(&L->cache, L->src, a, L->t, &la, &L->err) ||
+        fw_lane_cache_get(&L->cache, L->src, b, L->t, &lb, &L->err))
+        return false; /* the step fails with L->err */
+    return la && lb && fw_lanes_along(a, la, b, lb);
+}
+
+/* r->nb: the ships in range of ship self that it must look at, every pair
+ * loop of look() goes over them only.  Not background ships on parallel
+ * courses, nor ones following its waterway its way round a bend: those
+ * share the lanes and pass by overtaking, which SUMO's car following keeps
+ * apart (the cosine of the course difference from the unit vectors).  Its
+ * lane is read as it looks round, so that one is known when it is in a
+ * junction, where none can be read (source.h fw_lane_cache_get).  Nonzero
+ * when the source failed (r->lanes->err). */
+static int neighbours(fw_reactions *r, double t, int self, const fw_target *all, int n)
 {
     const fw_target *a = &all[self];
-    /* every pair loop below goes over the ships in range only, and not
-     * over background ships on parallel courses: those share the lanes
-     * and pass by overtaking, which SUMO's car following keeps apart (the
-     * cosine of the course difference from the unit vectors) */
+    const fw_lane_info *lane;
+    if (r->lanes->src &&
+        fw_lane_cache_get(&r->lanes->cache, r->lanes->src, a, t, &lane, &r->lanes->err))
+        return -1;
     r->nnb = 0;
     for (int j = 0; j < n; j++) {
         double de = all[j].east - a->east, dn = all[j].north - a->north;
         bool parallel = !all[j].own && r->sn[self] * r->sn[j] + r->cs[self] * r->cs[j] >
                                            r->cos_parallel;
         if (j != self && !parallel && de * de + dn * dn <= r->def.range * r->def.range &&
-            !(r->truth && r->how[j] == FW_KNOWN_NOT))
+            !(r->truth && r->how[j] == FW_KNOWN_NOT) && !same_way(r, a, &all[j]))
             r->nb[r->nnb++] = j;
     }
+    return r->lanes->err.status ? -1 : 0;
+}
+
+/* Ship self's look round (react): all[self] its truth, the others as it
+ * knows them. */
+static fw_status look(fw_reactions *r, double t, int self, const fw_target *all, int n,
+                      react_state *st, fw_source *src, fw_error *err)
+{
+    const fw_target *a = &all[self];
+    if (neighbours(r, t, self, all, n))
+        return fw_fail(err, r->lanes->err.status, "%s", r->lanes->err.msg);
     double v0 = st->v0;
     if (fw_watch_active(r->watch) && unnoticed(r, t, self, all, v0) < 0)
         return fw_fail(err, FW_ERUN, "out of memory for the watch's encounters");
@@ -763,9 +814,13 @@ fw_status fw_reactions_step(fw_reactions *r, double t, const fw_target *vessels,
     }
     course_trig(r, all, n, m);
     r->all = all;
+    r->lanes->src = src, r->lanes->t = t, r->lanes->err = (fw_error){0};
     fw_status st = FW_OK;
     for (int i = 0; i < n && !st; i++)
         st = react(r, t, i, all, m, &r->s[r->idx[i]], src, err);
+    if (!st && r->lanes->err.status)
+        *err = r->lanes->err, st = err->status;
     r->all = NULL;
+    r->lanes->src = NULL;
     return st;
 }

@@ -54,7 +54,12 @@
  * With a watch (watch.h) a ship notices a ship it must give way to only after
  * a delay, or not at all (a lapse); until then it treats it as not there.
  * Head-on meetings of two lane-bound ships are kept apart by their lanes;
- * the own ship's policy turns.
+ * the own ship's policy turns.  Two background ships on the lanes of one
+ * waterway are judged by their lanes (traffic/lane.h, read through the
+ * source and kept while a ship is in a junction): coming the other way down
+ * each other's lanes they are head-on (encounter.h fw_classify_lanes), round
+ * a bend too, and one ahead of the other of one stream they share the lanes
+ * like ships on parallel courses.
  *
  * give_way: speed (the above: slowing down as if a lane-bound ship had no
  * other action) or course (the default): a give-way ship alters course to starboard (rules 8,

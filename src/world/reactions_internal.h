@@ -61,7 +61,21 @@ struct fw_reactions {
     fw_target *radar_truth, *radar_known;
     int sense_cap;
     fw_sensing_counts ais_counts;
+    /* the background ships' lanes (classification: fw_react_classify), the
+     * step's source and time, and the first failure reading them */
+    struct react_lanes {
+        fw_lane_cache cache;
+        fw_source *src;
+        double t;
+        fw_error err;
+    } *lanes;
 };
+
+/* fw_classify from a's side (its own state me), with both ships' lanes
+ * where they are known: two background ships meeting along one waterway are
+ * head-on (encounter.h fw_classify_lanes). */
+fw_situation fw_react_classify(const fw_reactions *r, const fw_own_state *me,
+                               const fw_target *a, const fw_target *b);
 
 /* The closest a, at speed v, would pass any ship near it (r->nb) other than
  * skip (-1: none) within the horizon, stopping at the first below floor. */

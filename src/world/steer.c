@@ -41,30 +41,6 @@ fw_alter_def fw_default_alter_def(void)
                           .helm_max = fw_deg_to_rad(20.0)};
 }
 
-void fw_lane_where(const fw_lane_info *lane, double e, double n, double *course, double *xtrack,
-                   int *seg)
-{
-    double best = INFINITY;
-    *course = 0.0, *xtrack = 0.0, *seg = 0;
-    for (int i = 0; i + 1 < lane->np; i++) {
-        double ax = lane->e[i], ay = lane->n[i];
-        double dx = lane->e[i + 1] - ax, dy = lane->n[i + 1] - ay, l2 = dx * dx + dy * dy;
-        if (!(l2 > 0.0))
-            continue;
-        double s = ((e - ax) * dx + (n - ay) * dy) / l2;
-        /* the last segment goes on beyond its end, the first before its start */
-        double sc = s < 0.0 && i > 0 ? 0.0 : s > 1.0 && i + 2 < lane->np ? 1.0 : s;
-        double px = ax + sc * dx - e, py = ay + sc * dy - n, d2 = px * px + py * py;
-        if (d2 < best) {
-            double l = sqrt(l2);
-            best = d2;
-            *course = atan2(dx, dy);
-            /* to starboard of the line: the cross product's sign */
-            *xtrack = ((e - ax) * dy - (n - ay) * dx) / l;
-            *seg = i;
-        }
-    }
-}
 
 /* s: how far ahead a ship coming back to its lane looks for ships in its way */
 static const double kConflictS = 600.0;

@@ -133,10 +133,5 @@ fw_steer_phase fw_steer_controller_phase(const fw_controller *c);
 bool fw_steer_controller_news(fw_controller *c, double *from, double *to, char *other,
                               fw_situation *sit);
 
-/* The point of the lane's line nearest (e, n): the line's course there (rad)
- * and the cross-track distance (m, > 0 to starboard of the line), the
- * segment's index in *seg (the last segment beyond its end). */
-void fw_lane_where(const fw_lane_info *lane, double e, double n, double *course, double *xtrack,
-                   int *seg);
 
 #endif

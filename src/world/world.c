@@ -50,6 +50,7 @@ struct fw_world {
     fw_rng *gust;        /* the wind's gusts (env.h; NULL: a steady wind) */
     steered **grave;     /* of vessels gone since the last sensing */
     int n_grave, grave_cap;
+    fw_lane_cache lanes; /* the source's ships' lanes (fw_world_lane) */
 };
 
 /* The CPU clock when the def keeps timings, else 0 (no system calls). */
@@ -89,6 +90,7 @@ void fw_world_destroy(fw_world *w)
     free(w->slots);
     free(w->recs);
     fw_source_destroy(w->source);
+    fw_lane_cache_free(&w->lanes);
     fw_reactions_destroy(w->react);
     fw_sensor_destroy(w->sensor);
     fw_watch_destroy(w->own_watch);
@@ -716,6 +718,14 @@ int fw_world_streams(const fw_world *w) { return fw_streams_count(w->streams); }
 long fw_world_steps(const fw_world *w) { return w->steps; }
 int fw_world_vessel_count(const fw_world *w) { return w->nv; }
 fw_source *fw_world_source(fw_world *w) { return w->source; }
+
+fw_status fw_world_lane(fw_world *w, const fw_target *s, const fw_lane_info **out, fw_error *err)
+{
+    *out = NULL;
+    if (!w->source || s->own)
+        return FW_OK;
+    return fw_lane_cache_get(&w->lanes, w->source, s, fw_world_time(w), out, err);
+}
 bool fw_world_vessel_valid(const fw_world *w, fw_vessel_handle h) { return slot_of(w, h) >= 0; }
 
 fw_vessel *fw_world_vessel(fw_world *w, fw_vessel_handle h)

@@ -192,6 +192,9 @@ long fw_world_steps(const fw_world *w);
 fw_status fw_world_area(fw_world *w, const fw_target **ships, int *n, fw_error *err);
 
 fw_source *fw_world_source(fw_world *w);
+/* A background ship's lane as the source last said it (source.h
+ * fw_lane_cache_get at the world's time); *out NULL when none is known. */
+fw_status fw_world_lane(fw_world *w, const fw_target *s, const fw_lane_info **out, fw_error *err);
 
 /* The own ship's sensor's counts (AIS reports sent, lost, arrived; all 0
  * with perfect sensing). */
