@@ -7,9 +7,14 @@
 #   FUZZ_NICE   nice level of the fuzzers (default 19)
 #
 # Seeds are the shipped data files (ships, scenarios, studies, demands, AIS
-# CSVs, DNV's situations: fuzz_ais uses fuzz/ais.dict, fuzz_json fuzz/json.dict, the others fuzz/yaml.dict); each
-# target keeps what it finds in FUZZ_BUILD/corpus/TARGET, so a later run
-# starts from there.  Crashes, leaks and UB stop the target, leave the input
+# CSVs, DNV's situations: fuzz_ais uses fuzz/ais.dict, fuzz_json fuzz/json.dict, the others fuzz/yaml.dict)
+# and the kept corpus fuzz/corpus/TARGET (the minimised inputs of the
+# campaigns so far: fuzz/corpus/README.md); each target keeps what it finds in
+# FUZZ_BUILD/corpus/TARGET, so a later run starts from there.  To keep a
+# campaign's finds, merge them into the kept corpus (libFuzzer keeps the
+# inputs that add coverage):
+#   mkdir new && FUZZ_BUILD/fuzz/TARGET -merge=1 new fuzz/corpus/TARGET \
+#     FUZZ_BUILD/corpus/TARGET && rm -r fuzz/corpus/TARGET && mv new fuzz/corpus/TARGET  Crashes, leaks and UB stop the target, leave the input
 # in FUZZ_BUILD/artifacts/ and make this script exit 1.  Each target's
 # figures (executions, coverage) are the last lines of FUZZ_BUILD/logs/TARGET.log.
 set -euo pipefail
@@ -59,6 +64,7 @@ for t in "${targets[@]}"; do
     nice -n "$nice_level" "$build/fuzz/$t" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \
       -max_len=16384 -dict="$dict" -print_final_stats=1 \
       -artifact_prefix="$build/artifacts/$t-" "$build/corpus/$t" "$build/seeds/$t" \
+      $( [ -d "fuzz/corpus/$t" ] && echo "fuzz/corpus/$t" ) \
       > "$build/logs/$t.log" 2>&1 || rc=$?
   grep -E "^#[0-9]+.*DONE|stat::number_of_executed_units|stat::peak_rss_mb" "$build/logs/$t.log" || true
   if [ $rc -ne 0 ]; then
