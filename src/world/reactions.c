@@ -399,8 +399,12 @@ static double yielding_speed(const fw_reactions *r, int self, const fw_target *a
     bool own = false;
     for (int q = 0; q < m; q++)
         own |= all[list[q]].own;
+    /* a first slow-down is readily apparent (rule 8(b)): a fifth of its speed
+     * at least (one "slowed" from 12.9 to 11.0 kn, which no one on the other
+     * bridge would notice); held already, it slows further by any step */
+    int k0 = vh < 0.0 ? 4 : 1;
     for (int pass = 0; pass < (own ? 1 : 2); pass++)
-        for (int k = 1; k <= 20; k++) {
+        for (int k = k0; k <= 20; k++) {
             double v = v0 * (1.0 - 0.05 * k);
             if (v < r->def.min_speed * v0 - 1e-12)
                 break;
