@@ -326,9 +326,9 @@ void fw_traffic_close(fw_traffic *t)
     fw_idmap_free(&t->ids);
     for (int i = 0; i < t->last_cap; i++)
         fw_hull_track_free(&t->tracks[i]);
-    fw_free_each(15, t->conv, t->last_e, t->last_n, t->last_step, t->last_angle, t->last_sin,
+    fw_free_each(18, t->conv, t->last_e, t->last_n, t->last_step, t->last_angle, t->last_sin,
                  t->last_cos, t->tracks, t->seed_heading, t->last_bx, t->last_by, t->off_x,
-                 t->off_y, t->last_k, t);
+                 t->off_y, t->dir_x, t->dir_y, t->turned, t->last_k, t);
 }
 
 fw_status fw_traffic_load(fw_traffic_kind kind, fw_error *err)

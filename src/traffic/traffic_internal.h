@@ -57,6 +57,8 @@ struct fw_traffic {
     double *seed_heading;   /* rad, a given-back ship's heading for its new track; NAN: none */
     double *last_bx, *last_by; /* m, SUMO's bumper at the last context step */
     double *off_x, *off_y;  /* m, the track's bow less SUMO's bumper (traffic_query.c) */
+    double *dir_x, *dir_y;  /* the unit direction of the bumper's last clean step (traffic_query.c) */
+    unsigned char *turned;  /* SUMO's angle changed at the last conversion */
     int *last_k;            /* its index in the context results of its last step */
     int last_cap;
 };

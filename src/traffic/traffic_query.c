@@ -96,10 +96,22 @@ static fw_status convert(fw_traffic *t, const fw_target **ships, int *n, fw_erro
  * teleport), starts the track anew, where the monitors see it.  The floor:
  * a 20 m small craft's bumper jumps 23 m entering the bend of networks/bend
  * at 3.6 m/s (measured), more than its length and far less than SUMO's
- * teleports, which move a ship by whole edges. */
+ * teleports, which move a ship by whole edges.
+ *
+ * While SUMO's angle turns, the step is also judged along the bumper's own
+ * last clean step (at least half its run, within 60 deg of the one before:
+ * not a stall nor one of the jumps), whichever explains it better.  SUMO's
+ * angle is the direction from the ship's back to its front along the lanes:
+ * past a bend it lags the bumper's motion for a hull length (24 deg for a
+ * 290 m ship past networks/bend's 30 deg), and judged along it alone real
+ * motion went into the offset, 50 m of it across the lane, whose decay then
+ * moved the hull 2.01 m/s sideways (bend_traffic seed 1 with lcKeepRight 0).
+ * Where the angle stands still (by kTurned: straight lanes; a lane change,
+ * whose end SUMO makes in one larger step) it alone is the judge, as before. */
 static const double kStraight = 1e-7; /* rad */
 static const double kSlack = 1.0;     /* m a step, and 10% of the step's run */
 static const double kTeleport = 100.0; /* m */
+static const double kTurned = 0.1;     /* deg a step: SUMO's angle turning */
 
 /* The index of the ship of context result r, its arrays grown to hold it. */
 static fw_status ship_index(fw_traffic *t, const fw_sumo_raw *r, int *out, fw_error *err)
@@ -109,7 +121,7 @@ static fw_status ship_index(fw_traffic *t, const fw_sumo_raw *r, int *out, fw_er
         return fw_fail(err, FW_ERUN, "out of memory for ship ids");
     if (i >= t->last_cap) {
         int cap = fw_grown_cap(t->last_cap, i + 1);
-        if (!fw_resize_each((size_t)cap, 13, (void **)&t->last_e, sizeof *t->last_e,
+        if (!fw_resize_each((size_t)cap, 16, (void **)&t->last_e, sizeof *t->last_e,
                             (void **)&t->last_n, sizeof *t->last_n,
                             (void **)&t->last_step, sizeof *t->last_step,
                             (void **)&t->last_angle, sizeof *t->last_angle,
@@ -121,6 +133,9 @@ static fw_status ship_index(fw_traffic *t, const fw_sumo_raw *r, int *out, fw_er
                             (void **)&t->last_by, sizeof *t->last_by,
                             (void **)&t->off_x, sizeof *t->off_x,
                             (void **)&t->off_y, sizeof *t->off_y,
+                            (void **)&t->dir_x, sizeof *t->dir_x,
+                            (void **)&t->dir_y, sizeof *t->dir_y,
+                            (void **)&t->turned, sizeof *t->turned,
                             (void **)&t->last_k, sizeof *t->last_k))
             return fw_fail(err, FW_ERUN, "out of memory for ship ids");
         for (int j = t->last_cap; j < cap; j++) {
@@ -140,6 +155,8 @@ static fw_status ship_index(fw_traffic *t, const fw_sumo_raw *r, int *out, fw_er
 static void convert_ship(fw_traffic *t, int k, int i)
 {
     const fw_sumo_raw *r = &t->ctx.v[k];
+    /* turning, not SUMO's last digits moving in a lane change (NAN: new) */
+    t->turned[i] = fabs(remainder(r->angle_deg - t->last_angle[i], 360.0)) > kTurned;
     if (!(r->angle_deg == t->last_angle[i])) {
         double h = fw_deg_to_rad(r->angle_deg);
         t->last_angle[i] = r->angle_deg;
@@ -165,11 +182,18 @@ static bool follow_track(fw_traffic *t, int k, int i)
         return true;
     }
     if (seen) {
-        /* the step's motion against what the ship's speed explains */
+        /* the step's motion against what the ship's speed explains, along
+         * SUMO's angle or, while that turns, along the bumper's own last
+         * clean step if that explains it better (below) */
         double run = r->speed * t->def.step;
-        double ex = r->x - t->last_bx[i] - run * t->last_sin[i];
-        double ey = r->y - t->last_by[i] - run * t->last_cos[i];
+        double mx = r->x - t->last_bx[i], my = r->y - t->last_by[i], m = hypot(mx, my);
+        double ex = mx - run * t->last_sin[i], ey = my - run * t->last_cos[i];
         double e = hypot(ex, ey);
+        double fx = mx - run * t->dir_x[i], fy = my - run * t->dir_y[i], f = hypot(fx, fy);
+        if (t->turned[i] && f < e)
+            ex = fx, ey = fy, e = f;
+        if (m > 0.5 * run && mx * t->dir_x[i] + my * t->dir_y[i] > 0.5 * m)
+            t->dir_x[i] = mx / m, t->dir_y[i] = my / m;
         if (e > fmax(r->length, kTeleport)) {
             seen = false; /* a teleport: a new track, the jump where it is */
         } else {
@@ -182,6 +206,7 @@ static bool follow_track(fw_traffic *t, int k, int i)
     t->last_bx[i] = r->x, t->last_by[i] = r->y;
     if (!seen) {
         double h = isnan(t->seed_heading[i]) ? c->course : t->seed_heading[i];
+        t->dir_x[i] = sin(h), t->dir_y[i] = cos(h);
         t->seed_heading[i] = NAN;
         t->off_x[i] = t->off_y[i] = 0.0;
         if (!fw_hull_track_start(tr, r->x, r->y, h, r->length))
