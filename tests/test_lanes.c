@@ -6,10 +6,12 @@
  * apart and fw_classify alone calls them crossing; two ships of one stream
  * either side of the bend are overtaking, not crossing; a ship crossing the
  * channel, and ships in open water (no lane edges), are classed by their
- * bearings and headings as before. */
+ * bearings and headings as before.  The own ship, which has no lane, is
+ * judged by its route's line (route.h fw_route_lane). */
 #include <math.h>
 
 #include "avoid/encounter.h"
+#include "avoid/route.h"
 #include "core/units.h"
 #include "test.h"
 #include "traffic/lane.h"
@@ -114,8 +116,65 @@ static void test_crossing_ship_is_crossing(void)
     CHECK(classify(&a, &le, &x, &lx) == FW_SIT_GIVE_WAY); /* from a's starboard side */
 }
 
+/* The own ship has no lane of its own: its route is its line (route.h
+ * fw_route_lane, no room: the width is the other ship's waterway's), and
+ * fw_assess_lanes judges the targets whose lanes are known by it. */
+static void test_own_ship_by_its_route(void)
+{
+    /* the route along the east-going lanes' middle round the bend */
+    fw_lane_info le = lane(125.0, false), lw = lane(125.0, true);
+    double we[3], wn[3], sp[3] = {6.0, 6.0, 6.0};
+    for (int k = 0; k < 3; k++)
+        we[k] = le.e[k], wn[k] = le.n[k];
+    fw_route r;
+    fw_error err = {0};
+    CHECK(fw_route_from_waypoints(we, wn, sp, 3, &r, &err) == FW_OK);
+    fw_lane_info own_lane;
+    fw_route_lane(&r, &own_lane);
+    CHECK(own_lane.np == 3 && own_lane.room_port == 0.0 && own_lane.room_starboard == 0.0);
+    CHECK(fabs(own_lane.e[2] - le.e[2]) < 1e-6 && fabs(own_lane.n[2] - le.n[2]) < 1e-6);
+    fw_own_state me = {.east = 8500.0, .north = -125.0, .psi = fw_deg_to_rad(90.0),
+                       .U = fw_kn_to_ms(12.0)};
+    double s = 1000.0, c = fw_deg_to_rad(60.0);
+    fw_target t[3] = {
+        /* coming round the bend the other way: head-on though 150 deg apart */
+        ship(10000.0 + s * sin(c) - 125.0 * cos(c), s * cos(c) + 125.0 * sin(c), 240.0, 14.0),
+        /* the same ship with no lane known: judged by bearings */
+        ship(10000.0 + s * sin(c) - 125.0 * cos(c), s * cos(c) + 125.0 * sin(c), 240.0, 14.0),
+        /* crossing the channel from the south, on the own starboard bow */
+        ship(9500.0, -1500.0, 0.0, 12.0)};
+    const fw_lane_info *lanes[3] = {&lw, NULL, NULL};
+    fw_lane_info lx = {.np = 2, .e = {9500.0, 9500.0}, .n = {-5000.0, 5000.0},
+                       .room_starboard = 250.0, .room_port = 250.0};
+    lanes[2] = &lx;
+    fw_colregs_def def = fw_default_colregs_def();
+    fw_assessment as[3];
+    int order[6];
+    fw_domain_def dom = fw_default_domain_def();
+    fw_assess(&def, &dom, 600.0, &me, t, 3, as, order);
+    CHECK(as[0].situation != FW_SIT_HEAD_ON && as[1].situation == as[0].situation);
+    fw_situation crossing = as[2].situation;
+    fw_assess_lanes(&def, &me, &own_lane, t, lanes, 3, as);
+    CHECK(as[0].situation == FW_SIT_HEAD_ON);
+    CHECK(as[1].situation != FW_SIT_HEAD_ON); /* no lane: as fw_assess said */
+    CHECK(as[2].situation == crossing && crossing == FW_SIT_GIVE_WAY);
+    /* the own ship 150 m off its route towards the other lanes, still to
+     * port of the other's lane: still meeting; 300 m off, beyond it, they
+     * would pass starboard to starboard: not meeting ships by lanes */
+    me.north += 150.0;
+    fw_assess(&def, &dom, 600.0, &me, t, 1, as, order);
+    fw_assess_lanes(&def, &me, &own_lane, t, lanes, 1, as);
+    CHECK(as[0].situation == FW_SIT_HEAD_ON);
+    me.north += 150.0;
+    fw_assess(&def, &dom, 600.0, &me, t, 1, as, order);
+    fw_situation by_bearings = as[0].situation;
+    fw_assess_lanes(&def, &me, &own_lane, t, lanes, 1, as);
+    CHECK(as[0].situation == by_bearings);
+}
+
 int main(void)
 {
+    TEST_RUN(test_own_ship_by_its_route);
     TEST_RUN(test_meeting_round_the_bend);
     TEST_RUN(test_one_stream_round_the_bend);
     TEST_RUN(test_crossing_ship_is_crossing);

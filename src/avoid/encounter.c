@@ -72,6 +72,17 @@ fw_situation fw_classify_lanes(const fw_colregs_def *def, const fw_own_state *ow
     return s;
 }
 
+void fw_assess_lanes(const fw_colregs_def *def, const fw_own_state *own,
+                     const fw_lane_info *own_lane, const fw_target *t,
+                     const fw_lane_info *const *lanes, int n, fw_assessment *as)
+{
+    fw_target me = {.east = own->east, .north = own->north, .heading = own->psi,
+                    .course = own->psi, .speed = own->U, .own = true};
+    for (int i = 0; i < n; i++)
+        if (lanes[i])
+            as[i].situation = fw_classify_lanes(def, own, &me, own_lane, &t[i], lanes[i]);
+}
+
 static bool more_dangerous(const fw_assessment *p, int i, const fw_assessment *q, int j)
 {
     if (p->enters_domain != q->enters_domain)

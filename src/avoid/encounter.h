@@ -83,6 +83,16 @@ fw_situation fw_classify_lanes(const fw_colregs_def *def, const fw_own_state *ow
                                const fw_target *own_ship, const fw_lane_info *own_lane,
                                const fw_target *t, const fw_lane_info *t_lane);
 
+/* fw_assess's situations again where lanes are known: as[i].situation =
+ * fw_classify_lanes for each target with a lane (lanes[i] non-NULL), the
+ * own ship's lane own_lane (its route: route.h fw_route_lane).  The own
+ * ship meeting a channel's traffic round a bend is then head-on, as the
+ * background ships judge it (rules 9 and 14), not crossing.  Ranks and
+ * domain entries are unchanged (they do not depend on the situation). */
+void fw_assess_lanes(const fw_colregs_def *def, const fw_own_state *own,
+                     const fw_lane_info *own_lane, const fw_target *t,
+                     const fw_lane_info *const *lanes, int n, fw_assessment *as);
+
 /* Is a ship at this range out of sight (rule 19 governs)? */
 static inline bool fw_not_in_sight(const fw_colregs_def *def, double range)
 {

@@ -593,6 +593,18 @@ static void order_speed(fw_policy *p, const fw_policy_input *in, fw_decision *d)
     d->rule19e = p->r19e;
 }
 
+/* The targets met along the waterway the route follows, judged by their
+ * lanes (encounter.h fw_assess_lanes): the route's legs, or without one the
+ * planned track's line, as the own ship's lane. */
+static void assess_lanes(const fw_policy *p, const fw_colregs_def *colregs,
+                         const fw_policy_input *in)
+{
+    fw_route line = fw_route_line(p->track_e, p->track_n, p->psi_ref, 0.0, 1852.0);
+    fw_lane_info own_lane;
+    fw_route_lane(p->def.route.n > 0 ? &p->def.route : &line, &own_lane);
+    fw_assess_lanes(colregs, in->own, &own_lane, in->targets, in->lanes, in->n, in->as);
+}
+
 fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d,
                          fw_error *err)
 {
@@ -619,6 +631,8 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
         colregs.rank_range_m = p->def.act_range; /* the paper's ranking rule (encounter.h) */
     fw_assess(&colregs, &hdef->domain, hdef->track.horizon, in->own, in->targets, in->n, in->as,
               in->order);
+    if (in->lanes)
+        assess_lanes(p, &colregs, in);
     fw_helm_begin(in->ctx, in->own);
     int allowed = fw_permitted_sides(hdef, in->as, in->n), room = allowed & fw_band_sides(p, in->own);
     p->no_room = room == 0;

@@ -249,6 +249,10 @@ typedef struct fw_policy_input {
     int n;
     fw_assessment *as;          /* room for n: filled */
     int *order;                 /* room for 2 n ints: scratch for the ranking */
+    /* optional: each target's lane (traffic/lane.h; NULL entries: none
+     * known), so that a ship met along a waterway the route follows is
+     * judged by its lane (encounter.h fw_assess_lanes); NULL: by bearings */
+    const fw_lane_info *const *lanes;
 } fw_policy_input;
 
 /* One step: assess (into in->as), search, update the mode. */

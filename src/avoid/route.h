@@ -25,6 +25,7 @@
 #include <stdbool.h>
 
 #include "core/error.h"
+#include "traffic/lane.h"
 
 enum { FW_ROUTE_MAX_LEGS = 8 };
 
@@ -120,6 +121,23 @@ static inline double fw_route_time(const fw_route *r, double along)
         along -= d;
     }
     return t;
+}
+
+/* The route as a lane line (traffic/lane.h), for judging ships met along
+ * a waterway the route follows (encounter.h fw_assess_lanes): its
+ * waypoints, with no sea room of its own (a route is not a waterway: the
+ * width is the other ship's waterway's). */
+static inline void fw_route_lane(const fw_route *r, fw_lane_info *out)
+{
+    *out = (fw_lane_info){.np = 0, .room_starboard = 0.0, .room_port = 0.0};
+    for (int k = 0; k < r->n; k++, out->np++)
+        out->e[k] = r->leg[k].east, out->n[k] = r->leg[k].north;
+    if (r->n > 0) {
+        const fw_route_leg *l = &r->leg[r->n - 1];
+        out->e[r->n] = l->east + l->length * sin(l->course);
+        out->n[r->n] = l->north + l->length * cos(l->course);
+        out->np++;
+    }
 }
 
 #endif

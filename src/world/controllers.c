@@ -24,7 +24,8 @@ static fw_status policy_decide(fw_controller *c, const fw_sense *in, fw_decision
 {
     policy_ctl *p = (policy_ctl *)c;
     fw_policy_input pi = {.ctx = p->ctx, .helm = &p->helm, .t = in->t, .own = in->own,
-                          .targets = in->targets, .n = in->n, .as = in->as, .order = in->order};
+                          .targets = in->targets, .n = in->n, .as = in->as, .order = in->order,
+                          .lanes = in->lanes};
     return fw_policy_step(&p->pol, &pi, d, err);
 }
 

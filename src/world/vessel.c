@@ -126,7 +126,7 @@ void fw_vessel_free(fw_vessel *v)
     fw_stepper_destroy(v->st);
     fw_track_free(&v->one);
     fw_controller_destroy(v->ctl);
-    fw_free_each(4, v->view, v->as, v->order, v->truth);
+    fw_free_each(5, v->view, v->as, v->order, v->truth, (void *)v->lanes);
 }
 
 /* A speed order (fw_decision.speed, a route leg's): the MMG ship's propeller
@@ -194,7 +194,8 @@ fw_status fw_vessel_reserve(fw_vessel *v, int n, fw_error *err)
     if (!fw_resize((void **)&v->view, sizeof *v->view, (size_t)cap) ||
         !fw_resize((void **)&v->truth, sizeof *v->truth, (size_t)cap) ||
         !fw_resize((void **)&v->as, sizeof *v->as, (size_t)cap) ||
-        !fw_resize((void **)&v->order, sizeof *v->order, 2 * (size_t)cap))
+        !fw_resize((void **)&v->order, sizeof *v->order, 2 * (size_t)cap) ||
+        !fw_resize((void **)&v->lanes, sizeof *v->lanes, (size_t)cap))
         return fw_fail(err, FW_ERUN, "out of memory for %d targets", n);
     v->cap = cap;
     return FW_OK;

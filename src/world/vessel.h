@@ -44,6 +44,9 @@ typedef struct fw_sense {
     int n;
     fw_assessment *as;         /* room for n assessments (the controller may fill them) */
     int *order;                /* room for 2 n ints (scratch for the ranking) */
+    /* each target's lane as the traffic source says it (traffic/lane.h;
+     * NULL entries: none known), NULL when the world has no lanes */
+    const fw_lane_info *const *lanes;
 } fw_sense;
 
 typedef struct fw_controller fw_controller;

@@ -36,6 +36,7 @@ struct fw_vessel {
     fw_target *view;
     fw_assessment *as;
     int *order;
+    const fw_lane_info **lanes; /* each viewed target's lane (decide(): world.c) */
     int n_view, cap;
     /* with a sensor (world.h own_sensing): what was there, sorted by id,
      * while the view is what the sensor knew of it */

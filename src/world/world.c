@@ -476,6 +476,21 @@ fw_sensing_counts fw_world_sensing_counts(const fw_world *w)
     return fw_sensor_counts(w->sensor);
 }
 
+/* The viewed targets' lanes (fw_world_lane; the cache keeps each ship's
+ * where it is while it grows), *out NULL without a source. */
+static fw_status view_lanes(fw_world *w, fw_vessel *v, const fw_lane_info *const **out,
+                            fw_error *err)
+{
+    *out = NULL;
+    if (!w->source)
+        return FW_OK;
+    fw_status st = FW_OK;
+    for (int i = 0; i < v->n_view && !st; i++)
+        st = fw_world_lane(w, &v->view[i], &v->lanes[i], err);
+    *out = v->lanes;
+    return st;
+}
+
 static fw_status decide(fw_world *w, fw_vessel *v, fw_error *err)
 {
     if (!v->ctl) {
@@ -485,7 +500,8 @@ static fw_status decide(fw_world *w, fw_vessel *v, fw_error *err)
     }
     fw_sense in = {.t = fw_world_time(w), .own = &v->own, .targets = v->view, .n = v->n_view,
                    .as = v->as, .order = v->order};
-    return v->ctl->ops->decide(v->ctl, &in, &v->d, err);
+    fw_status st = view_lanes(w, v, &in.lanes, err);
+    return st ? st : v->ctl->ops->decide(v->ctl, &in, &v->d, err);
 }
 
 /* Every vessel's record, the own ship first (the own ship alone: its own
