@@ -39,3 +39,8 @@ set_tests_properties(foreign_quote PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_
 # the remote SUMO's connect and reply timeouts: FAIRWAY_SUMO_TIMEOUT (issue 28 item 2)
 fw_script_test(sumo_timeout 0 "ok: the SUMO timeout is a setting" sumo_timeout.sh)
 set_tests_properties(sumo_timeout PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+# a file's temporary left by a SIGKILL (.NAME.fairway-tmp.PID.XXXXXX) removed by
+# the next writer into the same directory, nothing else (issue 28 item 7)
+fw_script_test(tmp_leftovers 0 "ok: leftover temporaries removed, nothing else touched"
+               tmp_leftovers.sh)
+set_tests_properties(tmp_leftovers PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR}")

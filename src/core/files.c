@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "core/files.h"
+#include "core/leftover.h"
 #include "core/spawn.h"
 
 static int remove_entry(const char *path, const struct stat *sb, int flag, struct FTW *ftw)
@@ -112,12 +113,36 @@ static mode_t target_mode(const char *path)
     return 0666 & ~um;
 }
 
+/* The temporary name of a file begun (files.h): DIR/.NAME.fairway-tmp.PID.XXXXXX
+ * beside path (NAME cut to 200 bytes: the whole within a file name's 255),
+ * for a stream DIR/.fairway-out.fairway-tmp.PID.XXXXXX in $TMPDIR (else
+ * /tmp); what killed writers left there removed first (core/leftover.h). */
+static fw_status tmp_name(const char *path, bool stream, char *tmp, size_t n, fw_error *err)
+{
+    const char *td = getenv("TMPDIR");
+    const char *slash = strrchr(path, '/');
+    char dir[1100];
+    const char *base = "fairway-out";
+    if (stream)
+        snprintf(dir, sizeof dir, "%s", td && *td ? td : "/tmp");
+    else if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else if ((size_t)snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path),
+                              path) >= sizeof dir)
+        return fw_fail(err, FW_EINPUT, "%.100s...: path too long", path);
+    if (!stream)
+        base = slash ? slash + 1 : path;
+    if (fw_path(tmp, n, err, "%s%s.%.200s.fairway-tmp.%ld.XXXXXX", dir,
+                strcmp(dir, "/") == 0 ? "" : "/", base[0] ? base : "out", (long)getpid()))
+        return err->status;
+    fw_leftover_clean_files(dir);
+    return FW_OK;
+}
+
 FILE *fw_file_begin(const char *path, char *tmp, size_t n, fw_error *err)
 {
     bool stream = fw_file_is_stream(path);
-    const char *td = getenv("TMPDIR");
-    if (stream ? fw_path(tmp, n, err, "%s/fairway-out.XXXXXX", td && *td ? td : "/tmp")
-               : fw_path(tmp, n, err, "%s.tmp.XXXXXX", path)) {
+    if (tmp_name(path, stream, tmp, n, err)) {
         tmp[0] = '\0'; /* fw_file_abort removes nothing */
         return NULL;
     }

@@ -56,8 +56,10 @@ fw_status fw_path_copy(char *dst, size_t n, const char *path, fw_error *err);
 bool fw_file_is_stream(const char *path);
 
 /* Starts the file path: a temporary file (tmp, size n, its name) beside path,
- * PATH.tmp.XXXXXX with the mode path has (a new file: 0666 less the umask);
- * for a stream, in $TMPDIR (else /tmp).  Either way tmp names the whole
+ * DIR/.NAME.fairway-tmp.PID.XXXXXX with the mode path has (a new file: 0666
+ * less the umask); for a stream, .fairway-out.fairway-tmp.PID.XXXXXX in
+ * $TMPDIR (else /tmp).  Such files there whose writer is gone (a SIGKILL
+ * left them) are removed first, said on stderr (core/leftover.h).  Either way tmp names the whole
  * content written so far, for a check that reads it back before the commit.
  * NULL and FW_EINPUT "PATH: cannot write: reason" when it cannot be made
  * (tmp then "", so that fw_file_abort(NULL, tmp) is always safe). */

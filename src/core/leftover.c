@@ -1,10 +1,12 @@
-/* leftover.c - directories of processes killed before they could remove
- * them (leftover.h). */
+/* leftover.c - directories and files of processes killed before they could
+ * remove them (leftover.h). */
+#define _XOPEN_SOURCE 700
 #include "core/leftover.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <signal.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -106,6 +108,113 @@ int fw_leftover_clean(const char *parent, const char *prefix, const char *what)
             continue;
         fw_remove_tree(dir);
         fprintf(stderr, "fairway: removed %s, left by %s (process %ld is gone)\n", dir, what, pid);
+        removed++;
+    }
+    closedir(d);
+    return removed;
+}
+
+/* The file temporaries (files.h): .NAME.fairway-tmp.PID.XXXXXX, PID their
+ * writer's.  True, with *pid, for a name of that form. */
+static bool tmp_file_name(const char *name, long *pid)
+{
+    static const char mark[] = ".fairway-tmp.";
+    const char *m = NULL;
+    for (const char *p = strstr(name, mark); p; p = strstr(p + 1, mark))
+        m = p;
+    if (name[0] != '.' || !m || m == name)
+        return false;
+    const char *d = m + sizeof mark - 1;
+    char *end;
+    errno = 0;
+    long v = strtol(d, &end, 10);
+    if (end == d || *d < '0' || *d > '9' || errno || v <= 0 || *end != '.' ||
+        strlen(end + 1) != 6)
+        return false;
+    for (const char *x = end + 1; *x; x++)
+        if (!((*x >= 'a' && *x <= 'z') || (*x >= 'A' && *x <= 'Z') || (*x >= '0' && *x <= '9')))
+            return false;
+    *pid = v;
+    return true;
+}
+
+/* Seconds since the epoch when process pid started (/proc/stat's btime plus
+ * its start time in ticks); -1 when unknown. */
+static double started_at(long pid)
+{
+    unsigned long long ticks = start_time(pid);
+    FILE *f = ticks ? fopen("/proc/stat", "r") : NULL;
+    if (!f)
+        return -1.0;
+    char line[256];
+    double boot = -1.0;
+    while (boot < 0 && fgets(line, sizeof line, f))
+        if (strncmp(line, "btime ", 6) == 0)
+            boot = strtod(line + 6, NULL);
+    fclose(f);
+    long hz = sysconf(_SC_CLK_TCK);
+    return boot < 0 || hz <= 0 ? -1.0 : boot + (double)ticks / (double)hz;
+}
+
+/* Does any process hold the file (dev, ino) open?  A fork of its writer does
+ * (a branch of a run, run/branch.h, goes on with the file its parent began).
+ * Only processes whose descriptors can be read count: this user's. */
+static bool held_open(dev_t dev, ino_t ino)
+{
+    DIR *procs = opendir("/proc");
+    if (!procs)
+        return true; /* cannot tell: leave it */
+    bool held = false;
+    for (struct dirent *p; !held && (p = readdir(procs));) {
+        if (p->d_name[0] < '0' || p->d_name[0] > '9')
+            continue;
+        char fdd[300];
+        snprintf(fdd, sizeof fdd, "/proc/%.20s/fd", p->d_name);
+        DIR *fds = opendir(fdd);
+        for (struct dirent *e; fds && !held && (e = readdir(fds));) {
+            char link[600];
+            struct stat sb;
+            snprintf(link, sizeof link, "%s/%.200s", fdd, e->d_name);
+            held = e->d_name[0] != '.' && stat(link, &sb) == 0 && sb.st_dev == dev &&
+                   sb.st_ino == ino;
+        }
+        if (fds)
+            closedir(fds);
+    }
+    closedir(procs);
+    return held;
+}
+
+/* Is the writer of a temporary file gone?  Its process id is free, or taken
+ * by a process that started after the file was last written (2 s spared for
+ * the clocks' resolutions), and no process holds the file open. */
+static bool writer_gone(long pid, const struct stat *sb)
+{
+    if (!(kill((pid_t)pid, 0) != 0 && errno == ESRCH)) {
+        double t = started_at(pid);
+        if (t < 0 || t <= (double)sb->st_mtim.tv_sec + 2.0)
+            return false;
+    }
+    return !held_open(sb->st_dev, sb->st_ino);
+}
+
+int fw_leftover_clean_files(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return 0;
+    int removed = 0;
+    for (struct dirent *e; (e = readdir(d));) {
+        char path[1200];
+        struct stat sb;
+        long pid;
+        if (!tmp_file_name(e->d_name, &pid) ||
+            (size_t)snprintf(path, sizeof path, "%s/%s", dir, e->d_name) >= sizeof path ||
+            lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode) || sb.st_uid != geteuid() ||
+            !writer_gone(pid, &sb) || unlink(path) != 0)
+            continue;
+        fprintf(stderr, "fairway: removed %s, left by an interrupted fairway (process %ld is gone)\n",
+                path, pid);
         removed++;
     }
     closedir(d);

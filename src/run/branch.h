@@ -41,9 +41,10 @@
  *   its offset, with the list of files there.  A restored branch truncates each
  *   to its offset, writes on from there through its own descriptor, makes
  *   again from the descriptor it inherited any that the abandoned branch
- *   removed or renamed (fcd.xml.tmp.XXXXXX, renamed fcd.xml at the close), and
- *   removes the files made after the snapshot (encounters.csv, summary.json of
- *   an abandoned branch that finished): the directory is as it was.
+ *   removed or renamed (.fcd.xml.fairway-tmp.PID.XXXXXX, renamed fcd.xml at the
+ *   close), and removes the files made after the snapshot (encounters.csv,
+ *   summary.json of an abandoned branch that finished): the directory is as
+ *   it was.
  * What is not saved:
  *   - SUMO in another process (--sumo gui, remote:HOST:PORT: libtraci): fork
  *     copies this process only.  fw_run_snapshot refuses such a run

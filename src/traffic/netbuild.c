@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "core/files.h"
+#include "core/leftover.h"
 #include "core/spawn.h"
 #include "traffic/netbuild.h"
 #include "traffic/demand.h"
@@ -158,9 +159,16 @@ static fw_status build(fw_network_files *nf, const char *const *src, const char 
                            tmp && tmp[0] == '/' ? tmp : "/tmp", nf->name);
     if (st)
         return st;
+    /* what a SIGKILLed build left there (core/leftover.h), then ours, marked */
+    fw_leftover_clean(tmp && tmp[0] == '/' ? tmp : "/tmp", "fairway-net-",
+                      "an interrupted network build");
     if (!mkdtemp(dir))
         return fw_fail(err, FW_ERUN, "network '%s': cannot make a directory to build it in (%s): "
                        "%s", nf->name, dir, strerror(errno));
+    if ((st = fw_leftover_mark(dir, err))) {
+        fw_remove_tree(dir);
+        return st;
+    }
     const char *argv[20];
     if (!(st = fw_path(path, sizeof path, err, "%s/%s", dir, out)) &&
         !(st = fw_path(log, sizeof log, err, "%s/netconvert.log", dir))) {

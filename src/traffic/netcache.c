@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/files.h"
+#include "core/leftover.h"
 #include "core/hash.h"
 #include "core/mem.h"
 #include "traffic/netcache.h"
@@ -278,10 +279,15 @@ void fw_netcache_put(const fw_netcache_key *k, const char *const *src)
         return;
     const char *slash = strrchr(k->dir, '/');
     /* the entry is made whole beside the others, then renamed into place */
-    if (fw_path(tmp, sizeof tmp, NULL, "%.*s/.tmp.XXXXXX", (int)(slash - k->dir), k->dir) ||
-        !mkdtemp(tmp))
+    char root[1300];
+    snprintf(root, sizeof root, "%.*s", (int)(slash - k->dir), k->dir);
+    /* what a SIGKILLed run storing its entry left (core/leftover.h) */
+    fw_leftover_clean(root, ".tmp.", "an interrupted network cache store");
+    if (fw_path(tmp, sizeof tmp, NULL, "%s/.tmp.XXXXXX", root) || !mkdtemp(tmp))
         return;
-    bool ok = !fw_path(path, sizeof path, NULL, "%s/key", tmp) &&
+    fw_error merr = {0};
+    bool ok = !fw_leftover_mark(tmp, &merr) &&
+              !fw_path(path, sizeof path, NULL, "%s/key", tmp) &&
               !fw_file_write(path, k->text, k->n, NULL);
     for (int i = 0; ok && i < k->n_files; i++)
         ok = copy_in(tmp, k->names[i], src[i]);
@@ -290,13 +296,14 @@ void fw_netcache_put(const fw_netcache_key *k, const char *const *src)
     ok = ok && sums(tmp, k, &sum) && !fw_path(path, sizeof path, NULL, "%s/sums", tmp) &&
          !fw_file_write(path, sum, strlen(sum), NULL);
     free(sum);
-    /* an entry there already (a parallel run stored it first) is kept */
+    /* an entry there already (a parallel run stored it first) is kept; the
+     * entry holds only its own files */
+    if (ok)
+        fw_leftover_unmark(tmp);
     if (!ok || rename(tmp, k->dir) != 0) {
         fw_remove_tree(tmp);
         return;
     }
-    char root[1300];
-    snprintf(root, sizeof root, "%.*s", (int)(slash - k->dir), k->dir);
     prune(root);
 }
 
