@@ -12,6 +12,7 @@
 #include "core/units.h"
 #include "run/run.h"
 #include "test.h"
+#include "test_tmp.h"
 
 enum { N = 1200 };
 static double ht[N], hpsi[N], hv[N];
@@ -246,8 +247,7 @@ static void test_scripted_runs(void)
 
 int main(void)
 {
-    snprintf(tmp_root, sizeof tmp_root, "/tmp/fw_test_audit.XXXXXX");
-    if (!mkdtemp(tmp_root))
+    if (test_tmpdir("audit", tmp_root, sizeof tmp_root))
         return 1;
     TEST_RUN(test_scripted_runs);
     TEST_RUN(test_give_way);

@@ -26,6 +26,7 @@
 #include "run/branch.h"
 #include "run/run.h"
 #include "test.h"
+#include "test_tmp.h"
 
 static char tmp_root[256];
 static fw_scenario scn; /* large: a ship inside */
@@ -543,8 +544,7 @@ static void test_owner_killed(void)
 
 int main(void)
 {
-    snprintf(tmp_root, sizeof tmp_root, "/tmp/fw_test_branch.XXXXXX");
-    if (!mkdtemp(tmp_root))
+    if (test_tmpdir("branch", tmp_root, sizeof tmp_root))
         return 1;
     TEST_RUN(test_kinds);
     TEST_RUN(test_two_branches);
@@ -555,9 +555,5 @@ int main(void)
     /* no process of ours is left: every copy and branch reaped */
     errno = 0;
     CHECK_MSG(waitpid(-1, NULL, WNOHANG) < 0 && errno == ECHILD, "a child process is left");
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);
-    if (test_failures_ == 0 && system(cmd) != 0)
-        fprintf(stderr, "could not remove %s\n", tmp_root);
     return TEST_EXIT();
 }

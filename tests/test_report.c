@@ -4,7 +4,6 @@
  * refusals (not a database, wrong version, no finished runs, unknown names);
  * and the directory being replaced whole or not at all. */
 #define _XOPEN_SOURCE 700
-#include <ftw.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -15,14 +14,9 @@
 #include "study_db.h"
 #include "study/stats.h"
 #include "test.h"
+#include "test_tmp.h"
 
 static char dir[256];
-
-static int rm_one(const char *p, const struct stat *sb, int f, struct FTW *w)
-{
-    (void)sb, (void)f, (void)w;
-    return remove(p);
-}
 
 static bool exists(const char *path)
 {
@@ -715,8 +709,7 @@ static void test_directory(void)
 
 int main(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/fw-test-report.XXXXXX");
-    if (!mkdtemp(dir))
+    if (test_tmpdir("report", dir, sizeof dir))
         return 1;
     snprintf(hand_db, sizeof hand_db, "%s/hand.db", dir);
     snprintf(hand_out, sizeof hand_out, "%s/hand", dir);
@@ -737,9 +730,5 @@ int main(void)
     TEST_RUN(test_splits);
     TEST_RUN(test_directory);
     int rc = TEST_EXIT();
-    if (rc == 0)
-        nftw(dir, rm_one, 16, FTW_DEPTH | FTW_PHYS);
-    else
-        fprintf(stderr, "outputs kept in %s\n", dir);
     return rc;
 }

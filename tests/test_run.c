@@ -20,6 +20,7 @@
 #include "run/oracle.h"
 #include "run/run.h"
 #include "test.h"
+#include "test_tmp.h"
 
 static char tmp_root[256];
 
@@ -378,8 +379,7 @@ static void test_bad_files(void)
 
 int main(void)
 {
-    snprintf(tmp_root, sizeof tmp_root, "/tmp/fw_test_run.XXXXXX");
-    if (!mkdtemp(tmp_root))
+    if (test_tmpdir("run", tmp_root, sizeof tmp_root))
         return 1;
     const char *wd = getenv("FAIRWAY_WRITE_DIGESTS");
     if (wd && *wd && !(digest_out = fopen(wd, "w")))
@@ -392,9 +392,5 @@ int main(void)
     TEST_RUN(test_imazu_cases);
     if (digest_out)
         fclose(digest_out);
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);
-    if (test_failures_ == 0 && system(cmd) != 0)
-        fprintf(stderr, "could not remove %s\n", tmp_root);
     return TEST_EXIT();
 }

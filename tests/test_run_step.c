@@ -18,6 +18,7 @@
 #include "run/run.h"
 #include "world/controllers.h"
 #include "test.h"
+#include "test_tmp.h"
 
 static char tmp_root[256];
 static fw_scenario s; /* large: a ship inside */
@@ -251,15 +252,10 @@ static void test_no_dir(void)
 
 int main(void)
 {
-    snprintf(tmp_root, sizeof tmp_root, "/tmp/fw_test_run_step.XXXXXX");
-    if (!mkdtemp(tmp_root))
+    if (test_tmpdir("run_step", tmp_root, sizeof tmp_root))
         return 1;
     TEST_RUN(test_kinematic);
     TEST_RUN(test_sumo);
     TEST_RUN(test_no_dir);
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);
-    if (test_failures_ == 0 && system(cmd) != 0)
-        fprintf(stderr, "could not remove %s\n", tmp_root);
     return TEST_EXIT();
 }

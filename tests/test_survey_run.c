@@ -15,6 +15,7 @@
 #include "run/run.h"
 #include "survey/survey.h"
 #include "test.h"
+#include "test_tmp.h"
 
 static char tmp_root[256];
 
@@ -254,8 +255,7 @@ static void test_run(void)
 int main(int argc, char **argv)
 {
     const char *which = argc > 1 ? argv[1] : "files";
-    snprintf(tmp_root, sizeof tmp_root, "/tmp/fw_test_survey.XXXXXX");
-    if (!mkdtemp(tmp_root))
+    if (test_tmpdir("survey", tmp_root, sizeof tmp_root))
         return 1;
     if (strcmp(which, "files") == 0) {
         TEST_RUN(test_scenario);
@@ -266,9 +266,5 @@ int main(int argc, char **argv)
         fprintf(stderr, "unknown case %s\n", which);
         return 2;
     }
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);
-    if (test_failures_ == 0 && system(cmd) != 0)
-        fprintf(stderr, "could not remove %s\n", tmp_root);
     return TEST_EXIT();
 }

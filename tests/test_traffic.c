@@ -12,6 +12,7 @@
 #include "core/spawn.h"
 #include "geom/geom.h"
 #include "test.h"
+#include "test_tmp.h"
 #include "traffic/demand.h"
 #include "traffic/traffic.h"
 
@@ -24,22 +25,6 @@ static const char *work_file(const char *name, char *buf, size_t n)
     return buf;
 }
 
-static void make_workdir(void)
-{
-    snprintf(workdir, sizeof workdir, "/tmp/fw_test_traffic_XXXXXX");
-    if (!mkdtemp(workdir)) {
-        perror("mkdtemp");
-        exit(1);
-    }
-}
-
-static void remove_workdir(void)
-{
-    char cmd[300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", workdir);
-    if (system(cmd) != 0)
-        fprintf(stderr, "could not remove %s\n", workdir);
-}
 
 /* ---- unit: no SUMO running ---- */
 
@@ -576,7 +561,8 @@ static void test_sumo_dies(void)
 int main(int argc, char **argv)
 {
     const char *which = argc > 1 ? argv[1] : "unit";
-    make_workdir();
+    if (test_tmpdir("traffic", workdir, sizeof workdir))
+        return 1;
     if (strcmp(which, "unit") == 0) {
         TEST_RUN(test_mode_parse);
         TEST_RUN(test_conversion);
@@ -596,6 +582,5 @@ int main(int argc, char **argv)
         fprintf(stderr, "unknown case %s\n", which);
         return 2;
     }
-    remove_workdir();
     return TEST_EXIT();
 }

@@ -16,6 +16,7 @@
 #include "core/units.h"
 #include "run/run.h"
 #include "test.h"
+#include "test_tmp.h"
 #include "traffic/source.h"
 #include "world/controllers.h"
 #include "world/world.h"
@@ -573,8 +574,7 @@ static void test_paper_case_without_sumo(void)
 
 int main(void)
 {
-    snprintf(tmp_root, sizeof tmp_root, "/tmp/fw_test_world.XXXXXX");
-    if (!mkdtemp(tmp_root))
+    if (test_tmpdir("world", tmp_root, sizeof tmp_root))
         return 1;
     fw_error err = {0};
     if (fw_ship_load("c3", &c3, &err)) {
@@ -590,9 +590,5 @@ int main(void)
     TEST_RUN(test_strait_traffic_monitors);
     TEST_RUN(test_network_and_targets);
     TEST_RUN(test_paper_case_without_sumo);
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", tmp_root);
-    if (test_failures_ == 0 && system(cmd) != 0)
-        fprintf(stderr, "could not remove %s\n", tmp_root);
     return TEST_EXIT();
 }
