@@ -1,11 +1,14 @@
-/* test_geom.c - the plane geometry of ships (geom/geom.h) against worked answers. */
+/* test_geom.c - the plane geometry of ships (geom/geom.h) and the turn predictor (geom/turn.h)
+ * against worked answers. */
 #include <float.h>
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "core/units.h"
 #include "geom/geom.h"
+#include "geom/turn.h"
 #include "test.h"
 
 static void test_body_frame_and_cpa(void)
@@ -235,6 +238,36 @@ static void test_wraps(void)
     CHECK_NEAR(fw_wrap_2pi(-0.5), tp - 0.5, 1e-15);
 }
 
+/* The predictor: a ship turning at 0.5 deg/s towards 030 from 000 at 5 m/s
+ * is expected to head 030 after 60 s and then run straight: its heading
+ * exactly so, its position the arc's (radius U / r) then the straight line,
+ * to 0.5 m (the midpoint rule on 1 s steps). */
+static void test_predictor_finishes_the_turn(void)
+{
+    fw_turn_pred p;
+    fw_turn_pred_init(&p);
+    p.turning = true, p.rate = fw_deg_to_rad(0.5), p.heading = fw_deg_to_rad(30.0);
+    fw_target now = {.speed = 5.0, .stw = 5.0, .pred = &p.base};
+    double e[121], n[121], h[121];
+    fw_target_path(&now, 1.0, 121, e, n, h);
+    CHECK_NEAR(h[30], fw_deg_to_rad(15.0), 1e-12);
+    CHECK_NEAR(h[60], fw_deg_to_rad(30.0), 1e-12);
+    CHECK_NEAR(h[120], fw_deg_to_rad(30.0), 1e-12);
+    double R = 5.0 / fw_deg_to_rad(0.5), a = fw_deg_to_rad(30.0);
+    double e60 = R * (1.0 - cos(a)), n60 = R * sin(a);
+    CHECK_NEAR(e[60], e60, 0.5);
+    CHECK_NEAR(n[60], n60, 0.5);
+    CHECK_NEAR(e[120], e60 + 300.0 * sin(a), 0.5);
+    CHECK_NEAR(n[120], n60 + 300.0 * cos(a), 0.5);
+    CHECK(fw_turn_pred_of(&p.base) == &p && !p.base.steady(&p.base));
+    CHECK(fw_turn_pred_of(NULL) == NULL);
+    p.turning = false; /* steady: constant velocity */
+    CHECK(p.base.steady(&p.base));
+    fw_target_path(&now, 1.0, 121, e, n, h);
+    CHECK_NEAR(n[120], 600.0, 1e-9);
+    CHECK_NEAR(e[120], 0.0, 1e-9);
+}
+
 int main(void)
 {
     TEST_RUN(test_body_frame_and_cpa);
@@ -243,5 +276,6 @@ int main(void)
     TEST_RUN(test_hull_cpa);
     TEST_RUN(test_domain);
     TEST_RUN(test_domain_transverse);
+    TEST_RUN(test_predictor_finishes_the_turn);
     return TEST_EXIT();
 }

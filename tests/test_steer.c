@@ -251,33 +251,6 @@ static void test_head_on_alters(void)
     fw_world_destroy(w);
 }
 
-/* The predictor: a ship turning at 0.5 deg/s towards 030 from 000 at 5 m/s
- * is expected to head 030 after 60 s and then run straight: its heading
- * exactly so, its position the arc's (radius U / r) then the straight line,
- * to 0.5 m (the midpoint rule on 1 s steps). */
-static void test_predictor_finishes_the_turn(void)
-{
-    fw_steer_pred p;
-    fw_steer_pred_init(&p);
-    p.turning = true, p.rate = fw_deg_to_rad(0.5), p.heading = fw_deg_to_rad(30.0);
-    fw_target now = {.speed = 5.0, .stw = 5.0, .pred = &p.base};
-    double e[121], n[121], h[121];
-    fw_target_path(&now, 1.0, 121, e, n, h);
-    CHECK_NEAR(h[30], fw_deg_to_rad(15.0), 1e-12);
-    CHECK_NEAR(h[60], fw_deg_to_rad(30.0), 1e-12);
-    CHECK_NEAR(h[120], fw_deg_to_rad(30.0), 1e-12);
-    double R = 5.0 / fw_deg_to_rad(0.5), a = fw_deg_to_rad(30.0);
-    double e60 = R * (1.0 - cos(a)), n60 = R * sin(a);
-    CHECK_NEAR(e[60], e60, 0.5);
-    CHECK_NEAR(n[60], n60, 0.5);
-    CHECK_NEAR(e[120], e60 + 300.0 * sin(a), 0.5);
-    CHECK_NEAR(n[120], n60 + 300.0 * cos(a), 0.5);
-    p.turning = false; /* steady: constant velocity */
-    fw_target_path(&now, 1.0, 121, e, n, h);
-    CHECK_NEAR(n[120], 600.0, 1e-9);
-    CHECK_NEAR(e[120], 0.0, 1e-9);
-}
-
 /* Keeping its distance: a steered ship (150 x 25 m, its own speed 6 m/s) on
  * its lane's line going north, a lane-mate 1 km ahead at 3 m/s.  It slows
  * at no more than 0.1 m/s^2, never comes within SUMO's gap of 200 m hull to
@@ -337,7 +310,6 @@ int main(void)
     TEST_RUN(test_no_room_slows);
     TEST_RUN(test_speed_mode_unchanged);
     TEST_RUN(test_head_on_alters);
-    TEST_RUN(test_predictor_finishes_the_turn);
     TEST_RUN(test_follows_a_slower_ship_ahead);
     return TEST_EXIT();
 }

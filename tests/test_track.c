@@ -103,7 +103,7 @@ static fw_rec_track *tracks_of(const char *const *ids, int n, double east)
     for (int i = 0; i < n; i++) {
         snprintf(t[i].info.id, sizeof t[i].info.id, "%s", ids[i]);
         fw_rec_track_reserve(&t[i]);
-        t[i].p[t[i].n++] = (fw_rec_point){0.0, east, 0.0, 0.0, 1.0};
+        t[i].p[t[i].n++] = (fw_rec_point){.t = 0.0, .east = east, .speed = 1.0};
     }
     return t;
 }

@@ -644,8 +644,8 @@ static void test_track_refuses_take(void)
     fw_rec_track *t = calloc(1, sizeof *t);
     snprintf(t->info.id, sizeof t->info.id, "r1");
     t->p = malloc(2 * sizeof *t->p);
-    t->p[0] = (fw_rec_point){0, 0, 0, 0, 5};
-    t->p[1] = (fw_rec_point){100, 0, 500, 0, 5};
+    t->p[0] = (fw_rec_point){.t = 0, .speed = 5};
+    t->p[1] = (fw_rec_point){.t = 100, .north = 500, .speed = 5};
     t->n = t->cap = 2;
     fw_replay_def rd = fw_default_replay_def();
     fw_source *s = NULL;

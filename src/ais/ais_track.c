@@ -92,8 +92,9 @@ static fw_status add(collect *c, const fw_ais_report *r, fw_error *err)
     t->out_of_order += r->t < c->last_t[idx];
     c->last_t[idx] = r->t;
     double course = !isnan(r->cog) ? r->cog : r->heading;
-    tr->p[tr->n++] = (fw_rec_point){r->t, e, n, isnan(course) ? NAN : fw_wrap_2pi(course - gamma),
-                                    r->sog};
+    tr->p[tr->n++] = (fw_rec_point){.t = r->t, .east = e, .north = n,
+                                    .course = isnan(course) ? NAN : fw_wrap_2pi(course - gamma),
+                                    .speed = r->sog};
     sh->class_b = r->class_b;
     if (r->kind != FW_AIS_UNKNOWN) {
         sh->kind = r->kind;

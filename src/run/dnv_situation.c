@@ -277,9 +277,11 @@ fw_status fw_dnv_situation_of_scenario(const fw_scenario *s, const char *path, f
             break;
         }
         double d = t->speed * s->duration;
-        tr[i].p[0] = (fw_rec_point){0.0, t->east, t->north, t->course, t->speed};
-        tr[i].p[1] = (fw_rec_point){s->duration, t->east + d * sin(t->course),
-                                    t->north + d * cos(t->course), t->course, t->speed};
+        tr[i].p[0] = (fw_rec_point){.t = 0.0, .east = t->east, .north = t->north,
+                                    .course = t->course, .speed = t->speed};
+        tr[i].p[1] = (fw_rec_point){.t = s->duration, .east = t->east + d * sin(t->course),
+                                    .north = t->north + d * cos(t->course),
+                                    .course = t->course, .speed = t->speed};
     }
     if (!st)
         st = fw_dnv_situation_write(s, tr, s->n_targets, FW_DNV_TOLERANCE_M, path, err);

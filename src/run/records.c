@@ -15,6 +15,7 @@
 #include "core/fmt.h"
 #include "core/units.h"
 #include "geom/geo.h"
+#include "geom/turn.h"
 #include "run/book.h"
 #include "run/encounter_record.h"
 #include "run/records.h"
@@ -26,6 +27,7 @@ struct fw_records {
     FILE *sen;     /* sensed.csv: what a sensor (not perfect) made of the ships */
     fw_geo *geo;   /* the scenario's origin: lat/lon columns (NULL: none) */
     fw_book *book; /* the encounter book (book.h): what the files are made of */
+    bool turns;    /* targets.csv has the turn columns (fw_records_open) */
 };
 
 static FILE *open_in(const char *dir, const char *name, fw_error *err)
@@ -64,9 +66,16 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
      * targets', the body-frame components in m/s as the manoeuvre CSVs have them */
     fprintf(r->own, "t_s,east_m,north_m,heading_deg,speed_kn,u_mps,v_mps,r_degps,rudder_deg,"
                     "helm_deg,propeller_rps,mode%s\n", geo_cols);
+    /* the turn a ship is seen making (geom/turn.h), where one may be: ships
+     * the traffic steers (behaviour colregs, give_way course), tracks that
+     * carry their turns (traffic/source_track.h) */
+    r->turns = (s->reactions.behaviour == FW_BEHAVIOUR_COLREGS &&
+                s->reactions.give_way == FW_GIVE_WAY_COURSE) ||
+               s->tracks[0];
     if (r->tgt)
         fprintf(r->tgt, "t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,bearing_deg,"
-                        "dcpa_m,tcpa_s,situation%s\n", geo_cols);
+                        "dcpa_m,tcpa_s,situation%s%s\n",
+                r->turns ? ",turn_rate_degps,turn_to_deg" : "", geo_cols);
     if (r->sen)
         fprintf(r->sen, "t_s,id,east_m,north_m,course_deg,speed_kn,error_m%s\n", geo_cols);
     return FW_OK;
@@ -161,6 +170,13 @@ fw_status fw_records_target(fw_records *r, double t, const fw_target *ts, const 
                  (const int[]){2, 2, 3, 3, 2, 3, 2, 2}, 8);
         fputc(',', r->tgt);
         fputs(fw_situation_name(as->situation), r->tgt);
+        const fw_turn_pred *p = r->turns ? fw_turn_pred_of(ts->pred) : NULL;
+        if (p && p->turning)
+            put_nums(r->tgt,
+                     (const double[]){fw_rad_to_deg(p->rate), fw_heading_deg(p->heading)},
+                     (const int[]){6, 6}, 2);
+        else if (r->turns)
+            fputs(",,", r->tgt);
         end_row(r, r->tgt, ts->east, ts->north);
     }
     return FW_OK;

@@ -271,13 +271,30 @@ static fw_status read_sizes(const char *path, ship_info **out, int *n, fw_error 
     return st;
 }
 
-/* run_dir/targets.csv (t_s,id,east_m,north_m,heading_deg,speed_kn,...) and
- * run_dir/encounters.csv (id,type,length_m,breadth_m,...) into tracks. */
+/* The columns of targets.csv's header that hold a ship's turn (records.h),
+ * -1 each when it has none. */
+static void turn_columns(char *header, int *rate, int *to)
+{
+    char *c[32];
+    int n = fw_csv_split(header, c, 32);
+    *rate = *to = -1;
+    for (int i = 0; i < n; i++)
+        if (strcmp(c[i], "turn_rate_degps") == 0)
+            *rate = i;
+        else if (strcmp(c[i], "turn_to_deg") == 0)
+            *to = i;
+}
+
+/* run_dir/targets.csv (t_s,id,east_m,north_m,heading_deg,speed_kn,...,
+ * turn_rate_degps,turn_to_deg) and run_dir/encounters.csv
+ * (id,type,length_m,breadth_m,...) into tracks: each ship's turn, as the own
+ * ship saw it, with it (source_track.h), so that the replay's own ship
+ * expects what the run's did. */
 static fw_status write_tracks(const char *run_dir, const char *path, fw_error *err)
 {
     char tp[1200], ep[1200], tmp[1300], line[2048], *c[32];
     ship_info *info = NULL;
-    int n_info = 0;
+    int n_info = 0, cr = -1, ct = -1;
     fw_status st;
     if ((st = fw_path(tp, sizeof tp, err, "%s/targets.csv", run_dir)) ||
         (st = fw_path(ep, sizeof ep, err, "%s/encounters.csv", run_dir)))
@@ -291,17 +308,23 @@ static fw_status write_tracks(const char *run_dir, const char *path, fw_error *e
         st = err->status;
     if (!st && !fgets(line, sizeof line, in))
         st = fw_fail(err, FW_ERUN, "%s: empty", tp);
-    if (!st)
-        fprintf(out, "t_s,id,type,east_m,north_m,course_deg,speed_kn,length_m,breadth_m\n");
+    if (!st) {
+        turn_columns(line, &cr, &ct);
+        fprintf(out, "t_s,id,type,east_m,north_m,course_deg,speed_kn,length_m,breadth_m,"
+                     "turn_rate_degps,turn_to_deg\n");
+    }
     while (!st && fgets(line, sizeof line, in)) {
-        if (fw_csv_split(line, c, 32) < 6)
+        int n = fw_csv_split(line, c, 32);
+        if (n < 6)
             continue;
         const ship_info *s = NULL;
         for (int i = 0; i < n_info && !s; i++)
             if (strcmp(info[i].id, c[1]) == 0)
                 s = &info[i];
-        fprintf(out, "%s,%s,%s,%s,%s,%s,%s,%.1f,%.1f\n", c[0], c[1], s ? s->type : "", c[2],
-                c[3], c[4], c[5], s ? s->length : 0.0, s ? s->breadth : 0.0);
+        bool turn = cr >= 0 && ct >= 0 && cr < n && ct < n;
+        fprintf(out, "%s,%s,%s,%s,%s,%s,%s,%.1f,%.1f,%s,%s\n", c[0], c[1], s ? s->type : "",
+                c[2], c[3], c[4], c[5], s ? s->length : 0.0, s ? s->breadth : 0.0,
+                turn ? c[cr] : "", turn ? c[ct] : "");
     }
     if (in)
         fclose(in);

@@ -6,7 +6,9 @@
  * must match, or the run would not be the same), run with every target it saw
  * recorded at every step, and written as
  *
- *   DIR/case-K/tracks.csv      the targets' recorded tracks (traffic/source_track.h)
+ *   DIR/case-K/tracks.csv      the targets' recorded tracks (traffic/source_track.h),
+ *                              each row with the turn the own ship saw that
+ *                              ship making (run/records.h, geom/turn.h)
  *   DIR/case-K/scenario.yaml   the study's base scenario with the run's own-ship
  *                              start, domain, duration, and the tracks as its
  *                              traffic (no network, no survey)
@@ -14,7 +16,9 @@
  * and the scenario is run once more to check it replays the encounter: its
  * closest approach to the same target, beside the database's and the re-run's.
  * A replay differs from the original only where the rounding of the recorded
- * positions (cm) and speeds moves a decision of the own ship.
+ * positions (cm), speeds and turns moves a decision of the own ship: a ship
+ * the traffic steered (world/steer.h) is replayed with the turn the
+ * original's own ship expected of it at each step, not at constant velocity.
  *
  * With situations, each case is also written as DIR/case-K/situation.json,
  * a DNV traffic situation of the replay's own ship and the tracks simplified

@@ -15,6 +15,7 @@ typedef fw_rec_point trk_point;
 typedef struct trk_ship {
     fw_rec_track tr;     /* info: id, type, size; points sorted by t */
     int cur;         /* the point at or before the present time */
+    fw_turn_pred turn; /* the turn of that point, when it has one */
 } trk_ship;
 
 typedef struct trk_source {
@@ -97,6 +98,12 @@ static bool at(trk_ship *s, double t, double max_gap, fw_target *out)
      * speed: the record has them as both */
     out->course = out->heading = a->course;
     out->speed = out->stw = a->speed;
+    out->pred = NULL;
+    if (a->turn_rate > 0.0) {
+        fw_turn_pred_init(&s->turn);
+        s->turn.rate = a->turn_rate, s->turn.heading = a->turn_to, s->turn.turning = true;
+        out->pred = &s->turn.base;
+    }
     return true;
 }
 
@@ -176,10 +183,10 @@ static const fw_source_ops trk_ops = {.name = "track", .place = trk_place,
                                       .destroy = trk_destroy};
 
 /* The columns a track file has (-1: absent). */
-enum { C_T, C_ID, C_E, C_N, C_COURSE, C_SPEED, C_TYPE, C_L, C_B, NCOL };
-static const char *const col_names[NCOL] = {"t_s",        "id",       "east_m",
-                                            "north_m",    "course_deg", "speed_kn",
-                                            "type",       "length_m", "breadth_m"};
+enum { C_T, C_ID, C_E, C_N, C_COURSE, C_SPEED, C_TYPE, C_L, C_B, C_RATE, C_TO, NCOL };
+static const char *const col_names[NCOL] = {
+    "t_s",  "id",       "east_m",    "north_m",         "course_deg", "speed_kn",
+    "type", "length_m", "breadth_m", "turn_rate_degps", "turn_to_deg"};
 
 static fw_status header(const char *file, char *line, int col[NCOL], fw_error *err)
 {
@@ -193,6 +200,9 @@ static fw_status header(const char *file, char *line, int col[NCOL], fw_error *e
         if (c < C_TYPE && col[c] < 0)
             return fw_fail(err, FW_EINPUT, "%s:1: no column %s", file, col_names[c]);
     }
+    if ((col[C_RATE] < 0) != (col[C_TO] < 0))
+        return fw_fail(err, FW_EINPUT, "%s:1: %s: turn_rate_degps and turn_to_deg come together",
+                       file, col_names[col[C_RATE] < 0 ? C_RATE : C_TO]);
     return FW_OK;
 }
 
@@ -229,12 +239,18 @@ static fw_status row(trk_list *k, const char *file, int line_no, char *line, con
     char *f[64];
     int n = fw_csv_split(line, f, 64);
     double v[NCOL] = {0};
+    /* a turn: both columns empty (none), or a rate above 0 and a heading */
+    bool turn = col[C_RATE] >= 0 && col[C_RATE] < n && col[C_TO] < n &&
+                (f[col[C_RATE]][0] || f[col[C_TO]][0]);
     for (int c = 0; c < NCOL; c++) {
-        if (col[c] < 0 || c == C_ID || c == C_TYPE)
+        if (col[c] < 0 || c == C_ID || c == C_TYPE || ((c == C_RATE || c == C_TO) && !turn))
             continue;
         if (col[c] >= n || !number(f[col[c]], &v[c]))
             return fw_fail(err, FW_EINPUT, "%s:%d: %s: not a number", file, line_no, col_names[c]);
     }
+    if (turn && !(v[C_RATE] > 0.0))
+        return fw_fail(err, FW_EINPUT, "%s:%d: turn_rate_degps: %.15g: a turn's rate is above 0",
+                       file, line_no, v[C_RATE]);
     if (col[C_ID] >= n || !f[col[C_ID]][0] || strlen(f[col[C_ID]]) >= FW_TARGET_ID_MAX)
         return fw_fail(err, FW_EINPUT, "%s:%d: id: empty or too long", file, line_no);
     fw_rec_track *s = ship_of(k, f[col[C_ID]]);
@@ -244,8 +260,11 @@ static fw_status row(trk_list *k, const char *file, int line_no, char *line, con
         snprintf(s->info.type, sizeof s->info.type, "%s", f[col[C_TYPE]]);
     s->info.length = v[C_L];
     s->info.breadth = v[C_B];
-    s->p[s->n++] = (trk_point){v[C_T], v[C_E], v[C_N], fw_deg_to_rad(v[C_COURSE]),
-                               fw_kn_to_ms(v[C_SPEED])};
+    s->p[s->n++] = (trk_point){.t = v[C_T], .east = v[C_E], .north = v[C_N],
+                               .course = fw_deg_to_rad(v[C_COURSE]),
+                               .speed = fw_kn_to_ms(v[C_SPEED]),
+                               .turn_rate = fw_deg_to_rad(v[C_RATE]),
+                               .turn_to = fw_deg_to_rad(v[C_TO])};
     return FW_OK;
 }
 
@@ -292,7 +311,8 @@ static fw_status check(trk_source *k, const char *what, fw_error *err)
         for (int j = 0; j < s->n; j++) {
             const trk_point *q = &s->p[j];
             if (!isfinite(q->t) || !isfinite(q->east) || !isfinite(q->north) ||
-                !isfinite(q->course) || !isfinite(q->speed))
+                !isfinite(q->course) || !isfinite(q->speed) || !isfinite(q->turn_to) ||
+                !(q->turn_rate >= 0.0 && isfinite(q->turn_rate)))
                 return fw_fail(err, FW_EINPUT, "%s: ship %s has a point that is not a number",
                                what, s->info.id);
             if (j > 0 && q->t == s->p[j - 1].t)

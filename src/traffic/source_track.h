@@ -3,11 +3,18 @@
  *
  * The file is CSV with a header line naming at least
  *   t_s,id,east_m,north_m,course_deg,speed_kn
- * and optionally type,length_m,breadth_m (0 when absent); rows in any order.
+ * and optionally type,length_m,breadth_m (0 when absent) and
+ * turn_rate_degps,turn_to_deg (the turn it was seen making, geom/turn.h: a
+ * rate above 0 and the heading it turns to, both empty or both absent for
+ * a ship at constant velocity); rows in any order.
  * A ship is where its points put it, linearly between two of them (exact at
  * a recorded time); it exists from its first point to its last and, between
  * two points farther apart than max_gap, not at all (it had left the own
- * ship's sight).  Course and speed are those of the point before.  The ships
+ * ship's sight).  Course and speed are those of the point before, and so is
+ * its turn: a point with one gives its record a turn predictor (geom/turn.h)
+ * until the next point, so that an own ship replayed among the tracks
+ * expects of a turning ship what the original's expected (world/steer.h);
+ * a point without one, none (constant velocity).  The ships
  * cannot be told to give way: set_speed does nothing, so a replay is of
  * `blind` traffic (what the ships did, reactions included, is in the track).
  * Nor can they be taken (source.h take: FW_EINPUT): a recording says where a
@@ -22,11 +29,15 @@
 #ifndef FW_TRAFFIC_SOURCE_TRACK_H
 #define FW_TRAFFIC_SOURCE_TRACK_H
 
+#include "geom/turn.h"
 #include "traffic/source.h"
 
-/* One recorded point: time, hull centre, course (rad, grid), speed (m/s). */
+/* One recorded point: time, hull centre, course (rad, grid), speed (m/s),
+ * and the turn it was making: rate (rad/s, 0: none, constant velocity) and
+ * the heading it turns to (rad). */
 typedef struct fw_rec_point {
     double t, east, north, course, speed;
+    double turn_rate, turn_to;
 } fw_rec_point;
 
 /* One ship's points, any order (the source sorts them). */

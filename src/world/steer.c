@@ -45,52 +45,6 @@ fw_alter_def fw_default_alter_def(void)
 /* s: how far ahead a ship coming back to its lane looks for ships in its way */
 static const double kConflictS = 600.0;
 
-static void pred_path(const fw_predictor *self, const fw_target *now, double dt, int n,
-                      double *east, double *north, double *heading)
-{
-    const fw_steer_pred *p = (const fw_steer_pred *)self;
-    /* its drift (course over ground less heading) kept through the turn */
-    double psi = now->heading, drift = fw_wrap_pi(now->course - now->heading);
-    double e = now->east, no = now->north, run = now->speed * dt;
-    double turn = p->rate * dt, left = p->turning ? fw_wrap_pi(p->heading - psi) : 0.0;
-    int k = 0;
-    if (p->turning && turn > 0.0 && fabs(left) > turn) {
-        /* whole steps of the turn: the direction of each step's run (its
-         * middle heading) rotated by the step, not recomputed */
-        double step = copysign(turn, left), cs = cos(step), ss = sin(step);
-        double sm = sin(psi + 0.5 * step + drift), cm = cos(psi + 0.5 * step + drift);
-        for (; k < n && fabs(left) > turn; k++) {
-            east[k] = e, north[k] = no, heading[k] = psi;
-            e += run * sm, no += run * cm;
-            psi += step, left -= step;
-            double s2 = sm * cs + cm * ss;
-            cm = cm * cs - sm * ss, sm = s2;
-        }
-    }
-    if (k < n && p->turning && left != 0.0) { /* the last, part step onto its heading */
-        east[k] = e, north[k] = no, heading[k] = psi;
-        double mid = psi + 0.5 * left + drift;
-        e += run * sin(mid), no += run * cos(mid);
-        psi += left;
-        k++;
-    }
-    double se = run * sin(psi + drift), sn = run * cos(psi + drift);
-    for (; k < n; k++) { /* straight on */
-        east[k] = e, north[k] = no, heading[k] = psi;
-        e += se, no += sn;
-    }
-}
-
-static bool pred_steady(const fw_predictor *self)
-{
-    return !((const fw_steer_pred *)self)->turning;
-}
-
-void fw_steer_pred_init(fw_steer_pred *p)
-{
-    *p = (fw_steer_pred){.base = {.path = pred_path, .steady = pred_steady}};
-}
-
 /* s: how often a steered ship looks round (as reactions.h's officer), and
  * how far ahead it looks for ships it must give way to */
 static const double kLookS = 10.0;

@@ -42,13 +42,10 @@
  * constant L/U), at most 20 deg of helm (an officer's alteration, not a
  * crash turn); in a current the heading allows for the set (course over
  * ground is what is steered).
- * How the others expect it to move (fw_steer_pred, its record's predictor,
- * geom/target.h): while it turns, on turning at the rate its helm gives
- * (K' U / L x helm, or its present rate if faster) until it heads as its
- * helmsman steers, then straight on; steady, at constant velocity.  An
- * officer who sees a ship swing (and AIS's rate of turn) reads its
- * alteration; a constant-velocity look at a ship half way through its turn
- * would see it heading for the very collision it is turning away from.
+ * How the others expect it to move (its record's predictor, geom/turn.h):
+ * while it turns, on turning at the rate its helm gives (K' U / L x helm,
+ * or its present rate if faster) until it heads as its helmsman steers,
+ * then straight on; steady, at constant velocity.
  * Speed: it sails at its own speed (the fastest the reactive traffic saw it
  * sail unhindered), and keeps its distance behind a ship ahead going its
  * way (within 45 deg of its course, in its path now or within 10 minutes)
@@ -78,6 +75,7 @@
 #define FW_WORLD_STEER_H
 
 #include "avoid/encounter.h"
+#include "geom/turn.h"
 #include "ship/ship.h"
 #include "traffic/source.h"
 #include "world/vessel.h"
@@ -90,17 +88,6 @@
  * type name (copied, cut to fit) into *out. */
 void fw_steer_ship(double length, double breadth, const char *type, fw_ship *out);
 
-/* The predictor (above); the controller keeps it up to date. */
-typedef struct fw_steer_pred {
-    fw_predictor base;
-    double rate;     /* rad/s, > 0: how fast it is expected to turn */
-    double heading;  /* rad: the heading it turns to */
-    bool turning;
-} fw_steer_pred;
-
-/* A predictor that expects constant velocity until its controller says. */
-void fw_steer_pred_init(fw_steer_pred *p);
-
 typedef struct fw_alter_def {
     fw_lane_info lane;                 /* where it comes back to (source.h) */
     double alteration;                 /* rad, > 0: to starboard of its lane's course */
@@ -112,7 +99,7 @@ typedef struct fw_alter_def {
     double speed;                      /* m/s, its speed when nothing is in its way
                                           (0: its speed at the first decision) */
     double helm_max;                   /* rad, 20 deg */
-    fw_steer_pred *pred;               /* kept up to date (NULL: none); must outlive
+    fw_turn_pred *pred;                /* kept up to date (NULL: none); must outlive
                                           every copy of the ship's record */
 } fw_alter_def;
 

@@ -23,12 +23,15 @@ typedef struct slot {
                                 (steer.h), made by the world */
 } slot;
 
-/* What the world makes for a background ship it steers: its model, and the
- * predictor its record points to.  Freed only once no view holds a copy of
+/* What the world makes for a background ship it steers: its model, the
+ * predictor its helmsman keeps up to date (pred), and the one its record
+ * points to (shown: pred as it was when the step began, the turn the others
+ * see it making at that step's sensing, whichever decides first; the records
+ * write it, worst.h replays it).  Freed only once no view holds a copy of
  * its record any more: at the next sensing after the vessel is gone. */
 typedef struct steered {
     fw_ship ship;
-    fw_steer_pred pred;
+    fw_turn_pred pred, shown;
 } steered;
 
 struct fw_world {
@@ -537,7 +540,8 @@ static fw_status take_orders(fw_world *w, fw_error *err)
         if (!sd_mem)
             return fw_fail(err, FW_ERUN, "out of memory for a ship to steer");
         fw_steer_ship(o[k].ship.length, o[k].ship.breadth, o[k].ship.type, &sd_mem->ship);
-        fw_steer_pred_init(&sd_mem->pred);
+        fw_turn_pred_init(&sd_mem->pred);
+        fw_turn_pred_init(&sd_mem->shown);
         fw_alter_def sd = fw_default_alter_def();
         sd.lane = o[k].lane;
         sd.alteration = o[k].alteration;
@@ -551,7 +555,7 @@ static fw_status take_orders(fw_world *w, fw_error *err)
         sd.pred = &sd_mem->pred;
         fw_vessel_def vd = fw_default_vessel_def();
         vd.ship = &sd_mem->ship;
-        vd.predictor = &sd_mem->pred.base;
+        vd.predictor = &sd_mem->shown.base;
         vd.dynamics = FW_DYN_NOMOTO;
         vd.radius = w->def.reactions.range;
         fw_vessel_handle h;
@@ -695,6 +699,9 @@ fw_status fw_world_step(fw_world *w, double dt, fw_error *err)
     fw_status st = FW_OK;
     fw_world_timing *tm = &w->timing;
     double t = tick(w);
+    for (int i = 0; i < w->n_slots; i++) /* the turns the records will show */
+        if (w->slots[i].steered)
+            w->slots[i].steered->shown = w->slots[i].steered->pred;
     for (int i = 0; !st && i < w->n_slots; i++)
         if (w->slots[i].v)
             st = fw_vessel_advance(w->slots[i].v, w->def.step, err);
