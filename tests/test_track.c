@@ -1,6 +1,6 @@
 /* test_track.c - the recorded-track traffic source (traffic/source_track.h):
  * positions between and at the points, passes split by a gap, the sight
- * radius, id order, and bad files named by line. */
+ * radius, id order, the turns a track carries, and bad files named by line. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -96,6 +96,57 @@ static void test_bad_files(void)
     CHECK(open_source(INFINITY, &err) == NULL && strstr(err.msg, "cannot open"));
 }
 
+/* Turns (turn_rate_degps, turn_to_deg): a point with one gives its ship a
+ * turn predictor until the next point, with the rate and heading as written
+ * (to 1e-12), whose path heads exactly so after the turn (60 s at 0.5 deg/s
+ * from 090 to 120); a point without one, none (constant velocity); both
+ * columns or neither, a rate above 0. */
+static void test_turns(void)
+{
+    write_file("t_s,id,east_m,north_m,course_deg,speed_kn,turn_rate_degps,turn_to_deg\n"
+               "0,a,0,0,90,10,,\n1,a,5,0,90,10,0.5,120\n2,a,10,0,90.5,10,,\n");
+    fw_error err = {0};
+    fw_source *s = open_source(INFINITY, &err);
+    CHECK_MSG(s != NULL, "%s", err.msg);
+    if (!s)
+        return;
+    fw_target own = {.id = "own", .north = -1000.0};
+    const fw_target *v;
+    int n;
+    fw_source_place(s, &own, &err);
+    CHECK(fw_source_around(s, &v, &n, &err) == FW_OK && n == 1 && v[0].pred == NULL);
+    fw_source_advance(s, &err);
+    fw_source_advance(s, &err); /* t = 1: turning */
+    fw_source_around(s, &v, &n, &err);
+    const fw_turn_pred *p = n == 1 ? fw_turn_pred_of(v[0].pred) : NULL;
+    CHECK(p != NULL && p->turning);
+    if (p) {
+        CHECK_NEAR(p->rate, fw_deg_to_rad(0.5), 1e-12);
+        CHECK_NEAR(p->heading, fw_deg_to_rad(120.0), 1e-12);
+        double e[91], no[91], h[91];
+        fw_target_path(&v[0], 1.0, 91, e, no, h);
+        CHECK_NEAR(h[90], fw_deg_to_rad(120.0), 1e-12);
+    }
+    fw_source_advance(s, &err); /* t = 1.5: still that point's turn */
+    fw_source_around(s, &v, &n, &err);
+    CHECK(n == 1 && fw_turn_pred_of(v[0].pred) != NULL);
+    fw_source_advance(s, &err); /* t = 2: steady again */
+    fw_source_around(s, &v, &n, &err);
+    CHECK(n == 1 && v[0].pred == NULL);
+    fw_source_destroy(s);
+    write_file("t_s,id,east_m,north_m,course_deg,speed_kn,turn_rate_degps\n0,a,0,0,90,5,1\n");
+    CHECK(open_source(INFINITY, &err) == NULL &&
+          strstr(err.msg, ":1: turn_to_deg: turn_rate_degps and turn_to_deg come together"));
+    write_file("t_s,id,east_m,north_m,course_deg,speed_kn,turn_rate_degps,turn_to_deg\n"
+               "0,a,0,0,90,5,0,120\n");
+    CHECK(open_source(INFINITY, &err) == NULL &&
+          strstr(err.msg, ":2: turn_rate_degps: 0: a turn's rate is above 0"));
+    write_file("t_s,id,east_m,north_m,course_deg,speed_kn,turn_rate_degps,turn_to_deg\n"
+               "0,a,0,0,90,5,,120\n");
+    CHECK(open_source(INFINITY, &err) == NULL &&
+          strstr(err.msg, ":2: turn_rate_degps: not a number"));
+}
+
 /* n tracks of one point each at t = 0 (ids given), for the in-memory source. */
 static fw_rec_track *tracks_of(const char *const *ids, int n, double east)
 {
@@ -135,6 +186,7 @@ int main(void)
     snprintf(path, sizeof path, "/tmp/fw_test_track.%d.csv", (int)getpid());
     TEST_RUN(test_replay);
     TEST_RUN(test_bad_files);
+    TEST_RUN(test_turns);
     TEST_RUN(test_in_memory);
     unlink(path);
     return TEST_EXIT();

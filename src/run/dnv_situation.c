@@ -193,6 +193,55 @@ static fw_status own_ship(writer *w, const fw_scenario *s, fw_error *err)
     return st;
 }
 
+/* Does the track carry a turn (source_track.h)? */
+static bool has_turns(const fw_rec_track *tr)
+{
+    for (int k = 0; k < tr->n; k++)
+        if (tr->p[k].turn_rate > 0.0)
+            return true;
+    return false;
+}
+
+/* ", "turns": [[t_s, heading_deg, sog_kn, rate_degps, to_deg], ...]": the
+ * turn the track says the own ship saw its ship making (source_track.h), at
+ * every point of a turn and where one ends (rate 0: at constant velocity
+ * from then), with its heading and speed then: a waypoint's leg is a chord
+ * of the turn, at its mean speed. */
+static fw_status turns(writer *w, const fw_rec_track *tr, fw_error *err)
+{
+    fw_rec_point *p = malloc(sizeof *p * (size_t)tr->n);
+    if (!p)
+        return fw_fail(err, FW_ERUN, "out of memory");
+    memcpy(p, tr->p, sizeof *p * (size_t)tr->n);
+    qsort(p, (size_t)tr->n, sizeof *p, cmp_t);
+    fprintf(w->f, ", \"turns\": [");
+    for (int k = 0, m = 0; k < tr->n; k++) {
+        double r = p[k].turn_rate;
+        if (k > 0 && r == 0.0 && p[k - 1].turn_rate == 0.0)
+            continue;
+        fprintf(w->f, "%s[%.3f, %.6f, %.6f, %.6f, %.6f]", m++ ? ", " : "", p[k].t,
+                fw_heading_deg(p[k].course), fw_ms_to_kn(p[k].speed), fw_rad_to_deg(r),
+                r > 0.0 ? fw_heading_deg(p[k].turn_to) : 0.0);
+    }
+    fprintf(w->f, "]");
+    free(p);
+    return FW_OK;
+}
+
+/* fairway's own member of a target (header), when it needs one. */
+static fw_status target_fairway(writer *w, const fw_rec_track *tr, double appear, double vanish,
+                                double used, double tol, fw_error *err)
+{
+    fprintf(w->f, "      \"fairway\": {\"appearS\": %.3f", appear);
+    if (isfinite(vanish))
+        fprintf(w->f, ", \"vanishS\": %.3f", vanish);
+    if (used > tol)
+        fprintf(w->f, ", \"toleranceM\": %.17g", used);
+    fw_status st = has_turns(tr) ? turns(w, tr, err) : FW_OK;
+    fprintf(w->f, "}\n");
+    return st;
+}
+
 static fw_status targets(writer *w, const fw_scenario *s, const fw_rec_track *tracks, int n,
                          double tol, fw_error *err)
 {
@@ -204,7 +253,7 @@ static fw_status targets(writer *w, const fw_scenario *s, const fw_rec_track *tr
         double appear = 0.0, vanish = INFINITY, used = tol;
         if (!(st = track_points(&tracks[i], s->duration, tol, &p, &m, &appear, &vanish, &used,
                                 err))) {
-            bool more = appear > 0.0 || isfinite(vanish) || used > tol;
+            bool more = appear > 0.0 || isfinite(vanish) || used > tol || has_turns(&tracks[i]);
             fprintf(w->f, "%s\n    {\n", i ? "," : "");
             double c = atan2(p[1].east - p[0].east, p[1].north - p[0].north);
             double v = hypot(p[1].east - p[0].east, p[1].north - p[0].north) / (p[1].t - p[0].t);
@@ -212,14 +261,8 @@ static fw_status targets(writer *w, const fw_scenario *s, const fw_rec_track *tr
                 !(st = waypoints(w, p, m, err)))
                 static_data(w, i + 2, tracks[i].info.id, tracks[i].info.type,
                             tracks[i].info.length, tracks[i].info.breadth, more);
-            if (!st && more) {
-                fprintf(w->f, "      \"fairway\": {\"appearS\": %.3f", appear);
-                if (isfinite(vanish))
-                    fprintf(w->f, ", \"vanishS\": %.3f", vanish);
-                if (used > tol)
-                    fprintf(w->f, ", \"toleranceM\": %.17g", used);
-                fprintf(w->f, "}\n");
-            }
+            if (!st && more)
+                st = target_fairway(w, &tracks[i], appear, vanish, used, tol, err);
             fprintf(w->f, "    }");
         }
         free(p);

@@ -31,7 +31,14 @@
  * `"fairway": {"appearS": T0, "vanishS": T1}` (the schema allows more
  * members; scenario/scn_dnv.h reads it; other test benches will have the ship
  * there all the time); a track there to the end goes on along its last leg
- * to the scenario's duration (the reader extends it beyond).
+ * to the scenario's duration (the reader extends it beyond).  A track that
+ * carries the turns its ship was seen making (traffic/source_track.h: a ship
+ * the traffic steered, geom/turn.h) keeps them, at every point of a turn
+ * and where one ends, with the ship's heading and speed then (a leg is a
+ * chord of the turn, at its mean speed), in `"fairway": {"turns": [[T,
+ * HEADING_DEG, SOG_KN, RATE_DEGPS, TO_DEG], ...]}` (RATE 0: at constant
+ * velocity from T), so that the own ship read back expects of it what the
+ * run's did.
  *
  * Positions: a scenario with an origin is written in its plane's latitude
  * and longitude; one without (a network's plane) is placed with its (0, 0)

@@ -68,10 +68,13 @@ fw_status fw_records_open(fw_records **out, const fw_scenario *s, const char *di
                     "helm_deg,propeller_rps,mode%s\n", geo_cols);
     /* the turn a ship is seen making (geom/turn.h), where one may be: ships
      * the traffic steers (behaviour colregs, give_way course), tracks that
-     * carry their turns (traffic/source_track.h) */
+     * may carry their turns (traffic/source_track.h), a situation's targets
+     * that do (scenario/scn_dnv.h) */
     r->turns = (s->reactions.behaviour == FW_BEHAVIOUR_COLREGS &&
                 s->reactions.give_way == FW_GIVE_WAY_COURSE) ||
                s->tracks[0];
+    for (int i = 0; s->waypoint_targets && i < s->n_targets; i++)
+        r->turns |= s->target_routes[i].turns;
     if (r->tgt)
         fprintf(r->tgt, "t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,bearing_deg,"
                         "dcpa_m,tcpa_s,situation%s%s\n",

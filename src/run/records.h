@@ -174,7 +174,8 @@ void fw_records_sensed(fw_records *r, double t, const fw_target *known, int n_kn
  * FW_ERUN when the book cannot grow: a run never goes on missing a ship.
  * Its targets.csv row: t_s,id,east_m,north_m,heading_deg,speed_kn,range_m,
  * bearing_deg,dcpa_m,tcpa_s,situation, then, in a run whose ships may be
- * seen turning (traffic behaviour colregs with give_way course, or tracks),
+ * seen turning (traffic behaviour colregs with give_way course, tracks, or
+ * a situation's targets with turns),
  * turn_rate_degps,turn_to_deg: the turn the own ship saw it making at t
  * (geom/turn.h: its rate and the heading it turns to; both empty for a ship
  * at constant velocity), then lat_deg,lon_deg with an origin. */

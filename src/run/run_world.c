@@ -12,6 +12,7 @@
 #include "core/files.h"
 #include "core/units.h"
 #include "run/run_world.h"
+#include "scenario/scn_dnv.h"
 #include "traffic/source_mirror.h"
 #include "traffic/source_sumo.h"
 #include "traffic/source_track.h"
@@ -163,6 +164,40 @@ static bool push_point(fw_rec_track *tr, double t, double e, double n, double c,
     return true;
 }
 
+/* The turns a situation's target was seen making (scn_dnv.h) on its track
+ * (points in time order): a point at each turn's time, where the track puts
+ * the ship then, heading and at the speed the turn says (a leg is a chord
+ * of a turn, at its mean speed), and every point with the turn in force. */
+static bool add_turns(fw_rec_track *tr, const fw_scn_turn *u, int nu)
+{
+    int n = tr->n, m = 0, j = 0;
+    fw_rec_point *p = malloc(sizeof *p * (size_t)(n + nu));
+    double rate = 0.0, to = 0.0;
+    if (!p)
+        return false;
+    for (int k = 0; k < n; k++) {
+        const fw_rec_point *b = &tr->p[k], *a = k > 0 ? b - 1 : b;
+        double head = b->course, speed = b->speed;
+        for (; j < nu && u[j].t <= b->t; j++) {
+            rate = u[j].rate, to = u[j].to;
+            if (u[j].t == b->t)
+                head = u[j].heading, speed = u[j].speed;
+            if (k == 0 || u[j].t == b->t)
+                continue; /* before it appears, or on b */
+            double w = (u[j].t - a->t) / (b->t - a->t);
+            p[m++] = (fw_rec_point){.t = u[j].t, .east = a->east + w * (b->east - a->east),
+                                    .north = a->north + w * (b->north - a->north),
+                                    .course = u[j].heading, .speed = u[j].speed,
+                                    .turn_rate = rate, .turn_to = to};
+        }
+        p[m] = *b;
+        p[m].course = head, p[m].speed = speed, p[m].turn_rate = rate, p[m++].turn_to = to;
+    }
+    free(tr->p);
+    tr->p = p, tr->n = m, tr->cap = n + nu;
+    return true;
+}
+
 /* Targets following waypoints (scenario.h fw_scn_route, a DNV situation):
  * each a track through its waypoints from its appearance, straight at each
  * leg's speed, and on along its last leg past the run's end unless it
@@ -194,6 +229,15 @@ static fw_status waypoint_source(const fw_scenario *s, const fw_replay_def *td, 
         ok = ok && push_point(&tr[i], t, z->east, z->north, c, v) &&
              (after <= 0.0 || push_point(&tr[i], t + after / v, z->east + after * sin(c),
                                          z->north + after * cos(c), c, v));
+        fw_scn_turn *u = NULL;
+        int nu = 0;
+        fw_status st = ok && r->turns ? fw_scn_dnv_turns(s->file, i, &u, &nu, err) : FW_OK;
+        if (st) {
+            fw_rec_tracks_free(tr, s->n_targets);
+            return st;
+        }
+        ok = ok && (nu == 0 || add_turns(&tr[i], u, nu));
+        free(u);
     }
     if (!ok) {
         fw_rec_tracks_free(tr, s->n_targets);

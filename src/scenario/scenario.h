@@ -46,6 +46,9 @@ typedef struct fw_scn_route {
     /* s: it is at wp[0] at `appear` (0: from the start) and, when `vanish`
      * is finite, gone after its last waypoint (reached then) */
     double appear, vanish;
+    /* its situation gives the turns it was seen making (scn_dnv.h
+     * fw_scn_dnv_turns: read from the file when the run is made) */
+    bool turns;
     fw_scn_waypoint wp[FW_SCN_MAX_WAYPOINTS];
 } fw_scn_route;
 

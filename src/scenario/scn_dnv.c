@@ -217,7 +217,8 @@ static fw_status read_static(const fw_jnode *ship, dnv_ship *d, fw_error *err)
 }
 
 /* fairway's own members of a target (written by run/dnv_situation.h; the
- * schema allows more): fairway.appearS, fairway.vanishS, s. */
+ * schema allows more): fairway.appearS, fairway.vanishS, s; fairway.turns
+ * checked (scn_dnv_turns.c). */
 static fw_status read_fairway(const fw_jnode *ship, fw_scn_route *r, fw_error *err)
 {
     fw_jnode f;
@@ -228,7 +229,10 @@ static fw_status read_fairway(const fw_jnode *ship, fw_scn_route *r, fw_error *e
         (st = fw_jmember_number(&f, "appearS", false, 0, 86400, &r->appear, NULL, err)) ||
         (st = fw_jmember_number(&f, "vanishS", false, r->appear, 86400, &r->vanish, NULL, err)))
         return st;
-    return FW_OK;
+    int n = 0;
+    st = fw_scn_dnv_read_turns(&f, r->appear, NULL, &n, err);
+    r->turns = n > 0;
+    return st;
 }
 
 /* One ship: start, course and speed towards waypoint 1, waypoints, static. */

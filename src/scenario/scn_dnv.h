@@ -21,6 +21,13 @@
  *     current and the visibility, as scenario/scn_env.h's environment: (a
  *     speed needs its direction; waves and conditions are read past: no wave
  *     forces, said in run.log when a wave height is given)
+ *   fairway {appearS, vanishS, toleranceM, turns} of a target: fairway's own
+ *     (run/dnv_situation.h writes them): when it appears and is gone (s),
+ *     and the turns it was seen making, [[t_s, heading_deg, sog_kn,
+ *     rate_degps, to_deg], ...] in time order (its heading and speed at t,
+ *     and from t the rate it turns at until it heads to_deg; rate 0: at
+ *     constant velocity; geom/turn.h), checked here and read when the run
+ *     is made (fw_scn_dnv_turns)
  *   Other members (turnRadius, cross-track limits ...) are allowed by the
  *   schema and not used.
  *
@@ -52,6 +59,7 @@
 #include <stdbool.h>
 
 #include "core/error.h"
+#include "core/json_read.h"
 #include "scenario/scenario.h"
 
 /* The own ship's model when none is given. */
@@ -64,5 +72,23 @@ bool fw_scn_is_dnv(const char *path);
  * heap-allocate); ship: the own ship's model (a name or a ship file), NULL
  * for FW_DNV_DEFAULT_SHIP. */
 fw_status fw_scn_dnv_load(const char *path, const char *ship, fw_scenario *s, fw_error *err);
+
+/* One turn of a target: at t (s) it heads `heading` (rad) at `speed` (m/s)
+ * and from then on turns at rate (rad/s; 0: at constant velocity) until it
+ * heads `to` (rad). */
+typedef struct fw_scn_turn {
+    double t, heading, speed, rate, to;
+} fw_scn_turn;
+
+/* The turns of a target's fairway member (`fairway` its object, or absent):
+ * into out (malloc'd, NULL: only checked), *n of them; FW_EINPUT naming the
+ * JSON path of one that is not [t_s >= appear and after the one before,
+ * heading_deg 0..360, sog_kn 0..60, rate_degps 0..90, to_deg 0..360]. */
+fw_status fw_scn_dnv_read_turns(const fw_jnode *fairway, double appear, fw_scn_turn **out,
+                                int *n, fw_error *err);
+
+/* The turns of target i (0, 1, ... in $.targetShips) of the situation at
+ * path, read again (its route's `turns` says it has some). */
+fw_status fw_scn_dnv_turns(const char *path, int i, fw_scn_turn **out, int *n, fw_error *err);
 
 #endif

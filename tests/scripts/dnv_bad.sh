@@ -25,6 +25,10 @@ case("id_text", lambda s: s["targetShips"][0]["static"].update(id="two"))
 case("wind_no_dir", lambda s: s.update(environment={"windSpeed": 10}))
 case("wind_negative", lambda s: s.update(environment={"windSpeed": -1, "windDirection": 90}))
 case("visibility_0", lambda s: s.update(environment={"visibility": 0}))
+case("turn_short", lambda s: s["targetShips"][0].update(fairway={"turns": [[0, 90, 10, 0.5]]}))
+case("turn_order", lambda s: s["targetShips"][0].update(
+    fairway={"turns": [[5, 90, 10, 0.5, 120], [5, 90, 10, 0, 0]]}))
+case("turn_rate", lambda s: s["targetShips"][0].update(fairway={"turns": [[5, 90, 10, 95, 120]]}))
 open(f"{d}/invalid.json", "w").write('{"schemaVersion": "0.2.0", "ownShip": {\n  "static": }\n')
 with open(f"{d}/nested.json", "w") as f:  # 50 MB of nested arrays
     f.write("[" * (25 << 20) + "]" * (25 << 20))
@@ -53,6 +57,9 @@ check id_text '\$\.targetShips\[0\]\.static\.id: '
 check wind_no_dir '\$\.environment: a wind speed needs its direction'
 check wind_negative '\$\.environment\.windSpeed: -1 is not in'
 check visibility_0 '\$\.environment\.visibility: 0 is not in'
+check turn_short '\$\.targetShips\[0\]\.fairway\.turns\[0\]: 4 elements, at least 5 needed'
+check turn_order '\$\.targetShips\[0\]\.fairway\.turns\[1\]\[0\]: 5 s: not after the turn before \(5 s\)'
+check turn_rate '\$\.targetShips\[0\]\.fairway\.turns\[0\]\[3\]: 95 is not in \[0, 90\]'
 check invalid '\$: invalid JSON'
 check nested '\$: more than 8388608 bytes'
 check deep '\$: invalid JSON'
