@@ -15,6 +15,10 @@ if(FW_MPIRUN AND MPI_C_FOUND)
   # splitting's (cell, batch) estimates over the ranks, and resumed
   fw_script_test(sweep_mpi_split 0 "ok: splitting over MPI" sweep_mpi_split.sh)
   set_tests_properties(sweep_mpi_split PROPERTIES LABELS no_sanitize TIMEOUT 300)
+  # a full disk under mpirun stops the sweep and says so (issue 28 item 7; root: a tmpfs)
+  fw_script_test(sweep_full_mpi 0 "ok: a full disk stops an MPI sweep and says so" sweep_full_mpi.sh)
+  set_tests_properties(sweep_full_mpi PROPERTIES LABELS no_sanitize TIMEOUT 300
+                       SKIP_REGULAR_EXPRESSION "skipped: cannot mount")
 endif()
 
 fw_cli_test(cli_sweep_help 0 "usage: fairway sweep" sweep --help)

@@ -109,15 +109,19 @@ static fw_status work_dir(const fw_sweep_def *def, char *work, size_t n, fw_erro
  * space left on device" or "Disk quota exceeded", or too little is left
  * there): every run after it would fail the same way, so the sweep stops
  * with this message and the run is not recorded (a resume runs it). */
+bool fw_sweep_disk_low(const char *work)
+{
+    struct statvfs vf;
+    return work && statvfs(work, &vf) == 0 && (double)vf.f_bavail * (double)vf.f_frsize < 65536.0;
+}
+
 bool fw_sweep_disk_full(const fw_study *s, const fw_outcome *o, const char *work, int left,
                         fw_error *err)
 {
     if (strcmp(o->status, "ok") == 0)
         return false;
-    struct statvfs vf;
-    bool low = work && statvfs(work, &vf) == 0 &&
-               (double)vf.f_bavail * (double)vf.f_frsize < 65536.0;
-    if (!low && !strstr(o->reason, strerror(ENOSPC)) && !strstr(o->reason, strerror(EDQUOT)))
+    if (!fw_sweep_disk_low(work) && !strstr(o->reason, strerror(ENOSPC)) &&
+        !strstr(o->reason, strerror(EDQUOT)))
         return false;
     /* the reason without the work directory, which is removed as the sweep ends */
     char why[512] = "";

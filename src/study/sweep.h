@@ -87,6 +87,8 @@ bool fw_sweep_read(fw_child *c);
 void fw_sweep_collect(fw_child *c, fw_outcome *out);
 void fw_sweep_kill(fw_child *c);
 
+/* Has work, the work directory (NULL: not known), less than 64 kB left? */
+bool fw_sweep_disk_low(const char *work);
 /* Did run o fail on a full disk (its reason says so, or work, the work
  * directory, when not NULL, has less than 64 kB left)?  Then err says so,
  * with left, the runs not recorded after it (sweep.c). */

@@ -10,9 +10,11 @@
  * stop), RESULT the outcome's bytes, SPLIT an fw_split_msg.  With one rank
  * the sweep is local.  Built only when CMake finds MPI (FAIRWAY_MPI).
  */
+#include <errno.h>
 #include <stdlib.h>
 #include <time.h>
 #include <string.h>
+#include <sys/statvfs.h>
 
 #include "core/files.h"
 #include "study/store.h"
@@ -70,6 +72,44 @@ static void send_run(int rank, int run_id)
     MPI_Send(&run_id, 1, MPI_INT, rank, TAG_WORK, MPI_COMM_WORLD);
 }
 
+/* A run failed on this rank with its work directory's disk (almost) full
+ * but a reason that does not say so (a program that words it its own way):
+ * the reason gets the words rank 0 stops the sweep on (fw_sweep_disk_full,
+ * which looks at the work directory itself in a local sweep). */
+static void disk_says(fw_outcome *o, const char *work)
+{
+    const char *full = strerror(ENOSPC);
+    if (strcmp(o->status, "ok") == 0 || strstr(o->reason, full) ||
+        strstr(o->reason, strerror(EDQUOT)) || !fw_sweep_disk_low(work))
+        return;
+    size_t n = strlen(o->reason), room = sizeof o->reason - strlen(full) - 3;
+    snprintf(o->reason + (n < room ? n : room), sizeof o->reason - (n < room ? n : room), "; %s",
+             full);
+}
+
+/* Where the run's work directory was, from its reason (it names files in
+ * TMPDIR/fairway-sweep-XXXXXX/, or in --keep's directory): for the message of
+ * a full disk, which names it and leaves it out of the run's reason. */
+static const char *reason_workdir(const fw_sweep_def *def, const char *reason, char *out,
+                                  size_t n)
+{
+    if (def->keep_dir)
+        return def->keep_dir;
+    const char *m = strstr(reason, "/fairway-sweep-");
+    if (!m)
+        return NULL;
+    const char *b = m;
+    while (b > reason && b[-1] != ' ' && b[-1] != '(' && b[-1] != '\'')
+        b--;
+    const char *e = strchr(m + 1, '/');
+    size_t len = e ? (size_t)(e - b) : strcspn(b, " );'");
+    if (len + 1 > n)
+        return NULL;
+    memcpy(out, b, len);
+    out[len] = '\0';
+    return out;
+}
+
 /* Ranks 1..: run what rank 0 sends until it sends -1.  Without a work
  * directory (work "") every run is answered failed, saying why. */
 static void worker(const fw_sweep_def *def, const char *work, const char *why)
@@ -104,6 +144,7 @@ static void worker(const fw_sweep_def *def, const char *work, const char *why)
             while (!fw_sweep_read(&c))
                 ;
             fw_sweep_collect(&c, &o);
+            disk_says(&o, work);
         }
         unsigned char *buf = NULL;
         size_t n = 0;
@@ -148,9 +189,13 @@ static bool hand_out(work_list *wl, int rank, int *queued, int *busy)
     return true;
 }
 
-/* A result from a rank (tag RESULT or SPLIT) committed. */
+/* A result from a rank (tag RESULT or SPLIT) committed; once the sweep has
+ * stopped (stopped: an error), received and dropped, as the local sweep
+ * drops the runs it kills: the message's count of runs not recorded holds,
+ * and a resume runs them. */
 static fw_status take_result(const fw_sweep_def *def, fw_store *st, const MPI_Status *stt,
-                             int left, fw_progress *prog, fw_sweep_result *res, fw_error *err)
+                             int left, bool stopped, fw_progress *prog, fw_sweep_result *res,
+                             fw_error *err)
 {
     int n = 0;
     MPI_Get_count(stt, MPI_BYTE, &n);
@@ -158,6 +203,10 @@ static fw_status take_result(const fw_sweep_def *def, fw_store *st, const MPI_St
     if (!buf)
         MPI_Abort(MPI_COMM_WORLD, 1);
     MPI_Recv(buf, n, MPI_BYTE, stt->MPI_SOURCE, stt->MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (stopped) {
+        free(buf);
+        return FW_OK;
+    }
     if (stt->MPI_TAG == TAG_SPLIT) {
         fw_split_msg m;
         bool whole = n == (int)sizeof m;
@@ -176,8 +225,10 @@ static fw_status take_result(const fw_sweep_def *def, fw_store *st, const MPI_St
     if (!unpacked)
         return fw_fail(err, FW_ERUN, "rank %d: %s", stt->MPI_SOURCE, uerr.msg);
     /* a rank's disk full: stop, that run not recorded (its work directory is
-     * on the rank's host: the reason alone tells) */
-    fw_status r = fw_sweep_disk_full(def->study, &o, NULL, left, err)
+     * on the rank's host: the reason tells, disk_says) */
+    char wd[1024];
+    fw_status r = fw_sweep_disk_full(def->study, &o, reason_workdir(def, o.reason, wd, sizeof wd),
+                                     left, err)
                       ? FW_ERUN
                       : fw_store_commit(st, def->study, &o, err);
     if (!r)
@@ -213,7 +264,7 @@ static fw_status root(const fw_sweep_def *def, fw_store *st, work_list *wl, int 
         busy--;
         queued[rank]--;
         runs_out -= stt.MPI_TAG == TAG_RESULT;
-        fw_status tr = take_result(def, st, &stt, runs_out, prog, res, err);
+        fw_status tr = take_result(def, st, &stt, runs_out, r != FW_OK, prog, res, err);
         if (!r)
             r = tr;
         if (runs_out == 0 && prog) { /* the runs are all in: their last line */
@@ -251,9 +302,54 @@ static fw_status split_jobs(const fw_sweep_def *def, fw_store *st, int **items, 
     return r;
 }
 
+/* Bytes free on dir's disk; -1 when it cannot be told. */
+static double disk_free(const char *dir)
+{
+    struct statvfs vf;
+    return statvfs(dir, &vf) == 0 ? (double)vf.f_bavail * (double)vf.f_frsize : -1.0;
+}
+
+/* Before MPI_Init: Open MPI keeps its session files in TMPDIR (or
+ * OMPI_MCA_orte_tmpdir_base), where the ranks' work directories go too.
+ * With too little room there every rank's MPI_Init fails and mpirun then
+ * waits for ever (Open MPI 4.1.4, -np 3, a tmpfs as TMPDIR: 8 MB free fails,
+ * 12 MB runs); a rank that stops before MPI_Init lets mpirun end at once.
+ * So: under Open MPI less than 16 MB in its session directory, or less than
+ * 64 kB where the work directories go, stops every rank before MPI_Init
+ * (rank 0, told by the launcher's environment, says why). */
+static fw_status session_disk(const fw_sweep_def *def, bool *is_root, fw_error *err)
+{
+    const char *base = getenv("OMPI_MCA_orte_tmpdir_base");
+    const char *tmp = getenv("TMPDIR");
+    const char *work = def->keep_dir ? def->keep_dir : tmp && tmp[0] ? tmp : "/tmp";
+    const char *rank = getenv("OMPI_COMM_WORLD_RANK");
+    if (!rank)
+        rank = getenv("PMIX_RANK");
+    if (!rank)
+        rank = getenv("PMI_RANK");
+    *is_root = !rank || strcmp(rank, "0") == 0;
+    if (getenv("OMPI_COMM_WORLD_SIZE")) {
+        const char *sess = base && base[0] ? base : tmp && tmp[0] ? tmp : "/tmp";
+        double f = disk_free(sess);
+        if (f >= 0 && f < 16e6)
+            return fw_fail(err, FW_ERUN, "the disk of %s is full (%.0f kB left): Open MPI keeps "
+                           "its session files there and needs about 10 MB; nothing was run: free "
+                           "space (or set TMPDIR, or OMPI_MCA_orte_tmpdir_base, to a larger "
+                           "disk), then run the same command again", sess, f / 1024.0);
+    }
+    if (fw_sweep_disk_low(work))
+        return fw_fail(err, FW_ERUN, "the disk of the sweep's work directory in %s is full "
+                       "(less than 64 kB left); nothing was run: free space (or set TMPDIR, or "
+                       "--keep, to a larger disk), then run the same command again", work);
+    return FW_OK;
+}
+
 fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_root,
                        fw_error *err)
 {
+    memset(res, 0, sizeof *res);
+    if (session_disk(def, is_root, err))
+        return err->status;
     int argc = 0;
     char **argv = NULL;
     MPI_Init(&argc, &argv);
