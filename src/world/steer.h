@@ -52,9 +52,10 @@
  * as SUMO's ships do along a lane (networks/ships.add.xml: a gap of 200 m
  * plus 30 s at the leader's speed, closed or opened over a minute: it never
  * runs up on a lane-mate while off its lane or coming back); where it must
- * give way and no alteration clears, or at close quarters no turn gains, it
- * slows to 0.3 of its speed (rule 8(e); the reactive traffic's floor) for
- * the next 10 s, looked at again then.  Its speed orders change by at most
+ * give way and no alteration clears it slows to 0.3 of its speed (rule
+ * 8(e); the reactive traffic's floor), and at close quarters where no turn
+ * gains it takes the way off (down to steerage way), each for the next 10 s,
+ * looked at again then.  Its speed orders change by at most
  * the background types' 0.05 m/s^2 up and 0.1 m/s^2 down, never below 1 m/s
  * (steerage way), and it is given back at the speed it has.
  * Wind acts on it no more than on SUMO's ships (neither has windage); a
@@ -64,7 +65,7 @@
  * that the course it steers would pass within the passing distance in the
  * next 15 minutes makes it alter further to starboard, by the least of 20,
  * 25, ... 60 deg that passes every ship it sees at that distance (at most
- * 90 deg off its lane; none: it slows, below),
+ * 60 deg off its lane; none: it slows, below),
  * and it gives way to that ship from then on.  Ships going its way (courses
  * within 45 deg) never make it alter: one ahead it keeps its distance from
  * by speed (below), one astern is overtaking it and keeps clear (rule 13).
