@@ -44,3 +44,6 @@ set_tests_properties(sumo_timeout PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_S
 fw_script_test(tmp_leftovers 0 "ok: leftover temporaries removed, nothing else touched"
                tmp_leftovers.sh)
 set_tests_properties(tmp_leftovers PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR}")
+# fairway traffic writes outside an output only the files its help names (issue 28, Files)
+fw_script_test(traffic_files 0 "ok: traffic writes only what its help names" traffic_files.sh)
+set_tests_properties(traffic_files PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
