@@ -15,6 +15,11 @@ fw_test(test_traci_guard test_traci_guard.c)
 target_link_libraries(test_traci_guard PRIVATE fairway_traffic)
 set_tests_properties(test_traci_guard PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+# libsumo's remote control outlives neither a simulation nor a ship (a run after a run, fairway worst)
+fw_test(test_sumo_reopen test_sumo_reopen.c)
+target_link_libraries(test_sumo_reopen PRIVATE fairway_traffic)
+set_tests_properties(test_sumo_reopen PROPERTIES TIMEOUT 60
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 foreach(case embedded remote badnet noport dies)
   add_test(NAME test_traffic_${case} COMMAND test_traffic ${case})
   set_tests_properties(test_traffic_${case} PROPERTIES TIMEOUT 90

@@ -53,6 +53,27 @@ double g_radius = 0.0, g_cx = 0.0, g_cy = 0.0;
 // close after a failed init follows a dangling connection.
 bool g_open = false;
 
+// Moves wait for the step.  SUMO keeps every ship moved by moveToXY in a
+// table of its own (libsumo::Helper, keyed by id, holding the vehicle itself)
+// until the next step moves them, and neither closing the simulation nor
+// removing the ship clears it: a simulation closed after a move (a run's last
+// step, or a failed one) left the vehicle there, and the next simulation in
+// the process (fairway worst sails several) followed it at its first step
+// when a ship of that id was in it (a fill ship: SIGSEGV in
+// MSVehicle::Influencer::postProcessRemoteControl, tests/test_sumo_reopen.c);
+// a ship moved and then removed is looked for at the step.  So fairway hands SUMO its moves only in be_step, right before
+// SUMO's step, in the order they were made (the last for a ship wins, as in
+// SUMO), forgets those of a ship it removes, and drops them at close: no
+// sequence of calls leaves SUMO a move past its step.  Nothing reads a moved
+// ship before the step (SUMO moves it only there), so every run is as before.
+struct Move {
+    std::string id, edge;
+    int lane, keep_route;
+    double x, y, angle, match;
+    double prev_speed; // keepRoute 1 (a ship given back): its speed, set after the move
+};
+std::vector<Move> g_moves;
+
 #ifdef FW_LIBTRACI
 // A variable subscription result as double / string, whatever the back end
 // stored it as.
@@ -147,6 +168,7 @@ fw_status be_start(const char *const *argv, fw_error *err)
     for (int i = 0; argv[i]; i++)
         cmd.emplace_back(argv[i]);
     g_subscribed = false;
+    g_moves.clear();
     return guarded("cannot load the simulation", err, [&] {
         S::Simulation::start(cmd);
         g_open = true;
@@ -235,17 +257,25 @@ fw_status be_add_own(const char *id, double length, double width, const char *ed
     __asm__ __volatile__("" : : "r"(pad) : "memory"); // the memset is kept
 }
 
+void apply_move(const Move &m)
+{
+    if (m.keep_route == 2)
+        clear_stack_below();
+    S::Vehicle::moveToXY(m.id, m.edge, m.lane, m.x, m.y, m.angle, m.keep_route, m.match);
+    if (m.keep_route == 1)
+        S::Vehicle::setPreviousSpeed(m.id, m.prev_speed);
+}
+
 fw_status be_place(const char *id, double fx, double fy, double angle_deg, double cx, double cy,
                    fw_error *err)
 {
-    clear_stack_below();
     return guarded("cannot place the own ship", err, [&] {
         // keepRoute 2: exactly here, off the lanes if need be; never refused.
         // A match threshold of 1 mm keeps it off the lanes always: mapped onto
         // a lane, SUMO ships behind it took it for their leader and braked to
         // a stop (emergency braking, measured), which ships cannot do.  Off the
         // lanes they keep lane and speed, as the benchmark targets do.
-        S::Vehicle::moveToXY(id, "", -1, fx, fy, angle_deg, 2, 1e-3);
+        g_moves.push_back(Move{id, "", -1, 2, fx, fy, angle_deg, 1e-3, 0.0});
         S::POI::setPosition(kRangePoi, cx, cy);
         g_cx = cx;
         g_cy = cy;
@@ -309,8 +339,8 @@ fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, doub
             return;
         }
         // keepRoute 1: onto that lane of its route, where it is along it
-        S::Vehicle::moveToXY(id, rp.edgeID, rp.laneIndex, fx, fy, angle_deg, 1, max_off + 1.0);
-        S::Vehicle::setPreviousSpeed(id, speed);
+        g_moves.push_back(Move{id, rp.edgeID, rp.laneIndex, 1, fx, fy, angle_deg, max_off + 1.0,
+                               speed});
     });
     return gst ? gst : st;
 }
@@ -374,6 +404,9 @@ fw_status be_remove(const char *id, fw_error *err)
 {
     return guarded("cannot remove a ship", err, [&] {
         S::Vehicle::remove(id);
+        g_moves.erase(std::remove_if(g_moves.begin(), g_moves.end(),
+                                     [&](const Move &m) { return m.id == id; }),
+                      g_moves.end());
 #ifndef FW_LIBTRACI
         fw_range::forget(id);
 #endif
@@ -382,13 +415,23 @@ fw_status be_remove(const char *id, fw_error *err)
 
 fw_status be_step(double *time, fw_error *err)
 {
-    return guarded("step failed", err, [&] {
+    fw_status st = FW_OK;
+    for (const Move &m : g_moves) {
+        // a refused move still lets SUMO step, which empties its table
+        const std::string what = "cannot place ship '" + m.id + "'";
+        if ((st = guarded(what.c_str(), err, [&] { apply_move(m); })))
+            break;
+    }
+    g_moves.clear();
+    fw_error step_err = {};
+    fw_status sst = guarded("step failed", st ? &step_err : err, [&] {
         S::Simulation::step();
         *time = S::Simulation::getTime();
 #ifndef FW_LIBTRACI
         fw_range::stepped();
 #endif
     });
+    return st ? st : sst;
 }
 
 #ifdef FW_LIBTRACI
@@ -515,6 +558,7 @@ fw_status be_net(double box[4], char **ids, fw_error *err)
 
 void be_close(void)
 {
+    g_moves.clear(); // never given to SUMO (Moves wait for the step)
     g_subscribed = false;
     if (!g_open)
         return;
