@@ -156,6 +156,20 @@ static inline void own_velocity(const fw_own_state *own, double so, double co, d
         *ve += own->cur_e, *vn += own->cur_n;
 }
 
+/* Sample k of assess_path's loop: the target's offset in the domain's frame
+ * (x, y) and the grown axes (a, b); one place, so that the entry-only form
+ * below computes every sample it looks at to the same bits. */
+static inline void path_sample(const fw_domain_def *dom, const fw_own_state *own,
+                               const fw_target *t, double so, double co, double ve, double vn,
+                               double e, double n, double c, double tk, double *x, double *y,
+                               double *a, double *b)
+{
+    double rel = c - own->psi, fs, fc;
+    fw_domain_frame(dom, so, co, sin(c), cos(c), &fs, &fc);
+    fw_to_body(e - (own->east + ve * tk), n - (own->north + vn * tk), fs, fc, x, y);
+    fw_domain_axes(dom, t, cos(rel), sin(rel), a, b);
+}
+
 static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_state *own,
                         const fw_target *t, fw_assessment *as)
 {
@@ -170,10 +184,8 @@ static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_s
     double best = INFINITY, px = 0, py = 0, pa = 1, pb = 1;
     as->t_enter = INFINITY;
     for (int k = 0; k < ns; k++) {
-        double tk = k * kPathDt, x, y, a, b, rel = c[k] - own->psi, fs, fc;
-        fw_domain_frame(dom, so, co, sin(c[k]), cos(c[k]), &fs, &fc);
-        fw_to_body(e[k] - (own->east + ve * tk), n[k] - (own->north + vn * tk), fs, fc, &x, &y);
-        fw_domain_axes(dom, t, cos(rel), sin(rel), &a, &b);
+        double tk = k * kPathDt, x, y, a, b;
+        path_sample(dom, own, t, so, co, ve, vn, e[k], n[k], c[k], tk, &x, &y, &a, &b);
         double l2 = (x / a) * (x / a) + (y / b) * (y / b);
         if (k == 0 && l2 < 1.0)
             as->t_enter = 0.0;
@@ -200,6 +212,76 @@ static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_s
     as->min_lambda = sqrt(fmax(0.0, best));
 }
 
+/* assess_path for whether and when the target enters the domain alone
+ * (min_lambda NAN): the same t_enter to the bit, the samples and segments
+ * that cannot be within the domain skipped.  A segment's body-frame offsets
+ * x0, x1 have the lengths L0, L1 of the plane offsets (a rotation), and
+ * |x1 - x0| <= D = |p1 - p0| + |dtheta| L0 (dtheta: the frame's turn over
+ * the segment, 0 in the own ship's frame); on the segment |x| >= (L0 + L1 -
+ * D) / 2, and the (interpolated) axes are at most fw_domain_reach, so where
+ * that bound exceeds the reach the normalised radius stays above 1: no
+ * entry, no crossing.  Evaluated segments are assess_path's arithmetic. */
+static void assess_path_entry(const fw_domain_def *dom, double horizon, const fw_own_state *own,
+                              const fw_target *t, fw_assessment *as)
+{
+    enum { MAX_SAMPLES = 1024 };
+    int ns = (int)ceil(horizon / kPathDt) + 1;
+    if (ns > MAX_SAMPLES)
+        ns = MAX_SAMPLES;
+    double e[MAX_SAMPLES], n[MAX_SAMPLES], c[MAX_SAMPLES];
+    fw_target_path(t, kPathDt, ns, e, n, c);
+    double so = sin(own->psi), co = cos(own->psi), ve, vn;
+    own_velocity(own, so, co, &ve, &vn);
+    bool turning_frame = dom->reading == FW_DOMAIN_TRANSVERSE;
+    /* a margin far above the rounding of the bound's terms */
+    double reach = fw_domain_reach(dom, t) * (1.0 + 1e-9) + 1e-6;
+    as->t_enter = INFINITY;
+    as->min_lambda = NAN;
+    double px = 0, py = 0, pa = 1, pb = 1, pdx = 0, pdy = 0, pL = 0;
+    int have = -1; /* the sample px .. pb hold */
+    for (int k = 0; k < ns; k++) {
+        double tk = k * kPathDt;
+        double dx = e[k] - (own->east + ve * tk), dy = n[k] - (own->north + vn * tk);
+        double L = sqrt(dx * dx + dy * dy);
+        bool near = L <= reach;
+        if (k > 0 && !near) {
+            double turn = turning_frame ? fabs(fw_wrap_pi(c[k] - c[k - 1])) : 0.0;
+            double sx = dx - pdx, sy = dy - pdy, D = sqrt(sx * sx + sy * sy) + turn * pL;
+            near = 0.5 * (pL + L - D) <= reach;
+        }
+        if (near) {
+            if (k > 0 && have != k - 1)
+                path_sample(dom, own, t, so, co, ve, vn, e[k - 1], n[k - 1], c[k - 1],
+                            (k - 1) * kPathDt, &px, &py, &pa, &pb);
+            double x, y, a, b;
+            path_sample(dom, own, t, so, co, ve, vn, e[k], n[k], c[k], tk, &x, &y, &a, &b);
+            double l2 = (x / a) * (x / a) + (y / b) * (y / b);
+            if (k == 0 && l2 < 1.0) {
+                as->t_enter = 0.0;
+                return;
+            }
+            if (k > 0) {
+                double ma = 0.5 * (pa + a), mb = 0.5 * (pb + b);
+                double sx = x - px, sy = y - py;
+                double A = (sx / ma) * (sx / ma) + (sy / mb) * (sy / mb);
+                double B = 2.0 * (px * sx / (ma * ma) + py * sy / (mb * mb));
+                double C = (px / ma) * (px / ma) + (py / mb) * (py / mb);
+                double disc = B * B - 4.0 * A * (C - 1.0);
+                if (C >= 1.0 && A > 0.0 && disc >= 0.0) {
+                    double se = (-B - sqrt(disc)) / (2.0 * A);
+                    if (se >= 0.0 && se <= 1.0) {
+                        as->t_enter = (k - 1 + se) * kPathDt;
+                        return;
+                    }
+                }
+            }
+            px = x, py = y, pa = a, pb = b;
+            have = k;
+        }
+        pdx = dx, pdy = dy, pL = L;
+    }
+}
+
 /* When |d + v t| first falls to R (0 if it is within R now or R is 0,
  * INFINITY if it never does). */
 static double time_to_range(double dx, double dy, double vx, double vy, double R)
@@ -213,9 +295,9 @@ static double time_to_range(double dx, double dy, double vx, double vy, double R
     return (-B - sqrt(disc)) / (2.0 * A);
 }
 
-void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
-               const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
-               int *order)
+static void assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
+                   const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
+                   int *order, bool lambda)
 {
     double so = sin(own->psi), co = cos(own->psi);
     for (int i = 0; i < n; i++) {
@@ -236,7 +318,10 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
         as->rule19 = fw_not_in_sight(cdef, as->range);
         as->rank = 0;
         if (t[i].pred) {
-            assess_path(dom, horizon, own, &t[i], as);
+            if (lambda)
+                assess_path(dom, horizon, own, &t[i], as);
+            else
+                assess_path_entry(dom, horizon, own, &t[i], as);
             as->enters_domain = isfinite(as->t_enter);
             continue;
         }
@@ -279,6 +364,19 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
         for (int i = 0; i < n; i++)
             out[order[i]].rank = i;
     }
+}
+
+void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
+               const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
+               int *order)
+{
+    assess(cdef, dom, horizon, own, t, n, out, order, true);
+}
+
+void fw_assess_entries(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
+                       const fw_own_state *own, const fw_target *t, int n, fw_assessment *out)
+{
+    assess(cdef, dom, horizon, own, t, n, out, NULL, false);
 }
 
 double fw_fog_signal_range(double length)

@@ -114,4 +114,13 @@ void fw_assess(const fw_colregs_def *cdef, const fw_domain_def *dom, double hori
                const fw_own_state *own, const fw_target *t, int n, fw_assessment *out,
                int *order);
 
+/* fw_assess without ranks, for a reader that needs of a target with a
+ * predictor only whether and when it enters the domain (enters_domain and
+ * t_enter, to the bit fw_assess's): its min_lambda is NAN, and the parts of
+ * its path that cannot be within the domain are not looked at (the run's
+ * records of the truth, whose predicted paths are the costly part).  Every
+ * other field as fw_assess's. */
+void fw_assess_entries(const fw_colregs_def *cdef, const fw_domain_def *dom, double horizon,
+                       const fw_own_state *own, const fw_target *t, int n, fw_assessment *out);
+
 #endif

@@ -305,8 +305,10 @@ static fw_status assessments(fw_run *R, const fw_target *tg, int n, const fw_ass
     fw_colregs_def colregs = h->colregs;
     if (colregs.rank_range_m <= 0.0)
         colregs.rank_range_m = R->s->policy.act_range; /* as the policy (policy.c) */
-    fw_assess(&colregs, &h->domain, h->track.horizon, fw_vessel_own_state(R->own), tg, n, R->as,
-              NULL);
+    /* the records read of a predicted path only its domain entry (book.c,
+     * dnv_out.c): the entry-only form skips what cannot enter */
+    fw_assess_entries(&colregs, &h->domain, h->track.horizon, fw_vessel_own_state(R->own), tg, n,
+                      R->as);
     *as = R->as;
     return FW_OK;
 }

@@ -387,6 +387,7 @@ fw_status fw_traffic_open(const fw_traffic_def *def, fw_traffic **out, fw_error 
     if (def->near_radius > 0.0)
         t->query_radius = fmax(t->query_radius, def->near_radius + FW_TRAFFIC_HALF_LENGTH_MAX);
     t->ctx_step = -1;
+    t->near_step = -1;
     if ((st = t->be->add_own(t->own_id, def->own_length, def->own_width, def->own_edge,
                              t->query_radius, err))) {
         fw_traffic_close(t);

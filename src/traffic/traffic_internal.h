@@ -43,6 +43,11 @@ struct fw_traffic {
     int area_cap;
     fw_target *near;
     int near_cap;
+    /* near[0..near_n-1] is the nearby query of context step near_step about
+     * (near_x, near_y) (-1: none): asked again unchanged, it is that */
+    long near_step;
+    int near_n;
+    double near_x, near_y;
     fw_target *conv;       /* the context results converted (and motion followed) */
     int conv_cap;
     /* the hull centre of every ship at its last context step, by id: its

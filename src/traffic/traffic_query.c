@@ -8,6 +8,7 @@
 
 #include "core/mem.h"
 #include "core/units.h"
+#include "core/within.h"
 #include "traffic/traffic_internal.h"
 
 /* Raw SUMO values to fairway's frame: the one place this happens; sh, ch
@@ -272,7 +273,7 @@ fw_status fw_traffic_around(fw_traffic *t, const fw_target **ships, int *n, fw_e
     int m = 0;
     for (int i = 0; i < t->ctx.n; i++) {
         const fw_sumo_raw *r = &t->ctx.v[i];
-        if (filter && hypot(r->x - t->own_x, r->y - t->own_y) > t->def.radius)
+        if (filter && !fw_within_range(r->x - t->own_x, r->y - t->own_y, t->def.radius))
             continue;
         t->ships[m++] = t->conv[i];
     }
@@ -339,7 +340,7 @@ static int within(fw_traffic *t, const char *what, double radius, fw_target **bu
     int m = 0;
     for (int i = 0; i < t->ctx.n; i++) {
         const fw_target *s = &t->conv[i];
-        if (!s->own && hypot(s->east - t->own_x, s->north - t->own_y) <= radius)
+        if (!s->own && fw_within_range(s->east - t->own_x, s->north - t->own_y, radius))
             (*buf)[m++] = *s;
     }
     return m;
@@ -374,10 +375,21 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
 fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {
     *n = 0;
+    /* every ship fairway steers asks it each step: the same context, the
+     * same centre, the same answer (within and sort_by_id depend on nothing
+     * else) */
+    if (t->near_step >= 0 && t->near_step == t->ctx_step && t->ctx_step == t->steps &&
+        t->near_x == t->own_x && t->near_y == t->own_y && !fw_traffic_alive(t, err)) {
+        *ships = t->near;
+        *n = t->near_n;
+        return FW_OK;
+    }
     int m = within(t, "nearby", t->def.near_radius, &t->near, &t->near_cap, err);
     if (m < 0)
         return err->status;
     sort_by_id(t->near, m);
+    t->near_step = t->ctx_step, t->near_n = m;
+    t->near_x = t->own_x, t->near_y = t->own_y;
     *ships = t->near;
     *n = m;
     return FW_OK;

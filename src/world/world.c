@@ -11,6 +11,7 @@
 #include "core/mem.h"
 #include "core/streams.h"
 #include "core/units.h"
+#include "core/within.h"
 #include "world/steer.h"
 #include "world/vessel_internal.h"
 
@@ -377,7 +378,7 @@ static fw_status sense_source(fw_world *w, fw_vessel *v, int *n, fw_error *err)
     if (!st)
         st = fw_vessel_reserve(v, m + w->nv, err);
     for (int j = 0; !st && j < m; j++)
-        if (ops->within || hypot(src[j].east - e, src[j].north - no) <= r)
+        if (ops->within || fw_within_range(src[j].east - e, src[j].north - no, r))
             v->view[(*n)++] = src[j];
     return st;
 }
@@ -418,7 +419,8 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
     for (int j = 0; j < w->n_slots; j++) {
         const fw_vessel *o = w->slots[j].v;
         if (j == i || !o ||
-            hypot(o->record.east - v->record.east, o->record.north - v->record.north) > v->radius)
+            !fw_within_range(o->record.east - v->record.east, o->record.north - v->record.north,
+                             v->radius))
             continue;
         v->view[n++] = o->record;
         extra = true;
