@@ -45,6 +45,8 @@ static fw_status fixed_decide(fw_controller *c, const fw_sense *in, fw_decision 
     /* kp 1, kd 20 s: the policy's autopilot (policy.h) */
     double helm = in->t >= h->t_helm ? h->helm
                                      : -(in->own->psi - h->psi0) - 20.0 * in->own->r;
+    if (in->t < h->t_helm && in->own->delta_wind != 0.0)
+        helm += in->own->delta_wind; /* as the policy's: holding against the wind */
     *d = (fw_decision){.mode = FW_MODE_AVOID, .helm = helm, .primary = -1};
     return FW_OK;
 }
@@ -177,10 +179,72 @@ static void test_crossing_cpa_in_current(void)
     fw_world_destroy(w);
 }
 
+/* The own ship holding its heading (the policy's autopilot) in a steady
+ * beam wind, settled for 10 minutes: the prediction the policy makes of it
+ * holding on (fw_track_predict_steer, as policy.c's steer) against what it
+ * then sails, over the next 10 minutes; with the steady drift in its state
+ * (world/vessel.h "Wind drift") and without (current 0, the drift angle the
+ * ship's own): the largest error, m. */
+static void drift_vs_mmg(double wind_kn, double from_deg, bool ignore, double *e300,
+                         double *e600)
+{
+    fw_error err = {0};
+    fw_world_def wd = fw_default_world_def();
+    wd.env.wind = (fw_wind){.kind = FW_FIELD_UNIFORM, .speed = fw_kn_to_ms(wind_kn),
+                            .from = fw_deg_to_rad(from_deg)};
+    fw_world *w = NULL;
+    CHECK_MSG(fw_world_create(&wd, &w, &err) == FW_OK, "%s", err.msg);
+    fw_vessel *v = add(w, "own", 0.0, 0.0, 0.0, 12.0, INFINITY, 0.0, FW_ROLE_OWN);
+    CHECK_MSG(fw_world_start(w, &err) == FW_OK, "%s", err.msg);
+    for (int k = 1; k <= 600; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    fw_own_state s = *fw_vessel_own_state(v);
+    if (ignore) {
+        const fw_mmg_state *x = fw_vessel_motion(v);
+        s.cur_e = s.cur_n = 0.0, s.beta = atan2(-x->vm, x->u);
+        s.U0 = fw_kn_to_ms(12.0), s.delta_wind = 0.0;
+    }
+    fw_track_def td = fw_default_track_def();
+    fw_steer_def ap = {.psi_ref = 0.0, .kp = 1.0, .kd = 20.0, .max_helm = fw_deg_to_rad(35.0)};
+    fw_track tr;
+    CHECK(fw_track_alloc(&tr, fw_track_samples(&td), &err) == FW_OK);
+    CHECK(fw_track_predict_steer(&mmg, &td, &s, &ap, &tr, &err) == FW_OK);
+    *e300 = *e600 = 0.0;
+    for (int k = 1; k <= 600; k++) {
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+        if (k % 5)
+            continue;
+        const fw_mmg_state *x = fw_vessel_motion(v);
+        double off = hypot(x->east - tr.east[k / 5], x->north - tr.north[k / 5]);
+        if (k <= 300)
+            *e300 = fmax(*e300, off);
+        *e600 = fmax(*e600, off);
+    }
+    fw_track_free(&tr);
+    fw_world_destroy(w);
+}
+
+static void test_wind_drift_prediction(void)
+{
+    const double cases[][2] = {{30.0, 90.0}, {30.0, 270.0}, {20.0, 90.0}, {30.0, 45.0}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double e300, e600, i300, i600;
+        drift_vs_mmg(cases[i][0], cases[i][1], false, &e300, &e600);
+        drift_vs_mmg(cases[i][0], cases[i][1], true, &i300, &i600);
+        printf("  c3-mmg at 12 kn heading 000, wind %2.0f kn from %03.0f: the prediction off "
+               "the MMG ship by %.1f m at 5 min, %.1f m at 10 min (without the wind drift "
+               "%.1f m, %.1f m)\n",
+               cases[i][0], cases[i][1], e300, e600, i300, i600);
+        CHECK(e300 < 10.0 && e600 < 10.0);
+        CHECK(i600 > 3.0 * e600 && i600 > 50.0);
+    }
+}
+
 int main(void)
 {
     mmg = test_load_ship("c3-mmg");
     TEST_RUN(test_prediction_is_ground_track);
     TEST_RUN(test_crossing_cpa_in_current);
+    TEST_RUN(test_wind_drift_prediction);
     return TEST_EXIT();
 }

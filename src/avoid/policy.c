@@ -286,6 +286,8 @@ static double autopilot(const fw_policy *p, const fw_own_state *own, double psi)
     if (p->def.band_xte > 0.0 && p->def.route.n > 0 && fabs(p->dev) > 0.5 * M_PI)
         e = p->dev - fw_wrap_pi(psi - p->psi_ref);
     double h = -p->def.ap_kp * e - p->def.ap_kd * own->r;
+    if (own->delta_wind != 0.0)
+        h += own->delta_wind; /* the rudder that holds the heading in the wind (track.h) */
     return fmax(-p->def.ap_max_helm, fmin(p->def.ap_max_helm, h));
 }
 

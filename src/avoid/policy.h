@@ -145,7 +145,9 @@ typedef struct fw_policy_def {
                                   default study) */
     double blocked_time;       /* s, 120: a return blocked this long in STEADY ... */
     double reopen_step;        /* rad, 30 deg: ... alters this much further away */
-    /* heading autopilot: helm = -kp * error - kd * r, limited to ap_max_helm.
+    /* heading autopilot: helm = -kp * error - kd * r (+ the own state's
+     * delta_wind in a wind, nomoto/track.h: the rudder that holds the
+     * heading there), limited to ap_max_helm.
      * kp 1 deg per deg and kd 20 s: with the C-3's 10 kn indices (K 0.013 1/s,
      * dominant lag T1 21 s, T2 and T3 nearly cancelling) the closed loop
      * 21 s^2 + (1 + K kd) s + K kp has damping 1.2 and a 4 min time constant. */

@@ -168,3 +168,66 @@ fw_mmg_state fw_mmg_straight(double U, double east, double north, double psi)
                       .delta = 0.0};
     return s;
 }
+
+/* Forces' residual of straight running: udot, vdot, rdot at r = 0 with the
+ * wind's forces at that state. */
+static void steady_residual(const fw_ship *s, const fw_mmg_state *x, double n, double ce,
+                            double cn, double speed, double from, double out[3])
+{
+    double ext[3], d[6];
+    fw_mmg_wind(s, x, ce, cn, speed, from, ext);
+    fw_mmg_derivs_ext(s, x, n, ext, d);
+    out[0] = d[0], out[1] = d[1], out[2] = d[2];
+}
+
+/* The 3 x 3 system J dx = -F by Cramer's rule; false when J is singular. */
+static bool solve3(const double J[3][3], const double F[3], double dx[3])
+{
+    double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+                 J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                 J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+    if (!(fabs(det) > 0.0) || !isfinite(det))
+        return false;
+    for (int c = 0; c < 3; c++) {
+        double M[3][3];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                M[i][j] = j == c ? -F[i] : J[i][j];
+        dx[c] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
+                 M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                 M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
+                det;
+    }
+    return true;
+}
+
+fw_status fw_mmg_steady_wind(const fw_ship *s, double n, double ce, double cn, double speed,
+                             double from, fw_mmg_state *x, fw_error *err)
+{
+    /* Newton's method with a forward-difference Jacobian in (u, vm, delta) */
+    const double h[3] = {1e-5, 1e-5, 1e-6};
+    x->r = 0.0;
+    for (int it = 0; it < 40; it++) {
+        double F[3], J[3][3], dx[3];
+        steady_residual(s, x, n, ce, cn, speed, from, F);
+        for (int j = 0; j < 3; j++) {
+            fw_mmg_state y = *x;
+            double *p = j == 0 ? &y.u : j == 1 ? &y.vm : &y.delta, G[3];
+            *p += h[j];
+            steady_residual(s, &y, n, ce, cn, speed, from, G);
+            for (int i = 0; i < 3; i++)
+                J[i][j] = (G[i] - F[i]) / h[j];
+        }
+        if (!solve3(J, F, dx))
+            break;
+        x->u += dx[0], x->vm += dx[1], x->delta += dx[2];
+        if (fabs(dx[0]) < 1e-9 && fabs(dx[1]) < 1e-9 && fabs(dx[2]) < 1e-10) {
+            if (fabs(x->delta) > s->rudder_max)
+                return fw_fail(err, FW_ERUN,
+                               "%s: holding the heading in this wind needs %.1f deg of rudder",
+                               s->name, fw_rad_to_deg(x->delta));
+            return FW_OK;
+        }
+    }
+    return fw_fail(err, FW_ERUN, "%s: no steady straight running found in this wind", s->name);
+}

@@ -58,6 +58,17 @@ void fw_mmg_derivs_ext(const fw_ship *ship, const fw_mmg_state *s, double n, con
 void fw_mmg_wind(const fw_ship *ship, const fw_mmg_state *s, double ce, double cn, double speed,
                  double from, double out[3]);
 
+/* Straight, steady running in a steady wind (speed m/s from `from`, rad)
+ * and a uniform current (ce, cn m/s east, north) on heading x->psi at
+ * propeller speed n: the surge x->u, sway x->vm and rudder angle x->delta
+ * (r = 0) at which the hull's, propeller's, rudder's and the wind's forces
+ * and moment balance, by Newton's method from x's u, vm and delta.  The
+ * ship's leeway: it holds its heading with that rudder and moves through
+ * the water at vm sideways.  FW_ERUN when Newton's method does not settle
+ * (to 1e-9 m/s) or the rudder needed is beyond the ship's. */
+fw_status fw_mmg_steady_wind(const fw_ship *s, double n, double ce, double cn, double speed,
+                             double from, fw_mmg_state *x, fw_error *err);
+
 /* Propeller speed (rev/s) that balances surge in straight running at U (m/s):
  * X_H(U, 0, 0) + X_P = 0.  Fails (FW_ERUN) if no positive solution exists. */
 fw_status fw_mmg_propeller_for_speed(const fw_ship *ship, double U, double *n, fw_error *err);

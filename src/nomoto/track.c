@@ -199,6 +199,7 @@ fw_status fw_track_start_from(const fw_ship *ship, const fw_track_def *def,
     g->in_piece = false;
     g->have_E = false;
     g->r0 = s->r, g->v0 = s->rdot, g->turned0 = 0.0;
+    g->dw = s->delta_wind;
     g->prev_turn = 0.0;
     g->steadied = false;
     start_state(g, ship, kb, s, def->dt, origin);
@@ -254,7 +255,9 @@ static void piece_enter(fw_track_gen *g)
     int p = g->p;
     fw_track_piece *q = &g->q;
     q->t_end = p < 2 ? g->piece_start[p + 1] : INFINITY;
-    fw_nomoto_piece_init(&q->pc, &g->ix, g->piece_delta0[p], g->piece_rho[p], g->r0, g->v0);
+    /* the rudder beyond the wind's (0 in still air: the same bits) */
+    fw_nomoto_piece_init(&q->pc, &g->ix, g->piece_delta0[p] - g->dw, g->piece_rho[p], g->r0,
+                         g->v0);
     if (g->k * g->dt < q->t_end) {
         /* Samples in this piece by recurrence: with E = exp(-dt/T),
          * e2(tau + dt) = E2 e2(tau) and phi(tau + dt) = E1 phi(tau) + e2(tau) phi(dt),
@@ -453,8 +456,10 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
     for (int k = 0; k < n; k++) {
         if (k > 0)
             for (int j = 0; j < sub; j++) {
-                double order = clamp_order(-ap->kp * fw_wrap_pi(psi - ap->psi_ref) - ap->kd * r,
-                                           hmax);
+                double order = -ap->kp * fw_wrap_pi(psi - ap->psi_ref) - ap->kd * r;
+                if (s->delta_wind != 0.0)
+                    order += s->delta_wind; /* the policy's autopilot holds against the wind */
+                order = clamp_order(order, hmax);
                 int deg = whole_degrees(fw_rad_to_deg(fabs(order)), NDEG - 1);
                 int side = order < 0.0 && ship->nomoto_port.present;
                 if (!have[side][deg]) {
@@ -471,13 +476,13 @@ fw_status fw_track_predict_steer(const fw_ship *ship, const fw_track_def *def,
                 double psi0 = psi, turned;
                 fw_nomoto_piece pc;
                 if (ramp > 0.0) {
-                    fw_nomoto_piece_init(&pc, ix, delta, rho, r, v);
+                    fw_nomoto_piece_init(&pc, ix, delta - s->delta_wind, rho, r, v);
                     piece_eval(&pc, ramp, &r, &v, &turned);
                     psi += turned;
                     delta += rho * ramp;
                 }
                 if (h - ramp > 0.0) {
-                    fw_nomoto_piece_init(&pc, ix, delta, 0.0, r, v);
+                    fw_nomoto_piece_init(&pc, ix, delta - s->delta_wind, 0.0, r, v);
                     piece_eval(&pc, h - ramp, &r, &v, &turned);
                     psi += turned;
                 }

@@ -35,6 +35,10 @@ typedef struct fw_own_state {
      * predicted track is the track through the water plus current x t, the
      * exact ground track in a uniform steady current (dynamics/stepper.h) */
     double cur_e, cur_n;
+    /* rad: the rudder angle that holds the heading in the steady wind the
+     * ship knows (world/vessel.h "Wind drift"; 0: still air): the Nomoto
+     * model, which has no wind, turns by the rudder beyond it */
+    double delta_wind;
 } fw_own_state;
 
 typedef struct fw_track_def {
@@ -101,6 +105,7 @@ typedef struct fw_track_gen { /* the predictor's state between extensions */
     bool in_piece, steadied;
     bool have_E;              /* q's one-step factors made (the same in every piece) */
     double r0, v0, turned0;   /* at the start of piece p */
+    double dw;                /* the own state's delta_wind */
     double sn, cs, prev_turn; /* heading at sample k - 1 */
 } fw_track_gen;
 
@@ -126,7 +131,8 @@ fw_status fw_track_start_from(const fw_ship *ship, const fw_track_def *def,
                               fw_track_gen *g, fw_track_origin origin[2], fw_error *err);
 void fw_track_extend(fw_track_gen *g, fw_track *out, int kmax);
 
-/* A heading autopilot: helm = -kp (psi - psi_ref) - kd r, within +-max_helm. */
+/* A heading autopilot: helm = -kp (psi - psi_ref) - kd r, within +-max_helm
+ * (plus the own state's delta_wind in a wind, as the policy's). */
 typedef struct fw_steer_def {
     double psi_ref;   /* rad */
     double kp;        /* rad of helm per rad of heading error */

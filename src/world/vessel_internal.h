@@ -24,6 +24,14 @@ struct fw_vessel {
     bool advanced;             /* rdot is known once it has advanced */
     fw_track one;              /* Nomoto: one step of the predicted track */
     fw_own_state nom;          /* Nomoto: the state */
+    /* MMG with windage in a wind: the steady leeway of straight running on
+     * the heading psi at propeller n in the current (ce, cn) (x: u, vm,
+     * delta; ok: found), made again when any of them has moved (vessel.c) */
+    struct {
+        bool valid, ok;
+        double psi, n, ce, cn;
+        fw_mmg_state x;
+    } drift;
     /* what the others and the controller see */
     fw_mmg_state motion;
     fw_own_state own;
