@@ -49,7 +49,21 @@
  *            ship's lapse, the most the source allows it.  No figure for fog
  *            (Fujii and Mizuki's factors of 2 and 8 are on an area's yearly
  *            rate by how often visibility is below 1 km, not per encounter).
- *   detect, delay, late, late_range: no published figure found; the user's.
+ *   detect, delay, late, late_range: no source.  The shared reference
+ *            (the files of ../shared/reference) has IWRAP's causation factors and
+ *            nothing on a watchkeeper's times or late ranges, and searches of
+ *            the pages, docs and issues corpora (OOW detection and decision
+ *            times, bridge-simulator human-error studies) found abstracts
+ *            without figures.  Their defaults, 0 (detected and decided at
+ *            once, never late), are therefore not data but an assumption,
+ *            stated as one: the flawless watch fairway had before, kept
+ *            because any other value would be a guess that moves the results
+ *            (and the issue's floor asks the defaults to reproduce main), not
+ *            because a real watch is that quick.  A study that wants them
+ *            sets them and sweeps them as axes (traffic.watch.detect_s ...).
+ *            The lapse's IWRAP factor counts the failures to act at all;
+ *            slow detection is part of what it summarises, so a study that
+ *            adds detect_s on top of it counts some failures twice.
  * scenarios/studies/dover-imperfect.yaml uses the crossing lapse.  Draws come from the acting
  * ship's stream (FW_PURPOSE_WATCH, key rng.h fw_rng_vessel_key of its id),
  * so splitting re-keys them and a replication draws the same lapses in every
