@@ -170,17 +170,43 @@ static inline void path_sample(const fw_domain_def *dom, const fw_own_state *own
     fw_domain_axes(dom, t, cos(rel), sin(rel), a, b);
 }
 
+/* A target's path over the horizon and the own ship's straight course. */
+enum { MAX_SAMPLES = 1024 };
+typedef struct path_in {
+    int ns;
+    double e[MAX_SAMPLES], n[MAX_SAMPLES], c[MAX_SAMPLES];
+    double so, co, ve, vn; /* the own heading's sine, cosine; its velocity */
+} path_in;
+
+static void path_begin(double horizon, const fw_own_state *own, const fw_target *t, path_in *p)
+{
+    p->ns = (int)ceil(horizon / kPathDt) + 1;
+    if (p->ns > MAX_SAMPLES)
+        p->ns = MAX_SAMPLES;
+    fw_target_path(t, kPathDt, p->ns, p->e, p->n, p->c);
+    p->so = sin(own->psi), p->co = cos(own->psi);
+    own_velocity(own, p->so, p->co, &p->ve, &p->vn);
+}
+
+/* The segment from (px, py) (axes pa, pb) to (x, y) (a, b): lambda^2 along
+ * it, with the axes' mean, is C + s B + s^2 A for s in [0, 1]. */
+static inline void segment(double px, double py, double pa, double pb, double x, double y,
+                           double a, double b, double *A, double *B, double *C)
+{
+    double ma = 0.5 * (pa + a), mb = 0.5 * (pb + b);
+    double dx = x - px, dy = y - py;
+    *A = (dx / ma) * (dx / ma) + (dy / mb) * (dy / mb);
+    *B = 2.0 * (px * dx / (ma * ma) + py * dy / (mb * mb));
+    *C = (px / ma) * (px / ma) + (py / mb) * (py / mb);
+}
+
 static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_state *own,
                         const fw_target *t, fw_assessment *as)
 {
-    enum { MAX_SAMPLES = 1024 };
-    int ns = (int)ceil(horizon / kPathDt) + 1;
-    if (ns > MAX_SAMPLES)
-        ns = MAX_SAMPLES;
-    double e[MAX_SAMPLES], n[MAX_SAMPLES], c[MAX_SAMPLES];
-    fw_target_path(t, kPathDt, ns, e, n, c);
-    double so = sin(own->psi), co = cos(own->psi), ve, vn;
-    own_velocity(own, so, co, &ve, &vn);
+    path_in P;
+    path_begin(horizon, own, t, &P);
+    const int ns = P.ns;
+    const double *e = P.e, *n = P.n, *c = P.c, so = P.so, co = P.co, ve = P.ve, vn = P.vn;
     double best = INFINITY, px = 0, py = 0, pa = 1, pb = 1;
     as->t_enter = INFINITY;
     for (int k = 0; k < ns; k++) {
@@ -192,11 +218,8 @@ static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_s
         if (k > 0) {
             /* the smallest normalised radius on the segment, and where it
              * first crosses 1 */
-            double ma = 0.5 * (pa + a), mb = 0.5 * (pb + b);
-            double dx = x - px, dy = y - py;
-            double A = (dx / ma) * (dx / ma) + (dy / mb) * (dy / mb);
-            double B = 2.0 * (px * dx / (ma * ma) + py * dy / (mb * mb));
-            double C = (px / ma) * (px / ma) + (py / mb) * (py / mb);
+            double A, B, C;
+            segment(px, py, pa, pb, x, y, a, b, &A, &B, &C);
             double s = A > 0.0 ? fmin(1.0, fmax(0.0, -B / (2.0 * A))) : 0.0;
             best = fmin(best, C + s * (B + s * A));
             double disc = B * B - 4.0 * A * (C - 1.0);
@@ -224,14 +247,10 @@ static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_s
 static void assess_path_entry(const fw_domain_def *dom, double horizon, const fw_own_state *own,
                               const fw_target *t, fw_assessment *as)
 {
-    enum { MAX_SAMPLES = 1024 };
-    int ns = (int)ceil(horizon / kPathDt) + 1;
-    if (ns > MAX_SAMPLES)
-        ns = MAX_SAMPLES;
-    double e[MAX_SAMPLES], n[MAX_SAMPLES], c[MAX_SAMPLES];
-    fw_target_path(t, kPathDt, ns, e, n, c);
-    double so = sin(own->psi), co = cos(own->psi), ve, vn;
-    own_velocity(own, so, co, &ve, &vn);
+    path_in P;
+    path_begin(horizon, own, t, &P);
+    const int ns = P.ns;
+    const double *e = P.e, *n = P.n, *c = P.c, so = P.so, co = P.co, ve = P.ve, vn = P.vn;
     bool turning_frame = dom->reading == FW_DOMAIN_TRANSVERSE;
     /* a margin far above the rounding of the bound's terms */
     double reach = fw_domain_reach(dom, t) * (1.0 + 1e-9) + 1e-6;
@@ -261,11 +280,8 @@ static void assess_path_entry(const fw_domain_def *dom, double horizon, const fw
                 return;
             }
             if (k > 0) {
-                double ma = 0.5 * (pa + a), mb = 0.5 * (pb + b);
-                double sx = x - px, sy = y - py;
-                double A = (sx / ma) * (sx / ma) + (sy / mb) * (sy / mb);
-                double B = 2.0 * (px * sx / (ma * ma) + py * sy / (mb * mb));
-                double C = (px / ma) * (px / ma) + (py / mb) * (py / mb);
+                double A, B, C;
+                segment(px, py, pa, pb, x, y, a, b, &A, &B, &C);
                 double disc = B * B - 4.0 * A * (C - 1.0);
                 if (C >= 1.0 && A > 0.0 && disc >= 0.0) {
                     double se = (-B - sqrt(disc)) / (2.0 * A);
