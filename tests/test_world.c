@@ -186,14 +186,14 @@ static void test_two_vessels_head_on(void)
 typedef struct react_out {
     double dmin;
     int slow, resume, alter, rejoin;
-    double first_slow_t, tcpa_then;
+    double first_slow_t, first_alter_t, tcpa_then;
     double speed_end[3];
 } react_out;
 
 static react_out react_world_gw(const fw_kin_ship *ships, int n, fw_behaviour b, int seconds,
                                 fw_give_way gw)
 {
-    react_out o = {.dmin = INFINITY, .first_slow_t = -1};
+    react_out o = {.dmin = INFINITY, .first_slow_t = -1, .first_alter_t = -1};
     fw_error err = {0};
     fw_kinematic_def kd = fw_default_kinematic_def();
     kd.ships = ships;
@@ -235,7 +235,8 @@ static react_out react_world_gw(const fw_kin_ship *ships, int n, fw_behaviour b,
             o.resume++;
             continue;
         }
-        o.alter += r[i].kind == FW_REACT_ALTER;
+        if (r[i].kind == FW_REACT_ALTER && o.alter++ == 0)
+            o.first_alter_t = r[i].t;
         o.rejoin += r[i].kind == FW_REACT_REJOIN;
         if (r[i].kind != FW_REACT_SLOW)
             continue;
@@ -306,6 +307,35 @@ static void test_reactive_traffic(void)
            "%.0f m; pair: blind %.0f m, colregs %.0f m\n",
            blind.dmin, col.dmin, col.slow, col.first_slow_t, tc, st.first_slow_t, st.dmin, pb.dmin,
            pair.dmin);
+}
+
+/* A give-way ship that has slowed already and whose speed no longer keeps
+ * the passing distance alters course where it can (reactions.c: rules 8(c)
+ * and 8(d)): G (15 kn, north) must give way to C (10 kn, west, from its
+ * starboard side); at first no alteration clears (O, 5 kn on 035, is on its
+ * starboard bow) and it slows; 100 s later its speed no longer does and an
+ * alteration clears: it alters to starboard (before, it slowed further and
+ * further), and every ship passes the others at the passing distance less
+ * its turn's lag (95 %). */
+static void test_slowed_then_alters(void)
+{
+    double v = fw_kn_to_ms(10);
+    fw_kin_ship s[3] = {
+        {.start = {.id = "G", .east = 20000.0, .north = 0.0, .course = 0.0, .heading = 0.0,
+                   .speed = 1.5 * v, .length = 200, .breadth = 32}},
+        {.start = {.id = "O", .east = 20600.0, .north = 1500.0, .course = fw_deg_to_rad(35.0),
+                   .heading = fw_deg_to_rad(35.0), .speed = 0.5 * v, .length = 100,
+                   .breadth = 16}},
+        {.start = {.id = "C", .east = 20000.0 + 1150.0 * v, .north = 8000.0,
+                   .course = 1.5 * FW_PI, .heading = 1.5 * FW_PI, .speed = v, .length = 200,
+                   .breadth = 32}}};
+    react_out o = react_world_gw(s, 3, FW_BEHAVIOUR_COLREGS, 2000, FW_GIVE_WAY_COURSE);
+    CHECK_MSG(o.slow == 1 && o.alter == 1 && o.first_slow_t < o.first_alter_t &&
+                  o.dmin > 0.95 * 926.0,
+              "%d slow-downs (the first at %.0f s), %d alterations (at %.0f s), closest %.0f m",
+              o.slow, o.first_slow_t, o.alter, o.first_alter_t, o.dmin);
+    printf("  slowed at %.0f s (no alteration clears), altered at %.0f s (its speed no longer "
+           "clears): closest %.0f m\n", o.first_slow_t, o.first_alter_t, o.dmin);
 }
 
 /* A world of the kinematic source's ships and the own ship (the C-3's
@@ -585,6 +615,7 @@ int main(void)
     TEST_RUN(test_world_contract);
     TEST_RUN(test_two_vessels_head_on);
     TEST_RUN(test_reactive_traffic);
+    TEST_RUN(test_slowed_then_alters);
     TEST_RUN(test_threat_during_return);
     TEST_RUN(test_return_to_track);
     TEST_RUN(test_strait_traffic_monitors);

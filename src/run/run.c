@@ -262,6 +262,8 @@ static void record_reactions(fw_run *R, fw_run_summary *sum)
         char kn[128];
         if (r->rule19e)
             note(R, " (rule 19(e): the least speed)");
+        else if (r->why != FW_WHY_NONE && r->why != FW_WHY_RULE17)
+            note(R, " (not altering: %s)", fw_speed_why_name(r->why));
         if (r->enough)
             note(R, " -> %.0f m%s\n", r->dcpa_after, known_note(r, kn, sizeof kn));
         else

@@ -37,6 +37,13 @@ fw_status fw_give_way_parse(const char *text, fw_give_way *out)
     return k < 0 ? FW_EINPUT : FW_OK;
 }
 
+/* fw_speed_why order */
+static const char *const kWhyNames[] = {
+    "", "overtaking (rule 13)", "in a junction", "in a lane change",
+    "its lane's edge near", "no alteration clears", "rule 17(b)", "rule 19(e)"};
+
+const char *fw_speed_why_name(fw_speed_why w) { return fw_name_of(kWhyNames, 8, (int)w); }
+
 static const char *const kBehaviourNames[] = {"colregs", "blind"}; /* fw_behaviour order */
 
 const char *fw_behaviour_name(fw_behaviour b) { return fw_name_of(kBehaviourNames, 2, (int)b); }
@@ -525,6 +532,7 @@ static fw_status stand_on(fw_reactions *r, double t, int self, const fw_target *
     snprintf(x.other, sizeof x.other, "%s", all[j].id);
     fw_react_sense_note(r, j, &x);
     x.kind = FW_REACT_SLOW, x.speed_from = st->holding ? st->hold : st->v0, x.speed_to = v;
+    x.why = FW_WHY_RULE17;
     st->holding = st->rule17 = true;
     st->hold = v;
     fw_status s2 = fw_source_set_speed(src, a->id, v, err);
@@ -671,13 +679,6 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
         fw_status s2 = fw_source_set_speed(src, a->id, -1.0, err);
         return s2 ? s2 : fw_react_record(r, &x, err);
     }
-    /* overtaking (rule 13) it keeps out of the way by its speed: a ship it
-     * overtakes may itself be moving off to starboard (steered, steer.h) */
-    if (!st->holding && r->def.give_way == FW_GIVE_WAY_COURSE && sit != FW_SIT_OVERTAKING) {
-        int a2 = fw_react_alter(r, t, self, all, st, r->list, m, nearest, sit, dcpa, src, err);
-        if (a2 != 0 || sit == FW_SIT_HEAD_ON) /* ordered, failed, or head-on: no speed */
-            return a2 < 0 ? err->status : FW_OK;
-    }
     double after;
     /* rule 19(e) (reactions.h): a fog signal heard forward of the beam */
     bool r19e = rule19e_heard(r, self, all, r->list, m);
@@ -685,6 +686,24 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
      * new one may need another: slower is not always clear of a crossing) */
     if (!r19e && st->holding && clears_at(r, self, all, st->hold, &after))
         return FW_OK;
+    /* overtaking (rule 13) it keeps out of the way by its speed: a ship it
+     * overtakes may itself be moving off to starboard (steered, steer.h).
+     * A ship already slowed whose speed no longer keeps the passing
+     * distance alters course where it can, as one that has not slowed does:
+     * rule 8(d), its action checked until the other is past and clear, and
+     * 8(c), where there is sea room an alteration of course alone may be the
+     * most effective (it slowed further and further before: 20 of the 46
+     * speed orders of the base scenario, seeds 1-3, on 4c541ac) */
+    if (r->def.give_way == FW_GIVE_WAY_COURSE)
+        x.why = r19e ? FW_WHY_RULE19 : FW_WHY_OVERTAKING;
+    bool held = st->holding;
+    if (!(held && r19e) && r->def.give_way == FW_GIVE_WAY_COURSE && sit != FW_SIT_OVERTAKING) {
+        int a2 = fw_react_alter(r, t, self, all, st, r->list, m, nearest, sit, dcpa, src, &x.why,
+                                err);
+        /* ordered, failed, or head-on (not slowed already): no speed */
+        if (a2 != 0 || (sit == FW_SIT_HEAD_ON && !held))
+            return a2 < 0 ? err->status : FW_OK;
+    }
     double v = r19e ? r->def.min_speed * v0
                     : yielding_speed(r, self, all, r->list, m, v0, vh, &x.enough, &after);
     /* ... or close quarters it cannot avoid with a ship out of sight ahead */
@@ -695,6 +714,8 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
     if (r19e)
         x.enough = clears_at(r, self, all, v, &after);
     x.rule19e = r19e;
+    if (r19e)
+        x.why = FW_WHY_RULE19;
     if (st->holding && fabs(v - st->hold) < 0.05 * v0)
         return FW_OK; /* the best there is, already ordered */
     snprintf(x.ship, sizeof x.ship, "%s", a->id);

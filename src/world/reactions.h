@@ -72,9 +72,15 @@
  * ship meeting the own ship head-on alters to starboard likewise (rule 14;
  * nothing if it has no room).  Where no alteration clears or there is no
  * room, or the ship is changing lanes (more than 10 m or 2 deg off its
- * lane's line), it slows down as above; and an overtaking ship (rule 13)
- * keeps out of the way by its speed (not overtaking), since the ship it
- * would overtake may itself be moving off to starboard.  A ship that alters course is handed to
+ * lane's line: SUMO's continuous lane change outlives a take and a give
+ * back and would go on, stale, from where it was), it slows down as above;
+ * and an overtaking ship (rule 13) keeps out of the way by its speed (not
+ * overtaking), since the ship it would overtake may itself be moving off
+ * to starboard.  A ship that has slowed and whose speed no longer keeps
+ * the passing distance tries an alteration first too, as one that has not
+ * slowed does (rules 8(c) and 8(d)), and slows further only where it finds
+ * none.  Every speed order says why it is not an alteration (fw_reaction
+ * why; run.log "(not altering: ...)").  A ship that alters course is handed to
  * the world to steer (fw_reactions_takes; world/steer.h says how it turns,
  * when it comes back, and how) and given back to its lane after.
  * Every order is recorded (ship, time, kind, speeds or courses, the ship it
@@ -177,6 +183,22 @@ typedef enum fw_known {
     FW_KNOWN_RADAR   /* out of sight, without a report: the ship's radar track */
 } fw_known;
 
+/* Why a give-way ship slowed down (FW_REACT_SLOW) instead of altering course
+ * (give_way course; FW_WHY_NONE with give_way speed and for a ship that
+ * speeds up): fw_speed_why_name gives the words run.log prints. */
+typedef enum fw_speed_why {
+    FW_WHY_NONE,
+    FW_WHY_OVERTAKING,  /* rule 13: it keeps out of the way by its speed */
+    FW_WHY_NO_LANE,     /* in a junction: no lane to come back to */
+    FW_WHY_LANE_CHANGE, /* in the middle of a lane change */
+    FW_WHY_NO_ROOM,     /* an alteration clears, but its lane's edge is too near */
+    FW_WHY_NO_CLEAR,    /* no alteration of alter_min..alter_max passes every ship at cpa */
+    FW_WHY_RULE17,      /* a stand-on ship acting under rule 17(b) */
+    FW_WHY_RULE19       /* rule 19(e) in restricted visibility */
+} fw_speed_why;
+
+const char *fw_speed_why_name(fw_speed_why w);
+
 typedef struct fw_reaction {
     double t;                        /* s */
     char ship[FW_TARGET_ID_MAX];     /* the ship that acts */
@@ -192,6 +214,7 @@ typedef struct fw_reaction {
     fw_known known_how;
     double known_e, known_n, true_e, true_n;
     bool rule19e;                    /* slowed to min_speed by rule 19(e) (above) */
+    fw_speed_why why;                /* slow: why not a course alteration */
 } fw_reaction;
 
 /* A ship to take from the source and steer (give_way course): itself as it

@@ -58,44 +58,59 @@ static fw_status order(fw_reactions *r, const fw_target *a, const fw_lane_info *
     return FW_OK;
 }
 
+/* Its lane (source.h) and the sea room to starboard it may use (the
+ * lanes', or unlimited: reactions.h room_*); FW_EINPUT when it has none here
+ * (a junction, a source without lanes); *changing: it is in the middle of a
+ * lane change (off its lane's line, or crabbing across it).
+ * Such a ship slows instead: SUMO's continuous lane change outlives a take
+ * and a give back, and goes on, stale, from where it was (tried: a strait
+ * ship taken 9 deg into a lane change was given back on its lane's line and
+ * jumped 339 m across at SUMO's next step; h-lc's commit). */
+static fw_status lane_of(const fw_reactions *r, const fw_target *a, fw_source *src,
+                         fw_lane_info *lane, bool *changing, fw_error *err)
+{
+    fw_status st = fw_source_lane(src, a->id, lane, err);
+    if (st)
+        return st;
+    double lc, xt;
+    int seg;
+    fw_lane_where(lane, a->east, a->north, &lc, &xt, &seg);
+    *changing = fabs(xt) > kOnLine || fabs(fw_wrap_pi(a->course - lc)) > kAlong;
+    if (!r->def.room_from_lanes && !(r->def.room_traffic_lanes && lane->traffic_lane))
+        lane->room_starboard = lane->room_port = INFINITY;
+    return FW_OK;
+}
+
 int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, react_state *st,
                    const int *list, int m, int nearest, fw_situation sit, double dcpa,
-                   fw_source *src, fw_error *err)
+                   fw_source *src, fw_speed_why *why, fw_error *err)
 {
+    *why = FW_WHY_NO_CLEAR;
     const fw_target *a = &all[self];
     double v0 = st->v0, step = fw_deg_to_rad(5.0);
     fw_lane_info lane;
-    bool have_lane = false;
+    fw_error e2 = {0};
+    bool changing = false;
+    fw_status s2 = lane_of(r, a, src, &lane, &changing, &e2);
+    if (s2 == FW_EINPUT || (!s2 && changing)) {
+        *why = s2 == FW_EINPUT ? FW_WHY_NO_LANE : FW_WHY_LANE_CHANGE;
+        return 0;
+    }
+    if (s2) {
+        *err = e2;
+        return -1;
+    }
     for (double alt = r->def.alter_min; alt <= r->def.alter_max + 1e-9; alt += step) {
         double t_pass, pass = pass_on_course(r, self, all, a->course + alt, v0, list, m, &t_pass);
         if (pass < r->def.cpa)
             continue;
-        if (!have_lane) {
-            fw_error e2 = {0};
-            fw_status s2 = fw_source_lane(src, a->id, &lane, &e2);
-            if (s2 == FW_EINPUT)
-                return 0; /* no lane here (a junction, a source without lanes) */
-            if (s2) {
-                *err = e2;
-                return -1;
-            }
-            have_lane = true;
-            /* in the middle of a lane change (off its lane's line, or
-             * crabbing across): SUMO's manoeuvre would go on, stale, once
-             * it is given back, so it slows down instead */
-            double lc, xt;
-            int seg;
-            fw_lane_where(&lane, a->east, a->north, &lc, &xt, &seg);
-            if (fabs(xt) > kOnLine || fabs(fw_wrap_pi(a->course - lc)) > kAlong)
-                return 0;
-            if (!r->def.room_from_lanes && !(r->def.room_traffic_lanes && lane.traffic_lane))
-                lane.room_starboard = lane.room_port = INFINITY;
-        }
         /* its sideways run until the last of them is past, its half
          * breadth, and a tenth of the room to spare */
         double run = v0 * t_pass * sin(alt) + 0.5 * a->breadth;
-        if (!(run <= 0.9 * lane.room_starboard))
+        if (!(run <= 0.9 * lane.room_starboard)) {
+            *why = FW_WHY_NO_ROOM;
             continue;
+        }
         fw_reaction x = {.t = t, .kind = FW_REACT_ALTER, .situation = sit, .speed_from = v0,
                          .speed_to = v0, .dcpa_before = dcpa, .dcpa_after = pass,
                          .enough = true, .course_from = a->course,
@@ -104,6 +119,8 @@ int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, re
         snprintf(x.other, sizeof x.other, "%s", all[nearest].id);
         fw_react_sense_note(r, nearest, &x);
         snprintf(st->other, sizeof st->other, "%s", all[nearest].id);
+        /* a speed it was held at is released: it is taken (world.h) */
+        st->holding = false;
         if (fw_react_record(r, &x, err) || order(r, a, &lane, alt, v0, all[nearest].id, err))
             return -1;
         return 1;

@@ -87,10 +87,10 @@ fw_status fw_react_record(fw_reactions *r, const fw_reaction *x, fw_error *err);
  * nearest in time all[nearest] (situation sit, closest approach dcpa), by
  * altering course, if it can (reactions.h): 1 when
  * ordered (taken: r->takes), 0 when it cannot (no alteration clears, no sea
- * room, no lane), -1 with *err set on a failure. */
+ * room, no lane: *why says which), -1 with *err set on a failure. */
 int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, react_state *st,
                    const int *list, int m, int nearest, fw_situation sit, double dcpa,
-                   fw_source *src, fw_error *err);
+                   fw_source *src, fw_speed_why *why, fw_error *err);
 
 /* Sensing (reactions_sense.c): is it not perfect; room for m ships; every
  * ship's AIS stepped and all[i] made what its reports say of it (the truth
