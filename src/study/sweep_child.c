@@ -55,6 +55,22 @@ static bool summary_finite(const fw_run_summary *s)
            isfinite(s->rudder_work) && isfinite(s->heading_error) && !isnan(s->min_dist);
 }
 
+/* A run that failed with its work directory's disk (almost) full but a
+ * reason that does not say so (a program that words it its own way): the
+ * reason gets the words a sweep stops on (fw_sweep_disk_full), looked at
+ * here, before the run directory is removed and frees what it took, and on
+ * the run's own host (under mpirun rank 0 may be elsewhere). */
+static void say_disk_full(fw_outcome *o, const char *work)
+{
+    const char *full = strerror(ENOSPC);
+    if (strcmp(o->status, "ok") == 0 || strstr(o->reason, full) ||
+        strstr(o->reason, strerror(EDQUOT)) || !fw_sweep_disk_low(work))
+        return;
+    size_t n = strlen(o->reason), room = sizeof o->reason - strlen(full) - 3;
+    snprintf(o->reason + (n < room ? n : room), sizeof o->reason - (n < room ? n : room), "; %s",
+             full);
+}
+
 void fw_sweep_exec(const fw_study *s, int run_id, const char *work_dir, bool keep,
                    const fw_traffic_mode *mode, fw_outcome *out)
 {
@@ -74,7 +90,10 @@ void fw_sweep_exec(const fw_study *s, int run_id, const char *work_dir, bool kee
     fw_remove_tree(dir); /* left by an interrupted sweep with --keep */
     fw_error err = {0};
     if (mkdir(dir, 0777) != 0) {
-        fw_outcome_failed(out, run_id, "cannot create the run directory");
+        char why[300];
+        snprintf(why, sizeof why, "cannot create the run directory: %s", strerror(errno));
+        fw_outcome_failed(out, run_id, why);
+        say_disk_full(out, work_dir);
         free(scn);
         return;
     }
@@ -98,6 +117,7 @@ void fw_sweep_exec(const fw_study *s, int run_id, const char *work_dir, bool kee
     free(e);
     free(sv);
     free(scn);
+    say_disk_full(out, work_dir);
     if (!keep)
         fw_remove_tree(dir);
 }

@@ -10,11 +10,11 @@
  * stop), RESULT the outcome's bytes, SPLIT an fw_split_msg.  With one rank
  * the sweep is local.  Built only when CMake finds MPI (FAIRWAY_MPI).
  */
-#include <errno.h>
 #include <stdlib.h>
 #include <time.h>
 #include <string.h>
 #include <sys/statvfs.h>
+#include <unistd.h>
 
 #include "core/files.h"
 #include "study/store.h"
@@ -70,21 +70,6 @@ static void wait_message(int src, int tag, MPI_Status *stt)
 static void send_run(int rank, int run_id)
 {
     MPI_Send(&run_id, 1, MPI_INT, rank, TAG_WORK, MPI_COMM_WORLD);
-}
-
-/* A run failed on this rank with its work directory's disk (almost) full
- * but a reason that does not say so (a program that words it its own way):
- * the reason gets the words rank 0 stops the sweep on (fw_sweep_disk_full,
- * which looks at the work directory itself in a local sweep). */
-static void disk_says(fw_outcome *o, const char *work)
-{
-    const char *full = strerror(ENOSPC);
-    if (strcmp(o->status, "ok") == 0 || strstr(o->reason, full) ||
-        strstr(o->reason, strerror(EDQUOT)) || !fw_sweep_disk_low(work))
-        return;
-    size_t n = strlen(o->reason), room = sizeof o->reason - strlen(full) - 3;
-    snprintf(o->reason + (n < room ? n : room), sizeof o->reason - (n < room ? n : room), "; %s",
-             full);
 }
 
 /* Where the run's work directory was, from its reason (it names files in
@@ -144,7 +129,6 @@ static void worker(const fw_sweep_def *def, const char *work, const char *why)
             while (!fw_sweep_read(&c))
                 ;
             fw_sweep_collect(&c, &o);
-            disk_says(&o, work);
         }
         unsigned char *buf = NULL;
         size_t n = 0;
@@ -225,7 +209,7 @@ static fw_status take_result(const fw_sweep_def *def, fw_store *st, const MPI_St
     if (!unpacked)
         return fw_fail(err, FW_ERUN, "rank %d: %s", stt->MPI_SOURCE, uerr.msg);
     /* a rank's disk full: stop, that run not recorded (its work directory is
-     * on the rank's host: the reason tells, disk_says) */
+     * on the rank's host: the reason tells, sweep_child.c) */
     char wd[1024];
     fw_status r = fw_sweep_disk_full(def->study, &o, reason_workdir(def, o.reason, wd, sizeof wd),
                                      left, err)
@@ -315,33 +299,50 @@ static double disk_free(const char *dir)
  * waits for ever (Open MPI 4.1.4, -np 3, a tmpfs as TMPDIR: 8 MB free fails,
  * 12 MB runs); a rank that stops before MPI_Init lets mpirun end at once.
  * So: under Open MPI less than 16 MB in its session directory, or less than
- * 64 kB where the work directories go, stops every rank before MPI_Init
- * (rank 0, told by the launcher's environment, says why). */
-static fw_status session_disk(const fw_sweep_def *def, bool *is_root, fw_error *err)
+ * 64 kB where the work directories go, stops every rank before MPI_Init.
+ * Rank 0 (told by the launcher's environment) says why; another rank waits
+ * a second, then says it too (*is_root set: it reports): mpirun ends the job
+ * when the first rank exits, which would otherwise often be a silent one,
+ * and rank 0, on another host, may not have seen it. */
+static fw_status disk_check(const fw_sweep_def *def, fw_error *err)
 {
     const char *base = getenv("OMPI_MCA_orte_tmpdir_base");
     const char *tmp = getenv("TMPDIR");
     const char *work = def->keep_dir ? def->keep_dir : tmp && tmp[0] ? tmp : "/tmp";
-    const char *rank = getenv("OMPI_COMM_WORLD_RANK");
-    if (!rank)
-        rank = getenv("PMIX_RANK");
-    if (!rank)
-        rank = getenv("PMI_RANK");
-    *is_root = !rank || strcmp(rank, "0") == 0;
     if (getenv("OMPI_COMM_WORLD_SIZE")) {
         const char *sess = base && base[0] ? base : tmp && tmp[0] ? tmp : "/tmp";
         double f = disk_free(sess);
         if (f >= 0 && f < 16e6)
-            return fw_fail(err, FW_ERUN, "the disk of %s is full (%.0f kB left): Open MPI keeps "
-                           "its session files there and needs about 10 MB; nothing was run: free "
-                           "space (or set TMPDIR, or OMPI_MCA_orte_tmpdir_base, to a larger "
-                           "disk), then run the same command again", sess, f / 1024.0);
+            return fw_fail(err, FW_ERUN, "the disk of %s has too little room (%.0f kB left): "
+                           "Open MPI keeps its session files there and needs about 10 MB; "
+                           "nothing was run: free space (or set TMPDIR, or "
+                           "OMPI_MCA_orte_tmpdir_base, to a larger disk), then run the same "
+                           "command again", sess, f / 1024.0);
     }
     if (fw_sweep_disk_low(work))
         return fw_fail(err, FW_ERUN, "the disk of the sweep's work directory in %s is full "
                        "(less than 64 kB left); nothing was run: free space (or set TMPDIR, or "
                        "--keep, to a larger disk), then run the same command again", work);
     return FW_OK;
+}
+
+static fw_status session_disk(const fw_sweep_def *def, bool *is_root, fw_error *err)
+{
+    const char *rank = getenv("OMPI_COMM_WORLD_RANK");
+    if (!rank)
+        rank = getenv("PMIX_RANK");
+    if (!rank)
+        rank = getenv("PMI_RANK");
+    *is_root = true;
+    if (!disk_check(def, err))
+        return FW_OK;
+    if (rank && strcmp(rank, "0") != 0) {
+        char msg[sizeof err->msg];
+        snprintf(msg, sizeof msg, "%s", err->msg);
+        snprintf(err->msg, sizeof err->msg, "rank %.8s: %.*s", rank, (int)sizeof err->msg - 20, msg);
+        sleep(1);
+    }
+    return err->status;
 }
 
 fw_status fw_sweep_mpi(const fw_sweep_def *def, fw_sweep_result *res, bool *is_root,
