@@ -37,13 +37,6 @@ fw_status fw_give_way_parse(const char *text, fw_give_way *out)
     return k < 0 ? FW_EINPUT : FW_OK;
 }
 
-/* fw_speed_why order */
-static const char *const kWhyNames[] = {
-    "", "overtaking (rule 13)", "in a junction", "in a lane change",
-    "its lane's edge near", "no alteration clears", "rule 17(b)", "rule 19(e)"};
-
-const char *fw_speed_why_name(fw_speed_why w) { return fw_name_of(kWhyNames, 8, (int)w); }
-
 static const char *const kBehaviourNames[] = {"colregs", "blind"}; /* fw_behaviour order */
 
 const char *fw_behaviour_name(fw_behaviour b) { return fw_name_of(kBehaviourNames, 2, (int)b); }

@@ -4,10 +4,18 @@
 #include <string.h>
 
 #include "core/mem.h"
+#include "core/names.h"
 #include "core/units.h"
 #include "geom/geom.h"
 #include "world/reactions_internal.h"
 #include "world/steer.h"
+
+/* fw_speed_why order */
+static const char *const kWhyNames[] = {
+    "", "overtaking (rule 13)", "in a junction", "in a lane change",
+    "its lane's edge near", "no alteration clears", "rule 17(b)", "rule 19(e)"};
+
+const char *fw_speed_why_name(fw_speed_why w) { return fw_name_of(kWhyNames, 8, (int)w); }
 
 /* On its lane: within this of its line (m) and of its course (rad). */
 static const double kOnLine = 10.0;
