@@ -238,8 +238,16 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
         c->stop_until = in->t + kLookS;
         return false;
     }
-    c->news = true, c->news_from = in->own->psi, c->news_to = pick;
-    c->news_sit = fw_classify(&c->colregs, in->own, &in->targets[j]);
+    /* the same turn as it is making (its heading still swinging to it, the
+     * candidates measured from that heading): no new alteration to report;
+     * before, one ship reported one turn every second of its swing, 40 deg
+     * to starboard again and again, and summary.json counted each */
+    bool same = c->phase == FW_STEER_ALTER &&
+                fabs(fw_wrap_pi(pick - (course + c->alter))) < fw_deg_to_rad(5.0);
+    if (!same) {
+        c->news = true, c->news_from = in->own->psi, c->news_to = pick;
+        c->news_sit = fw_classify(&c->colregs, in->own, &in->targets[j]);
+    }
     c->alter = fw_wrap_pi(pick - course);
     c->phase = FW_STEER_ALTER;
     snprintf(c->other, sizeof c->other, "%s", in->targets[j].id);
@@ -251,12 +259,21 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
  * every ship it sees at the passing distance, and at most 60 deg off its
  * lane (true: a new alteration; false: none needed, or none that clears,
  * and then it slows for the next look). */
-static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi)
+static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi, double xt)
 {
     fw_situation sit = FW_SIT_GIVE_WAY;
     int j = must_give_way(c, in, chi, &sit);
     if (j < 0)
         return false;
+    /* at the edge of its room (less than a length of it left to starboard)
+     * a further alteration only steers along the edge, where it is: it
+     * slows instead (a speed reduction where altering is not possible).
+     * Before, such a ship reported the same alteration every look (one 15
+     * times in 150 s at twice Dover's density) while its heading stayed */
+    if (isfinite(c->def.room) && c->def.room - xt < c->def.length) {
+        c->slow_until = in->t + kLookS;
+        return false;
+    }
     for (double alt = fw_deg_to_rad(20.0); alt <= fw_deg_to_rad(60.0) + 1e-9;
          alt += fw_deg_to_rad(5.0)) {
         double off = fw_wrap_pi(chi + alt - course);
@@ -377,7 +394,7 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
                                             : course + c->alter;
     if (in->t >= c->t_look - 1e-9) {
         c->t_look = in->t + kLookS;
-        if (replan(c, in, course, chi)) /* a ship it must now give way to */
+        if (replan(c, in, course, chi, xt)) /* a ship it must now give way to */
             chi = course + c->alter;
     }
     if (close_quarters(c, in, course, chi))
