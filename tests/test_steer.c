@@ -9,6 +9,8 @@
  *     distance or more, it turns no faster than its model can, comes back to
  *     its lane and is given back on its line (within the source's 1 m), and
  *     nothing jumps: its hull centre moves at its speed every step
+ *   the same in a set across its lane (1 m/s): it crabs along its line and
+ *     is given back there
  *   no sea room (the kinematic lane 100 m each side): it slows down instead
  *   head-on with the own ship (rule 14): it alters to starboard
  *   give_way speed (the default): no alteration, the slow-down of before
@@ -102,8 +104,8 @@ static void test_model_turns_as_stated(void)
 /* A world: background ship g (150 x 25 m, 10 kn, going north from the
  * origin) and the own ship (a Nomoto C-3 without a controller: it holds its
  * course) from (e, n) on course_deg at kn; give_way as given, sea room. */
-static fw_world *scene(fw_give_way gw, double room, double e, double n, double course_deg,
-                       double kn)
+static fw_world *scene_in(fw_give_way gw, double room, double e, double n, double course_deg,
+                          double kn, double cur_e)
 {
     fw_error err = {0};
     fw_kin_ship ks[1] = {{.start = {.id = "g", .east = 0, .north = 0, .course = 0.0,
@@ -116,6 +118,8 @@ static fw_world *scene(fw_give_way gw, double room, double e, double n, double c
     fw_world_def wd = fw_default_world_def();
     wd.reactions = fw_default_reactions_def(); /* colregs */
     wd.reactions.give_way = gw;
+    if (cur_e != 0.0)
+        wd.env.current = (fw_current){.kind = FW_FIELD_UNIFORM, .east = cur_e};
     fw_world *w = NULL;
     CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
     CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
@@ -127,6 +131,12 @@ static fw_world *scene(fw_give_way gw, double room, double e, double n, double c
     CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
     CHECK(fw_world_start(w, &err) == FW_OK);
     return w;
+}
+
+static fw_world *scene(fw_give_way gw, double room, double e, double n, double course_deg,
+                       double kn)
+{
+    return scene_in(gw, room, e, n, course_deg, kn, 0.0);
 }
 
 /* What happened to g in steps of 1 s for up to `steps`. */
@@ -223,6 +233,26 @@ static void test_crossing_alters_and_comes_back(void)
     fw_world_destroy(w);
 }
 
+/* The crossing in a 1 m/s set to the east, across g's lane: back on its
+ * line g crabs 11 deg into the set (asin(1 / 5.1)), its bow 15 m to port
+ * of the line along its heading; it makes good the line and is given back
+ * there (before, its bow was looked for along its heading and it never was:
+ * 1 of 51 altered ships given back in an hour in Dover's spring stream). */
+static void test_cross_set_comes_back(void)
+{
+    double v = fw_kn_to_ms(12.0), t = 4000.0 / fw_kn_to_ms(10.0);
+    fw_world *w = scene_in(FW_GIVE_WAY_COURSE, INFINITY, v * t, 4000.0, 270.0, 12.0, 1.0);
+    track_stats s = sail(w, 3600);
+    CHECK_MSG(s.alters >= 1, "%d alterations", s.alters);
+    CHECK_MSG(s.rejoins == 1, "%d rejoins", s.rejoins);
+    CHECK_MSG(s.max_jump_m < 0.05, "moved %.2f m beyond its speed in a step", s.max_jump_m);
+    fw_target g;
+    CHECK(g_now(w, &g));
+    CHECK_MSG(fabs(g.east) <= FW_SOURCE_REJOIN_MAX, "given back %.2f m off its lane", g.east);
+    CHECK(fw_world_vessel_count(w) == 1);
+    fw_world_destroy(w);
+}
+
 static void test_no_room_slows(void)
 {
     fw_world *w = crossing(FW_GIVE_WAY_COURSE, 100.0);
@@ -307,6 +337,7 @@ int main(void)
     TEST_RUN(test_indices_are_the_c3s);
     TEST_RUN(test_model_turns_as_stated);
     TEST_RUN(test_crossing_alters_and_comes_back);
+    TEST_RUN(test_cross_set_comes_back);
     TEST_RUN(test_no_room_slows);
     TEST_RUN(test_speed_mode_unchanged);
     TEST_RUN(test_head_on_alters);

@@ -35,8 +35,10 @@
  *            10 minutes (a ship of its lane, another coming back) and its
  *            lane's course would not, it sails along its lane where it is
  *   done     on the line (hull centre and bow within 0.3 m of it, for the
- *            source's 1 m limit on giving back) and its course along it: the
- *            world gives it back (world.h)
+ *            source's 1 m limit on giving back; the bow half a length ahead
+ *            along its course over ground, as the source places it: in a
+ *            cross-set the hull crabs) and its course along it: the world
+ *            gives it back (world.h)
  * Headings are ordered by a proportional helm on the heading error (gain
  * from the model so the closed loop is critically damped with its time
  * constant L/U), at most 20 deg of helm (an officer's alteration, not a
