@@ -203,6 +203,9 @@ fw_status fw_traffic_area(fw_traffic *t, const fw_target **ships, int *n, fw_err
  * sight in the middle of a crossing nobody handled.  The same context
  * results again.  FW_ERUN if the def has no near_radius. */
 fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_error *err);
+/* Which answer fw_traffic_nearby last gave: a number that changes whenever
+ * it made the list again (the same number: the same list, unchanged). */
+long fw_traffic_nearby_answer(const fw_traffic *t);
 double fw_traffic_time(const fw_traffic *t); /* s, SUMO time after the last step */
 
 /* For checks, not for the step loop (one SUMO call per ship and variable):

@@ -48,6 +48,7 @@ struct fw_traffic {
     long near_step;
     int near_n;
     double near_x, near_y;
+    long near_answer;      /* how many times near was made (fw_traffic_nearby_answer) */
     fw_target *conv;       /* the context results converted (and motion followed) */
     int conv_cap;
     /* the hull centre of every ship at its last context step, by id: its

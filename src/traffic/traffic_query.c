@@ -388,12 +388,15 @@ fw_status fw_traffic_nearby(fw_traffic *t, const fw_target **ships, int *n, fw_e
     if (m < 0)
         return err->status;
     sort_by_id(t->near, m);
+    t->near_answer++;
     t->near_step = t->ctx_step, t->near_n = m;
     t->near_x = t->own_x, t->near_y = t->own_y;
     *ships = t->near;
     *n = m;
     return FW_OK;
 }
+
+long fw_traffic_nearby_answer(const fw_traffic *t) { return t->near_answer; }
 
 fw_status fw_traffic_all(fw_traffic *t, const fw_target **ships, int *n, fw_error *err)
 {

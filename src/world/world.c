@@ -55,6 +55,8 @@ struct fw_world {
     steered **grave;     /* of vessels gone since the last sensing */
     int n_grave, grave_cap;
     fw_lane_cache lanes; /* the source's ships' lanes (fw_world_lane) */
+    fw_target *spare;    /* the vessels a view adds to the source's ships (sort_view) */
+    int spare_cap;
 };
 
 /* The CPU clock when the def keeps timings, else 0 (no system calls). */
@@ -93,6 +95,7 @@ void fw_world_destroy(fw_world *w)
     free(w->grave);
     free(w->slots);
     free(w->recs);
+    free(w->spare);
     fw_source_destroy(w->source);
     fw_lane_cache_free(&w->lanes);
     fw_reactions_destroy(w->react);
@@ -365,6 +368,31 @@ static int cmp_id(const void *a, const void *b)
     return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
+/* view[0, n) sorted by id as qsort (glibc's merge sort: stable) sorts it:
+ * view[0, n0), the source's ships, comes sorted by id from every source
+ * that sorts (SUMO's, fw_traffic_nearby and ss_around); the vessels after
+ * it (a few) are sorted apart and merged in, the source's first among equal
+ * ids.  Before, the whole view was sorted again for every vessel every step
+ * (37,000 sorts, 63 M instructions of the 1 nm fog run's 3.7 G). */
+static fw_status sort_view(fw_world *w, fw_target *view, int n0, int n, fw_error *err)
+{
+    int m = n - n0, i = n0 - 1, j = m - 1, k = n - 1;
+    bool sorted = true;
+    for (int a = 1; a < n0 && sorted; a++)
+        sorted = strcmp(view[a - 1].id, view[a].id) <= 0;
+    if (!sorted || n0 == 0) {
+        qsort(view, (size_t)n, sizeof *view, cmp_id);
+        return FW_OK;
+    }
+    if (!fw_reserve((void **)&w->spare, sizeof *w->spare, &w->spare_cap, m))
+        return fw_fail(err, FW_ERUN, "out of memory for %d vessels", m);
+    memcpy(w->spare, view + n0, sizeof *view * (size_t)m);
+    qsort(w->spare, (size_t)m, sizeof *view, cmp_id);
+    while (j >= 0)
+        view[k--] = i >= 0 && strcmp(view[i].id, w->spare[j].id) > 0 ? view[i--] : w->spare[j--];
+    return FW_OK;
+}
+
 /* The source's ships a vessel other than the own ship sees (source.h
  * within(), or nearby() filtered), into its view; *n counts them. */
 static fw_status sense_source(fw_world *w, fw_vessel *v, int *n, fw_error *err)
@@ -415,7 +443,7 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
     } else if (i != w->own && w->source && (st = sense_source(w, v, &n, err))) {
         return st;
     }
-    bool extra = false;
+    int n0 = n;
     for (int j = 0; j < w->n_slots; j++) {
         const fw_vessel *o = w->slots[j].v;
         if (j == i || !o ||
@@ -423,10 +451,9 @@ static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, 
                              v->radius))
             continue;
         v->view[n++] = o->record;
-        extra = true;
     }
-    if (extra)
-        qsort(v->view, (size_t)n, sizeof *v->view, cmp_id);
+    if (n > n0 && (st = sort_view(w, v->view, n0, n, err)))
+        return st;
     v->n_view = n;
     bool sensor = i == w->own && w->def.own_sensing.mode != FW_SENSE_PERFECT;
     bool watch = i == w->own && fw_watch_active(w->own_watch);
