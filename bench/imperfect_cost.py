@@ -6,7 +6,8 @@ tidal stream, AIS and radar sensing for the own ship and the reacting background
 19(e), the watch's crossing lapse.  B ("off"): the same file with no environment: section, sensing
 perfect and no watch.  Each `fairway run` is one process; its CPU (user + system, RUSAGE_CHILDREN) is
 taken for PAIRS pairs run A B A B ..., and the ratio A/B within each pair; the median of the pairs is
-reported (the host's load moves both members of a pair alike).  With --study the same for the study:
+reported (the host's load moves both members of a pair alike), for the CPU and for each process's
+wall time (which the load distorts more).  With --study the same for the study:
 dover-imperfect cut to REPS replications a cell (4 cells) against the same study over the "off"
 scenario with no axis and 2 REPS replications, `fairway sweep --jobs 2` into a fresh database each time.
 
@@ -19,6 +20,7 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import time
 
 fairway = os.path.abspath(sys.argv[1])
 pairs = int(sys.argv[2]) if len(sys.argv) > 2 else 5
@@ -28,9 +30,14 @@ src = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 os.environ.setdefault("SUMO_HOME", "/usr/share/sumo")
 
 
+walls = []
+
+
 def cpu(cmd):
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    walls.append(time.perf_counter() - t0)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
@@ -81,9 +88,14 @@ with tempfile.TemporaryDirectory() as tmp:
         else:
             a = cpu([fairway, "run", on_scn, "--out", os.path.join(tmp, "runs")])
             b = cpu([fairway, "run", off_scn, "--out", os.path.join(tmp, "runs")])
-        rows.append((a, b, a / b))
-        print("pair %d: on %.3f s  off %.3f s  on/off %.3f" % (i + 1, a, b, a / b), flush=True)
+        wa, wb = walls[-2], walls[-1]
+        rows.append((a, b, a / b, wa, wb, wa / wb))
+        print("pair %d: on %.3f s  off %.3f s  on/off %.3f   wall %.3f s  %.3f s  %.3f"
+              % (i + 1, a, b, a / b, wa, wb, wa / wb), flush=True)
     med = lambda k: statistics.median(r[k] for r in rows)
     print("%s, median of %d pairs: on %.3f s CPU, off %.3f s, on/off %.3f (%.3f-%.3f)"
           % ("study" if study else "one run", pairs, med(0), med(1), med(2),
              min(r[2] for r in rows), max(r[2] for r in rows)))
+    print("%s, median of %d pairs: wall on %.3f s, off %.3f s, on/off %.3f (%.3f-%.3f)"
+          % ("study" if study else "one run", pairs, med(3), med(4), med(5),
+             min(r[5] for r in rows), max(r[5] for r in rows)))

@@ -48,6 +48,7 @@ bool g_subscribed = false; // the range query is set up (the own ship added)
 // The range query: ships whose front bumper is within g_radius of (g_cx,
 // g_cy), the own ship's hull centre as last placed.
 double g_radius = 0.0, g_cx = 0.0, g_cy = 0.0;
+bool g_centred = false; // the range's POI (and fw_range) put at (g_cx, g_cy)
 
 // Only a started simulation or an open connection may be closed: libtraci's
 // close after a failed init follows a dangling connection.
@@ -168,6 +169,7 @@ fw_status be_start(const char *const *argv, fw_error *err)
     for (int i = 0; argv[i]; i++)
         cmd.emplace_back(argv[i]);
     g_subscribed = false;
+    g_centred = false;
     g_moves.clear();
     return guarded("cannot load the simulation", err, [&] {
         S::Simulation::start(cmd);
@@ -181,6 +183,7 @@ fw_status be_connect(const char *host, int port, int retries, fw_error *err)
 {
 #ifdef FW_LIBTRACI
     g_subscribed = false;
+    g_centred = false;
     return guarded("cannot connect", err, [&] {
         S::Simulation::init(port, retries, host);
         g_open = true;
@@ -227,6 +230,7 @@ fw_status be_add_own(const char *id, double length, double width, const char *ed
         // ship is often off the lanes.  Transparent, so sumo-gui shows the ship;
         // kept in libsumo too, so that both back ends simulate the same objects.
         S::POI::add(kRangePoi, 0.0, 0.0, libsumo::TraCIColor(0, 0, 0, 0), "fw_range");
+        g_centred = false;
         g_radius = radius;
 #ifdef FW_LIBTRACI
         // over a socket, one subscription (answered with every step) beats a
@@ -285,9 +289,15 @@ fw_status be_place(const char *id, double fx, double fy, double angle_deg, doubl
         // a stop (emergency braking, measured), which ships cannot do.  Off the
         // lanes they keep lane and speed, as the benchmark targets do.
         g_moves.push_back(Move{id, "", -1, 2, fx, fy, angle_deg, 1e-3, 0.0});
+        // every ship fairway steers is placed after the own ship, about the
+        // same centre: the POI is moved (a look-up by name; over a socket a
+        // round trip) only when the centre moves
+        if (g_centred && cx == g_cx && cy == g_cy)
+            return;
         S::POI::setPosition(kRangePoi, cx, cy);
         g_cx = cx;
         g_cy = cy;
+        g_centred = true;
 #ifndef FW_LIBTRACI
         fw_range::place(cx, cy);
 #endif
