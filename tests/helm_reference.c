@@ -19,7 +19,37 @@ struct fw_helm_ref {
     size_t paths_cap;
     fw_chunk_boxes *boxes; /* [side][nh], then keep */
     bool *have;
+    fw_helm_band band;
 };
+
+void fw_helm_ref_set_band(fw_helm_ref *r, const fw_helm_band *band)
+{
+    r->band = band ? *band : (fw_helm_band){.on = false};
+}
+
+/* Does tr go more than FW_BAND_SLACK_M farther out of the band than its
+ * first sample is?  Out: across the band's line beyond the room on a side
+ * that has one. */
+static bool leaves_band(const fw_helm_ref *r, const fw_track *tr)
+{
+    const fw_helm_band *b = &r->band;
+    if (!b->on)
+        return false;
+    double to_stbd_e = cos(b->course), to_stbd_n = -sin(b->course), first = 0.0;
+    for (int k = 0; k < tr->n; k++) {
+        double x = (tr->east[k] - b->east) * to_stbd_e + (tr->north[k] - b->north) * to_stbd_n;
+        double out = 0.0;
+        if (b->room_starboard > 0.0 && x - b->room_starboard > out)
+            out = x - b->room_starboard;
+        if (b->room_port > 0.0 && -x - b->room_port > out)
+            out = -x - b->room_port;
+        if (k == 0)
+            first = out;
+        else if (out - first > FW_BAND_SLACK_M)
+            return true;
+    }
+    return false;
+}
 
 fw_status fw_helm_ref_create(const fw_helm_def *def, int nh, fw_helm_ref **out, fw_error *err)
 {
@@ -146,7 +176,8 @@ static fw_status prepare(fw_helm_ref *r, const fw_target *t, int n, fw_error *er
     return FW_OK;
 }
 
-/* The fallback: the helm whose nearest target is farthest out. */
+/* The fallback: the helm whose nearest target is farthest out, of those
+ * that keep within the band (*pick stays -1 if none does). */
 static fw_status best_available(fw_helm_ref *r, fw_helm_ctx *c, int n, int allowed, int *pick,
                                 int *side, fw_error *err)
 {
@@ -162,6 +193,8 @@ static fw_status best_available(fw_helm_ref *r, fw_helm_ctx *c, int n, int allow
             fw_status st = track_of(r, c, s, i, &tr, &cb, err);
             if (st)
                 return st;
+            if (leaves_band(r, tr))
+                continue;
             double cl = clearance_idx(r, tr, cb, m, true, best > 0.0 ? best : 0.0);
             if (cl > best + 1e-9)
                 best = cl, *pick = i, *side = s;
@@ -181,6 +214,7 @@ fw_status fw_helm_search_reference(fw_helm_ref *r, fw_helm_ctx *c, const fw_targ
     res->allowed = allowed;
     res->side_helm[0] = res->side_helm[1] = NAN;
     res->feasible = true;
+    res->band_left = false;
     res->side = FW_SIDE_NONE;
     res->helm = 0.0;
     double kbest = INFINITY;
@@ -208,7 +242,7 @@ fw_status fw_helm_search_reference(fw_helm_ref *r, fw_helm_ctx *c, const fw_targ
         for (int i = 0; i < r->nh; i++) {
             if ((st = track_of(r, c, s, i, &tr, &cb, err)))
                 return st;
-            if (clearance_idx(r, tr, cb, n, false, 1.0) >= 1.0) {
+            if (clearance_idx(r, tr, cb, n, false, 1.0) >= 1.0 && !leaves_band(r, tr)) {
                 found[s] = i;
                 res->side_helm[s] = fw_helm_value(c, sides[s], i);
                 break;
@@ -226,6 +260,10 @@ fw_status fw_helm_search_reference(fw_helm_ref *r, fw_helm_ctx *c, const fw_targ
         res->feasible = false;
         if ((st = best_available(r, c, n, allowed, &pick, &side, err)))
             return st;
+        if (pick < 0) {
+            res->band_left = true;
+            return FW_OK;
+        }
     }
     res->side = sides[side];
     res->helm = fw_helm_value(c, sides[side], pick);

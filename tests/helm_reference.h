@@ -18,7 +18,13 @@ typedef struct fw_helm_ref fw_helm_ref;
 fw_status fw_helm_ref_create(const fw_helm_def *def, int nh, fw_helm_ref **out, fw_error *err);
 void fw_helm_ref_destroy(fw_helm_ref *r);
 
-/* fw_helm_search as it was: call after fw_helm_begin(ctx, own). */
+/* The band its searches keep to (fw_helm_set_band's, checked here
+ * independently: a candidate that leaves it neither clears nor falls back;
+ * NULL: none). */
+void fw_helm_ref_set_band(fw_helm_ref *r, const fw_helm_band *band);
+
+/* fw_helm_search as it was (with the band added): call after
+ * fw_helm_begin(ctx, own). */
 fw_status fw_helm_search_reference(fw_helm_ref *r, fw_helm_ctx *ctx, const fw_target *t, int n,
                                    int allowed, fw_helm_result *res, fw_error *err);
 

@@ -120,3 +120,5 @@ set_tests_properties(cli_route_bad_speed PROPERTIES ENVIRONMENT "FAIRWAY_DATA=${
 # without nodes or edges refused (FILE:LINE: FIELD, exit 2, nothing run).
 fw_script_test(net_route 0 "ok: the own ship follows a network's edges" net_route.sh)
 set_tests_properties(net_route PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
+fw_script_test(channel_overtaken 0 "ok: the own ship overtaken close keeps within its channel" channel_overtaken.sh)
+set_tests_properties(channel_overtaken PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)

@@ -36,6 +36,16 @@ static double across(const fw_policy *p, const fw_own_state *own)
     return (own->east - l->east) * cos(l->course) - (own->north - l->north) * sin(l->course);
 }
 
+fw_helm_band fw_band_of(const fw_policy *p)
+{
+    if (!banded(p))
+        return (fw_helm_band){.on = false};
+    const fw_route_leg *l = &p->def.route.leg[p->leg];
+    return (fw_helm_band){.on = l->room_starboard > 0.0 || l->room_port > 0.0,
+                          .east = l->east, .north = l->north, .course = l->course,
+                          .room_starboard = l->room_starboard, .room_port = l->room_port};
+}
+
 int fw_band_sides(const fw_policy *p, const fw_own_state *own)
 {
     if (!banded(p))

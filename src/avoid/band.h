@@ -14,6 +14,12 @@ void fw_band_track(fw_policy *p, const fw_own_state *own);
 /* The leg changed from course c_old to the active leg's: dev from the new. */
 void fw_band_leg(fw_policy *p, double c_old);
 
+/* The helm search's band (helm_search.h) for the active leg: the water
+ * its waterway has about it (route.h room_starboard, room_port); off
+ * without (open water: band_xte and band_turn alone, below) or without a
+ * band. */
+fw_helm_band fw_band_of(const fw_policy *p);
+
 /* FW_ALLOW_* sides a new alteration still has room for: less than
  * band_turn - min_alteration turned that way and less than band_xte across
  * to that side.  FW_ALLOW_EITHER without a band. */

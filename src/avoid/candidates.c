@@ -33,6 +33,43 @@ void fw_cand_chunk(fw_helm_ctx *c, int slot, int j)
         fw_track_box(&c->tracks[slot], cb, c->nbox[slot]);
 }
 
+/* m out of band b at (e, n): beyond the room on either side that has one */
+static double band_out(const fw_helm_band *b, double e, double n)
+{
+    double x = (e - b->east) * cos(b->course) - (n - b->north) * sin(b->course), out = 0.0;
+    if (b->room_starboard > 0.0 && x - b->room_starboard > out)
+        out = x - b->room_starboard;
+    if (b->room_port > 0.0 && -x - b->room_port > out)
+        out = -x - b->room_port;
+    return out;
+}
+
+double fw_track_band_excess(const fw_helm_band *b, const fw_track *tr)
+{
+    if (!b->on || tr->n < 1)
+        return 0.0;
+    double out0 = band_out(b, tr->east[0], tr->north[0]), worst = 0.0;
+    for (int k = 1; k < tr->n; k++) {
+        double d = band_out(b, tr->east[k], tr->north[k]) - out0;
+        if (d > worst)
+            worst = d;
+    }
+    return worst;
+}
+
+void fw_helm_set_band(fw_helm_ctx *c, const fw_helm_band *band)
+{
+    c->band = band ? *band : (fw_helm_band){.on = false};
+}
+
+bool fw_cand_leaves_band(fw_helm_ctx *c, int slot)
+{
+    if (!c->band.on)
+        return false;
+    fw_cand_chunk(c, slot, c->nchunks - 1);
+    return fw_track_band_excess(&c->band, &c->tracks[slot]) > FW_BAND_SLACK_M;
+}
+
 /* Starts candidate (side, i) if this decision has not: mirrored from the
  * other side's when the start is symmetric and that one is started. */
 fw_status fw_cand_open(fw_helm_ctx *c, int side, int i, int *slot, fw_error *err)
@@ -237,14 +274,20 @@ fw_status fw_cand_best_available(fw_helm_ctx *c, int allowed, int *pick, int *si
             fw_status st = fw_cand_open(c, sides[s], i, &slot, err);
             if (st)
                 return st;
+            if (fw_cand_leaves_band(c, slot))
+                continue;
             pos[slot] = m;
             ord[m] = heap[m] = slot;
             c->next[slot] = c->fail[slot] + 1; /* its chunk is done */
             c->nextp[slot] = 0;
             m++;
         }
-    if (m == 0)
+    if (m == 0 && !(allowed & FW_ALLOW_EITHER))
         return fw_fail(err, FW_EINPUT, "helm search: no side allowed");
+    if (m == 0) {
+        *pick = -1, *side = 0; /* every candidate leaves the band */
+        return FW_OK;
+    }
     for (int q = m / 2 - 1; q >= 0; q--)
         heap_down(c, pos, heap, m, q);
     double M;

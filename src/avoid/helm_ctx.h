@@ -17,6 +17,7 @@ struct fw_helm_ctx {
     fw_helm_def def;
     fw_own_state own;
     bool symmetric;  /* start on a straight course with the rudder amidships */
+    fw_helm_band band; /* fw_helm_set_band */
     int nh;
     fw_track *tracks; /* [side 0 = starboard, 1 = port][nh], then keep, then spare */
     /* The candidate and keep slots, each predicted only as far as a check
@@ -62,8 +63,11 @@ fw_status fw_cand_open(fw_helm_ctx *c, int side, int i, int *slot, fw_error *err
 void fw_cand_chunk(fw_helm_ctx *c, int slot, int j);
 /* Does some target come inside lambda^2 < stop2 along slot (see candidates.c)? */
 double fw_cand_fails(fw_helm_ctx *c, int slot, double stop2);
-/* No helm clears: the reference search's pick (slot's helm index, side 0/1). */
+/* No helm clears: the reference search's pick (slot's helm index, side 0/1)
+ * among the candidates that keep within the band; *pick -1: none does. */
 fw_status fw_cand_best_available(fw_helm_ctx *c, int allowed, int *pick, int *side,
                                  fw_error *err);
+/* Does candidate slot leave the band (predicted to its end to know)? */
+bool fw_cand_leaves_band(fw_helm_ctx *c, int slot);
 
 #endif

@@ -389,7 +389,7 @@ static fw_status least_helms(fw_helm_ctx *c, int allowed, int found[2], fw_helm_
             fw_status st = fw_cand_open(c, sides[s], i, &slot, err);
             if (st)
                 return st;
-            if (sqrt(fw_cand_fails(c, slot, 1.0)) >= 1.0) {
+            if (sqrt(fw_cand_fails(c, slot, 1.0)) >= 1.0 && !fw_cand_leaves_band(c, slot)) {
                 found[s] = i;
                 res->side_helm[s] = fw_helm_value(c, sides[s], i);
                 break;
@@ -427,6 +427,7 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
     res->allowed = allowed;
     res->side_helm[0] = res->side_helm[1] = NAN;
     res->feasible = true;
+    res->band_left = false;
     res->side = FW_SIDE_NONE;
     res->helm = 0.0;
     keep_check(c, tr, t, n, res);
@@ -447,6 +448,10 @@ fw_status fw_helm_search(fw_helm_ctx *c, const fw_target *t, int n, int allowed,
         res->feasible = false;
         if ((st = fw_cand_best_available(c, allowed, &pick, &side, err)))
             return st;
+        if (pick < 0) {
+            res->band_left = true; /* side none, helm 0, the keep clearance */
+            return FW_OK;
+        }
     }
     int slot;
     res->side = side ? FW_SIDE_PORT : FW_SIDE_STARBOARD;
@@ -562,6 +567,7 @@ fw_status fw_helm_steer_clearance(fw_helm_ctx *c, const fw_target *t, int n,
     double cl = spare_clearance(c, t, n, 0.0, false);
     if (beyond && tr->n > 0)
         cl = fmin(cl, beyond_horizon(c, tr, ap->U0, t, n));
-    *clearance = cl;
+    double out = fw_track_band_excess(&c->band, tr);
+    *clearance = out > FW_BAND_SLACK_M ? -out / 1852.0 : cl;
     return FW_OK;
 }

@@ -47,6 +47,27 @@ fw_helm_def fw_default_helm_def(void);
 
 typedef struct fw_helm_ctx fw_helm_ctx;
 
+/* The band a decision's tracks must keep to (policy.h: a channel about the
+ * route): the strip along the line through (east, north) on `course`
+ * (rad), room_starboard to its starboard and room_port to its port (m; 0 on
+ * a side: no edge there).  A track leaves it where some sample is farther
+ * out of the strip than the own ship starts by more than FW_BAND_SLACK_M: a
+ * ship already out is asked not to go farther, not to jump back.  With a
+ * band, a candidate that leaves it keeps no target out (fw_helm_search) and
+ * is no fallback either, and fw_helm_steer_clearance reports such a track
+ * below 0.  off: no band (every output as before bands). */
+typedef struct fw_helm_band {
+    bool on;
+    double east, north, course; /* m, m, rad */
+    double room_starboard, room_port; /* m */
+} fw_helm_band;
+
+#define FW_BAND_SLACK_M 1.0
+
+/* m: how much farther out of band b than its first sample track tr goes
+ * (0: it keeps within, or b is off). */
+double fw_track_band_excess(const fw_helm_band *b, const fw_track *tr);
+
 /* The ship must outlive the context. */
 fw_status fw_helm_ctx_create(const fw_ship *ship, const fw_helm_def *def, fw_helm_ctx **out,
                              fw_error *err);
@@ -54,6 +75,9 @@ void fw_helm_ctx_destroy(fw_helm_ctx *ctx);
 
 /* Starts a decision for this own state: forgets all tracks. */
 void fw_helm_begin(fw_helm_ctx *ctx, const fw_own_state *own);
+/* The band for the searches from now on (NULL or off: none); kept from
+ * decision to decision until set again. */
+void fw_helm_set_band(fw_helm_ctx *ctx, const fw_helm_band *band);
 
 /* Number of candidate helms per side and the helm (rad, signed) of candidate i. */
 int fw_helm_count(const fw_helm_ctx *ctx);
@@ -106,9 +130,13 @@ typedef struct fw_helm_result {
     double keep_clearance; /* the same along the keep-course track */
     int limiting;        /* target closest to the domain on the chosen track */
     double side_helm[2]; /* rad, least clearing helm [0] starboard [1] port; NAN if none/not searched */
+    bool band_left;      /* with a band: a threat, and every candidate on the allowed sides
+                            leaves the band (then side FW_SIDE_NONE, helm 0, clearance the
+                            keep-course one) */
 } fw_helm_result;
 
-/* One decision: keep-course check, then the search on the allowed sides. */
+/* One decision: keep-course check, then the search on the allowed sides;
+ * with a band (fw_helm_set_band) over the candidates that keep within it. */
 fw_status fw_helm_search(fw_helm_ctx *ctx, const fw_target *t, int n, int allowed,
                          fw_helm_result *res, fw_error *err);
 
@@ -120,7 +148,8 @@ fw_status fw_helm_search(fw_helm_ctx *ctx, const fw_target *t, int n, int allowe
 fw_status fw_helm_clears_after(fw_helm_ctx *ctx, const fw_target *t, int n, double helm,
                                double delay, bool *clears, fw_error *err);
 
-/* Clearance (smallest normalised domain radius, >= 1: all out) of the track
+/* Clearance (smallest normalised domain radius, >= 1: all out; with a band,
+ * a track leaving it by e m: -e / 1852, below 0) of the track
  * under a heading autopilot (nomoto/track.h): steadying on a heading, or the
  * return to the course.  For the policy, which then steers with the same
  * autopilot.  With `beyond` the track is continued past the horizon on its

@@ -291,6 +291,21 @@ static double autopilot(const fw_policy *p, const fw_own_state *own, double psi)
     return fmax(-p->def.ap_max_helm, fmin(p->def.ap_max_helm, h));
 }
 
+/* Does the least helm candidate of at least `least` (rad) on side leave the
+ * search's band (helm_search.h)? */
+static fw_status least_leaves_band(fw_helm_ctx *ctx, int side, double least, bool *out,
+                                   fw_error *err)
+{
+    int i = 0, nh = fw_helm_count(ctx);
+    while (i + 1 < nh && fabs(fw_helm_value(ctx, side, i)) < least - 1e-12)
+        i++;
+    const fw_track *tr;
+    fw_status st = fw_helm_track(ctx, side, i, &tr, err);
+    if (!st)
+        *out = fw_track_band_excess(&ctx->band, tr) > FW_BAND_SLACK_M;
+    return st;
+}
+
 /* STANDBY and STEADY: act against the threats if the rules say so. */
 static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_own_state *own,
                            const fw_target *tg, int n, const fw_assessment *as,
@@ -300,9 +315,15 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
     double least;
     fw_status st = should_act(p, ctx, tg, n, as, d->primary, &d->search, &act, &least, &d->reason,
                               err);
-    if (st || !act || d->search.side == FW_SIDE_NONE)
+    if (st || !act)
         return st;
-    if (p->no_room) {
+    /* a stand-on ship's least helm (rule 17(b)) out of the band: none in it */
+    bool out = false;
+    if (ctx->band.on && !p->no_room && d->search.side != FW_SIDE_NONE &&
+        least > fabs(d->search.helm) &&
+        (st = least_leaves_band(ctx, d->search.side, least, &out, err)))
+        return st;
+    if (p->no_room || out) {
         /* no permitted side has room within the route's band (policy.h):
          * the least bad heading within it (step_steady), slower */
         p->unkept = true;
@@ -312,6 +333,8 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
         set_mode(p, FW_MODE_STEADY, t);
         return FW_OK;
     }
+    if (d->search.side == FW_SIDE_NONE)
+        return FW_OK;
     d->acted = true;
     p->t_blocked = -1.0;
     p->psi_act = own->psi;
@@ -398,6 +421,7 @@ static fw_status step_avoid(fw_policy *p, const fw_policy_input *in, fw_decision
      * course at each vertex, and their constant-velocity tracks swing
      * with it; without it the order would follow every swing */
     bool dwelt = in->t - p->t_mode >= p->def.min_avoid_time;
+    edge = edge || hold < 0.0; /* turning on would leave the band sooner still */
     if (edge || (dwelt && ((apparent && hold >= p->def.steady_margin) || far_enough))) {
         d->reason = edge ? "at the edge of the route's band: steadying"
                     : far_enough ? "turned as far as the prediction goes: steadying"
@@ -453,6 +477,13 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
     p->helm = autopilot(p, own, p->psi_hold);
     if ((st = steer(p, in->ctx, in->targets, in->n, p->psi_hold, 0, &hold, err)))
         return st;
+    if (hold < 0.0) {
+        /* holding it leaves the band: the least bad heading within it */
+        if ((st = fw_band_least_bad(p, in, err)) ||
+            (st = steer(p, in->ctx, in->targets, in->n, p->psi_hold, 0, &hold, err)))
+            return st;
+        p->helm = autopilot(p, own, p->psi_hold);
+    }
     if (hold < 1.0) {
         if (!d->search.threat) {
             /* easing the rudder keeps them out where steering back to
@@ -636,6 +667,8 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
     if (in->lanes)
         assess_lanes(p, &colregs, in);
     fw_helm_begin(in->ctx, in->own);
+    fw_helm_band band = fw_band_of(p);
+    fw_helm_set_band(in->ctx, &band);
     int allowed = fw_permitted_sides(hdef, in->as, in->n), room = allowed & fw_band_sides(p, in->own);
     p->no_room = room == 0;
     if ((st = fw_helm_search(in->ctx, in->targets, in->n, room ? room : allowed, &d->search, err)))
@@ -646,7 +679,7 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
      * through up to 90 deg of turn: in the strait study port turns of 10-17
      * deg held for 7-10 minutes across the lanes, 5 before the band, 63 with
      * it, and most of its collisions) */
-    if (room != allowed && d->search.threat && !d->search.feasible)
+    if ((room != allowed && d->search.threat && !d->search.feasible) || d->search.band_left)
         p->no_room = true;
     d->primary = in->n > 0 ? in->order[0] : -1;
     d->acted = false;

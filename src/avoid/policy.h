@@ -56,7 +56,21 @@
  * The band about the route (band.h): no manoeuvre takes the heading more than
  * band_turn (90 deg) from the active leg's course, counted through every turn
  * (so no succession of alterations adds up to a round turn), nor the ship
- * more than band_xte (1 nm) across from the route, to either side.  A side
+ * more than band_xte (1 nm) across from the route, to either side.  Where
+ * the route knows its waterway (a network route: route.h room_starboard,
+ * room_port, its own direction's lanes less half the ship's breadth) the
+ * band is that channel too, and the helm search keeps to it
+ * (helm_search.h fw_helm_set_band, the active leg's): in every mode a
+ * predicted track that goes out of it counts as letting a target in -
+ * a candidate helm (avoid), the fallback, the steadied heading (steady),
+ * the return (autopilot), the stand-on ship's least helm (rule 17) and the
+ * least bad heading alike; with no candidate within it the domain cannot
+ * be kept (below), and a heading held that would leave it gives way to the
+ * least bad one within it.  Why: in a narrow channel rule 9 keeps a ship to
+ * its starboard side and rule 13 makes the overtaking ship keep clear; a
+ * ship overtaken close by one that does not is not expected to leave the
+ * channel (nor cross into the other direction's lanes): it holds its side,
+ * slows where that helps, and says the domain cannot be kept.  A side
  * without room is not searched; a threat that no permitted side within the
  * band can meet means the domain cannot be kept: the decision says so
  * (fw_decision.unkept, run.log, summary.json's domain_unkept) and the ship

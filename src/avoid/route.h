@@ -34,6 +34,11 @@ typedef struct fw_route_leg {
     double course;      /* rad, towards the next waypoint */
     double length;      /* m, > 0 */
     double speed;       /* m/s, planned */
+    /* m: the water the hull centre has from the leg's line to its
+     * waterway's edges, to starboard and to port (a route along a network's
+     * edges: scenario/scn_netroute.h, less half the ship's breadth); 0: not
+     * known (open water, the band's band_xte alone: band.h) */
+    double room_starboard, room_port;
 } fw_route_leg;
 
 typedef struct fw_route {
@@ -47,7 +52,7 @@ static inline fw_route fw_route_line(double east, double north, double course, d
                                      double length)
 {
     fw_route r = {.n = 1};
-    r.leg[0] = (fw_route_leg){east, north, course, length, speed};
+    r.leg[0] = (fw_route_leg){east, north, course, length, speed, 0.0, 0.0};
     return r;
 }
 
@@ -69,7 +74,8 @@ static inline fw_status fw_route_from_waypoints(const double *e, const double *n
             return fw_fail(err, FW_EINPUT, "leg %d (from waypoint %d) has no length or no speed",
                            i + 1, i + 1);
         double c = atan2(de, dn);
-        out->leg[i] = (fw_route_leg){e[i], no[i], c < 0.0 ? c + 2.0 * M_PI : c, len, speed[i]};
+        out->leg[i] = (fw_route_leg){e[i], no[i], c < 0.0 ? c + 2.0 * M_PI : c, len, speed[i],
+                                     0.0, 0.0};
     }
     return FW_OK;
 }

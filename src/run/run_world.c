@@ -295,6 +295,14 @@ fw_status fw_run_make_world(const fw_run_def *def, fw_world **w, fw_vessel **own
      * without a current, the rudder stays amidships as before */
     if (s->route.n == 0 && !fw_wind_is_calm(&s->env.wind))
         pd.policy.route.steered = true;
+    /* a waterway's room is the hull's: its centre keeps half its breadth in */
+    for (int k = 0; k < pd.policy.route.n; k++) {
+        fw_route_leg *l = &pd.policy.route.leg[k];
+        if (l->room_starboard > 0.0)
+            l->room_starboard = fmax(1.0, l->room_starboard - 0.5 * s->ship.B);
+        if (l->room_port > 0.0)
+            l->room_port = fmax(1.0, l->room_port - 0.5 * s->ship.B);
+    }
     if (!ctl && (st = fw_policy_controller_create(&pd, &ctl, err)))
         return st;
     fw_vessel_def vd = fw_default_vessel_def();

@@ -276,9 +276,20 @@ static fw_status fit_line(const polyline *pl, polyline *r, double *tol, double m
     }
 }
 
+/* The water either side of edge e's centre line (route.h room_starboard,
+ * room_port): half its width each way.  An edge is one direction's lanes:
+ * in a narrow channel a ship keeps to its starboard side (rule 9(a)), in a
+ * separation scheme to its traffic lane (rule 10(b)), so the other
+ * direction's lanes are not its room. */
+static void edge_room(const fw_net_edge *e, fw_route_leg *l)
+{
+    l->room_starboard = l->room_port = 0.5 * e->width;
+}
+
 /* The route from the reduced line pl, into s. */
 static fw_status make_route(const yt_doc *doc, const yt_node *own, const polyline *pl,
-                            double tol, const net_edges *ne, fw_scenario *s, fw_error *err)
+                            double tol, const fw_net_shape *ns, const net_edges *ne,
+                            fw_scenario *s, fw_error *err)
 {
     if (pl->n > FW_ROUTE_MAX_LEGS + 1)
         return yt_fail_key(doc, own, "own_ship", "network_route", err,
@@ -294,6 +305,8 @@ static fw_status make_route(const yt_doc *doc, const yt_node *own, const polylin
     fw_error rerr = {0};
     if (fw_route_from_waypoints(pl->x, pl->y, v, pl->n, &s->route, &rerr))
         return yt_fail_key(doc, own, "own_ship", "network_route", err, "%s", rerr.msg);
+    for (int k = 0; k < s->route.n; k++)
+        edge_room(fw_net_shape_edge(ns, ne->id[pl->edge[k]]), &s->route.leg[k]);
     fw_scn_route_start(s);
     return FW_OK;
 }
@@ -324,7 +337,7 @@ fw_status fw_scn_load_net_route(const yt_doc *doc, const yt_node *root, const yt
     double tol = FW_NETROUTE_TOL_M;
     if (!(st = edges_line(doc, &ns, &nf, &ne, &pl, err)) &&
         !(st = fit_line(&pl, &r, &tol, narrowest(&ns, &ne) / 4.0, err)))
-        st = make_route(doc, own, &r, tol, &ne, s, err);
+        st = make_route(doc, own, &r, tol, &ns, &ne, s, err);
     free(pl.x), free(pl.y), free(pl.edge);
     free(r.x), free(r.y), free(r.edge);
     fw_net_shape_free(&ns);
