@@ -62,12 +62,22 @@ void fw_helm_set_band(fw_helm_ctx *c, const fw_helm_band *band)
     c->band = band ? *band : (fw_helm_band){.on = false};
 }
 
+/* Chunk by chunk, the track predicted only as far as needed: most
+ * candidates in a channel leave it within minutes. */
 bool fw_cand_leaves_band(fw_helm_ctx *c, int slot)
 {
     if (!c->band.on)
         return false;
-    fw_cand_chunk(c, slot, c->nchunks - 1);
-    return fw_track_band_excess(&c->band, &c->tracks[slot]) > FW_BAND_SLACK_M;
+    const fw_track *tr = &c->tracks[slot];
+    fw_cand_chunk(c, slot, 0);
+    double out0 = band_out(&c->band, tr->east[0], tr->north[0]);
+    for (int j = 0, k = 1; j < c->nchunks; j++) {
+        fw_cand_chunk(c, slot, j);
+        for (; k < c->ready[slot]; k++)
+            if (band_out(&c->band, tr->east[k], tr->north[k]) - out0 > FW_BAND_SLACK_M)
+                return true;
+    }
+    return false;
 }
 
 /* Starts candidate (side, i) if this decision has not: mirrored from the
