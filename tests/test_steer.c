@@ -16,6 +16,10 @@
  *   give_way speed (the default): no alteration, the slow-down of before
  *   the predictor: a turning ship is expected to finish its turn (arc, then
  *     straight), a steady one to go on at constant velocity
+ *   close quarters: a steered ship at steerage way in a lane ship's path gets
+ *     its way back and passes ahead 0.25 nm off (before: it stayed stopped
+ *     and was run onto); a ship converging from abeam at 33 deg is crossing
+ *     (rule 13's sectors), not a ship going its way: they pass 0.25 nm off
  */
 #include <math.h>
 #include <string.h>
@@ -327,6 +331,85 @@ static void test_follows_a_slower_ship_ahead(void)
     fw_controller_destroy(c);
 }
 
+/* Sails steered ship c (its lane's course north) against target t (constant
+ * velocity) for n s, the ship moving as its model turns at the helm ordered
+ * (steady rate K' U / L x helm) at the speed ordered; the least distance
+ * between the centres and the least speed ordered. */
+static void sail_pair(fw_controller *c, fw_own_state *o, fw_target *t, int n, double *least,
+                      double *slowest)
+{
+    fw_assessment as[1];
+    int order[2];
+    fw_error err = {0};
+    *least = *slowest = INFINITY;
+    for (int k = 0; k < n; k++) {
+        fw_sense in = {.t = k, .own = o, .targets = t, .n = 1, .as = as, .order = order};
+        fw_decision d;
+        CHECK(c->ops->decide(c, &in, &d, &err) == FW_OK);
+        o->U = d.speed;
+        o->psi += FW_STEER_K_ND * o->U / 150.0 * d.helm;
+        o->east += o->U * sin(o->psi), o->north += o->U * cos(o->psi);
+        t->east += t->speed * sin(t->course), t->north += t->speed * cos(t->course);
+        *least = fmin(*least, hypot(t->east - o->east, t->north - o->north));
+        *slowest = fmin(*slowest, d.speed);
+    }
+}
+
+/* Close quarters (steer.h, rules 8(e) and 17(b)): a steered 150 m ship
+ * (own speed 8 m/s) slowed to steerage way on its lane, a lane ship (6 m/s,
+ * 150 m) coming from the west along a line 150 m ahead of it, 1500 m off:
+ * at steerage way it would be run onto (centres 100 m apart at 250 s), and
+ * a stopped ship hardly turns.  It gets its way back and passes ahead:
+ * centres at least 463 m (0.25 nm) apart; before, it took the way off,
+ * finding no turn that gained, and the hulls met (strait-domain, 17 of 19
+ * background overlaps in seeds 1-4 on a93facc). */
+static void test_close_quarters_keeps_way_out_of_a_lane(void)
+{
+    fw_alter_def def = fw_default_alter_def();
+    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
+    def.length = 150.0, def.breadth = 25.0, def.speed = 8.0;
+    snprintf(def.other, sizeof def.other, "%s", "gone");
+    fw_controller *c = NULL;
+    fw_error err = {0};
+    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    fw_own_state o = {.U = 1.0};
+    fw_target t = {.id = "lane", .east = -1500.0, .north = 150.0, .course = 0.5 * FW_PI,
+                   .heading = 0.5 * FW_PI, .speed = 6.0, .stw = 6.0, .length = 150.0,
+                   .breadth = 25.0};
+    double least, slowest;
+    sail_pair(c, &o, &t, 600, &least, &slowest);
+    CHECK_MSG(least >= 463.0, "passed %.0f m off", least);
+    CHECK_MSG(o.U > 7.9, "at %.1f m/s after 10 minutes", o.U);
+    fw_controller_destroy(c);
+}
+
+/* Going its way is rule 13's: a ship converging from abeam at 33 deg (19 kn
+ * against its 15, both 200 m) is crossing from its starboard side: the
+ * steered ship acts (it altered course or slowed) and they pass 0.25 nm or
+ * more apart; before, courses within 45 deg alone made it a ship going its
+ * way and neither saw the other (strait-domain, seed 4, replication 4). */
+static void test_converging_from_abeam_is_crossing(void)
+{
+    fw_alter_def def = fw_default_alter_def();
+    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
+    def.length = 150.0, def.breadth = 25.0, def.speed = fw_kn_to_ms(15.0);
+    snprintf(def.other, sizeof def.other, "%s", "gone");
+    fw_controller *c = NULL;
+    fw_error err = {0};
+    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    fw_own_state o = {.U = def.speed};
+    /* meeting at (0, 3000) in 390 s: it from due east of that point's
+     * approach, on 327 deg */
+    double v = fw_kn_to_ms(19.0), tm = 3000.0 / def.speed, crs = fw_deg_to_rad(327.0);
+    fw_target t = {.id = "ferry", .course = crs, .heading = crs, .speed = v, .stw = v,
+                   .length = 150.0, .breadth = 25.0};
+    t.east = -v * tm * sin(crs), t.north = 3000.0 - v * tm * cos(crs);
+    double least, slowest;
+    sail_pair(c, &o, &t, 900, &least, &slowest);
+    CHECK_MSG(least >= 463.0, "passed %.0f m off", least);
+    fw_controller_destroy(c);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -342,5 +425,7 @@ int main(void)
     TEST_RUN(test_speed_mode_unchanged);
     TEST_RUN(test_head_on_alters);
     TEST_RUN(test_follows_a_slower_ship_ahead);
+    TEST_RUN(test_close_quarters_keeps_way_out_of_a_lane);
+    TEST_RUN(test_converging_from_abeam_is_crossing);
     return TEST_EXIT();
 }

@@ -190,6 +190,9 @@ typedef struct react_out {
     double speed_end[3];
 } react_out;
 
+/* m/s: the own ship's speed in react_world (10 kn unless a test says) */
+static double g_react_own_speed = 0.0;
+
 static react_out react_world_gw(const fw_kin_ship *ships, int n, fw_behaviour b, int seconds,
                                 fw_give_way gw)
 {
@@ -207,7 +210,7 @@ static react_out react_world_gw(const fw_kin_ship *ships, int n, fw_behaviour b,
     fw_vessel_def vd = fw_default_vessel_def();
     vd.ship = &c3;
     vd.dynamics = FW_DYN_NOMOTO;
-    vd.speed = fw_kn_to_ms(10);
+    vd.speed = g_react_own_speed > 0.0 ? g_react_own_speed : fw_kn_to_ms(10);
     CHECK_MSG(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK &&
                   fw_world_create(&wd, &w, &err) == FW_OK &&
                   fw_world_add_vessel(w, &vd, &oh, &err) == FW_OK &&
@@ -602,6 +605,26 @@ static void test_paper_case_without_sumo(void)
     }
 }
 
+/* Rule 17(b) and 8(e): a lane-bound stand-on ship S (8 m/s west, 200 m)
+ * meets the own ship (the C-3, the give-way ship, from its port side) crawling
+ * north at 0.4 m/s with its bow already across S's track, and acting not at
+ * all.  At min_speed (2.4 m/s) S would pass 148 m centre to centre, its bow
+ * into the C-3's side; none of its speeds down to min_speed passes at
+ * last_cpa, so it slows further, to steerage way (1 m/s: 554 m), and the
+ * C-3 clears its track first: centres at least 300 m apart (the half
+ * lengths 166 + 100 m).  Before, S held min_speed and ran onto it (strait,
+ * 10 of 25 background overlaps on a93facc). */
+static void test_stand_on_takes_the_way_off(void)
+{
+    fw_kin_ship s = {.start = {.id = "S", .east = 1920.0, .north = 170.0, .course = 1.5 * FW_PI,
+                               .heading = 1.5 * FW_PI, .speed = 8.0, .length = 200,
+                               .breadth = 32}};
+    g_react_own_speed = 0.4;
+    react_out o = react_world(&s, 1, FW_BEHAVIOUR_COLREGS, 1500);
+    g_react_own_speed = 0.0;
+    CHECK_MSG(o.slow >= 1 && o.dmin > 300.0, "%d speed orders, closest %.0f m", o.slow, o.dmin);
+}
+
 int main(void)
 {
     if (test_tmpdir("world", tmp_root, sizeof tmp_root))
@@ -615,6 +638,7 @@ int main(void)
     TEST_RUN(test_world_contract);
     TEST_RUN(test_two_vessels_head_on);
     TEST_RUN(test_reactive_traffic);
+    TEST_RUN(test_stand_on_takes_the_way_off);
     TEST_RUN(test_slowed_then_alters);
     TEST_RUN(test_threat_during_return);
     TEST_RUN(test_return_to_track);

@@ -450,11 +450,19 @@ fw_status fw_react_record(fw_reactions *r, const fw_reaction *x, fw_error *err)
     return FW_OK;
 }
 
+/* m/s: the least a stand-on ship's last action slows it to (steerage way,
+ * world/steer.h's; a ship stopped in a lane is one the monitors count) */
+static const double kLastWay = 1.0;
+
 /* Rule 17(b): a stand-on ship that finds itself so close to a ship that
  * should give way that this alone cannot avoid a collision (DCPA below
  * last_cpa within last_time s) takes the action that best aids: the speed
- * (from its own down to min_speed, 5 % steps) that passes farthest.  *j_out:
- * the closest such ship (-1: none). */
+ * (from its own down to min_speed, 5 % steps) that passes farthest, and
+ * where none of those passes at last_cpa, slower still down to steerage way
+ * (rule 8(e): she takes the way off; lane-bound, it is all she can do, and
+ * at min_speed she ran onto give-way ships crawling or stopped across her
+ * lane: strait-domain, 10 of 25 background overlaps, seeds 1-4, a93facc).
+ * *j_out: the closest such ship (-1: none). */
 static double last_action(const fw_reactions *r, int self, const fw_target *all, double v0,
                           double vh, int *j_out, double *dcpa_now, double *dcpa_best)
 {
@@ -488,7 +496,8 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
     *dcpa_best = *dcpa_now;
     for (int k = 0; k <= 20; k++) {
         double v = v0 * (1.0 - 0.05 * k), tc, dc;
-        if (v < r->def.min_speed * v0 - 1e-12)
+        if (v < r->def.min_speed * v0 - 1e-12 &&
+            (score >= r->def.last_cpa || v < kLastWay - 1e-12))
             break;
         double s = fw_react_min_pass(r, self, all, v, -1, 0.0);
         if (s > score + 1e-6) {

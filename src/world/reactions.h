@@ -35,8 +35,10 @@
  * A stand-on ship keeps course and speed (rule 17(a)): nothing is ordered,
  * until the other has come so close (DCPA below last_cpa within last_time s)
  * that its action alone cannot avoid a collision: then it takes the speed,
- * down to min_speed of its own, that passes farthest (rule 17(b)), and its
- * own speed back once that is no longer so.
+ * down to min_speed of its own, that passes farthest (rule 17(b)), or, where
+ * none of those passes at last_cpa, slower still, down to steerage way (1
+ * m/s: rule 8(e), it takes the way off; lane-bound, it has no other action),
+ * and its own speed back once that is no longer so.
  * In restricted visibility (colregs.visibility > 0) a ship farther off than
  * it is out of sight: rule 19 replaces the roles, and a ship at risk with one
  * forward of its beam gives way to it (slows) whichever side it is on; for

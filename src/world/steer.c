@@ -74,6 +74,10 @@ typedef struct steer_ctl {
     /* speed (steer.h): its own, the order now, when it was given, and until
      * when it slows because it cannot alter */
     double speed, u_order, t_order, slow_until, stop_until;
+    /* the speed it wanted at the last decision, and until when it keeps its
+     * own speed because that passes farther at close quarters */
+    double want, go_until;
+    double slow_v; /* m/s, the speed it slows to where it cannot alter (slow_for) */
 } steer_ctl;
 
 /* The heading that makes good course chi over ground at speed U in the
@@ -159,12 +163,22 @@ static void cpa_on(const fw_own_state *o, const fw_target *t, double oe, double 
     fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, tc, dc);
 }
 
-/* A ship going its way (its course within 45 deg of chi): one ahead it keeps
- * its distance from by speed (follow_speed), one astern is overtaking and
- * keeps clear of it (rule 13); neither makes it alter course. */
-static bool same_way(const fw_target *t, double chi)
+/* A ship going its way (rule 13): its course within 45 deg of its heading,
+ * and one of the two more than 22.5 deg abaft the other's beam: one ahead
+ * it keeps its distance from by speed (follow_speed), one astern is
+ * overtaking and keeps clear of it (rule 13); neither makes it alter
+ * course.  A ship converging from abeam on a course within 45 deg of its
+ * own is crossing (rule 15), not going its way: the courses alone hid a
+ * ferry converging at 33 deg from abeam at 19 kn from a steered lane ship
+ * and the lane ship from the ferry until their hulls met (strait, seed 4). */
+static bool same_way(const fw_own_state *o, const fw_target *t)
 {
-    return fabs(fw_wrap_pi(t->course - chi)) < 0.25 * FW_PI;
+    if (!(fabs(fw_wrap_pi(t->course - o->psi)) < 0.25 * FW_PI))
+        return false;
+    const double abaft = fw_deg_to_rad(112.5);
+    double brg = atan2(t->east - o->east, t->north - o->north);
+    return fabs(fw_wrap_pi(brg - o->psi)) > abaft ||
+           fabs(fw_wrap_pi(brg + FW_PI - t->heading)) > abaft;
 }
 
 /* The ship it must give way to by altering course (rules 14 and 15, from
@@ -177,7 +191,7 @@ static int must_give_way(const steer_ctl *c, const fw_sense *in, double chi, fw_
     own_velocity(in->own, chi, &oe, &on);
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
-        if (same_way(&in->targets[i], in->own->psi))
+        if (same_way(in->own, &in->targets[i]))
             continue;
         cpa_on(in->own, &in->targets[i], oe, on, &tc, &dc);
         if (!(tc > 0.0 && tc < kHorizonS && dc < c->def.cpa && tc < tbest))
@@ -198,7 +212,7 @@ static double pass_within(const fw_sense *in, double chi, double horizon, bool c
     own_velocity(in->own, chi, &oe, &on);
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
-        if (cross_only && same_way(&in->targets[i], in->own->psi))
+        if (cross_only && same_way(in->own, &in->targets[i]))
             continue;
         cpa_on(in->own, &in->targets[i], oe, on, &tc, &dc);
         if (tc > 0.0 && tc < horizon && dc < best)
@@ -213,37 +227,92 @@ static double pass_on(const fw_sense *in, double chi)
     return pass_within(in, chi, kHorizonS, false, &who);
 }
 
-/* Close quarters (rules 2(b) and 17(b)): whatever the roles, a ship the
- * course it steers (chi) would pass within a quarter of the passing
+/* m/s^2 (ships.add.xml's accel and decel), m/s (steerage way), and the
+ * fraction of its speed it slows to when it cannot alter */
+static const double kAccel = 0.05, kDecel = 0.1, kSteerageWay = 1.0, kSlowFraction = 0.3;
+/* s: the step of the close-quarters look ahead along a speed change */
+static const double kSampleS = 5.0;
+
+/* m: how far a ship at u0 m/s runs in t s when ordered v, speeding up or
+ * slowing down at the background types' rates (speed_order). */
+static double run_in(double u0, double v, double t)
+{
+    double a = v >= u0 ? kAccel : -kDecel, tr = (v - u0) / a;
+    if (t <= tr)
+        return u0 * t + 0.5 * a * t * t;
+    return 0.5 * (u0 + v) * tr + v * (t - tr);
+}
+
+/* The closest it would come to any ship it sees in the next kCloseS on
+ * course chi ordered speed v (its speed changing at its rates: a ship that
+ * has taken the way off gets it back slowly), hull centres, every kSampleS;
+ * a ship it is not closing counts not. */
+static double pass_along(const fw_sense *in, double chi, double v)
+{
+    const fw_own_state *o = in->own;
+    double best = INFINITY, sc = sin(chi), cc = cos(chi);
+    for (int i = 0; i < in->n; i++) {
+        const fw_target *t = &in->targets[i];
+        double te, tn, dx = t->east - o->east, dy = t->north - o->north;
+        fw_velocity(t->speed, t->course, &te, &tn);
+        double d0 = hypot(dx, dy), dmin = d0;
+        if (d0 > (fabs(t->speed) + fmax(o->U, v) + 2.0) * kCloseS)
+            continue; /* cannot come near in the look ahead */
+        for (double s = kSampleS; s <= kCloseS + 1e-9; s += kSampleS) {
+            double run = run_in(o->U, v, s);
+            double ex = dx + (te - o->cur_e) * s - run * sc;
+            double ny = dy + (tn - o->cur_n) * s - run * cc;
+            dmin = fmin(dmin, hypot(ex, ny));
+        }
+        if (dmin < d0)
+            best = fmin(best, dmin);
+    }
+    return best;
+}
+
+/* Close quarters (rules 2(b), 8(e) and 17(b)): whatever the roles, a ship
+ * the course it steers (chi) would pass within a quarter of the passing
  * distance in the next 5 minutes (not one going its way: same_way) makes it
- * turn now, to the course from 10 to 90 deg to starboard of its heading (10
+ * take, of the courses from its heading to 90 deg to starboard of it (10
  * deg steps, at most 60 deg off its lane: a wider turn at close quarters
- * made more overlaps in the strait study, 4 against 2 in 80 runs) that
- * passes every ship farthest in
- * those 5 minutes, if that gains 50 m (true: turned).  Never to
+ * made more overlaps in the strait study, 4 against 2 in 80 runs) and the
+ * speeds it has (the one it sails now, its own, steerage way), the action
+ * that passes every ship farthest in those 5 minutes, its speed changing
+ * at its rates, if that gains 50 m on going on as it is (true: turned).
+ * Taking the way off is one of those actions, not what is left when no turn
+ * gains: stopped in a crossing ship's way it is run onto by a ship that
+ * cannot leave its lane (17 of 19 background overlaps in strait-domain,
+ * seeds 1-4, on a93facc: a steered ship at steerage way for minutes in a
+ * lane), and a stopped ship hardly turns (K = K' U / L).  Never to
  * port: the other ship, by the same rules, turns to starboard (17(c)), and
  * a turn to port against a constant-velocity look at a ship that is already
  * turning is the classic way to meet it. */
 static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, double chi)
 {
-    int j = -1, k;
+    int j = -1;
     double lim = 0.25 * c->def.cpa;
     if (!(pass_within(in, chi, kCloseS, true, &j) < lim))
         return false;
-    double best = pass_within(in, chi, kCloseS, false, &k), pick = chi;
-    for (int s = 1; s <= 9; s++) {
-        double cand = in->own->psi + fw_deg_to_rad(10.0 * s);
-        if (fw_wrap_pi(cand - course) > kMaxOff + 1e-9)
+    double now = c->want > 0.0 ? c->want : in->own->U;
+    double speeds[3] = {now, c->speed > 0.0 ? c->speed : in->own->U, kSteerageWay};
+    double best = pass_along(in, chi, now) + kBetterM, pick = chi, v_pick = now;
+    for (int s = 0; s <= 9; s++) {
+        double cand = s == 0 ? chi : in->own->psi + fw_deg_to_rad(10.0 * s);
+        if (s > 0 && fw_wrap_pi(cand - course) > kMaxOff + 1e-9)
             break;
-        double d = pass_within(in, cand, kCloseS, false, &k);
-        if (d > best + kBetterM)
-            best = d, pick = cand;
+        for (int k = s == 0 ? 1 : 0; k < 3; k++) {
+            double d = pass_along(in, cand, speeds[k]);
+            if (d > best)
+                best = d, pick = cand, v_pick = speeds[k];
+        }
     }
-    if (pick == chi) {
-        /* no turn gains: it takes the way off (rule 8(e)) */
-        c->stop_until = in->t + kLookS;
+    if (v_pick != now) {
+        bool stop = v_pick < now;
+        c->stop_until = stop ? in->t + kLookS : -INFINITY;
+        c->go_until = stop ? -INFINITY : in->t + kLookS;
+    }
+    if (pick == chi)
         return false;
-    }
     /* the same turn as it is making (its heading still swinging to it, the
      * candidates measured from that heading): no new alteration to report;
      * before, one ship reported one turn every second of its swing, 40 deg
@@ -258,6 +327,52 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
     c->phase = FW_STEER_ALTER;
     snprintf(c->other, sizeof c->other, "%s", in->targets[j].id);
     return true;
+}
+
+/* The closest it would pass any ship it sees on course chi at speed v,
+ * ahead in the horizon (constant velocities). */
+static double pass_at(const fw_sense *in, double chi, double v)
+{
+    const fw_own_state *o = in->own;
+    double best = INFINITY, oe, on, tc, dc;
+    fw_velocity(v, chi, &oe, &on);
+    oe += o->cur_e, on += o->cur_n;
+    for (int i = 0; i < in->n; i++) {
+        cpa_on(o, &in->targets[i], oe, on, &tc, &dc);
+        if (tc > 0.0 && tc < kHorizonS && dc < best)
+            best = dc;
+    }
+    return best;
+}
+
+/* Where it cannot alter it slows (rule 8(e)) as the lane ships do
+ * (reactions.h): to the fastest speed from the one it has down to
+ * kSlowFraction of its own (5 % steps of its own) at which every ship it
+ * sees passes at the passing distance on chi, or, none, to the one that
+ * passes farthest; never faster than it goes (rule 15: a give-way ship
+ * does not speed up to cross ahead).  A fixed 30 % had steered ferries
+ * cross the strait's lanes at 6 kn where less would have cleared, minutes
+ * in the lane ships' path. */
+static void slow_for(steer_ctl *c, const fw_sense *in, double chi)
+{
+    double own = c->speed > 0.0 ? c->speed : fmax(in->own->U, kSteerageWay);
+    double best = -1.0, v_best = kSlowFraction * own;
+    for (int k = 0; k <= 14; k++) {
+        double v = own * (1.0 - 0.05 * k);
+        if (v > in->own->U + 1e-9)
+            continue;
+        if (v < kSlowFraction * own - 1e-9)
+            break;
+        double d = pass_at(in, chi, v);
+        if (d >= c->def.cpa) {
+            v_best = v;
+            break;
+        }
+        if (d > best + 1e-6)
+            best = d, v_best = v;
+    }
+    c->slow_v = v_best;
+    c->slow_until = in->t + kLookS;
 }
 
 /* A ship it must give way to on the course it steers (chi): it alters
@@ -277,7 +392,7 @@ static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi, 
      * Before, such a ship reported the same alteration every look (one 15
      * times in 150 s at twice Dover's density) while its heading stayed */
     if (isfinite(c->def.room) && c->def.room - xt < c->def.length) {
-        c->slow_until = in->t + kLookS;
+        slow_for(c, in, chi);
         return false;
     }
     for (double alt = fw_deg_to_rad(20.0); alt <= fw_deg_to_rad(60.0) + 1e-9;
@@ -293,7 +408,7 @@ static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi, 
         snprintf(c->other, sizeof c->other, "%s", in->targets[j].id);
         return true;
     }
-    c->slow_until = in->t + kLookS;
+    slow_for(c, in, chi);
     return false;
 }
 
@@ -303,10 +418,6 @@ static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi, 
  * (its half breadth and the other's and kSideM) now or within kPathS. */
 static const double kMinGapM = 200.0, kHeadwayS = 30.0, kRelaxS = 60.0;
 static const double kSideM = 100.0, kPathS = 600.0;
-/* m/s^2 (ships.add.xml's accel and decel), m/s (steerage way), and the
- * fraction of its speed it slows to when it cannot alter */
-static const double kAccel = 0.05, kDecel = 0.1, kSteerageWay = 1.0, kSlowFraction = 0.3;
-
 /* The fastest it may sail on course chi behind the ships ahead going its way. */
 static double follow_speed(const steer_ctl *c, const fw_sense *in, double chi, double want)
 {
@@ -347,8 +458,10 @@ static double speed_order(steer_ctl *c, const fw_sense *in, double chi)
     if (!isfinite(c->t_order))
         c->u_order = in->own->U, c->t_order = in->t;
     double want = in->t < c->stop_until   ? kSteerageWay
-                  : in->t < c->slow_until ? kSlowFraction * c->speed
+                  : in->t < c->go_until   ? c->speed
+                  : in->t < c->slow_until ? c->slow_v
                                           : c->speed;
+    c->want = want;
     /* behind the ships ahead on the course it steers and on the course it
      * makes good now: a slow ship turns slowly (K = K' U / L), and sails on
      * the old course for a while */
@@ -457,7 +570,7 @@ fw_status fw_steer_controller_create(const fw_alter_def *def, fw_controller **ou
     c->t_look = -INFINITY; /* set at the first decision */
     c->speed = def->speed;
     c->t_order = NAN;      /* the first decision gives the first order */
-    c->slow_until = c->stop_until = -INFINITY;
+    c->slow_until = c->stop_until = c->go_until = -INFINITY;
     *out = &c->base;
     return FW_OK;
 }

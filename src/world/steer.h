@@ -55,9 +55,17 @@
  * plus 30 s at the leader's speed, closed or opened over a minute: it never
  * runs up on a lane-mate while off its lane or coming back); where it must
  * give way and no alteration clears it slows to 0.3 of its speed (rule
- * 8(e); the reactive traffic's floor), and at close quarters where no turn
- * gains it takes the way off (down to steerage way), each for the next 10 s,
- * looked at again then.  Its speed orders change by at most
+ * 8(e); the reactive traffic's floor), each for the next 10 s, looked at
+ * again then.  At close quarters (a ship it would pass within a quarter of
+ * the passing distance in the next 5 minutes, whatever the roles: rules
+ * 2(b), 8(e), 17(b)) it takes, of the turns to starboard of its heading (10
+ * to 90 deg, at most 60 deg off its lane) and its speeds (the one it sails,
+ * its own, steerage way: taking the way off), the one that passes every ship
+ * farthest over those 5 minutes, its speed changing at its rates below, if
+ * that gains 50 m on going on as it is: it takes the way off where that
+ * lets the other pass clear, and keeps or gets back its way where stopping
+ * would leave it in a ship's path (a lane ship that can only slow runs onto
+ * it).  Its speed orders change by at most
  * the background types' 0.05 m/s^2 up and 0.1 m/s^2 down, never below 1 m/s
  * (steerage way), and it is given back at the speed it has.
  * Wind acts on it no more than on SUMO's ships (neither has windage); a
@@ -68,9 +76,11 @@
  * next 15 minutes makes it alter further to starboard, by the least of 20,
  * 25, ... 60 deg that passes every ship it sees at that distance (at most
  * 60 deg off its lane; none: it slows, below),
- * and it gives way to that ship from then on.  Ships going its way (courses
- * within 45 deg) never make it alter: one ahead it keeps its distance from
- * by speed (below), one astern is overtaking it and keeps clear (rule 13).
+ * and it gives way to that ship from then on.  Ships going its way (rule 13:
+ * courses within 45 deg, and one of the two more than 22.5 deg abaft the
+ * other's beam) never make it alter: one ahead it keeps its distance from
+ * by speed (below), one astern is overtaking it and keeps clear (rule 13);
+ * one converging from abeam on a course within 45 deg is crossing.
  * The other ships see it as a vessel and give way to it as the rules say
  * (reactions.h).
  */
