@@ -48,7 +48,19 @@ static bool leaves_band(const fw_helm_ref *r, const fw_track *tr)
         else if (out - first > FW_BAND_SLACK_M)
             return true;
     }
-    return false;
+    if (tr->n < 2)
+        return false;
+    /* and the end, carried on FW_BAND_AHEAD_S by the last step's motion */
+    int k = tr->n - 1;
+    double f = FW_BAND_AHEAD_S / tr->dt;
+    double e = tr->east[k] + (tr->east[k] - tr->east[k - 1]) * f;
+    double n = tr->north[k] + (tr->north[k] - tr->north[k - 1]) * f;
+    double x = (e - b->east) * to_stbd_e + (n - b->north) * to_stbd_n, out = 0.0;
+    if (b->room_starboard > 0.0 && x - b->room_starboard > out)
+        out = x - b->room_starboard;
+    if (b->room_port > 0.0 && -x - b->room_port > out)
+        out = -x - b->room_port;
+    return out - first > FW_BAND_SLACK_M;
 }
 
 fw_status fw_helm_ref_create(const fw_helm_def *def, int nh, fw_helm_ref **out, fw_error *err)

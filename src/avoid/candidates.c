@@ -44,13 +44,22 @@ static double band_out(const fw_helm_band *b, double e, double n)
     return out;
 }
 
+/* m: where the track's last sample is carried on FW_BAND_AHEAD_S by its
+ * last step's motion (one coordinate, x: the track's east or north) */
+static double ahead(const fw_track *tr, const double *x)
+{
+    int k = tr->n - 1;
+    return k < 1 ? x[0] : x[k] + (x[k] - x[k - 1]) * (FW_BAND_AHEAD_S / tr->dt);
+}
+
 double fw_track_band_excess(const fw_helm_band *b, const fw_track *tr)
 {
     if (!b->on || tr->n < 1)
         return 0.0;
     double out0 = band_out(b, tr->east[0], tr->north[0]), worst = 0.0;
-    for (int k = 1; k < tr->n; k++) {
-        double d = band_out(b, tr->east[k], tr->north[k]) - out0;
+    for (int k = 1; k <= tr->n; k++) {
+        double d = band_out(b, k < tr->n ? tr->east[k] : ahead(tr, tr->east),
+                            k < tr->n ? tr->north[k] : ahead(tr, tr->north)) - out0;
         if (d > worst)
             worst = d;
     }
@@ -77,7 +86,8 @@ bool fw_cand_leaves_band(fw_helm_ctx *c, int slot)
             if (band_out(&c->band, tr->east[k], tr->north[k]) - out0 > FW_BAND_SLACK_M)
                 return true;
     }
-    return false;
+    return band_out(&c->band, ahead(tr, tr->east), ahead(tr, tr->north)) - out0 >
+           FW_BAND_SLACK_M;
 }
 
 /* Starts candidate (side, i) if this decision has not: mirrored from the

@@ -51,7 +51,8 @@ typedef struct fw_helm_ctx fw_helm_ctx;
  * route): the strip along the line through (east, north) on `course`
  * (rad), room_starboard to its starboard and room_port to its port (m; 0 on
  * a side: no edge there).  A track leaves it where some sample is farther
- * out of the strip than the own ship starts by more than FW_BAND_SLACK_M: a
+ * out of the strip than the own ship starts by more than FW_BAND_SLACK_M
+ * (or its end carried FW_BAND_AHEAD_S on is): a
  * ship already out is asked not to go farther, not to jump back.  With a
  * band, a candidate that leaves it keeps no target out (fw_helm_search) and
  * is no fallback either, and fw_helm_steer_clearance reports such a track
@@ -63,6 +64,13 @@ typedef struct fw_helm_band {
 } fw_helm_band;
 
 #define FW_BAND_SLACK_M 1.0
+/* s: a track is also judged where its last sample's motion (from the sample
+ * before) takes it this much later: a candidate that ends its horizon
+ * heading for the edge (a hard turn slows the ship, and it reaches the edge
+ * only just after) leaves the band as surely as one that crosses it inside
+ * the horizon (a bend-channel run at density 2 turned 26 deg towards a ship
+ * alongside, so, and collided) */
+#define FW_BAND_AHEAD_S 120.0
 
 /* m: how much farther out of band b than its first sample track tr goes
  * (0: it keeps within, or b is off). */
