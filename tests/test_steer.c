@@ -105,19 +105,16 @@ static void test_model_turns_as_stated(void)
     fw_world_destroy(w);
 }
 
-/* A world: background ship g (150 x 25 m, 10 kn, going north from the
- * origin) and the own ship (a Nomoto C-3 without a controller: it holds its
- * course) from (e, n) on course_deg at kn; give_way as given, sea room. */
-static fw_world *scene_in(fw_give_way gw, double room, double e, double n, double course_deg,
-                          double kn, double cur_e)
+/* A world: the background ships ks (nks) and the own ship (a Nomoto C-3
+ * without a controller: it holds its course) from (e, n) on course_deg at
+ * kn; give_way as given, sea room, a current to the east. */
+static fw_world *world_of(const fw_kin_ship *ks, int nks, fw_give_way gw, double room, double e,
+                          double n, double course_deg, double kn, double cur_e)
 {
     fw_error err = {0};
-    fw_kin_ship ks[1] = {{.start = {.id = "g", .east = 0, .north = 0, .course = 0.0,
-                                    .speed = fw_kn_to_ms(10), .length = 150, .breadth = 25,
-                                    .type = "container_feeder"}}};
     fw_kinematic_def kd = fw_default_kinematic_def();
     kd.ships = ks;
-    kd.n = 1;
+    kd.n = nks;
     kd.room = room;
     fw_world_def wd = fw_default_world_def();
     wd.reactions = fw_default_reactions_def(); /* colregs */
@@ -135,6 +132,17 @@ static fw_world *scene_in(fw_give_way gw, double room, double e, double n, doubl
     CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
     CHECK(fw_world_start(w, &err) == FW_OK);
     return w;
+}
+
+/* The world with one background ship g (150 x 25 m, 10 kn, going north
+ * from the origin). */
+static fw_world *scene_in(fw_give_way gw, double room, double e, double n, double course_deg,
+                          double kn, double cur_e)
+{
+    fw_kin_ship ks[1] = {{.start = {.id = "g", .east = 0, .north = 0, .course = 0.0,
+                                    .speed = fw_kn_to_ms(10), .length = 150, .breadth = 25,
+                                    .type = "container_feeder"}}};
+    return world_of(ks, 1, gw, room, e, n, course_deg, kn, cur_e);
 }
 
 static fw_world *scene(fw_give_way gw, double room, double e, double n, double course_deg,
@@ -410,6 +418,61 @@ static void test_converging_from_abeam_is_crossing(void)
     fw_controller_destroy(c);
 }
 
+/* Ships of one lane (north from the origin's meridian, x = 0), each
+ * (id, north m, kn; 150 x 25 m), and the own ship crossing as crossing()
+ * does: from (e, 4000) going west at kn_own so as to be at (0, 4000) when g
+ * (10 kn, from the origin) would be. */
+static fw_world *lane_scene(const fw_kin_ship *ks, int n, double kn_own)
+{
+    return world_of(ks, n, FW_GIVE_WAY_COURSE, INFINITY,
+                    fw_kn_to_ms(kn_own) * 4000.0 / fw_kn_to_ms(10.0), 4000.0, 270.0, kn_own, 0.0);
+}
+
+static fw_kin_ship lane_ship(const char *id, double north, double kn)
+{
+    fw_kin_ship k = {.start = {.east = 0, .north = north, .course = 0.0, .speed = fw_kn_to_ms(kn),
+                               .length = 150, .breadth = 25, .type = "container_feeder"}};
+    snprintf(k.start.id, sizeof k.start.id, "%s", id);
+    return k;
+}
+
+/* g (10 kn) gives way to the crossing own ship by altering to starboard;
+ * h, 14 kn, 1.5 km astern of it in its lane, overtakes it as it moves off
+ * (rule 13): h keeps its lane and speed, passing g (steered off to its
+ * starboard) at half a mile or more, where before it slowed for it.  g
+ * comes back and is given back. */
+static void test_overtaking_a_ship_moving_off(void)
+{
+    fw_kin_ship ks[2] = {lane_ship("g", 0.0, 10.0), lane_ship("h", -1500.0, 14.0)};
+    fw_world *w = lane_scene(ks, 2, 12.0);
+    fw_error err = {0};
+    double closest = INFINITY;
+    for (int k = 0; k < 3600; k++) {
+        CHECK_MSG(fw_world_step(w, 1.0, &err) == FW_OK, "%s", err.msg);
+        fw_target g;
+        const fw_target *v;
+        int n;
+        fw_source *src = fw_world_source(w);
+        if (!g_now(w, &g) || src->ops->within(src, 0.0, 0.0, INFINITY, &v, &n, &err))
+            continue;
+        for (int i = 0; i < n; i++)
+            if (strcmp(v[i].id, "h") == 0)
+                closest = fmin(closest, hypot(v[i].east - g.east, v[i].north - g.north));
+    }
+    int n, g_alters = 0, g_back = 0, h_slows = 0;
+    const fw_reaction *r = fw_world_reactions(w, &n);
+    for (int i = 0; i < n; i++) {
+        g_alters += strcmp(r[i].ship, "g") == 0 && r[i].kind == FW_REACT_ALTER;
+        g_back += strcmp(r[i].ship, "g") == 0 && r[i].kind == FW_REACT_REJOIN;
+        h_slows += strcmp(r[i].ship, "h") == 0 && r[i].kind == FW_REACT_SLOW;
+    }
+    CHECK_MSG(g_alters >= 1 && g_back == 1, "g: %d alterations, %d given back", g_alters, g_back);
+    CHECK_MSG(h_slows == 0, "h slowed %d times", h_slows);
+    /* h passed g abeam at the half mile or more that g's way back waits for */
+    CHECK_MSG(closest >= 0.5 * 926.0, "h came within %.0f m of g", closest);
+    fw_world_destroy(w);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -427,5 +490,6 @@ int main(void)
     TEST_RUN(test_follows_a_slower_ship_ahead);
     TEST_RUN(test_close_quarters_keeps_way_out_of_a_lane);
     TEST_RUN(test_converging_from_abeam_is_crossing);
+    TEST_RUN(test_overtaking_a_ship_moving_off);
     return TEST_EXIT();
 }

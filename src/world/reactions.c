@@ -213,6 +213,8 @@ static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
     *dcpa = sqrt(d2);
     fw_own_state me = {.east = a->east, .north = a->north, .psi = a->heading, .U = va};
     *sit = fw_react_classify(r, &me, a, b);
+    if (*sit == FW_SIT_OVERTAKING && fw_react_leaves_way(r, a, va, b))
+        return false;
     /* a give-way ship stays one until the other is past and clear (rule 8):
      * the ship it is giving way to counts while the risk lasts, whatever the
      * bearing says now (passing ahead, it moves onto the port bow) */
@@ -665,19 +667,17 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
         return stand_on(r, t, self, all, st, src, err);
     st->rule17 = false;
     if (k == 0) {
-        /* not while the ship it gave way to is still this close: around the
-         * closest approach the predicted passing flips from ahead to past */
+        /* not while the ship it gave way to is this close (the passing
+         * flips from ahead to past there), unless it leaves its way */
         for (int j = 0; j < n; j++)
             if (!(r->truth && r->how[j] == FW_KNOWN_NOT) && strcmp(all[j].id, st->other) == 0 &&
-                hypot(all[j].east - a->east, all[j].north - a->north) < r->def.cpa)
+                hypot(all[j].east - a->east, all[j].north - a->north) < r->def.cpa &&
+                !fw_react_overtakes_clear(r, a, v0, &all[j]))
                 return FW_OK;
         /* clear at its own speed again: given back */
         snprintf(x.ship, sizeof x.ship, "%s", a->id);
-        x.kind = FW_REACT_RESUME;
-        x.speed_from = st->hold;
-        x.speed_to = st->v0;
-        x.enough = true;
-        st->holding = false;
+        x.kind = FW_REACT_RESUME, x.speed_from = st->hold, x.speed_to = st->v0;
+        x.enough = true, st->holding = false;
         fw_status s2 = fw_source_set_speed(src, a->id, -1.0, err);
         return s2 ? s2 : fw_react_record(r, &x, err);
     }
@@ -688,8 +688,8 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
      * new one may need another: slower is not always clear of a crossing) */
     if (!r19e && st->holding && clears_at(r, self, all, st->hold, &after))
         return FW_OK;
-    /* overtaking (rule 13) it keeps out of the way by its speed: a ship it
-     * overtakes may itself be moving off to starboard (steered, steer.h).
+    /* overtaking (rule 13) it keeps out of the way by its speed (a ship
+     * steered into its way from its port side: by altering, reactions.h).
      * A ship already slowed whose speed no longer keeps the passing
      * distance alters course where it can, as one that has not slowed does:
      * rule 8(d), its action checked until the other is past and clear, and
@@ -699,7 +699,8 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
     if (r->def.give_way == FW_GIVE_WAY_COURSE)
         x.why = r19e ? FW_WHY_RULE19 : FW_WHY_OVERTAKING;
     bool held = st->holding;
-    if (!(held && r19e) && r->def.give_way == FW_GIVE_WAY_COURSE && sit != FW_SIT_OVERTAKING) {
+    if (!(held && r19e) && r->def.give_way == FW_GIVE_WAY_COURSE &&
+        (sit != FW_SIT_OVERTAKING || fw_react_passes_to_starboard(r, a, &all[nearest]))) {
         int a2 = fw_react_alter(r, t, self, all, st, r->list, m, nearest, sit, dcpa, src, &x.why,
                                 err);
         /* ordered, failed, or head-on (not slowed already): no speed */

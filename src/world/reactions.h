@@ -78,7 +78,12 @@
  * back and would go on, stale, from where it was), it slows down as above;
  * and an overtaking ship (rule 13) keeps out of the way by its speed (not
  * overtaking), since the ship it would overtake may itself be moving off
- * to starboard.  A ship that has slowed and whose speed no longer keeps
+ * to starboard; overtaking a ship fairway steers it does nothing while
+ * that ship leaves its way (on the course it is turning to it passes at
+ * half cpa or more and is not closing its track sideways: it keeps its lane
+ * and passes, and a speed it was held at for that ship is given back), and
+ * it alters course to starboard, where it can, to pass one steered into its
+ * way from its port side.  A ship that has slowed and whose speed no longer keeps
  * the passing distance tries an alteration first too, as one that has not
  * slowed does (rules 8(c) and 8(d)), and slows further only where it finds
  * none.  Every speed order says why it is not an alteration (fw_reaction

@@ -1,5 +1,6 @@
 /* reactions_course.c - a give-way ship that alters course (reactions.h, give_way course). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -7,6 +8,7 @@
 #include "core/names.h"
 #include "core/units.h"
 #include "geom/geom.h"
+#include "geom/turn.h"
 #include "world/reactions_internal.h"
 #include "world/steer.h"
 
@@ -134,4 +136,61 @@ int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, re
         return 1;
     }
     return 0;
+}
+
+/* Is b a background ship fairway steers (world/steer.h: taken from the
+ * source, listed among the vessels), not the own ship?  It was one of the
+ * source's ships, so its state has been seen. */
+static bool steered(const fw_reactions *r, const fw_target *b)
+{
+    if (!b->own)
+        return false;
+    int k = fw_idmap_find(&r->ids, b->id);
+    return k >= 0 && k < r->cap && r->s[k].seen;
+}
+
+/* Ship a (at speed va, one of r->all) overtaking b, a ship fairway steers
+ * off its lane (steer.h: it alters to starboard, and waits along its lane
+ * while a ship would pass within half the passing distance of its way
+ * back): does b leave a's way?  It does when, on the course it is turning
+ * to (its record's turn, geom/turn.h: an officer sees it swing) at its
+ * speed, it passes a at half the passing distance or more and is not
+ * closing a's track sideways (the side it is on, square to a's course,
+ * growing or held).  Then a keeps its lane and speed, as an overtaking ship
+ * does that sees the one ahead moving off; before, every such ship slowed
+ * for it (20 of the 35 speed orders of the Dover base scenario, seeds 1-3,
+ * on c08d456), often for minutes, while the one ahead waited beside its
+ * lane for it to pass. */
+bool fw_react_leaves_way(const fw_reactions *r, const fw_target *a, double va,
+                         const fw_target *b)
+{
+    if (!steered(r, b))
+        return false;
+    const fw_turn_pred *p = fw_turn_pred_of(b->pred);
+    double cb = p && p->turning ? b->course + fw_wrap_pi(p->heading - b->heading) : b->course;
+    ptrdiff_t i = a - r->all;
+    double de = b->east - a->east, dn = b->north - a->north, ae, an, be, bn, tc, d2;
+    double side = de * r->cs[i] - dn * r->sn[i]; /* to starboard of a's course */
+    fw_velocity(b->speed, cb, &be, &bn);
+    if (side * (be * r->cs[i] - bn * r->sn[i]) < 0.0)
+        return false; /* closing a's track */
+    fw_velocity(va, a->course, &ae, &an);
+    fw_cpa_sq(de, dn, be - ae, bn - an, &tc, &d2);
+    double pass = 0.5 * r->def.cpa;
+    return (tc <= 0.0 ? de * de + dn * dn : d2) >= pass * pass;
+}
+
+bool fw_react_overtakes_clear(const fw_reactions *r, const fw_target *a, double v,
+                              const fw_target *b)
+{
+    fw_own_state me = {.east = a->east, .north = a->north, .psi = a->heading, .U = v};
+    return steered(r, b) && fw_react_classify(r, &me, a, b) == FW_SIT_OVERTAKING &&
+           fw_react_leaves_way(r, a, v, b);
+}
+
+bool fw_react_passes_to_starboard(const fw_reactions *r, const fw_target *a, const fw_target *b)
+{
+    ptrdiff_t i = a - r->all;
+    return steered(r, b) &&
+           (b->east - a->east) * r->cs[i] - (b->north - a->north) * r->sn[i] < 0.0;
 }

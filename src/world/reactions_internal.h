@@ -92,6 +92,20 @@ int fw_react_alter(fw_reactions *r, double t, int self, const fw_target *all, re
                    const int *list, int m, int nearest, fw_situation sit, double dcpa,
                    fw_source *src, fw_speed_why *why, fw_error *err);
 
+/* Overtaking a ship fairway steers (reactions_course.c): a (of r->all, at
+ * speed va) overtaking b, a ship taken to steer, that leaves a's way (on the
+ * course it turns to it passes at half cpa or more, not closing a's track
+ * sideways): a need not act; with v, and a overtaking b by the encounter's
+ * classification too (a ship held for b is given its speed back); b on
+ * a's port side: a alters course to starboard to pass it rather than
+ * slowing behind it. */
+bool fw_react_leaves_way(const fw_reactions *r, const fw_target *a, double va,
+                         const fw_target *b);
+bool fw_react_overtakes_clear(const fw_reactions *r, const fw_target *a, double v,
+                              const fw_target *b);
+bool fw_react_passes_to_starboard(const fw_reactions *r, const fw_target *a,
+                                  const fw_target *b);
+
 /* Sensing (reactions_sense.c): is it not perfect; room for m ships; every
  * ship's AIS stepped and all[i] made what its reports say of it (the truth
  * kept in r->truth, how[i] AIS or not known); ship self's look begins
