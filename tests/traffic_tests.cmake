@@ -20,6 +20,11 @@ fw_test(test_sumo_reopen test_sumo_reopen.c)
 target_link_libraries(test_sumo_reopen PRIVATE fairway_traffic)
 set_tests_properties(test_sumo_reopen PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+# the start-up fill: there from t = 0 or never (a fill larger than the lanes hold)
+fw_test(test_fill_room test_fill_room.c)
+target_link_libraries(test_fill_room PRIVATE fairway_traffic)
+set_tests_properties(test_fill_room PROPERTIES TIMEOUT 90
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 foreach(case embedded remote badnet noport dies)
   add_test(NAME test_traffic_${case} COMMAND test_traffic ${case})
   set_tests_properties(test_traffic_${case} PROPERTIES TIMEOUT 90

@@ -516,6 +516,7 @@ static void log_start(fw_run *R)
 {
     const fw_scenario *s = R->s;
     int cleared = fw_sumo_source_cleared(fw_world_source(R->w));
+    int unplaced = fw_sumo_source_unplaced(fw_world_source(R->w));
     note(R, "scenario %s (%s): own ship %s at %.1f kn on %03.0f deg from (%.1f, %.1f) m, "
             "%d explicit targets%s%s, %.0f s in steps of %.3f s, seed %lu\n",
             s->name, s->file, s->ship.name, fw_ms_to_kn(s->speed), fw_heading_deg(s->course),
@@ -545,6 +546,10 @@ static void log_start(fw_run *R)
         note(R,     "traffic: %d ships the fill put within 2 nm of the own ship or on a collision "
                 "course with it or with each other taken out at the start\n",
                 cleared);
+    if (unplaced > 0)
+        note(R,     "traffic: %d ships of the fill found no free place on their lanes at the start "
+                "and were not placed (the fill is more than the lanes hold)\n",
+                unplaced);
 }
 
 /* The set-up: records, monitors, survey, the world (def->controller taken

@@ -88,6 +88,10 @@ typedef struct fw_sumo_backend {
     fw_status (*lane)(const char *id, double *xy, int max, int *n, double *right, double *left,
                       bool *traffic_lane,
                       fw_error *err);
+    /* The ships SUMO has loaded but not yet put on a lane (no room where
+     * they depart: they wait and are inserted when there is), one "\n"
+     * after each id, in *ids (malloc'd, the caller frees). */
+    fw_status (*pending)(char **ids, fw_error *err);
 } fw_sumo_backend;
 
 /* A remote sumo (where: "HOST:PORT") must run net_file's network: the same

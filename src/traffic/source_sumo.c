@@ -34,6 +34,7 @@ typedef struct sumo_source {
     fw_target *labels;    /* explicit targets: id -> the scenario's type label */
     int n_labels;
     int cleared;          /* fill ships taken out at the start */
+    int unplaced;         /* fill ships SUMO found no room for at the start */
     double near_radius;   /* m, nearby() (0: around())   */
     /* ships taken by fairway (source.h take), as last steered: left out of
      * around() and nearby(), listed so in area() */
@@ -500,6 +501,11 @@ int fw_sumo_source_cleared(const fw_source *s)
     return s && s->ops == &sumo_ops ? ((const sumo_source *)s)->cleared : 0;
 }
 
+int fw_sumo_source_unplaced(const fw_source *s)
+{
+    return s && s->ops == &sumo_ops ? ((const sumo_source *)s)->unplaced : 0;
+}
+
 double fw_sumo_source_step_wall(const fw_source *s)
 {
     return s && s->ops == &sumo_ops ? ((const sumo_source *)s)->wall : 0.0;
@@ -541,6 +547,43 @@ static bool fill_conflict(const fw_sumo_source_def *d, const fw_target *v, const
             return true;
     }
     return false;
+}
+
+/* Is id one of the fill's ships (demand.c names them STREAM_fillN; a
+ * stream's arrivals are FLOW.N)? */
+static bool fill_id(const char *id)
+{
+    const char *f = strstr(id, "_fill"), *next;
+    while (f && (next = strstr(f + 1, "_fill")))
+        f = next;
+    if (!f || !f[5])
+        return false;
+    for (const char *c = f + 5; *c; c++)
+        if (*c < '0' || *c > '9')
+            return false;
+    return true;
+}
+
+/* The fill's ships SUMO could not put on their lanes at the start (no free
+ * place on the edge drawn for them: a fill larger than the lanes hold) are
+ * taken out of its queue, not left to depart later: SUMO would insert one
+ * where a lane ship fairway has taken off the lane has just been, onto its
+ * hull, where no check of the start sees it (measured: a fill of 405 on
+ * networks/dover, 35 waiting, one inserted 15 m behind a ferry, the hulls
+ * overlapping, at t = 2 s).  A stream's arrivals wait at its entry, as ships
+ * do.  *n_out counts them. */
+static fw_status drop_unplaced(sumo_source *k, int *n_out, fw_error *err)
+{
+    char *ids = NULL;
+    *n_out = 0;
+    fw_status st = fw_traffic_pending(k->tr, &ids, err);
+    for (char *id = ids, *nl; !st && id && (nl = strchr(id, '\n')); id = nl + 1) {
+        *nl = '\0';
+        if (fill_id(id) && !(st = fw_traffic_remove(k->tr, id, err)))
+            ++*n_out;
+    }
+    free(ids);
+    return st;
 }
 
 /* After SUMO's first step, the fill's ships that would be a scenario's
@@ -636,13 +679,15 @@ fw_status fw_sumo_source_create(const fw_sumo_source_def *d, fw_source **out, fw
     k->near_radius = d->near_radius;
     /* SUMO inserts the targets during its first step: after it, their
      * positions are those of fairway's t = 0 */
-    int cleared = 0;
+    int cleared = 0, unplaced = 0;
     if ((st = fw_traffic_open(&td, &k->tr, err)) || (st = ss_place(&k->base, &d->own, err)) ||
-        (st = fw_traffic_step(k->tr, err)) || (st = clear_start(k, d, &cleared, err))) {
+        (st = fw_traffic_step(k->tr, err)) || (st = clear_start(k, d, &cleared, err)) ||
+        (st = drop_unplaced(k, &unplaced, err))) {
         ss_destroy(&k->base);
         return st;
     }
     k->cleared = cleared;
+    k->unplaced = unplaced;
     *out = &k->base;
     return FW_OK;
 }

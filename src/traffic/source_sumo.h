@@ -97,6 +97,9 @@ fw_status fw_sumo_source_create(const fw_sumo_source_def *def, fw_source **out, 
 
 /* How many fill ships were taken out at the start (0 for another source). */
 int fw_sumo_source_cleared(const fw_source *s);
+/* How many fill ships found no room on their lanes at the start and were
+ * not placed (0 for another source). */
+int fw_sumo_source_unplaced(const fw_source *s);
 
 /* Wall-clock seconds spent in SUMO's steps so far (benchmarks and the study
  * database only, never in a run's files). */

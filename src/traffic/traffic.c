@@ -518,6 +518,14 @@ fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err)
     return FW_OK;
 }
 
+fw_status fw_traffic_pending(fw_traffic *t, char **ids, fw_error *err)
+{
+    *ids = NULL;
+    if (fw_traffic_alive(t, err))
+        return FW_ERUN;
+    return t->be->pending(ids, err);
+}
+
 fw_status fw_traffic_step(fw_traffic *t, fw_error *err)
 {
     if (fw_traffic_alive(t, err))

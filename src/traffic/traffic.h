@@ -154,6 +154,10 @@ fw_status fw_traffic_set_speed(fw_traffic *t, const char *id, double speed, fw_e
 /* Takes background ship id out of SUMO; it is left out of the queries of
  * this step already (SUMO lists it until its next step). */
 fw_status fw_traffic_remove(fw_traffic *t, const char *id, fw_error *err);
+/* The ships loaded that SUMO has not yet put on a lane, for want of room
+ * where they depart (fw_traffic_remove takes one out of the queue): their
+ * ids, one "\n" after each, in *ids (malloc'd, the caller frees). */
+fw_status fw_traffic_pending(fw_traffic *t, char **ids, fw_error *err);
 /* Ships fairway moves itself, shown in SUMO (sumo-gui) where fairway puts
  * them: a replayed AIS ship.  add_placed gives ship id (not yet in SUMO) a
  * vType of its size and a vehicle; move places its hull centre (heading

@@ -575,6 +575,19 @@ fw_status be_net(double box[4], char **ids, fw_error *err)
     });
 }
 
+fw_status be_pending(char **ids, fw_error *err)
+{
+    *ids = nullptr;
+    return guarded("cannot list the ships waiting to depart", err, [&] {
+        std::string all;
+        for (const std::string &v : S::Simulation::getPendingVehicles())
+            all += v + "\n";
+        *ids = strdup(all.c_str());
+        if (!*ids)
+            throw std::bad_alloc();
+    });
+}
+
 void be_close(void)
 {
     g_moves.clear(); // never given to SUMO (Moves wait for the step)
@@ -599,6 +612,7 @@ extern "C" const fw_sumo_backend FW_BACKEND_TABLE = {
     FW_BACKEND_NAME, be_start, be_connect, be_step_length, be_add_own, be_place,
     be_set_speed, be_remove, be_step, be_context, be_all, be_get, be_gui_follow,
     be_gui_screenshot, be_net, be_close, be_add_placed, be_take, be_rejoin, be_lane,
+    be_pending,
 };
 
 extern "C" __attribute__((visibility("default"))) const fw_sumo_backend *fw_sumo_backend_table(void)
