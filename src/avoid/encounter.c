@@ -243,7 +243,27 @@ static void assess_path(const fw_domain_def *dom, double horizon, const fw_own_s
  * the segment, 0 in the own ship's frame); on the segment |x| >= (L0 + L1 -
  * D) / 2, and the (interpolated) axes are at most fw_domain_reach, so where
  * that bound exceeds the reach the normalised radius stays above 1: no
- * entry, no crossing.  Evaluated segments are assess_path's arithmetic. */
+ * entry, no crossing.  In the own ship's frame (which does not turn) a
+ * cheaper bound without a root a sample: every point of a segment is within
+ * S of its end, S a bound on the offset's move over any one step
+ * (offset_step); where the end is farther than reach + S, the segment is
+ * out of reach, and so are the segments up to the sample whose end it can
+ * come within reach + S of at the soonest (skipped unread).  A segment either bound lets through is evaluated; one out
+ * of reach finds no entry when evaluated, so both give the same t_enter.
+ * Evaluated segments are assess_path's arithmetic. */
+/* A bound on how far the target's offset from the own ship moves over one
+ * step of its path: the path's longest step (squares compared, one root)
+ * and the own ship's run, with a margin far above their rounding. */
+static double offset_step(const path_in *p)
+{
+    double m2 = 0.0;
+    for (int k = 1; k < p->ns; k++) {
+        double se = p->e[k] - p->e[k - 1], sn = p->n[k] - p->n[k - 1], s2 = se * se + sn * sn;
+        m2 = s2 > m2 ? s2 : m2;
+    }
+    return (sqrt(m2) + hypot(p->ve, p->vn) * kPathDt) * (1.0 + 1e-9) + 1e-6;
+}
+
 static void assess_path_entry(const fw_domain_def *dom, double horizon, const fw_own_state *own,
                               const fw_target *t, fw_assessment *as)
 {
@@ -254,6 +274,7 @@ static void assess_path_entry(const fw_domain_def *dom, double horizon, const fw
     bool turning_frame = dom->reading == FW_DOMAIN_TRANSVERSE;
     /* a margin far above the rounding of the bound's terms */
     double reach = fw_domain_reach(dom, t) * (1.0 + 1e-9) + 1e-6;
+    double S = turning_frame ? 0.0 : offset_step(&P), R = reach + S, R2 = R * R;
     as->t_enter = INFINITY;
     as->min_lambda = NAN;
     double px = 0, py = 0, pa = 1, pb = 1, pdx = 0, pdy = 0, pL = 0;
@@ -261,12 +282,25 @@ static void assess_path_entry(const fw_domain_def *dom, double horizon, const fw
     for (int k = 0; k < ns; k++) {
         double tk = k * kPathDt;
         double dx = e[k] - (own->east + ve * tk), dy = n[k] - (own->north + vn * tk);
-        double L = sqrt(dx * dx + dy * dy);
-        bool near = L <= reach;
-        if (k > 0 && !near) {
-            double turn = turning_frame ? fabs(fw_wrap_pi(c[k] - c[k - 1])) : 0.0;
-            double sx = dx - pdx, sy = dy - pdy, D = sqrt(sx * sx + sy * sy) + turn * pL;
-            near = 0.5 * (pL + L - D) <= reach;
+        double L2 = dx * dx + dy * dy;
+        bool near = L2 <= R2;
+        if (!turning_frame && !near && S > 0.0) {
+            /* |offset| falls by at most S a sample: the next q - 1 samples,
+             * q = (L - R) / S, are all farther than R + S */
+            double q = (sqrt(L2) - R) / S;
+            if (q >= 2.0)
+                k += q < ns ? (int)q - 1 : ns;
+            continue;
+        }
+        if (turning_frame) {
+            double L = sqrt(dx * dx + dy * dy);
+            near = L <= reach;
+            if (k > 0 && !near) {
+                double turn = fabs(fw_wrap_pi(c[k] - c[k - 1]));
+                double sx = dx - pdx, sy = dy - pdy, D = sqrt(sx * sx + sy * sy) + turn * pL;
+                near = 0.5 * (pL + L - D) <= reach;
+            }
+            pdx = dx, pdy = dy, pL = L;
         }
         if (near) {
             if (k > 0 && have != k - 1)
@@ -294,7 +328,6 @@ static void assess_path_entry(const fw_domain_def *dom, double horizon, const fw
             px = x, py = y, pa = a, pb = b;
             have = k;
         }
-        pdx = dx, pdy = dy, pL = L;
     }
 }
 
