@@ -473,6 +473,36 @@ static void test_overtaking_a_ship_moving_off(void)
     fw_world_destroy(w);
 }
 
+/* Coming back (steer.h, return): a steered 150 m ship 200 m to starboard of
+ * its lane (course north), heading 038 at 11 m/s, the ship it gave way to
+ * past; a slowed lane ship (2 m/s, 150 m) crossing ahead from starboard to
+ * port, 1000 m ahead and 300 m to starboard of it.  Its way back (to port)
+ * and its lane's course both pass that ship within half the passing
+ * distance: it holds its course (rule 8(d)) and passes astern of it, 463 m
+ * (0.25 nm) or more between centres, and is back on its lane within 20
+ * minutes.  Before, it turned back across the other's bow and their centres
+ * came 214 m apart (strait-domain seed 3, replication 7: a ferry's 45 deg
+ * return to port onto a lane ship crossing ahead at 4 kn). */
+static void test_return_holds_course_across_a_ship_ahead(void)
+{
+    fw_alter_def def = fw_default_alter_def();
+    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
+    def.length = 150.0, def.breadth = 25.0, def.speed = 11.0;
+    snprintf(def.other, sizeof def.other, "%s", "gone");
+    fw_controller *c = NULL;
+    fw_error err = {0};
+    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    fw_own_state o = {.east = 200.0, .psi = fw_deg_to_rad(38.0), .U = 11.0};
+    double crs = fw_deg_to_rad(270.0);
+    fw_target t = {.id = "lane", .east = 500.0, .north = 1000.0, .course = crs, .heading = crs,
+                   .speed = 2.0, .stw = 2.0, .length = 150.0, .breadth = 25.0};
+    double least, slowest;
+    sail_pair(c, &o, &t, 1200, &least, &slowest);
+    CHECK_MSG(least >= 463.0, "passed %.0f m off", least);
+    CHECK_MSG(fabs(o.east) < 10.0, "%.0f m off its lane after 20 minutes", o.east);
+    fw_controller_destroy(c);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -491,5 +521,6 @@ int main(void)
     TEST_RUN(test_close_quarters_keeps_way_out_of_a_lane);
     TEST_RUN(test_converging_from_abeam_is_crossing);
     TEST_RUN(test_overtaking_a_ship_moving_off);
+    TEST_RUN(test_return_holds_course_across_a_ship_ahead);
     return TEST_EXIT();
 }

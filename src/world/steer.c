@@ -122,12 +122,18 @@ static bool past_and_clear(const steer_ctl *c, const fw_sense *in, double chi)
     return true; /* out of sight: past */
 }
 
-/* Would course chi over ground bring it within half the passing distance of
- * a ship it sees, in the next 10 minutes (constant velocities)? */
-static bool conflicts(const steer_ctl *c, const fw_sense *in, double chi)
+/* Its course over ground now (rad; no drift: a Nomoto vessel's). */
+static double ground_course(const fw_own_state *o)
+{
+    return atan2(o->U * sin(o->psi) + o->cur_e, o->U * cos(o->psi) + o->cur_n);
+}
+
+/* The closest it would pass a ship it sees on course chi over ground in the
+ * next 10 minutes (constant velocities; INFINITY: none closing). */
+static double conflict_pass(const fw_sense *in, double chi)
 {
     const fw_own_state *o = in->own;
-    double oe, on, lim = 0.5 * c->def.cpa;
+    double oe, on, best = INFINITY;
     fw_velocity(o->U, chi, &oe, &on);
     oe += o->cur_e, on += o->cur_n;
     for (int i = 0; i < in->n; i++) {
@@ -135,10 +141,43 @@ static bool conflicts(const steer_ctl *c, const fw_sense *in, double chi)
         double te, tn, tc, dc;
         fw_velocity(t->speed, t->course, &te, &tn);
         fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, &tc, &dc);
-        if (tc > 0.0 && tc < kConflictS && dc < lim)
-            return true;
+        if (tc > 0.0 && tc < kConflictS && dc < best)
+            best = dc;
     }
-    return false;
+    return best;
+}
+
+/* Coming back (phase return) on chi across a ship it sees, within half the
+ * passing distance in the next 10 minutes (a ship of its lane, another
+ * coming back, a ship crossing ahead): along its lane where it is (course)
+ * while that clears them; else it holds the course it makes good now (rule
+ * 8(d): its alteration stands until the other is past and clear; rule 13:
+ * overtaking, it does not turn across the bow of the ship it overtakes);
+ * else, of the three, the one that passes farthest (xt: its cross-track
+ * offset, m to starboard of its line; held within its room).  Before, with its lane's
+ * course in conflict too it turned back regardless: across the bow of a
+ * slowed ferry it was overtaking (strait-domain seed 1, replication 15) and
+ * 45 deg to port onto a lane ship crossing ahead at 4 kn (seed 3,
+ * replication 7). */
+static double los_course(const steer_ctl *c, double course, double xtrack, double offset);
+
+static double return_course(const steer_ctl *c, const fw_sense *in, double chi, double course,
+                            double xt)
+{
+    double lim = 0.5 * c->def.cpa, d_chi = conflict_pass(in, chi);
+    if (d_chi >= lim)
+        return chi;
+    double d_lane = conflict_pass(in, course);
+    if (d_lane >= lim)
+        return course;
+    /* held, within its room as when it altered (steer_decide) */
+    double hold = course + fw_wrap_pi(ground_course(in->own) - course);
+    if (isfinite(c->def.room))
+        hold = fmin(hold, los_course(c, course, xt, c->def.room));
+    double d_hold = conflict_pass(in, hold);
+    if (d_hold >= lim || (d_hold >= d_lane && d_hold >= d_chi))
+        return hold;
+    return d_lane >= d_chi ? course : chi;
 }
 
 /* Its velocity over ground (m/s east, north) on course chi at its speed. */
@@ -146,12 +185,6 @@ static void own_velocity(const fw_own_state *o, double chi, double *oe, double *
 {
     fw_velocity(o->U, chi, oe, on);
     *oe += o->cur_e, *on += o->cur_n;
-}
-
-/* Its course over ground now (rad; no drift: a Nomoto vessel's). */
-static double ground_course(const fw_own_state *o)
-{
-    return atan2(o->U * sin(o->psi) + o->cur_e, o->U * cos(o->psi) + o->cur_n);
 }
 
 /* Ship t's closest approach to it sailing (oe, on) over ground. */
@@ -523,10 +556,9 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
     }
     if (close_quarters(c, in, course, chi))
         chi = course + c->alter;
-    /* coming back across ships in its way (a ship of its lane, another
-     * coming back): along its lane where it is until they are by */
-    if (c->phase == FW_STEER_RETURN && conflicts(c, in, chi) && !conflicts(c, in, course))
-        chi = course;
+    /* coming back across ships in its way: not yet (return_course) */
+    if (c->phase == FW_STEER_RETURN)
+        chi = return_course(c, in, chi, course, xt);
     double psi_d = heading_for(chi, o->U, o->cur_e, o->cur_n);
     double helm = helm_for(c, o, psi_d);
     if (c->def.pred) {

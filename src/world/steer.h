@@ -32,8 +32,12 @@
  *            (look-ahead 4 ship lengths, at least 400 m), never crossing back
  *            at more than the alteration (at least 20, at most 45 deg); while that course would bring it
  *            within half the passing distance of a ship it sees in the next
- *            10 minutes (a ship of its lane, another coming back) and its
- *            lane's course would not, it sails along its lane where it is
+ *            10 minutes (a ship of its lane, another coming back, one
+ *            crossing ahead), it sails along its lane where it is if that
+ *            clears them, else holds the course it makes good (rule 8(d):
+ *            the alteration stands until they are past; rule 13: not across
+ *            the bow of a ship it overtakes) if that does, else takes the
+ *            one of the three that passes farthest
  *   done     on the line (hull centre and bow within 0.3 m of it, for the
  *            source's 1 m limit on giving back; the bow half a length ahead
  *            along its course over ground, as the source places it: in a
