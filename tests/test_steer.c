@@ -473,6 +473,28 @@ static void test_overtaking_a_ship_moving_off(void)
     fw_world_destroy(w);
 }
 
+/* A steered 150 m ship (speed m/s its own) on a lane north along east 0,
+ * the ship it gave way to past; and a 150 m ship at (e, n) m on course
+ * deg at v m/s. */
+static fw_controller *past_on_lane(double speed)
+{
+    fw_alter_def def = fw_default_alter_def();
+    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
+    def.length = 150.0, def.breadth = 25.0, def.speed = speed;
+    snprintf(def.other, sizeof def.other, "%s", "gone");
+    fw_controller *c = NULL;
+    fw_error err = {0};
+    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    return c;
+}
+
+static fw_target ship_at(double e, double n, double deg, double v)
+{
+    double crs = fw_deg_to_rad(deg);
+    return (fw_target){.id = "other", .east = e, .north = n, .course = crs, .heading = crs,
+                       .speed = v, .stw = v, .length = 150.0, .breadth = 25.0};
+}
+
 /* Coming back (steer.h, return): a steered 150 m ship 200 m to starboard of
  * its lane (course north), heading 038 at 11 m/s, the ship it gave way to
  * past; a slowed lane ship (2 m/s, 150 m) crossing ahead from starboard to
@@ -485,21 +507,35 @@ static void test_overtaking_a_ship_moving_off(void)
  * return to port onto a lane ship crossing ahead at 4 kn). */
 static void test_return_holds_course_across_a_ship_ahead(void)
 {
-    fw_alter_def def = fw_default_alter_def();
-    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
-    def.length = 150.0, def.breadth = 25.0, def.speed = 11.0;
-    snprintf(def.other, sizeof def.other, "%s", "gone");
-    fw_controller *c = NULL;
-    fw_error err = {0};
-    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    fw_controller *c = past_on_lane(11.0);
     fw_own_state o = {.east = 200.0, .psi = fw_deg_to_rad(38.0), .U = 11.0};
-    double crs = fw_deg_to_rad(270.0);
-    fw_target t = {.id = "lane", .east = 500.0, .north = 1000.0, .course = crs, .heading = crs,
-                   .speed = 2.0, .stw = 2.0, .length = 150.0, .breadth = 25.0};
+    fw_target t = ship_at(500.0, 1000.0, 270.0, 2.0);
     double least, slowest;
     sail_pair(c, &o, &t, 1200, &least, &slowest);
     CHECK_MSG(least >= 463.0, "passed %.0f m off", least);
     CHECK_MSG(fabs(o.east) < 10.0, "%.0f m off its lane after 20 minutes", o.east);
+    fw_controller_destroy(c);
+}
+
+/* Close quarters judged along the turn the ship makes (steer.h): a steered
+ * 150 m ship at 10.6 m/s (20.6 kn) on its lane, a slow ship (2 m/s, 150 m)
+ * 600 m ahead, 10 deg on its starboard bow, going east across its bow to
+ * starboard.  Its turns to starboard swing it round in 150-250 m radius
+ * (K' U / L x 20 deg of helm), through the other's path: it takes the
+ * action that passes farthest along that swing, centres 0.1 nm (185 m) or
+ * more apart.  Before, each turn was judged as made at once: it swung 90
+ * deg to starboard onto the slow ship, centres 17 m apart (strait-domain
+ * seed 1, replication 12: a ferry's 70 deg turn onto a ship crossing slowly
+ * ahead). */
+static void test_close_quarters_judged_along_the_turn(void)
+{
+    fw_controller *c = past_on_lane(10.6);
+    fw_own_state o = {.U = 10.6};
+    double brg = fw_deg_to_rad(10.0);
+    fw_target t = ship_at(600.0 * sin(brg), 600.0 * cos(brg), 90.0, 2.0);
+    double least, slowest;
+    sail_pair(c, &o, &t, 600, &least, &slowest);
+    CHECK_MSG(least >= 185.2, "passed %.0f m off", least);
     fw_controller_destroy(c);
 }
 
@@ -522,5 +558,6 @@ int main(void)
     TEST_RUN(test_converging_from_abeam_is_crossing);
     TEST_RUN(test_overtaking_a_ship_moving_off);
     TEST_RUN(test_return_holds_course_across_a_ship_ahead);
+    TEST_RUN(test_close_quarters_judged_along_the_turn);
     return TEST_EXIT();
 }

@@ -65,7 +65,9 @@
  * 2(b), 8(e), 17(b)) it takes, of the turns to starboard of its heading (10
  * to 90 deg, at most 60 deg off its lane) and its speeds (the one it sails,
  * its own, steerage way: taking the way off), the one that passes every ship
- * farthest over those 5 minutes, its speed changing at its rates below, if
+ * farthest over those 5 minutes, its speed changing at its rates below and
+ * its heading swinging to the new course as its helm turns it (at most 20
+ * deg of helm: K' / L x helm per metre run), if
  * that gains 50 m on going on as it is: it takes the way off where that
  * lets the other pass clear, and keeps or gets back its way where stopping
  * would leave it in a ship's path (a lane ship that can only slow runs onto
