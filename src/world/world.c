@@ -387,9 +387,26 @@ static fw_status sort_view(fw_world *w, fw_target *view, int n0, int n, fw_error
     if (!fw_reserve((void **)&w->spare, sizeof *w->spare, &w->spare_cap, m))
         return fw_fail(err, FW_ERUN, "out of memory for %d vessels", m);
     memcpy(w->spare, view + n0, sizeof *view * (size_t)m);
-    qsort(w->spare, (size_t)m, sizeof *view, cmp_id);
-    while (j >= 0)
-        view[k--] = i >= 0 && strcmp(view[i].id, w->spare[j].id) > 0 ? view[i--] : w->spare[j--];
+    /* the vessels' ids differ (check_new), so any sort gives qsort's order:
+     * a few sorted by insertion of pointers, not of the records themselves
+     * (qsort: 44 M instructions of the 1 nm fog run's 3.66 G) */
+    enum { FEW = 64 };
+    const fw_target *by_id[FEW];
+    if (m > FEW)
+        qsort(w->spare, (size_t)m, sizeof *view, cmp_id);
+    for (int a = 0; a < m && m <= FEW; a++) {
+        int b = a;
+        for (; b > 0 && strcmp(by_id[b - 1]->id, w->spare[a].id) > 0; b--)
+            by_id[b] = by_id[b - 1];
+        by_id[b] = &w->spare[a];
+    }
+    for (; j >= 0; k--) {
+        const fw_target *x = m <= FEW ? by_id[j] : &w->spare[j];
+        if (i >= 0 && strcmp(view[i].id, x->id) > 0)
+            view[k] = view[i--];
+        else
+            view[k] = *x, j--;
+    }
     return FW_OK;
 }
 
