@@ -12,6 +12,13 @@ target_link_libraries(test_run_step PRIVATE fairway_run)
 set_tests_properties(test_run_step PROPERTIES TIMEOUT 120
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 
+# A DNV situation written from recorded tracks and read back: each target's
+# course and speed as recorded (run/dnv_situation.h "turns")
+fw_test(test_dnv_motion test_dnv_motion.c)
+target_link_libraries(test_dnv_motion PRIVATE fairway_run)
+set_tests_properties(test_dnv_motion PROPERTIES TIMEOUT 60
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+
 # The command: a run with a table row, --json, help, and bad input that leaves
 # no output directory behind (run_bad.sh checks the directory).
 fw_cli_test(cli_run_paper 0 "paper-3-crossing +[0-9]+ +no +no" run

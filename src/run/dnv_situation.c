@@ -193,53 +193,81 @@ static fw_status own_ship(writer *w, const fw_scenario *s, fw_error *err)
     return st;
 }
 
-/* Does the track carry a turn (source_track.h)? */
-static bool has_turns(const fw_rec_track *tr)
+/* A course and speed the reader takes as the one recorded: what a
+ * situation's numbers carry (6 decimals of degrees and knots) with room. */
+#define MOTION_TOL_DEG 1e-2
+#define MOTION_TOL_KN 1e-2
+/* s: a motion entry and a waypoint at one time (times are written to ms) */
+#define MOTION_SAME_T 1e-3
+
+/* The motion the reader gives the ship from waypoint j of wp[0..m-1] on
+ * (scenario/scn_dnv.h: the chord of its leg at the leg's mean speed; the
+ * last waypoint, its last leg's). */
+static void leg_motion(const fw_rec_point *wp, int m, int j, double *course, double *speed)
 {
-    for (int k = 0; k < tr->n; k++)
-        if (tr->p[k].turn_rate > 0.0)
-            return true;
-    return false;
+    int a = j < m - 1 ? j : m - 2;
+    double de = wp[a + 1].east - wp[a].east, dn = wp[a + 1].north - wp[a].north;
+    *course = atan2(de, dn);
+    *speed = hypot(de, dn) / (wp[a + 1].t - wp[a].t);
 }
 
-/* ", "turns": [[t_s, heading_deg, sog_kn, rate_degps, to_deg], ...]": the
- * turn the track says the own ship saw its ship making (source_track.h), at
- * every point of a turn and where one ends (rate 0: at constant velocity
- * from then), with its heading and speed then: a waypoint's leg is a chord
- * of the turn, at its mean speed. */
-static fw_status turns(writer *w, const fw_rec_track *tr, fw_error *err)
+/* The track's recorded motion where the reader would not give it (header:
+ * "turns"): every point of a turn, where one ends, and where the recorded
+ * course or speed is not what the reader has from the waypoints wp[0..m-1]
+ * and the entries before (a ship slowing or speeding up along a leg, or
+ * crabbing); *out (malloc'd) the points, *n_out of them. */
+static fw_status motion_entries(const fw_rec_track *tr, const fw_rec_point *wp, int m,
+                                fw_rec_point **out, int *n_out, fw_error *err)
 {
     fw_rec_point *p = malloc(sizeof *p * (size_t)tr->n);
+    *out = NULL, *n_out = 0;
     if (!p)
         return fw_fail(err, FW_ERUN, "out of memory");
     memcpy(p, tr->p, sizeof *p * (size_t)tr->n);
     qsort(p, (size_t)tr->n, sizeof *p, cmp_t);
-    fprintf(w->f, ", \"turns\": [");
-    for (int k = 0, m = 0; k < tr->n; k++) {
-        double r = p[k].turn_rate;
-        if (k > 0 && r == 0.0 && p[k - 1].turn_rate == 0.0)
-            continue;
-        fprintf(w->f, "%s[%.3f, %.6f, %.6f, %.6f, %.6f]", m++ ? ", " : "", p[k].t,
-                fw_heading_deg(p[k].course), fw_ms_to_kn(p[k].speed), fw_rad_to_deg(r),
-                r > 0.0 ? fw_heading_deg(p[k].turn_to) : 0.0);
+    double course = 0.0, speed = 0.0, rate = 0.0;
+    int n = 0;
+    for (int k = 0, j = 0; k < tr->n; k++) {
+        for (; j < m && wp[j].t <= p[k].t + MOTION_SAME_T; j++)
+            leg_motion(wp, m, j, &course, &speed); /* a turn in force goes on */
+        bool differs = fabs(fw_wrap_pi(p[k].course - course)) > fw_deg_to_rad(MOTION_TOL_DEG) ||
+                       fabs(fw_ms_to_kn(p[k].speed - speed)) > MOTION_TOL_KN;
+        if (p[k].turn_rate > 0.0 || rate > 0.0 || differs) {
+            p[n++] = p[k];
+            course = p[k].course, speed = p[k].speed, rate = p[k].turn_rate;
+        }
     }
-    fprintf(w->f, "]");
-    free(p);
+    *out = p, *n_out = n;
     return FW_OK;
 }
 
+/* ", "turns": [[t_s, heading_deg, sog_kn, rate_degps, to_deg], ...]": the
+ * motion entries e[0..n-1] (motion_entries, rate 0: at constant velocity
+ * from then). */
+static void turns(writer *w, const fw_rec_point *e, int n)
+{
+    fprintf(w->f, ", \"turns\": [");
+    for (int k = 0; k < n; k++) {
+        double r = e[k].turn_rate;
+        fprintf(w->f, "%s[%.3f, %.6f, %.6f, %.6f, %.6f]", k ? ", " : "", e[k].t,
+                fw_heading_deg(e[k].course), fw_ms_to_kn(e[k].speed), fw_rad_to_deg(r),
+                r > 0.0 ? fw_heading_deg(e[k].turn_to) : 0.0);
+    }
+    fprintf(w->f, "]");
+}
+
 /* fairway's own member of a target (header), when it needs one. */
-static fw_status target_fairway(writer *w, const fw_rec_track *tr, double appear, double vanish,
-                                double used, double tol, fw_error *err)
+static void target_fairway(writer *w, const fw_rec_point *e, int n_e, double appear,
+                           double vanish, double used, double tol)
 {
     fprintf(w->f, "      \"fairway\": {\"appearS\": %.3f", appear);
     if (isfinite(vanish))
         fprintf(w->f, ", \"vanishS\": %.3f", vanish);
     if (used > tol)
         fprintf(w->f, ", \"toleranceM\": %.17g", used);
-    fw_status st = has_turns(tr) ? turns(w, tr, err) : FW_OK;
+    if (n_e > 0)
+        turns(w, e, n_e);
     fprintf(w->f, "}\n");
-    return st;
 }
 
 static fw_status targets(writer *w, const fw_scenario *s, const fw_rec_track *tracks, int n,
@@ -248,12 +276,13 @@ static fw_status targets(writer *w, const fw_scenario *s, const fw_rec_track *tr
     fprintf(w->f, "  \"targetShips\": [");
     fw_status st = FW_OK;
     for (int i = 0; i < n && !st; i++) {
-        fw_rec_point *p = NULL;
-        int m = 0;
+        fw_rec_point *p = NULL, *e = NULL;
+        int m = 0, n_e = 0;
         double appear = 0.0, vanish = INFINITY, used = tol;
         if (!(st = track_points(&tracks[i], s->duration, tol, &p, &m, &appear, &vanish, &used,
-                                err))) {
-            bool more = appear > 0.0 || isfinite(vanish) || used > tol || has_turns(&tracks[i]);
+                                err)) &&
+            !(st = motion_entries(&tracks[i], p, m, &e, &n_e, err))) {
+            bool more = appear > 0.0 || isfinite(vanish) || used > tol || n_e > 0;
             fprintf(w->f, "%s\n    {\n", i ? "," : "");
             double c = atan2(p[1].east - p[0].east, p[1].north - p[0].north);
             double v = hypot(p[1].east - p[0].east, p[1].north - p[0].north) / (p[1].t - p[0].t);
@@ -262,10 +291,11 @@ static fw_status targets(writer *w, const fw_scenario *s, const fw_rec_track *tr
                 static_data(w, i + 2, tracks[i].info.id, tracks[i].info.type,
                             tracks[i].info.length, tracks[i].info.breadth, more);
             if (!st && more)
-                st = target_fairway(w, &tracks[i], appear, vanish, used, tol, err);
+                target_fairway(w, e, n_e, appear, vanish, used, tol);
             fprintf(w->f, "    }");
         }
         free(p);
+        free(e);
     }
     fprintf(w->f, "\n  ]\n");
     return st;

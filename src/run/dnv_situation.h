@@ -31,14 +31,18 @@
  * `"fairway": {"appearS": T0, "vanishS": T1}` (the schema allows more
  * members; scenario/scn_dnv.h reads it; other test benches will have the ship
  * there all the time); a track there to the end goes on along its last leg
- * to the scenario's duration (the reader extends it beyond).  A track that
- * carries the turns its ship was seen making (traffic/source_track.h: a ship
- * the traffic steered, geom/turn.h) keeps them, at every point of a turn
- * and where one ends, with the ship's heading and speed then (a leg is a
- * chord of the turn, at its mean speed), in `"fairway": {"turns": [[T,
- * HEADING_DEG, SOG_KN, RATE_DEGPS, TO_DEG], ...]}` (RATE 0: at constant
- * velocity from T), so that the own ship read back expects of it what the
- * run's did.
+ * to the scenario's duration (the reader extends it beyond).  Where the
+ * waypoints alone would not give the course and speed the own ship saw (a
+ * leg is a chord at its mean speed), the track's motion is kept in
+ * `"fairway": {"turns": [[T, HEADING_DEG, SOG_KN, RATE_DEGPS, TO_DEG], ...]}`
+ * (RATE 0: at constant velocity from T): at every point of a turn the ship
+ * was seen making (traffic/source_track.h: a ship the traffic steered,
+ * geom/turn.h) and where one ends, and wherever its recorded course or speed
+ * differs by more than 0.01 deg or 0.01 kn from what the reader has then
+ * (the leg's, or the entry before: a ship slowing along a leg, a lane
+ * change's crab), so that the own ship read back expects of it what the
+ * run's did (at AIS's 0.1 deg and 0.1 kn, worst_replay's own ship ended
+ * 13.8 m off the replay; at 0.01, 0.014 m).
  *
  * Positions: a scenario with an origin is written in its plane's latitude
  * and longitude; one without (a network's plane) is placed with its (0, 0)

@@ -170,6 +170,9 @@ static bool push_point(fw_rec_track *tr, double t, double e, double n, double c,
  * of a turn, at its mean speed), and every point with the turn in force. */
 static bool add_turns(fw_rec_track *tr, const fw_scn_turn *u, int nu)
 {
+    /* s: a turn on a waypoint (the situation's times are to the ms; a
+     * waypoint's is the sum of its legs' times, to within a few us) */
+    const double same = 1e-3;
     int n = tr->n, m = 0, j = 0;
     fw_rec_point *p = malloc(sizeof *p * (size_t)(n + nu));
     double rate = 0.0, to = 0.0;
@@ -177,12 +180,13 @@ static bool add_turns(fw_rec_track *tr, const fw_scn_turn *u, int nu)
         return false;
     for (int k = 0; k < n; k++) {
         const fw_rec_point *b = &tr->p[k], *a = k > 0 ? b - 1 : b;
-        double head = b->course, speed = b->speed;
-        for (; j < nu && u[j].t <= b->t; j++) {
+        double head = b->course, speed = b->speed, t_b = b->t;
+        for (; j < nu && u[j].t <= b->t + same; j++) {
             rate = u[j].rate, to = u[j].to;
-            if (u[j].t == b->t)
-                head = u[j].heading, speed = u[j].speed;
-            if (k == 0 || u[j].t == b->t)
+            bool on_b = fabs(u[j].t - b->t) <= same;
+            if (on_b)
+                head = u[j].heading, speed = u[j].speed, t_b = fmin(t_b, u[j].t);
+            if (k == 0 || on_b)
                 continue; /* before it appears, or on b */
             double w = (u[j].t - a->t) / (b->t - a->t);
             p[m++] = (fw_rec_point){.t = u[j].t, .east = a->east + w * (b->east - a->east),
@@ -191,6 +195,7 @@ static bool add_turns(fw_rec_track *tr, const fw_scn_turn *u, int nu)
                                     .turn_rate = rate, .turn_to = to};
         }
         p[m] = *b;
+        p[m].t = t_b;
         p[m].course = head, p[m].speed = speed, p[m].turn_rate = rate, p[m++].turn_to = to;
     }
     free(tr->p);
