@@ -138,31 +138,33 @@ static int push(polyline *pl, double x, double y, int edge)
     return 0;
 }
 
-/* Appends edge k's centre line; where it does not begin at the line's end,
- * the end is moved to where the two segments' lines cross when that lies
- * within 1 km of both (else the gap is a leg of its own). */
+/* Appends edge k's starboard lane's line (the route's, scn_netroute.h);
+ * where it does not begin at the line's end, the end is moved to where the
+ * two segments' lines cross when that lies within 1 km of both (else the gap
+ * is a leg of its own). */
 static int append_edge(polyline *pl, const fw_net_edge *e, int k)
 {
+    const double *x = e->sx, *y = e->sy;
     int from = 0;
     if (pl->n >= 2) {
         double px = pl->x[pl->n - 1], py = pl->y[pl->n - 1];
         double ax = px - pl->x[pl->n - 2], ay = py - pl->y[pl->n - 2];
-        double bx = e->x[1] - e->x[0], by = e->y[1] - e->y[0];
-        double gx = e->x[0] - px, gy = e->y[0] - py, cr = ax * by - ay * bx;
+        double bx = x[1] - x[0], by = y[1] - y[0];
+        double gx = x[0] - px, gy = y[0] - py, cr = ax * by - ay * bx;
         if (hypot(gx, gy) < 1.0) {
             from = 1; /* the same point */
         } else if (fabs(cr) > 1e-9 * hypot(ax, ay) * hypot(bx, by)) {
             double t = (gx * by - gy * bx) / cr, u = (gx * ay - gy * ax) / cr;
             double xx = px + t * ax, xy = py + t * ay;
-            if (hypot(xx - px, xy - py) < 1000.0 && hypot(xx - e->x[0], xy - e->y[0]) < 1000.0 &&
+            if (hypot(xx - px, xy - py) < 1000.0 && hypot(xx - x[0], xy - y[0]) < 1000.0 &&
                 t > -1.0 && u < 1.0) {
                 pl->x[pl->n - 1] = xx, pl->y[pl->n - 1] = xy, pl->edge[pl->n - 1] = k;
                 from = 1;
             }
         }
     }
-    for (int i = from; i < e->n; i++)
-        if (push(pl, e->x[i], e->y[i], k))
+    for (int i = from; i < e->sn; i++)
+        if (push(pl, x[i], y[i], k))
             return -1;
     return 0;
 }
@@ -249,12 +251,12 @@ static fw_status edges_line(const yt_doc *doc, const fw_net_shape *ns, const fw_
     return FW_OK;
 }
 
-/* m: the narrowest width of the edges ne. */
+/* m: the narrowest width of the edges' starboard lanes. */
 static double narrowest(const fw_net_shape *ns, const net_edges *ne)
 {
     double w = INFINITY;
     for (int i = 0; i < ne->n; i++)
-        w = fmin(w, fw_net_shape_edge(ns, ne->id[i])->width);
+        w = fmin(w, fw_net_shape_edge(ns, ne->id[i])->s_width);
     return w;
 }
 
@@ -276,14 +278,17 @@ static fw_status fit_line(const polyline *pl, polyline *r, double *tol, double m
     }
 }
 
-/* The water either side of edge e's centre line (route.h room_starboard,
- * room_port): half its width each way.  An edge is one direction's lanes:
- * in a narrow channel a ship keeps to its starboard side (rule 9(a)), in a
- * separation scheme to its traffic lane (rule 10(b)), so the other
- * direction's lanes are not its room. */
+/* The water either side of edge e's starboard lane's line (route.h
+ * room_starboard, room_port): half that lane's width to starboard, the rest
+ * of the edge to port.  An edge is one direction's lanes: in a narrow
+ * channel a ship keeps to its starboard side (rule 9(a)), in a separation
+ * scheme to its traffic lane (rule 10(b)), so the other direction's lanes
+ * are not its room; its own direction's other lanes are, to overtake or to
+ * give way in. */
 static void edge_room(const fw_net_edge *e, fw_route_leg *l)
 {
-    l->room_starboard = l->room_port = 0.5 * e->width;
+    l->room_starboard = 0.5 * e->s_width;
+    l->room_port = e->width - 0.5 * e->s_width;
 }
 
 /* The route from the reduced line pl, into s. */
@@ -293,8 +298,8 @@ static fw_status make_route(const yt_doc *doc, const yt_node *own, const polylin
 {
     if (pl->n > FW_ROUTE_MAX_LEGS + 1)
         return yt_fail_key(doc, own, "own_ship", "network_route", err,
-                           "its lanes' line needs %d waypoints to stay within %.0f m of it (a "
-                           "quarter of its narrowest edge's width), a route has at most %d",
+                           "its starboard lanes' line needs %d waypoints to stay within %.0f m of "
+                           "it (a quarter of the narrowest one's width), a route has at most %d",
                            pl->n, tol, FW_ROUTE_MAX_LEGS + 1);
     if (pl->n < 2 || hypot(pl->x[1] - pl->x[0], pl->y[1] - pl->y[0]) < 0.1 * FW_NMILE)
         return yt_fail_key(doc, own, "own_ship", "network_route", err,

@@ -10,14 +10,19 @@
  *       speeds_kn: [10, 12]      # the speed on each edge (or one speed for all)
  *   traffic: {network: bend}
  *
- * The route's line is each edge's centre line (the mean of its lanes' shapes
- * in the built net.xml, traffic/netshape.h), joined where an edge's last
- * segment meets the next one's first, then reduced (from each waypoint the
- * farthest point whose chord keeps every point between) to
- * within FW_NETROUTE_TOL_M of that line with no leg under 0.1 nm; when that
- * needs more than a route's 9 waypoints (avoid/route.h), within twice that,
- * and so on up to a quarter of the narrowest edge's width (the ship then
- * stays on its edge's lanes); beyond, refused.  Each leg's speed is
+ * The route's line is each edge's starboard lane's centre line (SUMO's lane
+ * 0, the rightmost in the edge's direction, in the built net.xml:
+ * traffic/netshape.h): a master keeps to the starboard side of a narrow
+ * channel (COLREGs rule 9(a)), and that lane is the one the channel's slower
+ * ships keep to, the others theirs to overtake in; on the edges' centre line
+ * (between two lanes) the ships in either lane passed half a lane off.  The
+ * lines are joined where an edge's last segment meets the next one's first,
+ * then reduced (from each waypoint the farthest point whose chord keeps
+ * every point between) to within FW_NETROUTE_TOL_M of that line with no leg
+ * under 0.1 nm; when that needs more than a route's 9 waypoints
+ * (avoid/route.h), within twice that, and so on up to a quarter of the
+ * narrowest starboard lane's width (the ship then stays in that lane's
+ * middle half); beyond, refused.  Each leg's speed is
  * that of the edge it begins on.  The route replaces east_m/north_m,
  * course_deg, speed_kn, leg_nm and destination, and own_ship.route (giving
  * both is an error).  The network is the scenario's traffic.network.

@@ -112,9 +112,20 @@ static int read_lanes(fw_net_shape *ns, const char *p, const char *stop, lane_pt
     return m;
 }
 
-/* The centre line from the lanes (taken over or freed). */
-static void centre_line(fw_net_edge *e, lane_pts *lanes, int m)
+/* The centre line from the lanes (taken over or freed), and a copy of the
+ * first lane's (index 0: SUMO writes an edge's lanes in index order, the
+ * rightmost first); -1 out of memory (all freed). */
+static int centre_line(fw_net_edge *e, lane_pts *lanes, int m)
 {
+    e->sn = lanes[0].n, e->s_width = lanes[0].w;
+    e->sx = malloc(sizeof(double) * (size_t)e->sn), e->sy = malloc(sizeof(double) * (size_t)e->sn);
+    if (!e->sx || !e->sy) {
+        for (int i = 0; i < m; i++)
+            free(lanes[i].x), free(lanes[i].y);
+        return -1;
+    }
+    memcpy(e->sx, lanes[0].x, sizeof(double) * (size_t)e->sn);
+    memcpy(e->sy, lanes[0].y, sizeof(double) * (size_t)e->sn);
     bool same = true;
     for (int i = 1; i < m; i++)
         same = same && lanes[i].n == lanes[0].n;
@@ -133,6 +144,7 @@ static void centre_line(fw_net_edge *e, lane_pts *lanes, int m)
     for (int i = 0; i < m; i++)
         if (i != mid)
             free(lanes[i].x), free(lanes[i].y);
+    return 0;
 }
 
 static fw_status parse(const char *path, const char *xml, fw_net_shape *ns, fw_error *err)
@@ -170,7 +182,8 @@ static fw_status parse(const char *path, const char *xml, fw_net_shape *ns, fw_e
         snprintf(e->id, sizeof e->id, "%s", id);
         snprintf(e->from, sizeof e->from, "%s", from);
         snprintf(e->to, sizeof e->to, "%s", to);
-        centre_line(e, lanes, m);
+        if (centre_line(e, lanes, m))
+            return fw_fail(err, FW_ERUN, "out of memory reading %s", path);
     }
     return ns->n ? FW_OK : fw_fail(err, FW_EINPUT, "%s: no edge with lanes", path);
 }
@@ -191,7 +204,7 @@ fw_status fw_net_shape_load(const char *path, fw_net_shape *out, fw_error *err)
 void fw_net_shape_free(fw_net_shape *ns)
 {
     for (int i = 0; i < ns->n; i++)
-        free(ns->edges[i].x), free(ns->edges[i].y);
+        free(ns->edges[i].x), free(ns->edges[i].y), free(ns->edges[i].sx), free(ns->edges[i].sy);
     free(ns->edges);
     memset(ns, 0, sizeof *ns);
 }

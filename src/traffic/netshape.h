@@ -7,7 +7,8 @@
  * line is the mean of its lanes' shapes point by point (the middle lane's
  * shape when their point counts differ).  The network's extent is the box of
  * every lane's points, internal (junction) lanes too, widened by half the
- * lane's width: the water the network's ships can be on.  Used by the
+ * lane's width; an edge's starboard lane (SUMO's lane 0, the rightmost in
+ * its direction) is kept too, for the own ship's route (rule 9(a)): the water the network's ships can be on.  Used by the
  * scenario loader for routes given as edges (own_ship.network_route) and to
  * refuse a route far off the network (scenario/scn_netroute.h).
  */
@@ -23,6 +24,9 @@ typedef struct fw_net_edge {
     double width;          /* m, the lanes' widths summed */
     int n;                 /* points of the centre line (>= 2) */
     double *x, *y;         /* m, the centre line */
+    int sn;                /* points of the starboard lane's line (>= 2) */
+    double *sx, *sy;       /* m, the starboard lane's centre line (SUMO's lane 0, the rightmost) */
+    double s_width;        /* m, its width */
 } fw_net_edge;
 
 typedef struct fw_net_shape {

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The own ship overtaken close in a channel keeps within it (issue 27 item 5):
 # tests/data/route/channel-overtaken.yaml, c3-mmg at 10 kn on networks/bend's
-# east-going edges, a 16 kn ship that does not keep clear coming up 150 m to
-# port of its line, inside the 300 m domain.  Deterministic (one SUMO seed,
+# east-going edges (its route on the starboard lane's centre line, y = -375
+# m), a 16 kn ship that does not keep clear coming up 150 m to port of its
+# line, inside the 300 m domain.  Deterministic (one SUMO seed,
 # an explicit target).  Asserted: the hull stays within its side of the
 # channel on the first leg (y = -500 to 0 m, the lanes' edges from the
 # network's 2 x 250 m lanes, less half the ship's 42.8 m breadth, to 1 m),

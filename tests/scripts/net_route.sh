@@ -2,8 +2,10 @@
 # The own ship follows a route given as a network's edges (issue 27 item 5):
 # tests/data/route/net-bend.yaml, networks/bend's east-going edges WB and BE
 # at 10 then 12 kn, nothing else on the water.  The route's legs are the
-# lanes' centre line (y = -250 m, then 060 deg from where the two edges'
-# lines cross, x = 10067 m); the track stays within 100 m of them; the same
+# starboard lane's centre line (rule 9(a): SUMO's lane 0, y = -375 m, then
+# 060 deg from where the two edges' lane-0 lines cross, x = 10100.5 m; on
+# the edges' centre line, y = -250 m, before); the track stays within 100 m
+# of them and, on the first leg, within its starboard lane; the same
 # route named as the demand's stream `east` sails the same track.  Then the
 # bad inputs: FILE:LINE: FIELD, exit 2, no output directory: edges that are
 # not the network's or do not join, speeds that do not match, no network, an
@@ -16,13 +18,13 @@ scn=$FAIRWAY_DATA/tests/data/route/net-bend.yaml
 "$FAIRWAY" run "$scn" --out "$tmp/runs" > "$tmp/out.txt" 2>&1 ||
   { echo "run failed"; cat "$tmp/out.txt"; exit 1; }
 log=$tmp/runs/net-route-bend/run.log
-grep -q "route: leg 1 of 2 from (0.0, -250.0) m, 090 deg, 10067 m at 10.0 kn" "$log" &&
-  grep -q "route: leg 2 of 2 from (10067.0, -250.0) m, 060 deg, 10067 m at 12.0 kn" "$log" ||
-  { echo "legs not the lanes' line:"; grep "route:" "$log"; exit 1; }
+grep -q "route: leg 1 of 2 from (0.0, -375.0) m, 090 deg, 10100 m at 10.0 kn" "$log" &&
+  grep -q "route: leg 2 of 2 from (10100.5, -375.0) m, 060 deg, 10100 m at 12.0 kn" "$log" ||
+  { echo "legs not the starboard lane's line:"; grep "route:" "$log"; exit 1; }
 "$PYTHON" - "$tmp/runs/net-route-bend/own.csv" <<'PY' || exit 1
 import csv, math, sys
 a = math.radians(60)
-P = [(0.0, -250.0), (10067.0, -250.0), (10067.0 + 10067.0 * math.sin(a), -250.0 + 10067.0 * math.cos(a))]
+P = [(0.0, -375.0), (10100.5, -375.0), (10100.5 + 10100.0 * math.sin(a), -375.0 + 10100.0 * math.cos(a))]
 def dseg(p, a, b):
     dx, dy = b[0] - a[0], b[1] - a[1]
     t = max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy)))
@@ -30,9 +32,12 @@ def dseg(p, a, b):
 rows = list(csv.DictReader(open(sys.argv[1])))
 off = [min(dseg((float(r["east_m"]), float(r["north_m"])), P[i], P[i + 1]) for i in range(2)) for r in rows]
 end = math.hypot(float(rows[-1]["east_m"]) - P[2][0], float(rows[-1]["north_m"]) - P[2][1])
-print("track at most %.1f m off the route's line (at t = %s s); %.0f m from its end at %s s"
-      % (max(off), rows[off.index(max(off))]["t_s"], end, rows[-1]["t_s"]))
-assert max(off) < 100.0 and end < 500.0
+# first leg (before the bend's wheel-over): the starboard lane WB_0, y = -500 to -250 m
+ys = [float(r["north_m"]) for r in rows if float(r["east_m"]) < 9000.0]
+print("track at most %.1f m off the route's line (at t = %s s); %.0f m from its end at %s s; "
+      "first leg y %.1f to %.1f m" % (max(off), rows[off.index(max(off))]["t_s"], end,
+                                      rows[-1]["t_s"], min(ys), max(ys)))
+assert max(off) < 100.0 and end < 500.0 and min(ys) > -500.0 and max(ys) < -250.0
 PY
 sed 's/    edges: \[WB, BE\]/    stream: east/' "$scn" > "$tmp/stream.yaml"
 "$FAIRWAY" run "$tmp/stream.yaml" --out "$tmp/runs2" > /dev/null 2>&1 &&
@@ -79,12 +84,12 @@ cp "$FAIRWAY_DATA/networks/bend/bend.nod.xml" "$tmp/net/mine/mine.nod.xml"
 printf '<edges>\n</edges>\n' > "$tmp/net/mine/mine.edg.xml"
 bad "$tmp/mine.yaml" "mine.yaml:13: traffic.network: network 'mine': .*/net/mine/mine.edg.xml has no <edge> element (its edges"
 # a curved edge (a user's network): one edge whose shape is a 40 deg arc to
-# port of radius 5 km, a point a degree.  The lanes' line (radius 5250 m) is
-# cut to the fewest waypoints within 10 m of it: 7, every 6.7 deg, on that
+# port of radius 5 km, a point a degree.  The starboard lane's line (radius
+# 5375 m) is cut to the fewest waypoints within 10 m of it: 7, every 6.7 deg, on that
 # line (Douglas-Peucker, which halves an arc, gave 9 every 5 deg, and the
 # follower then settled 87 m outside the legs).  The ship within 100 m of
-# the legs.  A 270 deg arc needs 15 waypoints even at 80 m (a quarter of the
-# edge's 500 m is the most allowed): refused.
+# the legs.  A 270 deg arc needs too many waypoints even at 40 m (a quarter
+# of the starboard lane's 250 m is the most allowed): refused.
 arc() { # DIR DEGREES
   mkdir -p "$1"
   cp "$FAIRWAY_DATA/networks/bend/bend.typ.xml" "$1/$(basename "$1").typ.xml"
@@ -112,7 +117,7 @@ legs = [tuple(map(float, m.groups())) for m in
 P = [(e, n) for e, n, c, l in legs]
 e, n, c, l = legs[-1]
 P.append((e + l * math.sin(math.radians(c)), n + l * math.cos(math.radians(c))))
-# the lanes' centre line: the arc 250 m to starboard of the edge's shape, radius 5250 m
+# the starboard lane's centre line: the arc 375 m to starboard of the edge's shape, radius 5375 m
 r = [math.hypot(x, y - 5000) for x, y in P]
 def dseg(p, a, b):
     dx, dy = b[0] - a[0], b[1] - a[1]
@@ -120,12 +125,12 @@ def dseg(p, a, b):
     return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
 rows = list(csv.DictReader(open(d + "/own.csv")))
 off = max(min(dseg((float(q["east_m"]), float(q["north_m"])), P[i], P[i + 1]) for i in range(len(P) - 1)) for q in rows)
-print("40 deg arc: %d waypoints at radius %.1f-%.1f m (lanes' line 5250 m), track at most %.1f m off the legs"
+print("40 deg arc: %d waypoints at radius %.1f-%.1f m (starboard lane's line 5375 m), track at most %.1f m off the legs"
       % (len(P), min(r), max(r), off))
-assert len(P) == 7 and 5250 - 1 < min(r) and max(r) < 5250 + 5 and off < 100.0
+assert len(P) == 7 and 5375 - 1 < min(r) and max(r) < 5375 + 5 and off < 100.0
 PY
 arc "$tmp/net/loop" 270
 sed -e 's|  network: bend|  network: net/loop|' -e 's/edges: \[WB, BE\]/edges: [AB]/' \
     -e 's/speeds_kn: \[10, 12\]/speeds_kn: 10/' "$scn" > "$tmp/loop.yaml"
-bad "$tmp/loop.yaml" "loop.yaml:9: own_ship.network_route: its lanes' line needs 15 waypoints to stay within 80 m of it (a quarter of its narrowest edge's width), a route has at most 9"
+bad "$tmp/loop.yaml" "loop.yaml:9: own_ship.network_route: its starboard lanes' line needs 22 waypoints to stay within 40 m of it (a quarter of the narrowest one's width), a route has at most 9"
 echo "ok: the own ship follows a network's edges; bad routes and networks refused"
