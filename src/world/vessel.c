@@ -69,6 +69,8 @@ static void refresh(fw_vessel *v, double dt)
     const fw_mmg_state *x = &v->motion;
     double ce = 0.0, cn = 0.0;
     fw_current_at(&v->env->current, x->east, x->north, v->t, &ce, &cn);
+    v->cur.valid = true, v->cur.t = v->t, v->cur.east = x->east, v->cur.north = x->north;
+    v->cur.ce = ce, v->cur.cn = cn;
     double stw = hypot(x->u, x->vm), beta = atan2(-x->vm, x->u);
     if (v->dyn == FW_DYN_MMG) {
         v->own = (fw_own_state){.east = x->east, .north = x->north, .psi = x->psi,
@@ -224,9 +226,14 @@ fw_status fw_vessel_advance(fw_vessel *v, double dt, fw_error *err)
         /* one step of the predicted track, the light plant: its state is
          * the prediction's, speed and drift as they were */
         fw_track_def one = {.dt = dt, .horizon = dt};
-        /* carried by the current at the start of the step */
-        fw_current_at(&v->env->current, v->nom.east, v->nom.north, v->t, &v->nom.cur_e,
-                      &v->nom.cur_n);
+        /* carried by the current at the start of the step: refresh's at
+         * the same place and time (the same answer: the field is the run's) */
+        if (v->cur.valid && v->cur.t == v->t && v->cur.east == v->nom.east &&
+            v->cur.north == v->nom.north)
+            v->nom.cur_e = v->cur.ce, v->nom.cur_n = v->cur.cn;
+        else
+            fw_current_at(&v->env->current, v->nom.east, v->nom.north, v->t, &v->nom.cur_e,
+                          &v->nom.cur_n);
         if ((st = fw_track_predict(v->ship, &one, &v->nom, v->d.helm, &v->one, err)))
             return st;
         v->nom.east = v->one.east[1], v->nom.north = v->one.north[1];

@@ -24,6 +24,12 @@ struct fw_vessel {
     bool advanced;             /* rdot is known once it has advanced */
     fw_track one;              /* Nomoto: one step of the predicted track */
     fw_own_state nom;          /* Nomoto: the state */
+    /* the current refresh last found at (east, north) at t: the next step
+     * starts there and then (vessel.c) */
+    struct {
+        bool valid;
+        double t, east, north, ce, cn;
+    } cur;
     /* MMG with windage in a wind: the steady leeway of straight running on
      * the heading psi at propeller n in the current (ce, cn) (x: u, vm,
      * delta; ok: found), made again when any of them has moved (vessel.c) */
