@@ -55,8 +55,8 @@ struct fw_world {
     steered **grave;     /* of vessels gone since the last sensing */
     int n_grave, grave_cap;
     fw_lane_cache lanes; /* the source's ships' lanes (fw_world_lane) */
-    fw_target *spare;    /* the vessels a view adds to the source's ships (sort_view) */
-    int spare_cap;
+    const fw_target **sight; /* the vessels a view adds, by id (in_sight) */
+    int sight_cap;
 };
 
 /* The CPU clock when the def keeps timings, else 0 (no system calls). */
@@ -95,7 +95,7 @@ void fw_world_destroy(fw_world *w)
     free(w->grave);
     free(w->slots);
     free(w->recs);
-    free(w->spare);
+    free((void *)w->sight);
     fw_source_destroy(w->source);
     fw_lane_cache_free(&w->lanes);
     fw_reactions_destroy(w->react);
@@ -368,64 +368,74 @@ static int cmp_id(const void *a, const void *b)
     return strcmp(((const fw_target *)a)->id, ((const fw_target *)b)->id);
 }
 
-/* view[0, n) sorted by id as qsort (glibc's merge sort: stable) sorts it:
- * view[0, n0), the source's ships, comes sorted by id from every source
- * that sorts (SUMO's, fw_traffic_nearby and ss_around); the vessels after
- * it (a few) are sorted apart and merged in, the source's first among equal
- * ids.  Before, the whole view was sorted again for every vessel every step
- * (37,000 sorts, 63 M instructions of the 1 nm fog run's 3.7 G). */
-static fw_status sort_view(fw_world *w, fw_target *view, int n0, int n, fw_error *err)
+/* The vessels other than slot i within sight r of (e, no), sorted by id
+ * into w->sight (pointers to their records: their ids differ, check_new, so
+ * any sort gives qsort's order); *m counts them. */
+static fw_status in_sight(fw_world *w, int i, double e, double no, double r, int *m,
+                          fw_error *err)
 {
-    int m = n - n0, i = n0 - 1, j = m - 1, k = n - 1;
-    bool sorted = true;
-    for (int a = 1; a < n0 && sorted; a++)
-        sorted = strcmp(view[a - 1].id, view[a].id) <= 0;
-    if (!sorted || n0 == 0) {
-        qsort(view, (size_t)n, sizeof *view, cmp_id);
-        return FW_OK;
-    }
-    if (!fw_reserve((void **)&w->spare, sizeof *w->spare, &w->spare_cap, m))
-        return fw_fail(err, FW_ERUN, "out of memory for %d vessels", m);
-    memcpy(w->spare, view + n0, sizeof *view * (size_t)m);
-    /* the vessels' ids differ (check_new), so any sort gives qsort's order:
-     * a few sorted by insertion of pointers, not of the records themselves
-     * (qsort: 44 M instructions of the 1 nm fog run's 3.66 G) */
-    enum { FEW = 64 };
-    const fw_target *by_id[FEW];
-    if (m > FEW)
-        qsort(w->spare, (size_t)m, sizeof *view, cmp_id);
-    for (int a = 0; a < m && m <= FEW; a++) {
-        int b = a;
-        for (; b > 0 && strcmp(by_id[b - 1]->id, w->spare[a].id) > 0; b--)
-            by_id[b] = by_id[b - 1];
-        by_id[b] = &w->spare[a];
-    }
-    for (; j >= 0; k--) {
-        const fw_target *x = m <= FEW ? by_id[j] : &w->spare[j];
-        if (i >= 0 && strcmp(view[i].id, x->id) > 0)
-            view[k] = view[i--];
-        else
-            view[k] = *x, j--;
+    *m = 0;
+    if (!fw_reserve((void **)&w->sight, sizeof *w->sight, &w->sight_cap, w->nv))
+        return fw_fail(err, FW_ERUN, "out of memory for %d vessels", w->nv);
+    for (int j = 0; j < w->n_slots; j++) {
+        const fw_vessel *o = w->slots[j].v;
+        if (j == i || !o || !fw_within_range(o->record.east - e, o->record.north - no, r))
+            continue;
+        int b = (*m)++;
+        for (; b > 0 && strcmp(w->sight[b - 1]->id, o->record.id) > 0; b--)
+            w->sight[b] = w->sight[b - 1];
+        w->sight[b] = &o->record;
     }
     return FW_OK;
 }
 
-/* The source's ships a vessel other than the own ship sees (source.h
- * within(), or nearby() filtered), into its view; *n counts them. */
-static fw_status sense_source(fw_world *w, fw_vessel *v, int *n, fw_error *err)
+/* The view: the source's ships src[0, ns) (those within r of (e, no) if
+ * filter) and the vessels in w->sight[0, m), sorted by id as qsort (glibc's
+ * merge sort: stable) sorts the ships then the vessels, the source's first
+ * among equal ids.  Every source that sorts (SUMO's, fw_traffic_nearby and
+ * ss_around) gives its ships by id: they are merged with the vessels as
+ * they are copied, each record copied once (before: the source's ships
+ * copied, the vessels sorted apart and merged in, 43 M instructions of the
+ * 1 nm fog run's 3.6 G); ships out of order are sorted whole, as before. */
+static int make_view(const fw_world *w, fw_target *view, const fw_target *src, int ns,
+                     bool filter, double e, double no, double r, int m)
 {
-    const fw_target *src;
-    int m;
-    double e = v->record.east, no = v->record.north, r = v->radius;
+    int n = 0, j = 0;
+    const char *last = NULL;
+    for (int a = 0; a < ns; a++) {
+        if (filter && !fw_within_range(src[a].east - e, src[a].north - no, r))
+            continue;
+        if (m > 0 && last && strcmp(last, src[a].id) > 0) {
+            /* out of order: the ships, then the vessels, sorted whole */
+            n = 0;
+            for (int b = 0; b < ns; b++)
+                if (!filter || fw_within_range(src[b].east - e, src[b].north - no, r))
+                    view[n++] = src[b];
+            for (int b = 0; b < m; b++)
+                view[n++] = *w->sight[b];
+            qsort(view, (size_t)n, sizeof *view, cmp_id);
+            return n;
+        }
+        for (; j < m && strcmp(w->sight[j]->id, src[a].id) < 0; j++)
+            view[n++] = *w->sight[j];
+        view[n++] = src[a];
+        last = src[a].id;
+    }
+    for (; j < m; j++)
+        view[n++] = *w->sight[j];
+    return n;
+}
+
+/* The source's ships a vessel other than the own ship sees: source.h
+ * within(), or nearby() filtered (*filter). */
+static fw_status source_ships(fw_world *w, const fw_vessel *v, const fw_target **src, int *ns,
+                              bool *filter, fw_error *err)
+{
     const fw_source_ops *ops = w->source->ops;
-    fw_status st = ops->within ? ops->within(w->source, e, no, r, &src, &m, err)
-                               : fw_source_nearby(w->source, &src, &m, err);
-    if (!st)
-        st = fw_vessel_reserve(v, m + w->nv, err);
-    for (int j = 0; !st && j < m; j++)
-        if (ops->within || fw_within_range(src[j].east - e, src[j].north - no, r))
-            v->view[(*n)++] = src[j];
-    return st;
+    *filter = !ops->within;
+    return ops->within ? ops->within(w->source, v->record.east, v->record.north, v->radius, src,
+                                     ns, err)
+                       : fw_source_nearby(w->source, src, ns, err);
 }
 
 /* The own ship's watch (def.own_watch): the ships in its view v it has not
@@ -450,27 +460,19 @@ static fw_status own_watch(fw_world *w, fw_vessel *v, fw_error *err)
 static fw_status sense_one(fw_world *w, int i, const fw_target *src, int n_src, fw_error *err)
 {
     fw_vessel *v = w->slots[i].v;
-    fw_status st = fw_vessel_reserve(v, n_src + w->nv, err);
+    int m;
+    bool filter = false;
+    fw_status st = in_sight(w, i, v->record.east, v->record.north, v->radius, &m, err);
+    if (!st && i != w->own && w->source)
+        st = source_ships(w, v, &src, &n_src, &filter, err);
+    else if (i != w->own)
+        n_src = 0;
+    if (!st)
+        st = fw_vessel_reserve(v, n_src + w->nv, err);
     if (st)
         return st;
-    int n = 0;
-    if (i == w->own && n_src > 0) {
-        memcpy(v->view, src, sizeof *src * (size_t)n_src);
-        n = n_src;
-    } else if (i != w->own && w->source && (st = sense_source(w, v, &n, err))) {
-        return st;
-    }
-    int n0 = n;
-    for (int j = 0; j < w->n_slots; j++) {
-        const fw_vessel *o = w->slots[j].v;
-        if (j == i || !o ||
-            !fw_within_range(o->record.east - v->record.east, o->record.north - v->record.north,
-                             v->radius))
-            continue;
-        v->view[n++] = o->record;
-    }
-    if (n > n0 && (st = sort_view(w, v->view, n0, n, err)))
-        return st;
+    int n = make_view(w, v->view, src, n_src, filter, v->record.east, v->record.north,
+                      v->radius, m);
     v->n_view = n;
     bool sensor = i == w->own && w->def.own_sensing.mode != FW_SENSE_PERFECT;
     bool watch = i == w->own && fw_watch_active(w->own_watch);
