@@ -129,3 +129,6 @@ fw_script_test(net_route 0 "ok: the own ship follows a network's edges" net_rout
 set_tests_properties(net_route PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
 fw_script_test(channel_overtaken 0 "ok: the own ship overtaken close keeps within its channel" channel_overtaken.sh)
 set_tests_properties(channel_overtaken PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
+fw_script_test(channel_steady 0 "ok: the own ship in a channel steadies parallel to it and holds its course"
+               channel_steady.sh)
+set_tests_properties(channel_steady PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 180)

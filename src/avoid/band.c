@@ -118,7 +118,11 @@ fw_status fw_band_hold(fw_policy *p, const fw_policy_input *in, fw_error *err)
 fw_status fw_band_least_bad(fw_policy *p, const fw_policy_input *in, fw_error *err)
 {
     const double step = fw_deg_to_rad(15.0);
-    int kmax = (int)floor(p->def.band_turn / step + 1e-9);
+    /* in a channel (a band with edges) the heading parallel to them alone:
+     * any other meets an edge within minutes, and steering it, steadying
+     * back at the edge and steering it again swung the rudder every few
+     * seconds (band.h) */
+    int kmax = in->ctx->band.on ? 0 : (int)floor(p->def.band_turn / step + 1e-9);
     double best = -1.0, psi = p->psi_hold;
     double speed[2] = {fw_band_slow(p, &in->ctx->ship->nomoto), fw_band_planned(p)};
     bool slow = true;

@@ -50,14 +50,17 @@ fw_status fw_band_hold(fw_policy *p, const fw_policy_input *in, fw_error *err);
 
 /* The domain cannot be kept: p->psi_hold becomes the least bad heading within
  * the band (the leg's course +-15, 30 .. band_turn deg, none further out past
- * band_xte): the one whose steering keeps the targets farthest out, over the
- * horizon and beyond (the return's check), the nearest the course among
- * equals (within 0.02 of the normalised domain radius); p->slow: whether at
- * the slowed speed (fw_band_slow) or the planned one, whichever keeps them
- * farther out on it, slowed among equals (each predicted with the speed
- * relaxing to it: nomoto/track.h fw_steer_def.U0).  Slowing gives a ship
- * ahead or crossing time and room (rule 8(e)); for one coming up from astern
- * or across the quarter it only lets it in sooner. */
+ * band_xte; in a channel, fw_band_of on, the leg's course alone, parallel to
+ * its edges: any other heading meets an edge within minutes, and one judged
+ * clear at the slowed speed left it at the present one, so the ship steered it
+ * and steadied back by turns): the one whose steering keeps the targets
+ * farthest out, over the horizon and beyond (the return's check), the nearest
+ * the course among equals (within 0.02 of the normalised domain radius);
+ * p->slow: whether at the slowed speed (fw_band_slow) or the planned one,
+ * whichever keeps them farther out on it, slowed among equals (each predicted
+ * with the speed relaxing to it: nomoto/track.h fw_steer_def.U0).  Slowing
+ * gives a ship ahead or crossing time and room (rule 8(e)); for one coming up
+ * from astern or across the quarter it only lets it in sooner. */
 fw_status fw_band_least_bad(fw_policy *p, const fw_policy_input *in, fw_error *err);
 
 #endif

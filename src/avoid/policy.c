@@ -323,6 +323,15 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
         least > fabs(d->search.helm) &&
         (st = least_leaves_band(ctx, d->search.side, least, &out, err)))
         return st;
+    if (ctx->band.on && p->unkept && !d->search.feasible && p->mode == FW_MODE_STEADY) {
+        /* in a channel whose domain already cannot be kept, no helm clears:
+         * the least bad heading is held (step_steady), not the best
+         * available helm taken afresh (it turned the ship for a step, then
+         * steadied it at the channel's edge, by turns every 2 s) */
+        d->reason = "steady: the domain cannot be kept within the route's channel: holding the "
+                    "least bad heading";
+        return FW_OK;
+    }
     if (p->no_room || out) {
         /* no permitted side has room within the route's band (policy.h):
          * the least bad heading within it (step_steady), slower */
@@ -421,13 +430,17 @@ static fw_status step_avoid(fw_policy *p, const fw_policy_input *in, fw_decision
      * course at each vertex, and their constant-velocity tracks swing
      * with it; without it the order would follow every swing */
     bool dwelt = in->t - p->t_mode >= p->def.min_avoid_time;
+    /* holding this heading would leave a channel: steady parallel to its
+     * edges (below) */
+    bool parallel = hold < 0.0 && in->ctx->band.on;
     edge = edge || hold < 0.0; /* turning on would leave the band sooner still */
     if (edge || (dwelt && ((apparent && hold >= p->def.steady_margin) || far_enough))) {
-        d->reason = edge ? "at the edge of the route's band: steadying"
+        d->reason = parallel ? "at the edge of the route's channel: steadying parallel to it"
+                    : edge ? "at the edge of the route's band: steadying"
                     : far_enough ? "turned as far as the prediction goes: steadying"
                                  : "steadying on this heading keeps every target out: steadying";
         p->unkept = p->unkept || (edge && hold < 1.0);
-        p->psi_hold = own->psi;
+        p->psi_hold = parallel ? p->psi_ref : own->psi;
         p->helm = autopilot(p, own, p->psi_hold);
         set_mode(p, FW_MODE_STEADY, in->t);
     } else {
@@ -478,9 +491,17 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
     if ((st = steer(p, in->ctx, in->targets, in->n, p->psi_hold, 0, &hold, err)))
         return st;
     if (hold < 0.0) {
-        /* holding it leaves the band: the least bad heading within it */
-        if ((st = fw_band_least_bad(p, in, err)) ||
-            (st = steer(p, in->ctx, in->targets, in->n, p->psi_hold, 0, &hold, err)))
+        /* holding it leaves the band: the least bad heading within it; in a
+         * channel (whose edges any other heading meets within minutes) the
+         * heading parallel to its edges, the leg's course, as a master
+         * steadies there: the least bad heading judged at the slowed speed
+         * left it at the present one, and the ship acted and steadied by
+         * turns every 2 s (policy.h) */
+        if (in->ctx->band.on)
+            p->psi_hold = p->psi_ref;
+        else if ((st = fw_band_least_bad(p, in, err)))
+            return st;
+        if ((st = steer(p, in->ctx, in->targets, in->n, p->psi_hold, 0, &hold, err)))
             return st;
         p->helm = autopilot(p, own, p->psi_hold);
     }

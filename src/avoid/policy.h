@@ -66,22 +66,29 @@
  * the return (autopilot), the stand-on ship's least helm (rule 17) and the
  * least bad heading alike; with no candidate within it the domain cannot
  * be kept (below), and a heading held that would leave it gives way to the
- * least bad one within it.  Why: in a narrow channel rule 9 keeps a ship to
+ * heading parallel to its edges (the leg's course: an avoidance turn that
+ * reaches the point where holding its heading would leave the channel
+ * steadies on that course, as a master steadies at a channel's edge, not
+ * on the heading that points out of it).  Once the domain cannot be kept in
+ * a channel, no best available helm (one that does not clear) is taken
+ * from STEADY: the least bad heading is held (taking it every other step
+ * and steadying back at the edge between swung the rudder every 2 s in a
+ * bend-channel run).  Why: in a narrow channel rule 9 keeps a ship to
  * its starboard side and rule 13 makes the overtaking ship keep clear; a
  * ship overtaken close by one that does not is not expected to leave the
  * channel (nor cross into the other direction's lanes): it holds its side,
  * slows where that helps, and says the domain cannot be kept.  A side
- * without room is not searched; a threat that no permitted side within the
- * band can meet means the domain cannot be kept: the decision says so
+ * without room is not searched; a threat that no permitted side within the band
+ * can meet means the domain cannot be kept: the decision says so
  * (fw_decision.unkept, run.log, summary.json's domain_unkept) and the ship
- * steers the least bad heading within the band (band.h fw_band_least_bad:
- * the one of the leg's course +-15, 30 .. 90 deg that keeps the targets
- * farthest out) and reduces speed to slow_factor of the planned speed (not
- * below the knowledge base's lowest fitted speed: its predictions hold
- * there) where that keeps them farther out than the planned speed (each
- * predicted; a ship coming up from astern is let in sooner by slowing: in
- * the strait study a ship slowed at the band's edge, 90 deg off its route
- * and so running along the lane, was run down from astern), until keeping
+ * steers the least bad heading within the band (band.h fw_band_least_bad: the
+ * one of the leg's course +-15, 30 .. 90 deg that keeps the targets farthest
+ * out; in a channel the leg's course alone) and reduces speed to slow_factor of
+ * the planned speed (not below the knowledge base's lowest fitted speed: its
+ * predictions hold there) where that keeps them farther out than the planned
+ * speed (each predicted; a ship coming up from astern is let in sooner by
+ * slowing: in the strait study a ship slowed at the band's edge, 90 deg off its
+ * route and so running along the lane, was run down from astern), until keeping
  * the course has let no target in for min_avoid_time.
  * Why: in a traffic separation scheme
  * or a channel a master who cannot open the range by altering course does not
