@@ -132,3 +132,6 @@ set_tests_properties(channel_overtaken PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEO
 fw_script_test(channel_steady 0 "ok: the own ship in a channel steadies parallel to it and holds its course"
                channel_steady.sh)
 set_tests_properties(channel_steady PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 180)
+fw_script_test(channel_overtaking 0 "ok: the own ship overtaking close in a channel keeps clear"
+               channel_overtaking.sh)
+set_tests_properties(channel_overtaking PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)

@@ -145,3 +145,18 @@ fw_status fw_band_least_bad(fw_policy *p, const fw_policy_input *in, fw_error *e
     p->slow = slow;
     return FW_OK;
 }
+
+int fw_band_overtaking_sides(const fw_policy *p, const fw_policy_input *in)
+{
+    int sides = FW_ALLOW_EITHER;
+    if (!in->ctx->band.on)
+        return sides;
+    const fw_route *r = &p->def.route;
+    double own_x = fw_route_cross(r, p->leg, in->own->east, in->own->north);
+    for (int i = 0; i < in->n; i++)
+        if (in->as[i].situation == FW_SIT_OVERTAKING && in->as[i].enters_domain)
+            sides &= fw_route_cross(r, p->leg, in->targets[i].east, in->targets[i].north) < own_x
+                         ? FW_ALLOW_STARBOARD
+                         : FW_ALLOW_PORT;
+    return sides;
+}

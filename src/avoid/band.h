@@ -25,6 +25,15 @@ fw_helm_band fw_band_of(const fw_policy *p);
  * to that side.  FW_ALLOW_EITHER without a band. */
 int fw_band_sides(const fw_policy *p, const fw_own_state *own);
 
+/* In a channel (fw_band_of on, set in in->ctx), the FW_ALLOW_* sides an
+ * alteration may take against the ships the own ship overtakes that would
+ * enter its domain (in->as; rule 13: it keeps clear of them): away from each
+ * across the active leg, never towards it and across its bow (a ship to port
+ * of the own ship leaves starboard, one to starboard port; ships on both
+ * sides leave none).  FW_ALLOW_EITHER without a channel: in open water the
+ * side is the search's (helm_search.h overtake_side). */
+int fw_band_overtaking_sides(const fw_policy *p, const fw_policy_input *in);
+
 /* At (or past) the band's edge on side (FW_SIDE_*): turned band_turn that
  * way, or band_xte across to it. */
 bool fw_band_edge(const fw_policy *p, const fw_own_state *own, int side);

@@ -114,6 +114,7 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->wo = 0.0;
     p->dev = p->psi_last = 0.0;
     p->unkept = p->no_room = p->r19e = false;
+    p->edge_side = FW_SIDE_NONE;
     p->slow = true;
     p->speed_order = 0.0;
     p->t_kept = p->t_19e = -1.0;
@@ -323,11 +324,17 @@ static fw_status maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw_ow
         least > fabs(d->search.helm) &&
         (st = least_leaves_band(ctx, d->search.side, least, &out, err)))
         return st;
-    if (ctx->band.on && p->unkept && !d->search.feasible && p->mode == FW_MODE_STEADY) {
-        /* in a channel whose domain already cannot be kept, no helm clears:
-         * the least bad heading is held (step_steady), not the best
-         * available helm taken afresh (it turned the ship for a step, then
-         * steadied it at the channel's edge, by turns every 2 s) */
+    if (ctx->band.on && p->mode == FW_MODE_STEADY &&
+        ((p->unkept && !d->search.feasible) ||
+         (p->edge_side != FW_SIDE_NONE && d->search.side == p->edge_side))) {
+        /* in a channel whose domain already cannot be kept, no helm clears;
+         * or the helm is towards the edge the ship has just steadied at,
+         * where holding any heading it turns to would leave the channel
+         * (the search's candidate, slowed by its hard turn, only seems to
+         * stay in): the least bad heading is held (step_steady), not the
+         * helm taken afresh (it turned the ship for a step, then steadied it
+         * at the channel's edge, by turns every 2 s) */
+        p->unkept = true;
         d->reason = "steady: the domain cannot be kept within the route's channel: holding the "
                     "least bad heading";
         return FW_OK;
@@ -369,7 +376,11 @@ static fw_status steer(const fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg
 
 /* t_blocked is kept through a return that is then given up: the pacing ship
  * that blocks the return for good does so by letting it start and stop */
-static void start_return(fw_policy *p, double t) { set_mode(p, FW_MODE_AUTOPILOT, t); }
+static void start_return(fw_policy *p, double t)
+{
+    p->edge_side = FW_SIDE_NONE;
+    set_mode(p, FW_MODE_AUTOPILOT, t);
+}
 
 /* Returning: on while the rest of the return keeps every target out, or
  * while stopping it would do no better (else back to STEADY).  *ret: the
@@ -441,6 +452,9 @@ static fw_status step_avoid(fw_policy *p, const fw_policy_input *in, fw_decision
                                  : "steadying on this heading keeps every target out: steadying";
         p->unkept = p->unkept || (edge && hold < 1.0);
         p->psi_hold = parallel ? p->psi_ref : own->psi;
+        if (parallel)
+            p->edge_side = fw_wrap_pi(own->psi - p->psi_ref) > 0.0 ? FW_SIDE_STARBOARD
+                                                                  : FW_SIDE_PORT;
         p->helm = autopilot(p, own, p->psi_hold);
         set_mode(p, FW_MODE_STEADY, in->t);
     } else {
@@ -479,6 +493,20 @@ static fw_status reopen(fw_policy *p, const fw_policy_input *in, fw_decision *d,
     return FW_OK;
 }
 
+/* *out: in a channel (the search's band on), holding the present heading
+ * would leave it (false without a channel). */
+static fw_status leaves_channel(const fw_policy *p, const fw_policy_input *in, bool *out,
+                                fw_error *err)
+{
+    double cl = 0.0;
+    *out = false;
+    if (!in->ctx->band.on)
+        return FW_OK;
+    fw_status st = steer(p, in->ctx, in->targets, in->n, in->own->psi, 0, &cl, err);
+    *out = !st && cl < 0.0;
+    return st;
+}
+
 static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decision *d,
                              fw_error *err)
 {
@@ -506,6 +534,19 @@ static fw_status step_steady(fw_policy *p, const fw_policy_input *in, fw_decisio
         p->helm = autopilot(p, own, p->psi_hold);
     }
     if (hold < 1.0) {
+        bool out = false;
+        if (!d->search.threat && (st = leaves_channel(p, in, &out, err)))
+            return st;
+        if (out) {
+            /* the heading reached would leave the channel (as after a leg
+             * change: the last leg's course held on round a bend took a
+             * ship 2.4 km out of it): its course, parallel to its edges,
+             * though a target enters the domain there */
+            d->reason = "steady: the domain cannot be kept within the route's channel: holding "
+                        "the least bad heading";
+            p->unkept = true;
+            return FW_OK;
+        }
         if (!d->search.threat) {
             /* easing the rudder keeps them out where steering back to
              * psi_hold would not: hold the heading reached instead */
@@ -690,7 +731,8 @@ fw_status fw_policy_step(fw_policy *p, const fw_policy_input *in, fw_decision *d
     fw_helm_begin(in->ctx, in->own);
     fw_helm_band band = fw_band_of(p);
     fw_helm_set_band(in->ctx, &band);
-    int allowed = fw_permitted_sides(hdef, in->as, in->n), room = allowed & fw_band_sides(p, in->own);
+    int allowed = fw_permitted_sides(hdef, in->as, in->n);
+    int room = allowed & fw_band_sides(p, in->own) & fw_band_overtaking_sides(p, in);
     p->no_room = room == 0;
     if ((st = fw_helm_search(in->ctx, in->targets, in->n, room ? room : allowed, &d->search, err)))
         return st;

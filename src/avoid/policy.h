@@ -67,16 +67,25 @@
  * least bad heading alike; with no candidate within it the domain cannot
  * be kept (below), and a heading held that would leave it gives way to the
  * heading parallel to its edges (the leg's course: an avoidance turn that
- * reaches the point where holding its heading would leave the channel
- * steadies on that course, as a master steadies at a channel's edge, not
- * on the heading that points out of it).  Once the domain cannot be kept in
- * a channel, no best available helm (one that does not clear) is taken
- * from STEADY: the least bad heading is held (taking it every other step
- * and steadying back at the edge between swung the rudder every 2 s in a
- * bend-channel run).  Why: in a narrow channel rule 9 keeps a ship to
- * its starboard side and rule 13 makes the overtaking ship keep clear; a
- * ship overtaken close by one that does not is not expected to leave the
- * channel (nor cross into the other direction's lanes): it holds its side,
+ * reaches the point where holding its heading would leave the channel steadies
+ * on that course, as a master steadies at a channel's edge, not on the heading
+ * that points out of it).  Once the domain cannot be kept in a channel, no best
+ * available helm (one that does not clear) is taken from STEADY: the least bad
+ * heading is held (taking it every other step and steadying back at the edge
+ * between swung the rudder every 2 s in a bend-channel run), nor, once steadied
+ * parallel to an edge, an alteration towards that edge (the search's track,
+ * slowed by its hard turn, seems to stay in; holding any heading it turns to
+ * does not).  Overtaking in a channel (rule 13: the overtaking ship keeps
+ * clear) the own ship alters only away from a ship it overtakes that would
+ * enter its domain, across the active leg (to starboard of one on its port
+ * side), never towards it and across its bow: the least helm's side turned a 6
+ * kn own ship 25 deg towards a 2 kn ship 125 m to port.  Nor is a heading held
+ * in a channel because easing the rudder keeps the targets out if holding it
+ * would leave the channel (the last leg's course held on through a wheel-over).
+ * Why: in a narrow channel rule 9 keeps a ship to its starboard side and rule
+ * 13 makes the overtaking ship keep clear; a ship overtaken close by one that
+ * does not is not expected to leave the channel (nor cross into the other
+ * direction's lanes): it holds its side,
  * slows where that helps, and says the domain cannot be kept.  A side
  * without room is not searched; a threat that no permitted side within the band
  * can meet means the domain cannot be kept: the decision says so
@@ -235,6 +244,9 @@ typedef struct fw_policy {
     double t_19e;     /* s, ... since when no target has called for it (< 0: one does) */
     char r19e_id[FW_TARGET_ID_MAX]; /* the last target that called for it */
     bool no_room;     /* this step: no permitted side has room within the band */
+    int edge_side;    /* FW_SIDE_*: the channel edge the last steady parallel to it
+                         was for (the side its heading was turned to); no new
+                         alteration to that side while steady (NONE: none) */
     double t_kept;    /* s, since when keeping the course lets no target in (< 0: not) */
     double speed_order; /* m/s, the last speed ordered (0: none yet) */
 } fw_policy;
