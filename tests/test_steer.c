@@ -539,6 +539,82 @@ static void test_close_quarters_judged_along_the_turn(void)
     fw_controller_destroy(c);
 }
 
+/* g gives way to the own ship (10 kn) crossing from its starboard side
+ * and passes astern of it.  Once the own ship is past but g's way back
+ * would still pass it within the passing distance, g sails its lane's
+ * course where it is until it can come back (before, it held its
+ * alteration on and went 1908 m off its lane; now 1181 m), is given back
+ * on its lane within the hour (1820 s; before 1719 s) and is never more than
+ * 1500 m (0.8 of a Dover lane's 1852 m) off it. */
+static void test_comes_back_when_clear(void)
+{
+    fw_kin_ship ks[1] = {lane_ship("g", 0.0, 10.0)};
+    fw_world *w = lane_scene(ks, 1, 10.0);
+    fw_error err = {0};
+    double far = 0.0, t_back = NAN;
+    for (int k = 0; k < 3600; k++) {
+        CHECK_MSG(fw_world_step(w, 1.0, &err) == FW_OK, "%s", err.msg);
+        fw_target g;
+        CHECK(g_now(w, &g));
+        far = fmax(far, fabs(g.east));
+        if (isnan(t_back) && fw_world_vessel_count(w) == 1 && far > 0.0)
+            t_back = k + 1.0;
+    }
+    printf("comes back when clear: %.0f m off its lane at most, given back at %.0f s\n", far,
+           t_back);
+    CHECK_MSG(far > 100.0 && far < 1500.0, "%.0f m off its lane at most", far);
+    CHECK_MSG(t_back < 3600.0, "given back at %.0f s", t_back);
+    fw_target g;
+    CHECK(g_now(w, &g));
+    CHECK_MSG(fabs(g.east) <= FW_SOURCE_REJOIN_MAX, "given back %.2f m off its lane", g.east);
+    fw_world_destroy(w);
+}
+
+/* The steepest way back that is clear (steer.h, alter): a steered 150 m
+ * ship 1000 m to starboard of its lane (course north) on its 20 deg
+ * alteration at 10 m/s, the ship it gave way to past (the range opening)
+ * 2 km off on its port quarter, going 345 at 10 m/s, converging on its
+ * lane.  Neither its line of sight back nor its lane's course passes that
+ * ship at the passing distance; a course between them does.  It comes back
+ * on the steepest clear one, passes the other at the passing distance or
+ * more and is on its lane within 15 minutes (measured: 681 s).  Before, it
+ * held its alteration while neither cleared, and was not back in 20
+ * minutes. */
+static void test_steepest_clear_way_back(void)
+{
+    fw_alter_def def = fw_default_alter_def();
+    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
+    def.length = 150.0, def.breadth = 25.0, def.speed = 10.0;
+    def.alteration = fw_deg_to_rad(20.0);
+    snprintf(def.other, sizeof def.other, "%s", "other");
+    fw_controller *c = NULL;
+    fw_error err = {0};
+    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    fw_own_state o = {.east = 1000.0, .psi = fw_deg_to_rad(20.0), .U = 10.0};
+    fw_target t = ship_at(-1000.0, -500.0, 345.0, 10.0);
+    double least = INFINITY, t_on = NAN, far = 0.0;
+    fw_assessment as[1];
+    int order[2];
+    for (int k = 0; k < 1200; k++) {
+        fw_sense in = {.t = k, .own = &o, .targets = &t, .n = 1, .as = as, .order = order};
+        fw_decision d;
+        CHECK(c->ops->decide(c, &in, &d, &err) == FW_OK);
+        if (isnan(t_on) && strstr(d.reason, "to be given back"))
+            t_on = k;
+        o.U = d.speed;
+        o.psi += FW_STEER_K_ND * o.U / 150.0 * d.helm;
+        o.east += o.U * sin(o.psi), o.north += o.U * cos(o.psi);
+        t.east += t.speed * sin(t.course), t.north += t.speed * cos(t.course);
+        least = fmin(least, hypot(t.east - o.east, t.north - o.north));
+        far = fmax(far, o.east);
+    }
+    printf("steepest clear way back: %.0f m off its lane at most, %.0f m from the other at "
+           "least, on its lane at %.0f s\n", far, least, t_on);
+    CHECK_MSG(least >= def.cpa, "passed %.0f m off", least);
+    CHECK_MSG(t_on < 900.0, "on its lane at %.0f s", t_on);
+    fw_controller_destroy(c);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -559,5 +635,7 @@ int main(void)
     TEST_RUN(test_overtaking_a_ship_moving_off);
     TEST_RUN(test_return_holds_course_across_a_ship_ahead);
     TEST_RUN(test_close_quarters_judged_along_the_turn);
+    TEST_RUN(test_comes_back_when_clear);
+    TEST_RUN(test_steepest_clear_way_back);
     return TEST_EXIT();
 }

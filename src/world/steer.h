@@ -25,9 +25,14 @@
  *            alteration (to starboard), and once it is `room` to starboard
  *            of its lane's line, that line's course at that offset (it never
  *            leaves its waterway), held until the ship it gives way to
- *            is past and clear: the range opening, and the course back to
- *            its lane passing it at the passing distance or more (or no
- *            closest approach ahead); a ship no longer in sight is past
+ *            is past and clear: past, the range opening; clear, the
+ *            course back to its lane passing it
+ *            at the passing distance or more (or no closest approach
+ *            ahead); a ship no longer in sight is past.  Past but its way
+ *            back not yet clear, it steers the steepest course back, from
+ *            the line of sight in 5 deg steps to its lane's course there
+ *            (no farther off), that passes it at the passing distance and
+ *            every other ship at half of it in the next 10 minutes
  *   return   back to its lane's centre line by line-of-sight guidance
  *            (look-ahead 4 ship lengths, at least 400 m), never crossing back
  *            at more than the alteration (at least 20, at most 45 deg); while that course would bring it
@@ -78,10 +83,12 @@
  * current carries it (vessel.h: a Nomoto vessel's step).
  * While it steers itself it looks round every 10 s, as reactions.h's
  * officer does: a ship it must give way to (rules 14 and 15 from its own side)
- * that the course it steers would pass within the passing distance in the
- * next 15 minutes makes it alter further to starboard, by the least of 20,
- * 25, ... 60 deg that passes every ship it sees at that distance (at most
- * 60 deg off its lane; none: it slows, below),
+ * that the course it steers would pass within 0.8 of the passing distance
+ * in the next 15 minutes (one passing nearly as far is no new danger to a
+ * ship that has acted) makes it alter further to starboard, by the least of
+ * 20, 25, ... 60 deg that passes every ship it sees at the passing
+ * distance, or else the least that passes that ship so and every other at
+ * half of it (at most 60 deg off its lane; none: it slows, below),
  * and it gives way to that ship from then on.  Ships going its way (rule 13:
  * courses within 45 deg, and one of the two more than 22.5 deg abaft the
  * other's beam) never make it alter: one ahead it keeps its distance from
