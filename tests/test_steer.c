@@ -343,14 +343,14 @@ static void test_follows_a_slower_ship_ahead(void)
  * velocity) for n s, the ship moving as its model turns at the helm ordered
  * (steady rate K' U / L x helm) at the speed ordered; the least distance
  * between the centres and the least speed ordered. */
-static void sail_pair(fw_controller *c, fw_own_state *o, fw_target *t, int n, double *least,
-                      double *slowest)
+static void sail_from(fw_controller *c, fw_own_state *o, fw_target *t, int k0, int n,
+                      double *least, double *slowest)
 {
     fw_assessment as[1];
     int order[2];
     fw_error err = {0};
     *least = *slowest = INFINITY;
-    for (int k = 0; k < n; k++) {
+    for (int k = k0; k < k0 + n; k++) {
         fw_sense in = {.t = k, .own = o, .targets = t, .n = 1, .as = as, .order = order};
         fw_decision d;
         CHECK(c->ops->decide(c, &in, &d, &err) == FW_OK);
@@ -361,6 +361,12 @@ static void sail_pair(fw_controller *c, fw_own_state *o, fw_target *t, int n, do
         *least = fmin(*least, hypot(t->east - o->east, t->north - o->north));
         *slowest = fmin(*slowest, d.speed);
     }
+}
+
+static void sail_pair(fw_controller *c, fw_own_state *o, fw_target *t, int n, double *least,
+                      double *slowest)
+{
+    sail_from(c, o, t, 0, n, least, slowest);
 }
 
 /* Close quarters (steer.h, rules 8(e) and 17(b)): a steered 150 m ship
@@ -615,6 +621,31 @@ static void test_steepest_clear_way_back(void)
     fw_controller_destroy(c);
 }
 
+/* Rule 17(a)(i) coming back (steer.h, return): a steered 150 m ship 800 m to
+ * starboard of its lane, on its altered course 030 at 11 m/s, the ship it
+ * gave way to past; a ship (6 m/s) crossing from its port side, 4.6 km off
+ * 13 deg on its port bow, would pass 813 m off in 8 minutes on that course:
+ * it is the stand-on ship and keeps its course (within 2 deg) until the
+ * other is past, then comes back to its lane.  Before, it turned back at
+ * once, 30 deg to port, under the bow of the ship giving way to it (a ferry
+ * coming back onto the own ship turning to pass astern of it: dover-domain
+ * seed 4, replication 18, on 8f2a074). */
+static void test_return_stands_on(void)
+{
+    fw_controller *c = past_on_lane(11.0);
+    fw_own_state o = {.east = 800.0, .psi = fw_deg_to_rad(30.0), .U = 11.0};
+    fw_target t = ship_at(-250.0, 4500.0, 90.0, 6.0);
+    double least, slowest, worst = 0.0;
+    for (int k = 0; k < 470; k++) {
+        sail_from(c, &o, &t, k, 1, &least, &slowest);
+        worst = fmax(worst, fabs(fw_wrap_pi(o.psi - fw_deg_to_rad(30.0))));
+    }
+    CHECK_MSG(worst < fw_deg_to_rad(2.0), "turned %.1f deg off its course", fw_rad_to_deg(worst));
+    sail_from(c, &o, &t, 470, 1500, &least, &slowest);
+    CHECK_MSG(fabs(o.east) < 10.0, "%.0f m off its lane", o.east);
+    fw_controller_destroy(c);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -637,5 +668,6 @@ int main(void)
     TEST_RUN(test_close_quarters_judged_along_the_turn);
     TEST_RUN(test_comes_back_when_clear);
     TEST_RUN(test_steepest_clear_way_back);
+    TEST_RUN(test_return_stands_on);
     return TEST_EXIT();
 }

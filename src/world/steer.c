@@ -162,39 +162,6 @@ static double conflict_pass(const fw_sense *in, double chi)
     return best;
 }
 
-/* Coming back (phase return) on chi across a ship it sees, within half the
- * passing distance in the next 10 minutes (a ship of its lane, another
- * coming back, a ship crossing ahead): along its lane where it is (course)
- * while that clears them; else it holds the course it makes good now (rule
- * 8(d): its alteration stands until the other is past and clear; rule 13:
- * overtaking, it does not turn across the bow of the ship it overtakes);
- * else, of the three, the one that passes farthest (xt: its cross-track
- * offset, m to starboard of its line; held within its room).  Before, with its lane's
- * course in conflict too it turned back regardless: across the bow of a
- * slowed ferry it was overtaking (strait-domain seed 1, replication 15) and
- * 45 deg to port onto a lane ship crossing ahead at 4 kn (seed 3,
- * replication 7). */
-static double los_course(const steer_ctl *c, double course, double xtrack, double offset);
-
-static double return_course(const steer_ctl *c, const fw_sense *in, double chi, double course,
-                            double xt)
-{
-    double lim = 0.5 * c->def.cpa, d_chi = conflict_pass(in, chi);
-    if (d_chi >= lim)
-        return chi;
-    double d_lane = conflict_pass(in, course);
-    if (d_lane >= lim)
-        return course;
-    /* held, within its room as when it altered (steer_decide) */
-    double hold = course + fw_wrap_pi(ground_course(in->own) - course);
-    if (isfinite(c->def.room))
-        hold = fmin(hold, los_course(c, course, xt, c->def.room));
-    double d_hold = conflict_pass(in, hold);
-    if (d_hold >= lim || (d_hold >= d_lane && d_hold >= d_chi))
-        return hold;
-    return d_lane >= d_chi ? course : chi;
-}
-
 /* Past the ship it gives way to, but its way back (back: the line of
  * sight to its lane) not yet clear of it: the steepest course back, from
  * back in 5 deg steps to its lane's own course there (no farther off), that
@@ -262,26 +229,86 @@ static bool same_way(const fw_own_state *o, const fw_target *t)
            fabs(fw_wrap_pi(brg + FW_PI - t->heading)) > abaft;
 }
 
-/* The ship it must give way to by altering course (rules 14 and 15, from
- * its own side: crossing from starboard, head-on) that on course chi it would pass
- * within the passing distance in the horizon, the nearest in time; -1: none. */
-static int must_give_way(const steer_ctl *c, const fw_sense *in, double chi, fw_situation *sit)
+/* The ship it must give way to by altering course (give_way; rules 14 and
+ * 15, from its own side: crossing from starboard, head-on), or else the one
+ * it stands on for (crossing from its port side), that on course chi it
+ * would pass within 0.8 of the passing distance (give way: kReplan) or the
+ * passing distance (stand on) in the horizon, the nearest in time; -1: none. */
+static int at_risk(const steer_ctl *c, const fw_sense *in, double chi, bool give_way,
+                   fw_situation *sit)
 {
     int best = -1;
-    double tbest = INFINITY, oe, on;
+    /* a new danger for a ship that has acted (kReplan); standing on, the
+     * passing distance itself, as the give-way ship counts on it */
+    double tbest = INFINITY, oe, on, lim = give_way ? kReplan * c->def.cpa : c->def.cpa;
     own_velocity(in->own, chi, &oe, &on);
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
         if (same_way(in->own, &in->targets[i]))
             continue;
         cpa_on(in->own, &in->targets[i], oe, on, &tc, &dc);
-        if (!(tc > 0.0 && tc < kHorizonS && dc < kReplan * c->def.cpa && tc < tbest))
+        if (!(tc > 0.0 && tc < kHorizonS && dc < lim && tc < tbest))
             continue;
         fw_situation s = fw_classify(&c->colregs, in->own, &in->targets[i]);
-        if (s == FW_SIT_GIVE_WAY || s == FW_SIT_HEAD_ON)
+        if (give_way ? s == FW_SIT_GIVE_WAY || s == FW_SIT_HEAD_ON : s == FW_SIT_STAND_ON)
             best = i, tbest = tc, *sit = s;
     }
     return best;
+}
+
+static int must_give_way(const steer_ctl *c, const fw_sense *in, double chi, fw_situation *sit)
+{
+    return at_risk(c, in, chi, true, sit);
+}
+
+/* Is it the stand-on ship (rule 17(a)(i): the other has it on her
+ * starboard side, crossing) of a ship that on course chi it would pass
+ * within the passing distance in the horizon? */
+static bool stands_on(const steer_ctl *c, const fw_sense *in, double chi)
+{
+    fw_situation s;
+    return at_risk(c, in, chi, false, &s) >= 0;
+}
+
+/* Coming back (phase return) on chi across a ship it sees, within half the
+ * passing distance in the next 10 minutes (a ship of its lane, another
+ * coming back, a ship crossing ahead): along its lane where it is (course)
+ * while that clears them; else it holds the course it makes good now (rule
+ * 8(d): its alteration stands until the other is past and clear; rule 13:
+ * overtaking, it does not turn across the bow of the ship it overtakes);
+ * else, of the three, the one that passes farthest (xt: its cross-track
+ * offset, m to starboard of its line; held within its room).  Before, with its lane's
+ * course in conflict too it turned back regardless: across the bow of a
+ * slowed ferry it was overtaking (strait-domain seed 1, replication 15) and
+ * 45 deg to port onto a lane ship crossing ahead at 4 kn (seed 3,
+ * replication 7).  And while it is the stand-on ship of a crossing with
+ * risk (stands_on) it keeps its course (rule 17(a)(i)) if that clears the
+ * others: the ship giving way to it counts on that course; before, a ferry
+ * coming back turned 55 deg to port across the bow of the own ship, which
+ * was turning to starboard to pass astern of it, and they met (dover-domain
+ * seed 4, replication 18, on 8f2a074). */
+static double los_course(const steer_ctl *c, double course, double xtrack, double offset);
+
+static double return_course(const steer_ctl *c, const fw_sense *in, double chi, double course,
+                            double xt)
+{
+    double lim = 0.5 * c->def.cpa;
+    /* held, within its room as when it altered (steer_decide) */
+    double hold = course + fw_wrap_pi(ground_course(in->own) - course);
+    if (isfinite(c->def.room))
+        hold = fmin(hold, los_course(c, course, xt, c->def.room));
+    double d_hold = conflict_pass(in, hold);
+    if (d_hold >= lim && stands_on(c, in, hold))
+        return hold;
+    double d_chi = conflict_pass(in, chi);
+    if (d_chi >= lim)
+        return chi;
+    double d_lane = conflict_pass(in, course);
+    if (d_lane >= lim)
+        return course;
+    if (d_hold >= lim || (d_hold >= d_lane && d_hold >= d_chi))
+        return hold;
+    return d_lane >= d_chi ? course : chi;
 }
 
 /* The closest it would pass any ship it sees on course chi, ahead in the
@@ -630,6 +657,10 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
     double chi = c->phase != FW_STEER_ALTER ? back : held;
     if (c->phase == FW_STEER_ALTER && past)
         chi = way_back(c, in, course, back, chi);
+    /* coming back across ships in its way, or standing on: not yet
+     * (return_course); what follows judges the course it will steer */
+    if (c->phase == FW_STEER_RETURN)
+        chi = return_course(c, in, chi, course, xt);
     if (in->t >= c->t_look - 1e-9) {
         c->t_look = in->t + kLookS;
         if (replan(c, in, course, chi, xt)) /* a ship it must now give way to */
@@ -637,9 +668,6 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
     }
     if (close_quarters(c, in, course, chi))
         chi = course + c->alter;
-    /* coming back across ships in its way: not yet (return_course) */
-    if (c->phase == FW_STEER_RETURN)
-        chi = return_course(c, in, chi, course, xt);
     double psi_d = heading_for(chi, o->U, o->cur_e, o->cur_n);
     double helm = helm_for(c, o, psi_d);
     if (c->def.pred) {

@@ -42,7 +42,11 @@
  *            clears them, else holds the course it makes good (rule 8(d):
  *            the alteration stands until they are past; rule 13: not across
  *            the bow of a ship it overtakes) if that does, else takes the
- *            one of the three that passes farthest
+ *            one of the three that passes farthest; and while it is the
+ *            stand-on ship of a crossing with risk (a ship that has it on
+ *            her starboard side would pass within the passing distance of
+ *            the course it makes good, in the next 15 minutes) it keeps that
+ *            course where it clears the others (rule 17(a)(i))
  *   done     on the line (hull centre and bow within 0.3 m of it, for the
  *            source's 1 m limit on giving back; the bow half a length ahead
  *            along its course over ground, as the source places it: in a
