@@ -98,15 +98,35 @@ static double helm_for(const steer_ctl *c, const fw_own_state *o, double psi_d)
     return fmax(-c->def.helm_max, fmin(c->def.helm_max, h));
 }
 
+/* Its velocity over ground (m/s east, north) on course chi at speed v. */
+static void velocity_at(const fw_own_state *o, double chi, double v, double *oe, double *on)
+{
+    fw_velocity(v, chi, oe, on);
+    *oe += o->cur_e, *on += o->cur_n;
+}
+
+/* ... at its speed. */
+static void own_velocity(const fw_own_state *o, double chi, double *oe, double *on)
+{
+    velocity_at(o, chi, o->U, oe, on);
+}
+
+/* Ship t's closest approach to it sailing (oe, on) over ground. */
+static void cpa_on(const fw_own_state *o, const fw_target *t, double oe, double on, double *tc,
+                   double *dc)
+{
+    double te, tn;
+    fw_velocity(t->speed, t->course, &te, &tn);
+    fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, tc, dc);
+}
+
 /* Does ship t pass it at the passing distance or more (or no closest
  * approach ahead) should it steer course chi over ground from now? */
 static bool clear_on(const steer_ctl *c, const fw_own_state *o, const fw_target *t, double chi)
 {
-    double oe, on, te, tn, tc, dc;
-    fw_velocity(o->U, chi, &oe, &on);
-    oe += o->cur_e, on += o->cur_n;
-    fw_velocity(t->speed, t->course, &te, &tn);
-    fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, &tc, &dc);
+    double oe, on, tc, dc;
+    own_velocity(o, chi, &oe, &on);
+    cpa_on(o, t, oe, on, &tc, &dc);
     return tc <= 0.0 || dc >= c->def.cpa;
 }
 
@@ -145,21 +165,12 @@ static double ground_course(const fw_own_state *o)
 
 /* The closest it would pass a ship it sees on course chi over ground in the
  * next 10 minutes (constant velocities; INFINITY: none closing). */
+static double pass_within(const fw_sense *in, double chi, double v, double horizon,
+                          bool cross_only, int *who);
+
 static double conflict_pass(const fw_sense *in, double chi)
 {
-    const fw_own_state *o = in->own;
-    double oe, on, best = INFINITY;
-    fw_velocity(o->U, chi, &oe, &on);
-    oe += o->cur_e, on += o->cur_n;
-    for (int i = 0; i < in->n; i++) {
-        const fw_target *t = &in->targets[i];
-        double te, tn, tc, dc;
-        fw_velocity(t->speed, t->course, &te, &tn);
-        fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, &tc, &dc);
-        if (tc > 0.0 && tc < kConflictS && dc < best)
-            best = dc;
-    }
-    return best;
+    return pass_within(in, chi, in->own->U, kConflictS, false, NULL);
 }
 
 /* Past the ship it gives way to, but its way back (back: the line of
@@ -187,21 +198,7 @@ static double way_back(const steer_ctl *c, const fw_sense *in, double course, do
     return chi;
 }
 
-/* Its velocity over ground (m/s east, north) on course chi at its speed. */
-static void own_velocity(const fw_own_state *o, double chi, double *oe, double *on)
-{
-    fw_velocity(o->U, chi, oe, on);
-    *oe += o->cur_e, *on += o->cur_n;
-}
 
-/* Ship t's closest approach to it sailing (oe, on) over ground. */
-static void cpa_on(const fw_own_state *o, const fw_target *t, double oe, double on, double *tc,
-                   double *dc)
-{
-    double te, tn;
-    fw_velocity(t->speed, t->course, &te, &tn);
-    fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, tc, dc);
-}
 
 /* A ship it has altered for already acts again only for one it would pass
  * closer than this part of the passing distance (rule 8(d): its action
@@ -311,20 +308,24 @@ static double return_course(const steer_ctl *c, const fw_sense *in, double chi, 
     return d_lane >= d_chi ? course : chi;
 }
 
-/* The closest it would pass any ship it sees on course chi, ahead in the
- * horizon (with cross_only, only ships not going its way). */
-static double pass_within(const fw_sense *in, double chi, double horizon, bool cross_only,
-                          int *who)
+/* The closest it would pass any ship it sees on course chi at speed v,
+ * ahead in the horizon (constant velocities; with cross_only, only ships
+ * not going its way); *who (may be NULL): that ship's index. */
+static double pass_within(const fw_sense *in, double chi, double v, double horizon,
+                          bool cross_only, int *who)
 {
     double best = INFINITY, oe, on;
-    own_velocity(in->own, chi, &oe, &on);
+    velocity_at(in->own, chi, v, &oe, &on);
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
         if (cross_only && same_way(in->own, &in->targets[i]))
             continue;
         cpa_on(in->own, &in->targets[i], oe, on, &tc, &dc);
-        if (tc > 0.0 && tc < horizon && dc < best)
-            best = dc, *who = i;
+        if (tc > 0.0 && tc < horizon && dc < best) {
+            best = dc;
+            if (who)
+                *who = i;
+        }
     }
     return best;
 }
@@ -340,8 +341,7 @@ static double pass_one(const fw_sense *in, const fw_target *t, double chi)
 
 static double pass_on(const fw_sense *in, double chi)
 {
-    int who;
-    return pass_within(in, chi, kHorizonS, false, &who);
+    return pass_within(in, chi, in->own->U, kHorizonS, false, NULL);
 }
 
 /* m/s^2 (ships.add.xml's accel and decel), m/s (steerage way), and the
@@ -424,7 +424,7 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
 {
     int j = -1;
     double lim = 0.25 * c->def.cpa;
-    if (!(pass_within(in, chi, kCloseS, true, &j) < lim))
+    if (!(pass_within(in, chi, in->own->U, kCloseS, true, &j) < lim))
         return false;
     double now = c->want > 0.0 ? c->want : in->own->U;
     double speeds[3] = {now, c->speed > 0.0 ? c->speed : in->own->U, kSteerageWay};
@@ -462,22 +462,6 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
     return true;
 }
 
-/* The closest it would pass any ship it sees on course chi at speed v,
- * ahead in the horizon (constant velocities). */
-static double pass_at(const fw_sense *in, double chi, double v)
-{
-    const fw_own_state *o = in->own;
-    double best = INFINITY, oe, on, tc, dc;
-    fw_velocity(v, chi, &oe, &on);
-    oe += o->cur_e, on += o->cur_n;
-    for (int i = 0; i < in->n; i++) {
-        cpa_on(o, &in->targets[i], oe, on, &tc, &dc);
-        if (tc > 0.0 && tc < kHorizonS && dc < best)
-            best = dc;
-    }
-    return best;
-}
-
 /* Where it cannot alter it slows (rule 8(e)) as the lane ships do
  * (reactions.h): to the fastest speed from the one it has down to
  * kSlowFraction of its own (5 % steps of its own) at which every ship it
@@ -496,7 +480,7 @@ static void slow_for(steer_ctl *c, const fw_sense *in, double chi)
             continue;
         if (v < kSlowFraction * own - 1e-9)
             break;
-        double d = pass_at(in, chi, v);
+        double d = pass_within(in, chi, v, kHorizonS, false, NULL);
         if (d >= c->def.cpa) {
             v_best = v;
             break;
