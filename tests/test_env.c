@@ -13,6 +13,8 @@
  *   the Nomoto track prediction in a current is the calm one plus current x t
  *   the helm search in a current (its speed bound and mirror shortcut
  *     generalised) decides as the plain reference search does, to the bit
+ *   a steered leg in a cross current: the ship crabs by asin(c across / U)
+ *     and keeps its track, its autopilot's orders outside the dead band
  *   a turning circle in a uniform current: its 360 and 720 deg points
  *     current x time apart, its IMO measures (in the water) the calm ones
  *   a world refuses a wind on a ship without windage or with Nomoto
@@ -23,6 +25,7 @@
 #include <string.h>
 
 #include "avoid/helm_search.h"
+#include "avoid/route.h"
 #include "core/units.h"
 #include "decide_scenes.h"
 #include "dynamics/manoeuvre.h"
@@ -353,6 +356,61 @@ static void test_avoidance_in_current(void)
 }
 
 /* The predicted track in a current is the calm one carried by it. */
+/* An own ship whose one leg is steered (run_world.c: in a current or a
+ * wind) makes good its track over ground.  Alone in 1.5 m/s towards 300 deg
+ * at 10 kn on 000, it heads into the set by the crab angle
+ * asin(c across / U) = asin(1.3 / 5.14) = 14.7 deg to starboard (with the
+ * rudder amidships it held 000 and was set 2.3 km west in half an hour), and
+ * the autopilot keeps its dead band (policy.h): no order within 0.1 deg of
+ * the one before, where without it every second brought a new order. */
+static void test_track_kept_in_current(void)
+{
+    fw_current cur = fw_current_uniform(1.5, fw_deg_to_rad(300.0));
+    fw_error err = {0};
+    fw_world_def wd = fw_default_world_def();
+    wd.env.current = cur;
+    fw_world *w;
+    fw_vessel *v;
+    CHECK(fw_world_create(&wd, &w, &err) == FW_OK);
+    fw_policy_controller_def pd = {.ship = &mmg, .helm = fw_default_helm_def(),
+                                   .policy = fw_default_policy_def()};
+    pd.policy.route = fw_route_line(0.0, 0.0, 0.0, fw_kn_to_ms(10), 20000.0);
+    pd.policy.route.steered = true;
+    fw_vessel_def vd = fw_default_vessel_def();
+    vd.id = "A", vd.ship = &mmg, vd.course = 0.0, vd.role = FW_ROLE_OWN;
+    vd.speed = fw_kn_to_ms(10);
+    CHECK(fw_policy_controller_create(&pd, &vd.controller, &err) == FW_OK);
+    CHECK_MSG(add_vessel(w, &vd, &v, &err) == FW_OK, "%s", err.msg);
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    const fw_policy *p = fw_policy_controller_policy(fw_vessel_controller(v));
+    double crab = asin(-cur.east / fw_kn_to_ms(10)), xte_max = 0.0, xte_late = 0.0;
+    double psi_late = 0.0, helm = 0.0, least_step = INFINITY;
+    int orders = 0;
+    for (int k = 1; k <= 1800; k++) {
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+        double xte = fw_policy_cross_track(p, fw_vessel_own_state(v));
+        xte_max = fmax(xte_max, fabs(xte));
+        if (k >= 1200) {
+            xte_late = fmax(xte_late, fabs(xte));
+            psi_late = fmax(psi_late, fabs(fw_wrap_pi(fw_vessel_record(v)->heading - crab)));
+        }
+        double h = fw_vessel_decision(v)->helm;
+        if (h != helm)
+            orders++, least_step = fmin(least_step, fabs(h - helm));
+        helm = h;
+    }
+    printf("  steered leg: crab %.2f deg; off the track at most %.0f m, after 20 min %.2f m, "
+           "heading within %.3f deg of the crab; %d helm orders in 30 min, the smallest step "
+           "%.3f deg\n", fw_rad_to_deg(crab), xte_max, xte_late, fw_rad_to_deg(psi_late),
+           orders, fw_rad_to_deg(least_step));
+    CHECK(xte_max < 250.0);
+    CHECK(xte_late < 5.0);
+    CHECK(psi_late < fw_deg_to_rad(0.5));
+    CHECK(orders < 300);
+    CHECK(least_step >= pd.policy.ap_deadband);
+    fw_world_destroy(w);
+}
+
 static void test_track_prediction_in_current(void)
 {
     fw_error err = {0};
@@ -535,6 +593,7 @@ int main(void)
     TEST_RUN(test_track_prediction_in_current);
     TEST_RUN(test_helm_search_in_current);
     TEST_RUN(test_avoidance_in_current);
+    TEST_RUN(test_track_kept_in_current);
     TEST_RUN(test_turning_circle_drift);
     TEST_RUN(test_refusals);
     return TEST_EXIT();

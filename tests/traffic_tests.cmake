@@ -94,5 +94,7 @@ set_tests_properties(give_way_course PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT
 # In a wind the own ship keeps its planned line (its one leg steered as a route).
 fw_script_test(wind_track 0 "the own ship keeps its line in a wind" wind_track.sh)
 set_tests_properties(wind_track PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
+fw_script_test(current_track 0 "the own ship keeps its line in a current" current_track.sh)
+set_tests_properties(current_track PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)
 fw_script_test(standon_far 0 "no rule 17.b. action beyond 2 nm, no collision" standon_far.sh)
 set_tests_properties(standon_far PROPERTIES ENVIRONMENT "${fw_lsan}" TIMEOUT 120)

@@ -27,6 +27,7 @@ fw_policy_def fw_default_policy_def(void)
                            .ap_kp = 1.0,
                            .ap_kd = 20.0,
                            .ap_max_helm = fw_deg_to_rad(20.0),
+                           .ap_deadband = fw_deg_to_rad(0.1),
                            .ap_done_heading = fw_deg_to_rad(1.0),
                            .ap_done_rate = fw_deg_to_rad(0.005),
                            .ret = FW_RETURN_TRACK,
@@ -277,7 +278,7 @@ static fw_status should_act(fw_policy *p, fw_helm_ctx *ctx, const fw_target *tg,
     return FW_OK;
 }
 
-/* PD on the heading error to psi, limited. */
+/* PD on the heading error to psi, limited, with the autopilot's dead band. */
 static double autopilot(const fw_policy *p, const fw_own_state *own, double psi)
 {
     double e = fw_wrap_pi(own->psi - psi);
@@ -289,7 +290,9 @@ static double autopilot(const fw_policy *p, const fw_own_state *own, double psi)
     double h = -p->def.ap_kp * e - p->def.ap_kd * own->r;
     if (own->delta_wind != 0.0)
         h += own->delta_wind; /* the rudder that holds the heading in the wind (track.h) */
-    return fmax(-p->def.ap_max_helm, fmin(p->def.ap_max_helm, h));
+    h = fmax(-p->def.ap_max_helm, fmin(p->def.ap_max_helm, h));
+    /* within the dead band of the order in force: no new order (policy.h) */
+    return fabs(h - p->helm) < p->def.ap_deadband ? p->helm : h;
 }
 
 /* Does the least helm candidate of at least `least` (rad) on side leave the
