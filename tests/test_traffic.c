@@ -402,6 +402,69 @@ static void take_give_back(fw_traffic *t)
            s.id, along, 9.0 * s.speed);
 }
 
+/* The first eastbound ship changing lanes (into: the line it moves to) in
+ * the list, and one on a lane's line going its way; false: none. */
+static bool changer_and_other(const fw_target *near, int n, fw_target *c, double *into,
+                              fw_target *s)
+{
+    const double lines[2] = {-375.0, -125.0}; /* the eastbound lanes, 0 and 1 */
+    c->id[0] = s->id[0] = '\0';
+    for (int i = 0; i < n; i++) {
+        const fw_target *q = &near[i];
+        double vn = q->speed * cos(q->course);
+        double off = fmin(fabs(q->north - lines[0]), fabs(q->north - lines[1]));
+        if (!c->id[0] && sin(q->course) > 0.9 && q->north > lines[0] + 1.0 &&
+            q->north < lines[1] - 1.0 && fabs(vn) > 0.01)
+            *c = *q, *into = vn > 0.0 ? lines[1] : lines[0];
+        else if (!s->id[0] && sin(q->course) > 0.99999 && q->speed > 2.0 && off < 0.01)
+            *s = *q;
+    }
+    return c->id[0] && s->id[0];
+}
+
+/* After take_give_back: the eastbound ships on lane 0's line held at 1 m/s,
+ * so that the faster ones behind change lanes to pass; a ship given back
+ * beside one changing lanes into its lane (SUMO's lane changes take
+ * minutes) is refused and stays taken.  Back there, SUMO's lane-change
+ * model took it for the follower that must let the other in and stopped it
+ * at its emergency rate for as long as the other was within its gap
+ * (strait-domain seed 2, replication 4: 150 s; traffic.h
+ * fw_traffic_give_back). */
+static void give_back_beside_changer(fw_traffic *t)
+{
+    fw_error err = {0};
+    const fw_target *near;
+    int n, k = 670;
+    CHECK(fw_traffic_around(t, &near, &n, &err) == FW_OK);
+    for (int i = 0; i < n; i++)
+        if (sin(near[i].course) > 0.99999 && fabs(near[i].north + 375.0) < 0.01)
+            CHECK(fw_traffic_set_speed(t, near[i].id, 1.0, &err) == FW_OK);
+    fw_target c, s;
+    double into = 0.0, ox, oy, psi;
+    for (; k < 1500 && !changer_and_other(near, n, &c, &into, &s); k++) {
+        own_pose(k, &ox, &oy, &psi);
+        CHECK(fw_traffic_place(t, ox, oy, psi, 6.0, &err) == FW_OK);
+        CHECK(fw_traffic_step(t, &err) == FW_OK);
+        CHECK(fw_traffic_around(t, &near, &n, &err) == FW_OK);
+    }
+    CHECK_MSG(c.id[0] && s.id[0], "no eastbound ship changing lanes (%s) or on a line (%s)",
+              c.id, s.id);
+    if (!c.id[0] || !s.id[0])
+        return;
+    CHECK(fw_traffic_take(t, s.id, &err) == FW_OK);
+    own_pose(k, &ox, &oy, &psi);
+    CHECK(fw_traffic_move(t, s.id, c.east, into, M_PI / 2, s.length, &err) == FW_OK);
+    CHECK(fw_traffic_place(t, ox, oy, psi, 6.0, &err) == FW_OK);
+    CHECK(fw_traffic_step(t, &err) == FW_OK);
+    fw_target g = {0};
+    CHECK(fw_traffic_get(t, c.id, &g, &err) == FW_OK);
+    CHECK(fw_traffic_give_back(t, s.id, g.east + s.speed, into, M_PI / 2, s.speed, s.length,
+                               1.0, &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "crossing into it: not yet");
+    printf("at %d s '%s' not given back beside '%s' changing lanes to y = %.0f m: %s\n", k, s.id,
+           c.id, into, err.msg);
+}
+
 static void test_embedded(void)
 {
     fw_traffic_def d = fw_default_traffic_def();
@@ -417,6 +480,7 @@ static void test_embedded(void)
     }
     run_channel(t, 1);
     take_give_back(t);
+    give_back_beside_changer(t);
     fw_traffic_close(t);
     CHECK(access(log, R_OK) == 0);
 }

@@ -30,6 +30,8 @@
  *                route ahead of where it is, at its speed; FW_EINPUT (and
  *                still taken) if it is more than FW_SOURCE_REJOIN_MAX off
  *                its route: a vessel must be steered back to its route first
+ *                (the SUMO source also while a ship in its lane, or changing
+ *                lanes into it, is beside it or ahead within its gap)
  *   lane()       a ship's lane before it is taken (fw_lane_info): the centre
  *                line it follows along its route ahead and the sea room on
  *                either side of it (optional: a source without it has no

@@ -55,7 +55,9 @@
  * nearest lane of its route ahead where it will be after the next step
  * (moveToXY keepRoute 1) with its speed as its last (setPreviousSpeed), and
  * SUMO drives it on; refused if that lane's line is more than
- * FW_SOURCE_REJOIN_MAX away (traffic.h fw_traffic_give_back).
+ * FW_SOURCE_REJOIN_MAX away, or while a ship in that lane or changing lanes
+ * into it is beside it or ahead within its gap (traffic.h
+ * fw_traffic_give_back): it is steered on along its line meanwhile.
  */
 #ifndef FW_SOURCE_SUMO_H
 #define FW_SOURCE_SUMO_H

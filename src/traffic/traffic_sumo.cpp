@@ -334,6 +334,40 @@ fw_status be_take(const char *id, fw_error *err)
     });
 }
 
+// the lane index k of edge e, clamped to the lanes it has
+std::string lane_of(const std::string &e, int k)
+{
+    const int nl = S::Edge::getLaneNumber(e);
+    return e + "_" + std::to_string(std::max(0, std::min(k, nl - 1)));
+}
+
+// The ship of edge e's lanes in lane `lane` (or moving across into it from
+// another: its lateral offset towards it) that a ship of length len and gap
+// min_gap with its front at pos would have ahead within its gap or beside it,
+// "" for none (id itself aside).  SUMO's lane changes take minutes
+// (lanechange.duration), and one begun beside a ship fairway had taken (its
+// lane-change model does not see such a ship) counts that ship, given back
+// there, as the follower that must let it in: it brakes at its emergency
+// rate to a stop and waits until the other is a gap ahead (strait-domain
+// seed 2, replication 4: west.5 given back beside west.1, a 366 m ship
+// crossing into its lane 28 m ahead, stopped for 150 s).
+std::string lane_blocker(const std::string &e, int lane, const char *id, double pos, double len,
+                         double min_gap)
+{
+    const int nl = S::Edge::getLaneNumber(e);
+    for (int k = 0; k < nl; k++)
+        for (const std::string &v : S::Lane::getLastStepVehicleIDs(lane_of(e, k))) {
+            const double lat = S::Vehicle::getLateralLanePosition(v);
+            // lanes count from the right, lateral offsets to the left
+            if (v == id || (k != lane && !(k > lane ? lat < -1e-3 : lat > 1e-3)))
+                continue;
+            const double p = S::Vehicle::getLanePosition(v);
+            if (p > pos - len && p - S::Vehicle::getLength(v) - pos < min_gap)
+                return v;
+        }
+    return "";
+}
+
 fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, double speed,
                     double max_off, double *off, fw_error *err)
 {
@@ -357,18 +391,18 @@ fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, doub
                          "(at most %.1f m): steer it back first", id, *off, max_off);
             return;
         }
+        const std::string b = lane_blocker(rp.edgeID, rp.laneIndex, id, rp.pos,
+                                           S::Vehicle::getLength(id), S::Vehicle::getMinGap(id));
+        if (!b.empty()) {
+            st = fw_fail(err, FW_EINPUT, "ship '%s' would come back within its gap of '%s' in "
+                         "its lane or crossing into it: not yet", id, b.c_str());
+            return;
+        }
         // keepRoute 1: onto that lane of its route, where it is along it
         g_moves.push_back(Move{id, rp.edgeID, rp.laneIndex, 1, fx, fy, angle_deg, max_off + 1.0,
                                speed});
     });
     return gst ? gst : st;
-}
-
-// the lane index k of edge e, clamped to the lanes it has
-std::string lane_of(const std::string &e, int k)
-{
-    const int nl = S::Edge::getLaneNumber(e);
-    return e + "_" + std::to_string(std::max(0, std::min(k, nl - 1)));
 }
 
 fw_status be_lane(const char *id, double *xy, int max, int *n, double *right, double *left,
