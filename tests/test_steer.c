@@ -688,6 +688,32 @@ static void test_return_stands_on(void)
     fw_controller_destroy(c);
 }
 
+/* Coming back judged along the turn it makes (steer.h, alter and return):
+ * a steered 150 m ship at 11.5 m/s (22 kn) 2 km to starboard of its lane
+ * (course north), heading 045, the ship it gave way to past; a ship (2 m/s,
+ * 150 m, heading 060) crawling 1273 m ahead of it.  Its way back, 90 deg
+ * and less to port at the rate its helm turns it (K' U / L x 20 deg: a
+ * radius of about 780 m), swings it north through the other's water; judged
+ * along that swing it comes back only where that clears, and passes the
+ * other 463 m (0.25 nm) or more between centres (measured: 854 m), back on
+ * its lane within 25 minutes.  Before, each course back was judged as
+ * steered at once (a straight line from where it was): their centres came
+ * 250 m apart (strait-domain seed 3, replication 0: a 22 kn ferry swinging
+ * back onto a ferry crawling ahead, hulls overlapping at 1813 s). */
+static void test_way_back_judged_along_the_turn(void)
+{
+    fw_controller *c = past_on_lane(11.5);
+    fw_own_state o = {.east = 2000.0, .psi = fw_deg_to_rad(45.0), .U = 11.5};
+    fw_target t = ship_at(1992.0, 1273.0, 60.0, 2.0);
+    double least, slowest;
+    sail_pair(c, &o, &t, 1500, &least, &slowest);
+    printf("way back along the turn: passed %.0f m off, %.0f m off its lane after 25 minutes\n",
+           least, o.east);
+    CHECK_MSG(least >= 463.0, "passed %.0f m off", least);
+    CHECK_MSG(fabs(o.east) < 10.0, "%.0f m off its lane after 25 minutes", o.east);
+    fw_controller_destroy(c);
+}
+
 int main(void)
 {
     fw_error err = {0};
@@ -712,5 +738,6 @@ int main(void)
     TEST_RUN(test_steepest_clear_way_back);
     TEST_RUN(test_eases_an_alteration_wider_than_it_needs);
     TEST_RUN(test_return_stands_on);
+    TEST_RUN(test_way_back_judged_along_the_turn);
     return TEST_EXIT();
 }

@@ -165,14 +165,22 @@ static double ground_course(const fw_own_state *o)
     return atan2(o->U * sin(o->psi) + o->cur_e, o->U * cos(o->psi) + o->cur_n);
 }
 
+static double pass_along(const steer_ctl *c, const fw_sense *in, double chi, double v);
+
 /* The closest it would pass a ship it sees on course chi over ground in the
  * next 10 minutes (constant velocities; INFINITY: none closing). */
 static double pass_within(const fw_sense *in, double chi, double v, double horizon,
                           bool cross_only, int *who);
 
-static double conflict_pass(const fw_sense *in, double chi)
+/* ... and along the swing onto chi its helm gives it (pass_along), the
+ * nearer of the two: judged as a straight line from where it is, a 22 kn
+ * ferry's way back 60-90 deg to port looked clear of a ferry crawling
+ * ahead that its swing (a radius of near a kilometre) ran onto (strait-domain
+ * seed 3, replication 0: hulls overlapping). */
+static double conflict_pass(const steer_ctl *c, const fw_sense *in, double chi)
 {
-    return pass_within(in, chi, in->own->U, kConflictS, false, NULL);
+    return fmin(pass_within(in, chi, in->own->U, kConflictS, false, NULL),
+                pass_along(c, in, chi, in->own->U));
 }
 
 /* Past the ship it gives way to, but its way back (back: the line of
@@ -194,7 +202,7 @@ static double way_back(const steer_ctl *c, const fw_sense *in, double course, do
     for (int k = 1; k <= n; k++) {
         double x = k < n ? back - copysign(k * step, ang) : course;
         bool past;
-        if (past_and_clear(c, in, x, &past) && conflict_pass(in, x) >= 0.5 * c->def.cpa)
+        if (past_and_clear(c, in, x, &past) && conflict_pass(c, in, x) >= 0.5 * c->def.cpa)
             return x;
     }
     return chi;
@@ -296,13 +304,13 @@ static double return_course(const steer_ctl *c, const fw_sense *in, double chi, 
     double hold = course + fw_wrap_pi(ground_course(in->own) - course);
     if (isfinite(c->def.room))
         hold = fmin(hold, los_course(c, course, xt, c->def.room));
-    double d_hold = conflict_pass(in, hold);
+    double d_hold = conflict_pass(c, in, hold);
     if (d_hold >= lim && stands_on(c, in, hold))
         return hold;
-    double d_chi = conflict_pass(in, chi);
+    double d_chi = conflict_pass(c, in, chi);
     if (d_chi >= lim)
         return chi;
-    double d_lane = conflict_pass(in, course);
+    double d_lane = conflict_pass(c, in, course);
     if (d_lane >= lim)
         return course;
     if (d_hold >= lim || (d_hold >= d_lane && d_hold >= d_chi))

@@ -54,7 +54,11 @@
  *            stand-on ship of a crossing with risk (a ship that has it on
  *            her starboard side would pass within the passing distance of
  *            the course it makes good, in the next 15 minutes) it keeps that
- *            course where it clears the others (rule 17(a)(i))
+ *            course where it clears the others (rule 17(a)(i)).  Each
+ *            course back (and the one it holds) is judged both as a
+ *            straight line from where it is and along the swing its helm
+ *            gives it onto that course over the next 5 minutes, as at
+ *            close quarters (below): the nearer pass counts
  *   done     on the line (hull centre and bow within 0.3 m of it, for the
  *            source's 1 m limit on giving back; the bow half a length ahead
  *            along its course over ground, as the source places it: in a
