@@ -78,8 +78,6 @@ typedef struct steer_ctl {
      * own speed because that passes farther at close quarters */
     double want, go_until;
     double slow_v; /* m/s, the speed it slows to where it cannot alter (slow_for) */
-    /* its alteration as last seen, and since when it has had it (ease) */
-    double alter_seen, t_alter;
 } steer_ctl;
 
 /* The heading that makes good course chi over ground at speed U in the
@@ -617,55 +615,6 @@ static double los_course(const steer_ctl *c, double course, double xtrack, doubl
     return course + fmax(-lim, fmin(lim, off));
 }
 
-/* Its altered course: the alteration, or along the edge of its room once there. */
-static double held_course(const steer_ctl *c, double course, double xt)
-{
-    return isfinite(c->def.room) ? fmin(course + c->alter, los_course(c, course, xt, c->def.room))
-                                 : course + c->alter;
-}
-
-/* Does every ship it sees pass at the passing distance or more in the
- * horizon should it steer chi, at the speed it has and at its own (a ship
- * that slowed gets its speed back)? */
-static bool clears_all(const steer_ctl *c, const fw_sense *in, double chi)
-{
-    double own = c->speed > 0.0 ? c->speed : in->own->U;
-    return pass_on(in, chi) >= c->def.cpa &&
-           pass_within(in, chi, own, kHorizonS, false, NULL) >= c->def.cpa;
-}
-
-/* s: how long it holds an alteration, steady on it, before it eases it */
-static const double kHoldS = 120.0;
-
-/* Before the ship it gives way to is past (steer.h, alter): its alteration
- * held steady (within 3 deg) for kHoldS, readily apparent (rule 8(b)), it
- * comes back as far as every ship it sees still passes at the passing
- * distance in the horizon, as when it chose the alteration (rule 8(d)):
- * true, to its lane (its way back does, and so does its lane's course where
- * it is: on its way back alone, at constant velocity, a ship overtaking in
- * its lane seemed to pass wide, and came within 433 m of it, test_steer);
- * else to the least alteration off its lane's course, 0, 5, ... deg and at
- * least 10 deg less than it has, that does.  An alteration of 20 deg, the
- * least readily apparent, often passes far wider than the passing distance
- * (a ferry 2.5 km off for 0.93), and held until the other was past it took
- * ships a median 1.9 km off their route (Dover base scenario, seeds 1-30,
- * main 9977849). */
-static bool ease(steer_ctl *c, const fw_sense *in, double course, double back, double held)
-{
-    if (in->t - c->t_alter < kHoldS ||
-        !(fabs(fw_wrap_pi(ground_course(in->own) - held)) < fw_deg_to_rad(3.0)))
-        return false;
-    if (clears_all(c, in, back) && clears_all(c, in, course))
-        return true;
-    double step = fw_deg_to_rad(5.0);
-    for (double off = 0.0; off <= c->alter - 2.0 * step + 1e-9; off += step)
-        if (clears_all(c, in, course + off)) {
-            c->alter = c->alter_seen = off;
-            return false;
-        }
-    return false;
-}
-
 static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decision *d,
                               fw_error *err)
 {
@@ -676,16 +625,13 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
     int seg;
     fw_lane_where(&c->def.lane, o->east, o->north, &course, &xt, &seg);
     double back = los_course(c, course, xt, 0.0);
-    if (c->alter != c->alter_seen)
-        c->alter_seen = c->alter, c->t_alter = in->t;
+    /* altered: the alteration, or along the edge of its room once there */
+    double held = isfinite(c->def.room)
+                      ? fmin(course + c->alter, los_course(c, course, xt, c->def.room))
+                      : course + c->alter;
     bool past = false;
     if (c->phase == FW_STEER_ALTER && past_and_clear(c, in, back, &past))
         c->phase = FW_STEER_RETURN;
-    else if (c->phase == FW_STEER_ALTER && !past && in->t >= c->t_look - 1e-9 &&
-             ease(c, in, course, back, held_course(c, course, xt)))
-        c->phase = FW_STEER_RETURN;
-    /* altered: the alteration, or along the edge of its room once there */
-    double held = held_course(c, course, xt);
     if (c->phase == FW_STEER_RETURN) {
         /* its bow as the source places it on giving it back: half a length
          * ahead along its course over ground (ss_give_back).  Along the
@@ -758,7 +704,6 @@ fw_status fw_steer_controller_create(const fw_alter_def *def, fw_controller **ou
     c->speed = def->speed;
     c->t_order = NAN;      /* the first decision gives the first order */
     c->slow_until = c->stop_until = c->go_until = -INFINITY;
-    c->alter_seen = NAN; /* its first decision starts the hold */
     *out = &c->base;
     return FW_OK;
 }

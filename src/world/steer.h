@@ -32,15 +32,7 @@
  *            back not yet clear, it steers the steepest course back, from
  *            the line of sight in 5 deg steps to its lane's course there
  *            (no farther off), that passes it at the passing distance and
- *            every other ship at half of it in the next 10 minutes.
- *            Not yet past, once it has held its alteration steady for 2
- *            minutes (readily apparent, rule 8(b)) it eases it at each look
- *            as far as every ship it sees still passes at the passing
- *            distance in the next 15 minutes (at the speed it has and at
- *            its own): back to its lane if its way back and its lane's
- *            course where it is do (phase return), else to the least
- *            alteration off its lane's course (0, 5, ... deg, 10 deg or
- *            more less) that does
+ *            every other ship at half of it in the next 10 minutes
  *   return   back to its lane's centre line by line-of-sight guidance
  *            (look-ahead 4 ship lengths, at least 400 m), never crossing back
  *            at more than the alteration (at least 20, at most 45 deg); while that course would bring it
