@@ -137,309 +137,6 @@ fw_status fw_reactions_note(fw_reactions *r, const fw_reaction *x, fw_error *err
     return fw_react_record(r, x, err);
 }
 
-static const double kResume = 1.25;
-
-fw_situation fw_react_classify(const fw_reactions *r, const fw_own_state *me,
-                               const fw_target *a, const fw_target *b)
-{
-    fw_situation s = fw_classify(&r->def.colregs, me, b);
-    struct react_lanes *L = r->lanes;
-    if (s == FW_SIT_HEAD_ON || a->own || b->own || !L->src || L->err.status)
-        return s;
-    const fw_lane_info *la, *lb;
-    if (fw_lane_cache_get(&L->cache, L->src, a, L->t, &la, &L->err) ||
-        fw_lane_cache_get(&L->cache, L->src, b, L->t, &lb, &L->err))
-        return s; /* the step fails with L->err */
-    return fw_classify_lanes(&r->def.colregs, me, a, la, b, lb);
-}
-
-/* Velocity of ship t (one of r->all) at speed v on its course. */
-static void vel(const fw_reactions *r, const fw_target *t, double v, double *ve, double *vn)
-{
-    ptrdiff_t i = t - r->all;
-    *ve = v * r->sn[i];
-    *vn = v * r->cs[i];
-}
-
-/* Closest approach of a (at speed va on its course) and b (as it goes): the
- * square of the distance, and with cpa_at the distance itself. */
-static void cpa_sq_at(const fw_reactions *r, const fw_target *a, double va, const fw_target *b,
-                      double *tcpa, double *dcpa2)
-{
-    double ae, an, be, bn;
-    vel(r, a, va, &ae, &an);
-    vel(r, b, b->speed, &be, &bn);
-    fw_cpa_sq(b->east - a->east, b->north - a->north, be - ae, bn - an, tcpa, dcpa2);
-}
-
-static void cpa_at(const fw_reactions *r, const fw_target *a, double va, const fw_target *b,
-                   double *tcpa, double *dcpa)
-{
-    double d2;
-    cpa_sq_at(r, a, va, b, tcpa, &d2);
-    *dcpa = sqrt(d2);
-}
-
-/* Does a, at speed va, have to give way to b (risk, and its role)? */
-static bool gives_way_to(const fw_reactions *r, const fw_target *a, double va,
-                         const fw_target *b, double cpa, const char *keep, fw_situation *sit,
-                         double *tcpa, double *dcpa)
-{
-    double de = b->east - a->east, dn = b->north - a->north;
-    if (de * de + dn * dn > r->def.range * r->def.range)
-        return false;
-    /* opening already (TCPA <= 0): no risk, and no square root spent */
-    double ae, an, be, bn;
-    vel(r, a, va, &ae, &an);
-    vel(r, b, b->speed, &be, &bn);
-    if (de * (be - ae) + dn * (bn - an) >= 0.0 && !(keep && strcmp(b->id, keep) == 0))
-        return false;
-    /* two background ships on nearly the same course share a lane (or run
-     * beside each other in two): they pass by overtaking, which SUMO keeps
-     * apart; only the own ship, off the lanes, is given way to there (the
-     * cosine of the course difference from the unit vectors) */
-    ptrdiff_t i = a - r->all, j = b - r->all;
-    if (!b->own && r->sn[i] * r->sn[j] + r->cs[i] * r->cs[j] > r->cos_parallel)
-        return false;
-    /* the closest approach, squared distances first: most pairs fail here */
-    double wx = be - ae, wy = bn - an, w2 = wx * wx + wy * wy;
-    double tc = w2 > 1e-12 ? -(de * wx + dn * wy) / w2 : 0.0;
-    if (!(tc > 0.0 && tc < r->def.horizon))
-        return false;
-    double px = de + wx * tc, py = dn + wy * tc, d2 = px * px + py * py;
-    if (!(d2 < cpa * cpa))
-        return false;
-    *tcpa = tc;
-    *dcpa = sqrt(d2);
-    fw_own_state me = {.east = a->east, .north = a->north, .psi = a->heading, .U = va};
-    *sit = fw_react_classify(r, &me, a, b);
-    if (*sit == FW_SIT_OVERTAKING && fw_react_leaves_way(r, a, va, b))
-        return false;
-    /* a give-way ship stays one until the other is past and clear (rule 8):
-     * the ship it is giving way to counts while the risk lasts, whatever the
-     * bearing says now (passing ahead, it moves onto the port bow) */
-    if (keep && strcmp(b->id, keep) == 0)
-        return true;
-    /* rule 19 (colregs.visibility): out of sight there is no stand-on ship; a
-     * ship forward of the beam is given way to by slowing (19(e)) */
-    if (fw_not_in_sight(&r->def.colregs, sqrt(de * de + dn * dn)) &&
-        de * sin(a->heading) + dn * cos(a->heading) > 0.0)
-        return true;
-    /* one background ship overtaking another in its lane is SUMO's to keep
-     * apart (car following, lane changes); the own ship is off the lanes */
-    return *sit == FW_SIT_GIVE_WAY || (*sit == FW_SIT_OVERTAKING && b->own) ||
-           (*sit == FW_SIT_HEAD_ON && b->own && r->def.give_way == FW_GIVE_WAY_COURSE);
-}
-
-/* A ship a gives way to: with a risk at its own speed va, or at vh, the
- * speed it has been told to hold (vh < 0: none): a ship held slow may meet
- * at its slow speed a ship it would pass ahead of at its own. */
-static bool is_threat(const fw_reactions *r, const fw_target *a, double va, double vh,
-                      const fw_target *b, double cpa, const char *keep, fw_situation *sit,
-                      double *tcpa, double *dcpa)
-{
-    if (gives_way_to(r, a, va, b, cpa, keep, sit, tcpa, dcpa))
-        return true;
-    return vh >= 0.0 && gives_way_to(r, a, vh, b, cpa, keep, sit, tcpa, dcpa);
-}
-
-/* The ships a gives way to at speed va: the count, and the nearest in time. */
-static int threats(const fw_reactions *r, int self, const fw_target *all, double va,
-                   double vh, double cpa, const char *keep, int *nearest, fw_situation *sit,
-                   double *dcpa)
-{
-    int k = 0;
-    double tbest = INFINITY;
-    for (int q = 0; q < r->nnb; q++) {
-        int j = r->nb[q]; /* the ships in range (react) */
-        fw_situation s;
-        double tc, dc;
-        if (j == self || !is_threat(r, &all[self], va, vh, &all[j], cpa, keep, &s, &tc, &dc))
-            continue;
-        k++;
-        if (tc < tbest) {
-            tbest = tc;
-            *nearest = j;
-            *sit = s;
-            *dcpa = dc;
-        }
-    }
-    return k;
-}
-
-/* The ships a gives way to (at cpa) into list; their count. */
-static int threat_list(const fw_reactions *r, int self, const fw_target *all, double v0,
-                       double vh, const char *keep, int *list)
-{
-    int m = 0;
-    for (int q = 0; q < r->nnb; q++) {
-        int j = r->nb[q]; /* the ships in range (react) */
-        fw_situation s0;
-        double t0, d0;
-        if (j != self &&
-            is_threat(r, &all[self], v0, vh, &all[j], r->def.cpa, keep, &s0, &t0, &d0))
-            list[m++] = j;
-    }
-    return m;
-}
-
-/* Of the ships in list, the nearest in time (at a's speed v0). */
-static void nearest_of(const fw_reactions *r, int self, const fw_target *all, const int *list,
-                       int m, double v0, int *nearest, fw_situation *sit, double *dcpa)
-{
-    double tbest = INFINITY;
-    for (int q = 0; q < m; q++) {
-        double tc, dc;
-        cpa_at(r, &all[self], v0, &all[list[q]], &tc, &dc);
-        if (tc < tbest) {
-            fw_own_state me = {.east = all[self].east, .north = all[self].north,
-                               .psi = all[self].heading, .U = v0};
-            tbest = tc;
-            *nearest = list[q];
-            *sit = fw_react_classify(r, &me, &all[self], &all[list[q]]);
-            *dcpa = dc;
-        }
-    }
-}
-
-/* The closest a, at speed v, would pass (within the horizon, ahead) any ship
- * it has to keep clear of (r->nb: in range, and not a background ship on a
- * parallel course, which SUMO keeps apart) other than skip (-1: none).  It
- * stops at the first below floor (0: never), which then is all one needs. */
-double fw_react_min_pass(const fw_reactions *r, int self, const fw_target *all, double v,
-                         int skip, double floor)
-{
-    const fw_target *a = &all[self];
-    double best = INFINITY, floor2 = floor * floor; /* squared: one root at the end */
-    for (int q = 0; q < r->nnb && best >= floor2; q++) {
-        int j = r->nb[q];
-        if (j == skip)
-            continue;
-        double tc, d2;
-        cpa_sq_at(r, a, v, &all[j], &tc, &d2);
-        if (tc > 0.0 && tc < r->def.horizon && d2 < best)
-            best = d2;
-    }
-    return sqrt(best);
-}
-
-/* Does a at speed v pass every ship near it at cpa or more (or are they
- * past)?  Every ship, not only those it gives way to: slowing down for one
- * must not put it in another's way (a ferry slowing in one lane for a ship
- * of the next stays across the bows of the first lane's ships, which are
- * slowing to pass astern of it).  One test for all keeps the answer from
- * changing with which list a ship happens to be in from one step to the
- * next. */
-static bool clears_at(const fw_reactions *r, int self, const fw_target *all, double v,
-                      double *dcpa)
-{
-    *dcpa = fw_react_min_pass(r, self, all, v, -1, r->def.cpa);
-    return *dcpa >= r->def.cpa;
-}
-
-/* The passes of ship a at speed v closer than cpa (within the horizon,
- * ahead) of the ships near it (r->nb), the kLexi closest, ascending, into d;
- * their count. */
-enum { kLexi = 16 };
-static int passes_within(const fw_reactions *r, int self, const fw_target *all, double v,
-                         double *d)
-{
-    int m = 0;
-    double cpa2 = r->def.cpa * r->def.cpa;
-    for (int q = 0; q < r->nnb; q++) {
-        double tc, d2;
-        cpa_sq_at(r, &all[self], v, &all[r->nb[q]], &tc, &d2);
-        if (!(tc > 0.0 && tc < r->def.horizon && d2 < cpa2))
-            continue;
-        double x = sqrt(d2);
-        if (m == kLexi && x >= d[m - 1])
-            continue;
-        int i = m < kLexi ? m++ : m - 1;
-        for (; i > 0 && d[i - 1] > x; i--)
-            d[i] = d[i - 1];
-        d[i] = x;
-    }
-    return m;
-}
-
-/* Passes a (na, ascending) better than b (nb) by more than tol at the
- * first place they differ by that much (a ship passing at cpa or more
- * counts as cpa)?  The closest pass decides, and where two speeds bring
- * the closest ship equally near (one it cannot get away from by its
- * speed), the next closest: compared by the closest alone, a ship holding
- * a speed for one ship that passes near whatever it does never judged a
- * ship it must give way to anew (strait study: a ferry overtaking the own
- * ship held the speed it had taken for another ship until it ran the own
- * ship down). */
-static bool lexi_better(const double *a, int na, const double *b, int nb, double cpa,
-                        double tol)
-{
-    for (int i = 0; i < na || i < nb; i++) {
-        double x = i < na ? a[i] : cpa, y = i < nb ? b[i] : cpa;
-        if (x > y + tol)
-            return true;
-        if (y > x + tol)
-            return false;
-    }
-    return false;
-}
-
-/* The fastest speed from v0 (or the speed it holds, vh) down to min_speed v0
- * (5 % steps) at which a passes every ship near it at cpa or more (those it
- * gives way to and all the others); *enough false if none: then the speed, from v0
- * down, that passes farthest from every ship near it (the closest pass first, then the next:
- * lexi_better). */
-static double yielding_speed(const fw_reactions *r, int self, const fw_target *all,
-                             const int *list, int m, double v0, double vh, bool *enough,
-                             double *dcpa_after)
-{
-    /* first never faster than it has been told (speeding up to pass ahead
-     * is what a give-way ship must avoid, rule 15); only if no such speed
-     * clears, any up to its own (rule 2(b): the departure that avoids the
-     * immediate danger), but never towards the own ship, whose turns a
-     * constant-velocity look ahead does not see coming */
-    bool own = false;
-    for (int q = 0; q < m; q++)
-        own |= all[list[q]].own;
-    /* a first slow-down is readily apparent (rule 8(b)): a fifth of its speed
-     * at least (one "slowed" from 12.9 to 11.0 kn, which no one on the other
-     * bridge would notice); held already, it slows further by any step */
-    int k0 = vh < 0.0 ? 4 : 1;
-    for (int pass = 0; pass < (own ? 1 : 2); pass++)
-        for (int k = k0; k <= 20; k++) {
-            double v = v0 * (1.0 - 0.05 * k);
-            if (v < r->def.min_speed * v0 - 1e-12)
-                break;
-            bool slower = vh < 0.0 || v <= vh + 1e-9;
-            if (slower != (pass == 0))
-                continue;
-            if (clears_at(r, self, all, v, dcpa_after)) {
-                *enough = true;
-                return v;
-            }
-        }
-    *enough = false;
-    *dcpa_after = NAN;
-    /* held already, it changes only for a clearly better speed (50 m):
-     * between two alike it would otherwise swing from one to the other */
-    double best = vh >= 0.0 ? vh : v0, db[kLexi], dv[kLexi];
-    int nbest = passes_within(r, self, all, best, db);
-    bool held = vh >= 0.0;
-    for (int k = 0; k <= 20; k++) {
-        double v = v0 * (1.0 - 0.05 * k);
-        if (v < r->def.min_speed * v0 - 1e-12)
-            break;
-        if (own && vh >= 0.0 && v > vh + 1e-9)
-            continue;
-        int nv = passes_within(r, self, all, v, dv);
-        if (lexi_better(dv, nv, db, nbest, r->def.cpa, held ? 50.0 : 1e-6)) {
-            best = v, nbest = nv, held = false;
-            memcpy(db, dv, (size_t)nv * sizeof *dv);
-        }
-    }
-    return best;
-}
-
 fw_status fw_react_record(fw_reactions *r, const fw_reaction *x, fw_error *err)
 {
     if (r->nlog == r->logcap) {
@@ -451,6 +148,10 @@ fw_status fw_react_record(fw_reactions *r, const fw_reaction *x, fw_error *err)
     r->log[r->nlog++] = *x;
     return FW_OK;
 }
+
+/* a ship held slow gets its speed back once it passes every ship near it at
+ * kResume x cpa (look) */
+static const double kResume = 1.25;
 
 /* m/s: the least a stand-on ship's last action slows it to (steerage way,
  * world/steer.h's; a ship stopped in a lane is one the monitors count) */
@@ -477,7 +178,7 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
         double de = all[j].east - a->east, dn = all[j].north - a->north;
         if (j == self || de * de + dn * dn > r->def.range * r->def.range)
             continue;
-        cpa_at(r, a, v0, &all[j], &tc, &dc);
+        fw_react_cpa_at(r, a, v0, &all[j], &tc, &dc);
         if (!(tc > 0.0 && tc < r->def.last_time && dc < r->def.last_cpa))
             continue;
         fw_own_state me = {.east = a->east, .north = a->north, .psi = a->heading, .U = v0};
@@ -503,7 +204,7 @@ static double last_action(const fw_reactions *r, int self, const fw_target *all,
             break;
         double s = fw_react_min_pass(r, self, all, v, -1, 0.0);
         if (s > score + 1e-6) {
-            cpa_at(r, a, v, &all[*j_out], &tc, &dc);
+            fw_react_cpa_at(r, a, v, &all[*j_out], &tc, &dc);
             best = v, score = s, *dcpa_best = tc <= 0.0 ? INFINITY : dc;
         }
     }
@@ -554,7 +255,7 @@ static int unnoticed(fw_reactions *r, double t, int self, const fw_target *all, 
         int j = r->nb[q];
         fw_situation s;
         double tc, dc;
-        if (!is_threat(r, &all[self], v0, -1.0, &all[j], r->def.cpa, NULL, &s, &tc, &dc)) {
+        if (!fw_react_is_threat(r, &all[self], v0, -1.0, &all[j], r->def.cpa, NULL, &s, &tc, &dc)) {
             r->nb[m++] = j; /* no give-way to it now: nothing to notice */
             continue;
         }
@@ -654,12 +355,12 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
     double vh = st->holding ? st->hold : -1.0;
     /* the ships it gives way to (at cpa; held, those that would keep it from
      * its speed: at kResume cpa) */
-    int m = threat_list(r, self, all, v0, vh, keep, r->list);
-    int k = st->holding ? threats(r, self, all, v0, vh, kResume * r->def.cpa, keep, &nearest,
-                                  &sit, &dcpa)
+    int m = fw_react_threat_list(r, self, all, v0, vh, keep, r->list);
+    int k = st->holding ? fw_react_threats(r, self, all, v0, vh, kResume * r->def.cpa, keep,
+                                           &nearest, &sit, &dcpa)
                         : m;
     if (!st->holding && m > 0)
-        nearest_of(r, self, all, r->list, m, v0, &nearest, &sit, &dcpa);
+        fw_react_nearest_of(r, self, all, r->list, m, v0, &nearest, &sit, &dcpa);
     /* x.ship is filled only where a reaction is recorded: this runs for every
      * ship every step */
     fw_reaction x = {.t = t, .situation = sit, .dcpa_before = dcpa};
@@ -686,7 +387,7 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
     bool r19e = rule19e_heard(r, self, all, r->list, m);
     /* the speed it holds still keeps every ship it gives way to at cpa (a
      * new one may need another: slower is not always clear of a crossing) */
-    if (!r19e && st->holding && clears_at(r, self, all, st->hold, &after))
+    if (!r19e && st->holding && fw_react_clears_at(r, self, all, st->hold, &after))
         return FW_OK;
     /* overtaking (rule 13) it keeps out of the way by its speed (a ship
      * steered into its way from its port side: by altering, reactions.h).
@@ -708,14 +409,14 @@ static fw_status look(fw_reactions *r, double t, int self, const fw_target *all,
             return a2 < 0 ? err->status : FW_OK;
     }
     double v = r19e ? r->def.min_speed * v0
-                    : yielding_speed(r, self, all, r->list, m, v0, vh, &x.enough, &after);
+                    : fw_react_yielding_speed(r, self, all, r->list, m, v0, vh, &x.enough, &after);
     /* ... or close quarters it cannot avoid with a ship out of sight ahead */
     if (!r19e && !x.enough && out_of_sight_ahead(r, &all[self], &all[nearest])) {
         r19e = true;
         v = r->def.min_speed * v0;
     }
     if (r19e)
-        x.enough = clears_at(r, self, all, v, &after);
+        x.enough = fw_react_clears_at(r, self, all, v, &after);
     x.rule19e = r19e;
     if (r19e)
         x.why = FW_WHY_RULE19;

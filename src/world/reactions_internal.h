@@ -77,6 +77,30 @@ struct fw_reactions {
 fw_situation fw_react_classify(const fw_reactions *r, const fw_own_state *me,
                                const fw_target *a, const fw_target *b);
 
+/* Judgement (reactions_judge.c, each explained there): the closest approach
+ * of a at speed va and b as it goes; does a, at va or at the speed it holds
+ * vh (< 0: none), give way to b; how many of the ships near self it gives way
+ * to (the nearest in time, its situation and DCPA), and which (into list);
+ * the nearest in time of list; does self pass every ship near it at cpa or
+ * more at speed v; the speed that gives way to list. */
+void fw_react_cpa_at(const fw_reactions *r, const fw_target *a, double va, const fw_target *b,
+                     double *tcpa, double *dcpa);
+bool fw_react_is_threat(const fw_reactions *r, const fw_target *a, double va, double vh,
+                        const fw_target *b, double cpa, const char *keep, fw_situation *sit,
+                        double *tcpa, double *dcpa);
+int fw_react_threats(const fw_reactions *r, int self, const fw_target *all, double va,
+                     double vh, double cpa, const char *keep, int *nearest, fw_situation *sit,
+                     double *dcpa);
+int fw_react_threat_list(const fw_reactions *r, int self, const fw_target *all, double v0,
+                         double vh, const char *keep, int *list);
+void fw_react_nearest_of(const fw_reactions *r, int self, const fw_target *all, const int *list,
+                         int m, double v0, int *nearest, fw_situation *sit, double *dcpa);
+bool fw_react_clears_at(const fw_reactions *r, int self, const fw_target *all, double v,
+                        double *dcpa);
+double fw_react_yielding_speed(const fw_reactions *r, int self, const fw_target *all,
+                               const int *list, int m, double v0, double vh, bool *enough,
+                               double *dcpa_after);
+
 /* The closest a, at speed v, would pass any ship near it (r->nb) other than
  * skip (-1: none) within the horizon, stopping at the first below floor. */
 double fw_react_min_pass(const fw_reactions *r, int self, const fw_target *all, double v,
