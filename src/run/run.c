@@ -11,7 +11,7 @@
 #include "core/units.h"
 #include "nomoto/nomoto.h"
 #include "run/dnv_out.h"
-#include "run/run.h"
+#include "run/run_internal.h"
 #include "run/run_world.h"
 #include "traffic/source_sumo.h"
 #include "world/controllers.h"
@@ -27,268 +27,8 @@ fw_run_def fw_default_run_def(void)
 
 const char *fw_run_status_name(fw_run_status s) { return s == FW_RUN_OK ? "ok" : "failed"; }
 
-/* A run: what it was asked, what it made, and everything that evolves from
- * step to step (the world's state aside), so that all of it is reachable
- * from here (the snapshot's need). */
-struct fw_run {
-    fw_run_def def;
-    const fw_scenario *s;
-    fw_world *w;             /* NULL: the set-up failed */
-    fw_vessel *own;
-    fw_records *rec;
-    fw_survey *sv;           /* NULL: no survey */
-    fw_monitor *mon;         /* the traffic monitors */
-    fw_run_summary sum;      /* the measures so far */
-    long k, n_steps;         /* steps taken, steps in the scenario */
-    fw_status failed;        /* the failure that ended the run (FW_OK: none) */
-    fw_error fail;           /* its message */
-    fw_policy_mode mode_prev;
-    int leg_prev;            /* the route's leg at the last step */
-    bool unkept_prev;        /* the domain could not be kept at the last step */
-    bool r19e_prev;          /* rule 19(e)'s speed was ordered at the last step */
-    double helm_prev, e_prev, n_prev;
-    int reactions_seen;      /* the world's reactions already in run.log */
-    bool kb_outside;         /* the own speed was outside the knowledge base's at the last step */
-    fw_assessment *as;       /* the run's own assessments, for a controller that makes none */
-    int as_cap;
-    double wall0, cpu0;      /* clock and CPU s at the open */
-    double t_setup, t_observe, t_loop; /* CPU s (--profile) */
-    uint32_t branch;         /* branch.h: 0 unless restored from a snapshot as another */
-    void *branch_box;        /* branch.h: where a restored branch leaves its result */
-    fw_ais_tracks ais;       /* AIS traffic: what the reading counted (no arrays) */
-    fw_dnv_out *dnv;         /* a DNV situation's answer (dnv_out.h); NULL: none */
-};
-
 /* The CPU clock with --profile, else 0 (no system calls). */
 static double tick(const fw_run *R) { return R->def.profile ? fw_cpu_s() : 0.0; }
-
-/* A line in run.log (none without a run directory). */
-static void note(fw_run *R, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void note(fw_run *R, const char *fmt, ...)
-{
-    FILE *f = R->rec ? fw_records_log(R->rec) : NULL;
-    if (!f)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vfprintf(f, fmt, ap);
-    va_end(ap);
-}
-
-/* The survey's lanes: the world's (fw_survey_def.lane; ctx the run). */
-static fw_status survey_lane(void *ctx, const fw_target *s, const fw_lane_info **out,
-                             fw_error *err)
-{
-    fw_run *R = ctx;
-    *out = NULL;
-    return R->w ? fw_world_lane(R->w, s, out, err) : FW_OK;
-}
-
-/* The survey's step: every ship in the area, the own ship included.  Their
- * lanes are read as they go (every FW_LANE_REFRESH_S), so that one is known
- * for a ship in a junction when an encounter opens there. */
-static fw_status survey_step(fw_run *R, double t, fw_error *err)
-{
-    const fw_target *a;
-    const fw_lane_info *lane;
-    int n;
-    fw_status st = fw_world_area(R->w, &a, &n, err);
-    for (int i = 0; i < n && !st; i++)
-        st = fw_world_lane(R->w, &a[i], &lane, err);
-    return st ? st : fw_survey_step(R->sv, t, a, n, err);
-}
-
-/* Survey totals into the summary, its records into the run directory and to
- * the caller; run.log gets the counts. */
-static fw_status survey_finish(fw_run *R, const fw_run_def *def, fw_run_summary *sum,
-                               fw_error *err)
-{
-    fw_survey_totals tot;
-    fw_survey_finish(R->sv, &tot);
-    sum->survey = true;
-    sum->traffic_ship_s = tot.ship_s;
-    sum->n_traffic = tot.n;
-    for (int k = 0; k < FW_SURVEY_NTYPES; k++)
-        sum->traffic_by_type[k] = tot.by_type[k];
-    sum->n_traffic_own = tot.n_own;
-    note(R, "survey: %d traffic encounters (%d head-on, %d overtaking, %d crossing; %d with the "
-            "own ship) in %.1f ship-hours\n",
-            tot.n, tot.by_type[FW_SURVEY_HEAD_ON], tot.by_type[FW_SURVEY_OVERTAKING],
-            tot.by_type[FW_SURVEY_CROSSING], tot.n_own, tot.ship_s / 3600.0);
-    int n;
-    const fw_survey_record *r = fw_survey_records(R->sv, &n);
-    if (def->survey_out && n > 0) {
-        *def->survey_out = malloc(sizeof **def->survey_out * (size_t)n);
-        if (!*def->survey_out)
-            return fw_fail(err, FW_ERUN, "out of memory for %d survey records", n);
-        memcpy(*def->survey_out, r, sizeof **def->survey_out * (size_t)n);
-        *def->n_survey_out = n;
-    }
-    return fw_records_survey(R->rec, r, n, err);
-}
-
-/* The own ship acted this step: the encounter book, the summary and run.log. */
-static void record_action(fw_run *R, double t, const fw_decision *d, const fw_target *tg,
-                          const fw_assessment *as, int n, fw_run_summary *sum)
-{
-    const char *pid = d->primary >= 0 && d->primary < n ? tg[d->primary].id : NULL;
-    fw_records_action(R->rec, t, d->search.side, d->helm, pid, tg, as, n);
-    sum->n_actions++;
-    if (!sum->acted) {
-        sum->acted = true;
-        sum->t_act = t;
-        sum->act_side = d->search.side;
-        sum->act_helm = d->helm;
-    }
-    note(R, "%9.1f  act %s %.0f deg for %s (%s, range %.0f m, DCPA %.0f m, TCPA %.0f s): %s\n", t,
-            fw_side_name(d->search.side), fw_rad_to_deg(fabs(d->helm)), pid ? pid : "-",
-            pid ? fw_situation_name(as[d->primary].situation) : "-",
-            pid ? as[d->primary].range : 0.0, pid ? as[d->primary].dcpa : 0.0,
-            pid ? as[d->primary].tcpa : 0.0, d->reason ? d->reason : "");
-}
-
-static void record_mode(fw_run *R, double t, const fw_decision *d, fw_run_summary *sum)
-{
-    const fw_route *rt = &R->s->route;
-    if (rt->n > 0 && d->leg != R->leg_prev && d->leg >= 0 && d->leg < rt->n) {
-        note(R, "%9.1f  route: leg %d of %d, %03.0f deg at %.1f kn (wheel over)\n", t, d->leg + 1,
-             rt->n, fw_heading_deg(rt->leg[d->leg].course), fw_ms_to_kn(rt->leg[d->leg].speed));
-        R->leg_prev = d->leg;
-    }
-    if (d->unkept && !R->unkept_prev) {
-        note(R, "%9.1f  the domain cannot be kept within the route's band: holding %03.0f deg, "
-                "speed ordered %.1f kn: %s\n",
-             t, fw_heading_deg(fw_vessel_motion(R->own)->psi), fw_ms_to_kn(d->speed),
-             d->reason ? d->reason : "");
-        if (sum->n_unkept++ == 0)
-            sum->t_unkept = t, sum->unkept_speed = d->speed;
-        sum->unkept_speed = fmin(sum->unkept_speed, d->speed);
-    } else if (!d->unkept && R->unkept_prev) {
-        note(R, "%9.1f  the domain can be kept again: speed ordered %.1f kn\n", t,
-             fw_ms_to_kn(d->speed));
-    }
-    R->unkept_prev = d->unkept;
-    if (d->rule19e != R->r19e_prev) {
-        const fw_target *tg;
-        const fw_assessment *as;
-        int n;
-        fw_vessel_view(R->own, &tg, &as, &n);
-        if (d->rule19e && d->rule19e_target >= 0 && d->rule19e_target < n)
-            note(R, "%9.1f  rule 19(e): %s out of sight forward of the beam: speed ordered %.1f "
-                    "kn, the least at which the ship keeps her course\n",
-                 t, tg[d->rule19e_target].id, fw_ms_to_kn(d->speed));
-        else
-            note(R, "%9.1f  rule 19(e) over: speed ordered %.1f kn\n", t, fw_ms_to_kn(d->speed));
-        sum->n_rule19e += d->rule19e;
-    }
-    R->r19e_prev = d->rule19e;
-    if (d->mode == R->mode_prev)
-        return;
-    note(R, "%9.1f  %s -> %s, helm %.1f deg: %s\n", t,
-            fw_policy_mode_name(R->mode_prev), fw_policy_mode_name(d->mode),
-            fw_rad_to_deg(d->helm), d->reason ? d->reason : "");
-    if (d->mode == FW_MODE_AUTOPILOT && isnan(sum->t_return))
-        sum->t_return = t;
-    if (R->mode_prev == FW_MODE_AUTOPILOT && d->mode == FW_MODE_STANDBY &&
-        isnan(sum->t_on_course))
-        sum->t_on_course = t;
-    R->mode_prev = d->mode;
-}
-
-/* How the acting ship knew the other, for run.log: "" on the truth (perfect
- * sensing), else how and how far from where it was (world/reactions.h). */
-static const char *known_note(const fw_reaction *r, char *buf, size_t n)
-{
-    static const char *const how[] = {"", "", "its AIS", "sight", "its radar"};
-    buf[0] = '\0';
-    if (r->known_how >= FW_KNOWN_AIS && r->known_how <= FW_KNOWN_RADAR)
-        snprintf(buf, n, " [%s known by %s, %.0f m from where it was]", r->other,
-                 how[r->known_how], hypot(r->known_e - r->true_e, r->known_n - r->true_n));
-    return buf;
-}
-
-/* A background ship's course alteration or its return to its lane: run.log
- * and the summary. */
-static void record_course(fw_run *R, const fw_reaction *r, fw_run_summary *sum)
-{
-    if (r->kind == FW_REACT_REJOIN) {
-        sum->n_rejoin++;
-        note(R, "%9.1f  traffic: %s back on its lane, %.0f deg (given back)\n", r->t, r->ship,
-             fw_rad_to_deg(fw_wrap_2pi(r->course_to)));
-        return;
-    }
-    double alt = fw_rad_to_deg(fw_wrap_pi(r->course_to - r->course_from));
-    sum->alter_deg_min = sum->n_alter ? fmin(sum->alter_deg_min, alt) : alt;
-    sum->alter_deg_max = sum->n_alter ? fmax(sum->alter_deg_max, alt) : alt;
-    sum->n_alter++;
-    sum->n_give_way++;
-    note(R, "%9.1f  traffic: %s gives way to %s (%s): alters %.0f deg to %s, %.0f -> "
-            "%.0f deg",
-         r->t, r->ship, r->other, fw_situation_name(r->situation), fabs(alt),
-         alt < 0.0 ? "port" : "starboard",
-         fw_rad_to_deg(fw_wrap_2pi(r->course_from)), fw_rad_to_deg(r->course_to));
-    char kn[128];
-    if (isnan(r->dcpa_before)) /* a steered ship's further alteration (world/steer.h) */
-        note(R, " (steering itself)\n");
-    else
-        note(R, ", CPA %.0f -> %.0f m%s\n", r->dcpa_before, r->dcpa_after,
-             known_note(r, kn, sizeof kn));
-}
-
-/* The background ships' new orders: run.log and the summary. */
-static void record_reactions(fw_run *R, fw_run_summary *sum)
-{
-    int n;
-    const fw_reaction *x = fw_world_reactions(R->w, &n);
-    for (; R->reactions_seen < n; R->reactions_seen++) {
-        const fw_reaction *r = &x[R->reactions_seen];
-        if (r->kind == FW_REACT_ALTER || r->kind == FW_REACT_REJOIN) {
-            record_course(R, r, sum);
-            continue;
-        }
-        if (r->kind == FW_REACT_RESUME) {
-            sum->n_resume++;
-            note(R, "%9.1f  traffic: %s resumes %.1f kn\n", r->t, r->ship,
-                    fw_ms_to_kn(r->speed_to));
-            continue;
-        }
-        sum->n_give_way++;
-        sum->n_give_way_short += !r->enough;
-        note(R,     "%9.1f  traffic: %s %s %s (%s): %s from %.1f to %.1f kn, CPA %.0f m", r->t,
-                r->ship, r->situation == FW_SIT_STAND_ON ? "acts (rule 17(b)) for" : "gives way to",
-                r->other, fw_situation_name(r->situation),
-                r->speed_to > r->speed_from ? "speeds up" : "slows", fw_ms_to_kn(r->speed_from),
-                fw_ms_to_kn(r->speed_to), r->dcpa_before);
-        char kn[128];
-        if (r->rule19e)
-            note(R, " (rule 19(e): the least speed)");
-        else if (r->why != FW_WHY_NONE && r->why != FW_WHY_RULE17)
-            note(R, " (not altering: %s)", fw_speed_why_name(r->why));
-        if (r->enough)
-            note(R, " -> %.0f m%s\n", r->dcpa_after, known_note(r, kn, sizeof kn));
-        else
-            note(R, ": no speed keeps the passing distance, the one that passes farthest%s\n",
-                 known_note(r, kn, sizeof kn));
-    }
-}
-
-/* The own ship's speed against its knowledge base's fitted speeds: a line in
- * run.log when it leaves them, the time outside in the summary. */
-static void record_kb_speed(fw_run *R, const fw_mmg_state *x, fw_run_summary *sum)
-{
-    const fw_nomoto_kb *kb = &R->s->ship.nomoto;
-    double kn = fw_ms_to_kn(hypot(x->u, x->vm));
-    sum->own_speed_min_kn = fmin(sum->own_speed_min_kn, kn);
-    sum->own_speed_max_kn = fmax(sum->own_speed_max_kn, kn);
-    bool outside = fw_nomoto_kb_speed(kb, kn) != FW_KB_SPEED_IN;
-    if (outside)
-        sum->kb_outside_s += R->s->step;
-    if (outside && !R->kb_outside)
-        note(R,     "%9.1f  warning: own speed %.2f kn is outside %.2f-%.2f kn, the speeds %s's "
-                "Nomoto knowledge base was fitted over: its predictions are extrapolated\n",
-                fw_world_time(R->w), kn, kb->speed_min_kn, kb->speed_max_kn, R->s->ship.name);
-    R->kb_outside = outside;
-}
 
 /* The targets' assessments: the controller's, or, for one that makes none
  * (the oracle's fixed manoeuvre), the run's, as the policy would make them. */
@@ -321,7 +61,7 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
 {
     const fw_scenario *s = R->s;
     double t = fw_world_time(R->w);
-    fw_status st = R->sv ? survey_step(R, t, err) : FW_OK;
+    fw_status st = R->sv ? fw_run_survey_step(R, t, err) : FW_OK;
     if (st)
         return st;
     const fw_mmg_state *x = fw_vessel_motion(R->own);
@@ -371,20 +111,20 @@ static fw_status observe(fw_run *R, long k, fw_run_summary *sum, fw_error *err)
         if ((st = fw_records_target(R->rec, t, &tg[i], x, &as[i], row, err)))
             return st;
     if (d->acted)
-        record_action(R, t, d, seen, seen_as, n_seen, sum);
+        fw_run_record_action(R, t, d, seen, seen_as, n_seen, sum);
     const fw_target *me = fw_vessel_record(R->own);
     if (R->dnv && (k == 0 || d->acted || d->mode != R->mode_prev) &&
         (st = fw_dnv_out_event(R->dnv, t, fw_vessel_own_state(R->own), me->course, me->speed, d,
                                tg, as, n, err)))
         return st;
-    record_mode(R, t, d, sum);
+    fw_run_record_mode(R, t, d, sum);
     sum->max_helm = fmax(sum->max_helm, fabs(d->helm));
     if (fabs(d->helm - R->helm_prev) > fw_deg_to_rad(0.5)) {
         sum->helm_orders++;
         R->helm_prev = d->helm;
     }
-    record_reactions(R, sum);
-    record_kb_speed(R, x, sum);
+    fw_run_record_reactions(R, sum);
+    fw_run_record_kb_speed(R, x, sum);
     sum->t_end = t;
     return FW_OK;
 }
@@ -421,7 +161,7 @@ static fw_status fail_run(fw_run *R, fw_status st, const fw_error *err)
     if (err)
         R->fail = *err;
     R->fail.status = st;
-    note(R, "run failed: %s\n", err ? err->msg : "");
+    fw_run_note(R, "run failed: %s\n", err ? err->msg : "");
     return st;
 }
 
@@ -479,12 +219,13 @@ static fw_status finish(fw_run *R, fw_encounter **enc, int *n_enc, fw_status st,
     fw_run_summary *sum = &R->sum;
     sum->monitors = *fw_monitor_counts_of(R->mon);
     const fw_monitor_counts *mc = &sum->monitors;
-    note(R, "monitors: %d sideways, %d teleports, %d overlaps, %d appearing and %d vanishing "
-            "within 2 nm, %d there at the start, %d stopped; largest sideways speed %.2f m/s\n",
-         mc->sideways, mc->teleport, mc->overlap, mc->appear, mc->vanish, mc->start_close,
-         mc->stopped, mc->max_lateral);
+    fw_run_note(R,
+                "monitors: %d sideways, %d teleports, %d overlaps, %d appearing and %d vanishing "
+                "within 2 nm, %d there at the start, %d stopped; largest sideways speed %.2f m/s\n",
+                mc->sideways, mc->teleport, mc->overlap, mc->appear, mc->vanish, mc->start_close,
+                mc->stopped, mc->max_lateral);
     /* the survey first: summary.json carries its totals */
-    fw_status fst = R->sv ? survey_finish(R, &R->def, sum, &ferr) : FW_OK;
+    fw_status fst = R->sv ? fw_run_survey_finish(R, &R->def, sum, &ferr) : FW_OK;
     fw_status rst = fw_records_finish(R->rec, sum, &rerr);
     char so[1100];
     if (!rst && R->dnv && !(rst = fw_path(so, sizeof so, &rerr, "%s/situation_output.json",
@@ -517,39 +258,45 @@ static void log_start(fw_run *R)
     const fw_scenario *s = R->s;
     int cleared = fw_sumo_source_cleared(fw_world_source(R->w));
     int unplaced = fw_sumo_source_unplaced(fw_world_source(R->w));
-    note(R, "scenario %s (%s): own ship %s at %.1f kn on %03.0f deg from (%.1f, %.1f) m, "
+    fw_run_note(R, "scenario %s (%s): own ship %s at %.1f kn on %03.0f deg from (%.1f, %.1f) m, "
             "%d explicit targets%s%s, %.0f s in steps of %.3f s, seed %lu\n",
             s->name, s->file, s->ship.name, fw_ms_to_kn(s->speed), fw_heading_deg(s->course),
             s->east, s->north, s->n_targets, s->network[0] ? ", network " : "", s->network,
             s->duration, s->step, s->seed);
     for (int k = 0; k < s->route.n; k++)
-        note(R, "route: leg %d of %d from (%.1f, %.1f) m, %03.0f deg, %.0f m at %.1f kn\n", k + 1,
-             s->route.n, s->route.leg[k].east, s->route.leg[k].north,
-             fw_heading_deg(s->route.leg[k].course), s->route.leg[k].length,
-             fw_ms_to_kn(s->route.leg[k].speed));
+        fw_run_note(R, "route: leg %d of %d from (%.1f, %.1f) m, %03.0f deg, %.0f m at %.1f kn\n",
+                    k + 1, s->route.n, s->route.leg[k].east, s->route.leg[k].north,
+                    fw_heading_deg(s->route.leg[k].course), s->route.leg[k].length,
+                    fw_ms_to_kn(s->route.leg[k].speed));
     if (s->note[0])
-        note(R, "%s\n", s->note);
+        fw_run_note(R, "%s\n", s->note);
     if (s->ais.file[0])
-        note(R,     "traffic: the AIS reports of %s replayed, ids the MMSIs (a ship absent between "
-                "reports more than %.0f s apart; `fairway ais summary` counts what was read)\n",
-                s->ais.file, s->ais.max_gap);
+        fw_run_note(R,
+                    "traffic: the AIS reports of %s replayed, ids the MMSIs (a ship absent between "
+                    "reports more than %.0f s apart; `fairway ais summary` counts what was read)\n",
+                    s->ais.file, s->ais.max_gap);
     if (R->ais.clashes > 0)
-        note(R,     "traffic: %ld AIS reports at an instant their MMSI already had, more than %.0f "
-                "m from it, dropped: two ships on one MMSI (%d MMSIs, the first %ld); one of each "
-                "is replayed\n",
-                R->ais.clashes, FW_AIS_CLASH_M, R->ais.clash_ships, R->ais.clash_first);
+        fw_run_note(
+            R,
+            "traffic: %ld AIS reports at an instant their MMSI already had, more than %.0f "
+            "m from it, dropped: two ships on one MMSI (%d MMSIs, the first %ld); one of each "
+            "is replayed\n",
+            R->ais.clashes, FW_AIS_CLASH_M, R->ais.clash_ships, R->ais.clash_first);
     if (R->ais.unprojected > 0)
-        note(R,     "traffic: %ld AIS reports skipped: the plane cannot hold them (the first at "
-                "%s)\n",
-                R->ais.unprojected, R->ais.unprojected_at);
+        fw_run_note(R,
+                    "traffic: %ld AIS reports skipped: the plane cannot hold them (the first at "
+                    "%s)\n",
+                    R->ais.unprojected, R->ais.unprojected_at);
     if (cleared > 0)
-        note(R,     "traffic: %d ships the fill put within 2 nm of the own ship or on a collision "
-                "course with it or with each other taken out at the start\n",
-                cleared);
+        fw_run_note(R,
+                    "traffic: %d ships the fill put within 2 nm of the own ship or on a collision "
+                    "course with it or with each other taken out at the start\n",
+                    cleared);
     if (unplaced > 0)
-        note(R,     "traffic: %d ships of the fill found no free place on their lanes at the start "
-                "and were not placed (the fill is more than the lanes hold)\n",
-                unplaced);
+        fw_run_note(R,
+                    "traffic: %d ships of the fill found no free place on their lanes at the start "
+                    "and were not placed (the fill is more than the lanes hold)\n",
+                    unplaced);
 }
 
 /* The set-up: records, monitors, survey, the world (def->controller taken
@@ -559,7 +306,7 @@ static fw_status set_up(fw_run *R, fw_error *err)
     const fw_scenario *s = R->s;
     fw_monitor_def md = fw_default_monitor_def();
     fw_survey_def sd = s->survey_def;
-    sd.lane = survey_lane, sd.lane_ctx = R;
+    sd.lane = fw_run_survey_lane, sd.lane_ctx = R;
     fw_status st;
     if ((st = fw_records_open(&R->rec, s, R->def.dir, err)) ||
         (st = fw_monitor_create(&md, fw_records_log(R->rec), &R->mon, err)) ||
