@@ -298,6 +298,15 @@ const char *fw_rep_traffic_head(const fw_study_report *rep);
 bool fw_rep_same_shape(const fw_rep_group *a, const fw_rep_group *b);
 /* Numbers for people: about three significant figures, "-" for NaN. */
 const char *fw_rep_fmt(char *buf, double x);
+/* report_md.c and report_causation.c: a group's domain cell (a compound literal: valid to the end of the statement). */
+#define DOM(G) fw_rep_domain((char[48]){0}, 48, (G))
+
+/* The background behaviour of a group, "-" for a database without it, and
+ * the setting of the study's axes when it has them. */
+#define beh(G) fw_rep_traffic((char[FW_REP_SETTING + 24]){0}, FW_REP_SETTING + 24, (G))
+
+/* report_causation.c: report.md's causation section. */
+void fw_rep_md_causation(FILE *f, const fw_study_report *rep);
 
 /* The PNGs analysis/plot_study.py draws, in the order report.md shows them. */
 extern const char *const fw_rep_plots[];
