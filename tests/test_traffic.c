@@ -451,6 +451,18 @@ static void give_back_beside_changer(fw_traffic *t)
               c.id, s.id);
     if (!c.id[0] || !s.id[0])
         return;
+    /* the one changing lanes is in a lane change by its lane, whatever its
+     * distance from the line; the one on its line is not (taken in one, a
+     * ship leaves the shadow of its lane change on the lane it was crossing
+     * into while fairway steers it: the reactions do not take it, traffic.h
+     * fw_traffic_lane) */
+    double xy[8], right, left;
+    int np;
+    bool tl, changing = false;
+    CHECK(fw_traffic_lane(t, c.id, xy, 4, &np, &right, &left, &tl, &changing, &err) == FW_OK);
+    CHECK_MSG(changing, "'%s' at y = %.1f m not in a lane change", c.id, c.north);
+    CHECK(fw_traffic_lane(t, s.id, xy, 4, &np, &right, &left, &tl, &changing, &err) == FW_OK);
+    CHECK_MSG(!changing, "'%s' on its line in a lane change", s.id);
     CHECK(fw_traffic_take(t, s.id, &err) == FW_OK);
     own_pose(k, &ox, &oy, &psi);
     CHECK(fw_traffic_move(t, s.id, c.east, into, M_PI / 2, s.length, &err) == FW_OK);

@@ -83,11 +83,11 @@ typedef struct fw_sumo_backend {
      * lines of the lanes of its route from the edge it is on, each at its
      * lane index (clamped to the edge's lanes), up to max points (xy: x, y
      * pairs) or about 30 km; and from its line (its lateral offset in the
-     * lane counted) to the right and left sides of its edge.  FW_EINPUT when
-     * it is in a junction now. */
+     * lane counted) to the right and left sides of its edge, and whether it
+     * is in the middle of a lane change (off its lane's line by any amount).
+     * FW_EINPUT when it is in a junction now. */
     fw_status (*lane)(const char *id, double *xy, int max, int *n, double *right, double *left,
-                      bool *traffic_lane,
-                      fw_error *err);
+                      bool *traffic_lane, bool *changing, fw_error *err);
     /* The ships SUMO has loaded but not yet put on a lane (no room where
      * they depart: they wait and are inserted when there is), one "\n"
      * after each id, in *ids (malloc'd, the caller frees). */

@@ -27,6 +27,7 @@ typedef struct fw_lane_info {
     double e[FW_LANE_POINTS], n[FW_LANE_POINTS];
     double room_starboard, room_port;
     bool traffic_lane; /* a separation scheme's traffic lane (traffic.h fw_traffic_lane) */
+    bool changing;     /* in the middle of a lane change (traffic.h fw_traffic_lane) */
 } fw_lane_info;
 
 /* The point of the lane's line nearest (e, n): the line's course there (rad)

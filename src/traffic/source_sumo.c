@@ -277,7 +277,7 @@ static fw_status ss_lane(fw_source *s, const char *id, fw_lane_info *out, fw_err
     double xy[2 * FW_LANE_POINTS];
     *out = (fw_lane_info){0};
     fw_status st = fw_traffic_lane(k->tr, id, xy, FW_LANE_POINTS, &out->np, &out->room_starboard,
-                                   &out->room_port, &out->traffic_lane, err);
+                                   &out->room_port, &out->traffic_lane, &out->changing, err);
     if (!st && out->np < 2)
         st = fw_fail(err, FW_EINPUT, "sumo source: '%s' has no lane ahead", id);
     for (int i = 0; !st && i < out->np; i++)

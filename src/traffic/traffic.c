@@ -469,15 +469,16 @@ fw_status fw_traffic_take(fw_traffic *t, const char *id, fw_error *err)
 }
 
 fw_status fw_traffic_lane(fw_traffic *t, const char *id, double *xy, int max, int *n,
-                          double *right, double *left, bool *traffic_lane, fw_error *err)
+                          double *right, double *left, bool *traffic_lane, bool *changing,
+                          fw_error *err)
 {
     *n = 0;
-    *traffic_lane = false;
+    *traffic_lane = *changing = false;
     if (fw_traffic_alive(t, err))
         return FW_ERUN;
     if (strcmp(id, t->own_id) == 0)
         return fw_fail(err, FW_EINPUT, "the own ship has no lane");
-    return t->be->lane(id, xy, max, n, right, left, traffic_lane, err);
+    return t->be->lane(id, xy, max, n, right, left, traffic_lane, changing, err);
 }
 
 fw_status fw_traffic_give_back(fw_traffic *t, const char *id, double x, double y, double heading,

@@ -177,10 +177,15 @@ fw_status fw_traffic_take(fw_traffic *t, const char *id, fw_error *err);
  * SUMO's plane is fairway's) and the room from its line to the right
  * (starboard) and left (port) sides of its edge; *traffic_lane: its edge is
  * a separation scheme's traffic lane (the network's edge carries the
- * parameter fairway.traffic_lane = true, networks/README.md).  FW_EINPUT
- * when it is in a junction now. */
+ * parameter fairway.traffic_lane = true, networks/README.md); *changing: it
+ * is in the middle of a lane change (SUMO's lateral offset in its lane is
+ * not 0: a ship taken then leaves its lane change's shadow on the lane it
+ * was crossing into, a stopped ship to SUMO's ships there, as long as it is
+ * steered; measured, strait-domain seed 6, replication 8).  FW_EINPUT when
+ * it is in a junction now. */
 fw_status fw_traffic_lane(fw_traffic *t, const char *id, double *xy, int max, int *n,
-                          double *right, double *left, bool *traffic_lane, fw_error *err);
+                          double *right, double *left, bool *traffic_lane, bool *changing,
+                          fw_error *err);
 /* ... given back: its hull centre (x, y, heading rad) for the next step
  * mapped onto the nearest lane of its route ahead and moved there, its
  * speed (m/s) as its last, SUMO's car following driving it from then on.

@@ -406,7 +406,7 @@ fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, doub
 }
 
 fw_status be_lane(const char *id, double *xy, int max, int *n, double *right, double *left,
-                  bool *traffic_lane, fw_error *err)
+                  bool *traffic_lane, bool *changing, fw_error *err)
 {
     fw_status st = FW_OK;
     *n = 0;
@@ -425,6 +425,7 @@ fw_status be_lane(const char *id, double *xy, int max, int *n, double *right, do
                 (k < li ? r : l) += S::Lane::getWidth(lane_of(edge, k));
         const double lat = S::Vehicle::getLateralLanePosition(id);
         *right = r + 0.5 * w + lat, *left = l + 0.5 * w - lat;
+        *changing = lat != 0.0; // SUMO's continuous lane change (no sublanes)
         *traffic_lane = S::Edge::getParameter(edge, "fairway.traffic_lane") == "true";
         const std::vector<std::string> route = S::Vehicle::getRoute(id);
         double length = 0.0;

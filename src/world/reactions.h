@@ -73,9 +73,10 @@
  * half breadth and a tenth of the room to spare: source.h lane()); and a
  * ship meeting the own ship head-on alters to starboard likewise (rule 14;
  * nothing if it has no room).  Where no alteration clears or there is no
- * room, or the ship is changing lanes (more than 10 m or 2 deg off its
- * lane's line: SUMO's continuous lane change outlives a take and a give
- * back and would go on, stale, from where it was), it slows down as above;
+ * room, or the ship is changing lanes (its source says so, or it is more
+ * than 10 m or 2 deg off its lane's line: SUMO's continuous lane change
+ * outlives a take and a give back and would go on, stale, from where it
+ * was), it slows down as above;
  * and an overtaking ship (rule 13) keeps out of the way by its speed (not
  * overtaking), since the ship it would overtake may itself be moving off
  * to starboard; overtaking a ship fairway steers it does nothing while

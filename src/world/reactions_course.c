@@ -71,11 +71,15 @@ static fw_status order(fw_reactions *r, const fw_target *a, const fw_lane_info *
 /* Its lane (source.h) and the sea room to starboard it may use (the
  * lanes', or unlimited: reactions.h room_*); FW_EINPUT when it has none here
  * (a junction, a source without lanes); *changing: it is in the middle of a
- * lane change (off its lane's line, or crabbing across it).
+ * lane change (its source says so, or it is off its lane's line, or crabbing
+ * across it).
  * Such a ship slows instead: SUMO's continuous lane change outlives a take
  * and a give back, and goes on, stale, from where it was (tried: a strait
  * ship taken 9 deg into a lane change was given back on its lane's line and
- * jumped 339 m across at SUMO's next step; h-lc's commit). */
+ * jumped 339 m across at SUMO's next step; h-lc's commit), and the shadow it
+ * casts on the lane it crosses into stays there while it is steered, a
+ * stopped ship to that lane's ships (traffic.h fw_traffic_lane: one taken
+ * 9 m into a lane change, within the 10 m, stopped one 400 s later). */
 static fw_status lane_of(const fw_reactions *r, const fw_target *a, fw_source *src,
                          fw_lane_info *lane, bool *changing, fw_error *err)
 {
@@ -85,7 +89,7 @@ static fw_status lane_of(const fw_reactions *r, const fw_target *a, fw_source *s
     double lc, xt;
     int seg;
     fw_lane_where(lane, a->east, a->north, &lc, &xt, &seg);
-    *changing = fabs(xt) > kOnLine || fabs(fw_wrap_pi(a->course - lc)) > kAlong;
+    *changing = lane->changing || fabs(xt) > kOnLine || fabs(fw_wrap_pi(a->course - lc)) > kAlong;
     if (!r->def.room_from_lanes && !(r->def.room_traffic_lanes && lane->traffic_lane))
         lane->room_starboard = lane->room_port = INFINITY;
     return FW_OK;
