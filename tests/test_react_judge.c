@@ -1,6 +1,8 @@
 /* test_react_judge.c - a give-way background ship judges every ship it must
  * give way to, not only the closest pass (world/reactions.h, the speed that
- * passes farthest when none keeps the passing distance).
+ * passes farthest when none keeps the passing distance); and a speed faster
+ * than it goes along its acceleration (test_stand_on_judged_along_its_
+ * acceleration, below).
  *
  * g (the kinematic source's, 090 at 16 kn from the origin) overtakes the own
  * ship (fairway's, Nomoto c3-paper holding 090 at 6 kn, 1500 m ahead and
@@ -78,9 +80,68 @@ static void test_masked_by_a_close_pass(void)
     CHECK_NEAR(fw_ms_to_kn(a.speed_to), fw_ms_to_kn(b.speed_to), 1e-9);
 }
 
+/* g (the source's, 090 from the origin, meaning to go 7 m/s) and the own
+ * ship (straight on 180 at 7 m/s from (800, 1600), crossing from g's port
+ * side: g stands on, rule 17) in the first minute; g crawls at 1 m/s from
+ * 1 s (crawling) or goes its 7 m/s.  g's rule 17(b) order (false: none). */
+static bool stand_on_order(bool crawling, fw_reaction *out)
+{
+    fw_error err = {0};
+    fw_kin_ship ks[1] = {{.start = {.id = "g", .east = 0, .north = 0, .course = 0.5 * FW_PI,
+                                    .speed = 7.0, .length = 150, .breadth = 25},
+                          .n_legs = crawling ? 1 : 0,
+                          .legs = {{.t_start = 1.0, .course = 0.5 * FW_PI, .speed = 1.0}}}};
+    fw_kinematic_def kd = fw_default_kinematic_def();
+    kd.ships = ks;
+    kd.n = 1;
+    fw_world_def wd = fw_default_world_def();
+    wd.reactions = fw_default_reactions_def();
+    fw_world *w = NULL;
+    CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
+    CHECK_MSG(fw_world_create(&wd, &w, &err) == FW_OK, "%s", err.msg);
+    fw_vessel_def own = fw_default_vessel_def();
+    own.id = "own", own.role = FW_ROLE_OWN, own.ship = &c3p, own.dynamics = FW_DYN_NOMOTO;
+    own.east = 800, own.north = 1600, own.course = FW_PI, own.speed = 7.0;
+    CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
+    CHECK(fw_world_start(w, &err) == FW_OK);
+    for (int k = 0; k < 60; k++)
+        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
+    int n;
+    const fw_reaction *r = fw_world_reactions(w, &n);
+    bool found = false;
+    for (int i = 0; i < n && !found; i++)
+        if (strcmp(r[i].ship, "g") == 0 && r[i].kind == FW_REACT_SLOW)
+            *out = r[i], found = true;
+    fw_world_destroy(w);
+    return found;
+}
+
+/* A ship judges a speed faster than it goes along its acceleration
+ * (0.05 m/s^2, reactions_judge.c): going its 7 m/s, g passes ahead of the
+ * own ship 530 m off and does nothing (rule 17(a)); crawling at 1 m/s (at
+ * its look at 10 s) it would take two minutes to get back to 7 m/s and pass
+ * 273 m ahead, 191 s on: it acts (rule 17(b)), and the speed it takes
+ * passes farther.  Judged at 7 m/s from the start, as before, it passed
+ * 528 m off and did nothing until its look at 30 s (443 m). */
+static void test_stand_on_judged_along_its_acceleration(void)
+{
+    fw_reaction a = {0}, b = {0};
+    CHECK(!stand_on_order(false, &b));
+    CHECK(stand_on_order(true, &a));
+    printf("  crawling: g slows from %.1f to %.1f m/s at %.0f s for %s, CPA %.0f -> %.0f m (%s)\n",
+           a.speed_from, a.speed_to, a.t, a.other, a.dcpa_before, a.dcpa_after,
+           fw_speed_why_name(a.why));
+    CHECK(strcmp(a.other, "own") == 0 && a.why == FW_WHY_RULE17);
+    CHECK_NEAR(a.t, 10.0, 1e-9);
+    CHECK_NEAR(a.dcpa_before, 273.0, 10.0);
+    CHECK(a.dcpa_after > a.dcpa_before + 100.0);
+    CHECK(a.speed_to < 7.0 * 0.5);
+}
+
 int main(void)
 {
     c3p = test_load_ship("c3-paper");
     TEST_RUN(test_masked_by_a_close_pass);
+    TEST_RUN(test_stand_on_judged_along_its_acceleration);
     return TEST_EXIT();
 }

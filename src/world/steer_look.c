@@ -7,6 +7,7 @@
 
 #include "core/units.h"
 #include "geom/geom.h"
+#include "geom/ramp.h"
 #include "world/steer_internal.h"
 
 /* The heading that makes good course chi over ground at speed U in the
@@ -193,10 +194,7 @@ double fw_steer_pass_on(const fw_sense *in, double chi)
  * slowing down at the background types' rates (speed_order). */
 double fw_steer_run_in(double u0, double v, double t)
 {
-    double a = v >= u0 ? kAccel : -kDecel, tr = (v - u0) / a;
-    if (t <= tr)
-        return u0 * t + 0.5 * a * t * t;
-    return 0.5 * (u0 + v) * tr + v * (t - tr);
+    return fw_ramp_run(u0, v, kAccel, kDecel, t);
 }
 
 /* The closest it would come to any ship it sees in the next kCloseS on
