@@ -89,6 +89,11 @@ fw_test(test_steer test_steer.c)
 target_link_libraries(test_vessels PRIVATE fairway_run)
 set_tests_properties(test_vessels PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
+# a SUMO ship given back and taken again in one step starts where it was given back
+fw_test(test_retake_sumo test_retake_sumo.c)
+target_link_libraries(test_retake_sumo PRIVATE fairway_run)
+set_tests_properties(test_retake_sumo PROPERTIES TIMEOUT 90
+                     ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")
 
 # The reacting background ships decide on what their sensing tells them
 # (world/reactions.h "Sensing"): AIS reports (delayed, noisy), radar tracks

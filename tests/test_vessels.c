@@ -30,6 +30,7 @@
 #include "world/controllers.h"
 #include "world/watch.h"
 #include "world/world.h"
+#include "world_view.h"
 
 static fw_ship c3, c3p;
 
@@ -187,18 +188,6 @@ static void test_no_own_ship(void)
     CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
     CHECK(seen(fw_world_vessel(w, ho), "k1") == 1);
     fw_world_destroy(w);
-}
-
-/* The monitors' step: the own ship and what it sees. */
-static void monitor_step(fw_monitor *m, fw_world *w, fw_error *err)
-{
-    const fw_vessel *o = fw_world_vessel(w, fw_world_own(w));
-    const fw_target *tg;
-    const fw_assessment *as;
-    int n;
-    fw_vessel_view(o, &tg, &as, &n);
-    CHECK_MSG(fw_monitor_step(m, fw_world_time(w), fw_vessel_record(o), tg, n, err) == FW_OK,
-              "%s", err->msg);
 }
 
 static void test_take_give_back_kinematic(void)
@@ -665,17 +654,6 @@ static double lane_off(double north)
     for (int i = 0; i < 4; i++)
         best = fmin(best, fabs(north - lanes[i]));
     return best;
-}
-
-/* The own ship's view entry for id (NULL: not seen). */
-static const fw_target *in_view(const fw_vessel *v, const char *id)
-{
-    const fw_target *tg;
-    const fw_assessment *as;
-    int n;
-    fw_vessel_view(v, &tg, &as, &n);
-    int j = fw_target_find(tg, n, id);
-    return j < 0 ? NULL : &tg[j];
 }
 
 /* Sideways speed (m/s) between two records of one ship a step dt apart:

@@ -58,6 +58,8 @@
  * FW_SOURCE_REJOIN_MAX away, or while a ship in that lane or changing lanes
  * into it is beside it or ahead within its gap (traffic.h
  * fw_traffic_give_back): it is steered on along its line meanwhile.
+ * Taken again before SUMO has stepped it (in the step it was given back),
+ * it is handed over as it was given back, and its rejoin is not made.
  */
 #ifndef FW_SOURCE_SUMO_H
 #define FW_SOURCE_SUMO_H

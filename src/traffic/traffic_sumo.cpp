@@ -327,6 +327,11 @@ fw_status be_take(const char *id, fw_error *err)
     return guarded("cannot take a ship", err, [&] {
         // whatever speed the reactive traffic held it at: fairway's now
         S::Vehicle::setSpeed(id, -1.0);
+        // given back in this step and taken again: its rejoin is not made,
+        // SUMO gets the one move fairway steers it to
+        g_moves.erase(std::remove_if(g_moves.begin(), g_moves.end(),
+                                     [&](const Move &m) { return m.id == id; }),
+                      g_moves.end());
 #ifndef FW_LIBTRACI
         // moved anywhere from now on: read every step (it stays so)
         fw_range::placed_anywhere(id);
