@@ -19,7 +19,7 @@ static fw_status steer(const fw_policy *p, const fw_policy_input *in, double psi
     return fw_helm_steer_clearance(in->ctx, in->targets, in->n, &ap, beyond, clearance, err);
 }
 
-static bool banded(const fw_policy *p) { return p->def.band_xte > 0.0 && p->def.route.n > 0; }
+bool fw_band_active(const fw_policy *p) { return p->def.band_xte > 0.0 && p->def.route.n > 0; }
 
 void fw_band_track(fw_policy *p, const fw_own_state *own)
 {
@@ -38,7 +38,7 @@ static double across(const fw_policy *p, const fw_own_state *own)
 
 fw_helm_band fw_band_of(const fw_policy *p)
 {
-    if (!banded(p))
+    if (!fw_band_active(p))
         return (fw_helm_band){.on = false};
     const fw_route_leg *l = &p->def.route.leg[p->leg];
     return (fw_helm_band){.on = l->room_starboard > 0.0 || l->room_port > 0.0,
@@ -48,7 +48,7 @@ fw_helm_band fw_band_of(const fw_policy *p)
 
 int fw_band_sides(const fw_policy *p, const fw_own_state *own)
 {
-    if (!banded(p))
+    if (!fw_band_active(p))
         return FW_ALLOW_EITHER;
     double room = p->def.band_turn - p->def.min_alteration, x = across(p, own);
     int sides = 0;
@@ -61,7 +61,7 @@ int fw_band_sides(const fw_policy *p, const fw_own_state *own)
 
 bool fw_band_edge(const fw_policy *p, const fw_own_state *own, int side)
 {
-    if (!banded(p) || side == FW_SIDE_NONE)
+    if (!fw_band_active(p) || side == FW_SIDE_NONE)
         return false;
     double s = side == FW_SIDE_STARBOARD ? 1.0 : -1.0;
     return s * p->dev >= p->def.band_turn || s * across(p, own) >= p->def.band_xte;

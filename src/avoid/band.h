@@ -7,6 +7,9 @@
 
 #include "avoid/policy.h"
 
+/* Is there a band (a route, and band_xte > 0)? */
+bool fw_band_active(const fw_policy *p);
+
 /* Counts the turn since the last step into p->dev (from the leg's course at
  * the first step). */
 void fw_band_track(fw_policy *p, const fw_own_state *own);

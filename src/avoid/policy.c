@@ -38,7 +38,8 @@ fw_policy_def fw_default_policy_def(void)
                            .track_done = 50.0,
                            .band_turn = fw_deg_to_rad(90.0),
                            .band_xte = FW_NMILE,
-                           .slow_factor = 0.5};
+                           .slow_factor = 0.5,
+                           .tss = false};
 }
 
 static const char *const kReturnNames[] = {"track", "heading"}; /* fw_return_kind order */
@@ -250,6 +251,20 @@ static fw_status step_avoid(fw_policy *p, const fw_policy_input *in, fw_decision
      * course at each vertex, and their constant-velocity tracks swing
      * with it; without it the order would follow every swing */
     bool dwelt = in->t - p->t_mode >= p->def.min_avoid_time;
+    if (dwelt && p->def.tss && fw_band_active(p) && res->threat && !res->feasible &&
+        hold < 1.0) {
+        /* no helm clears any more and holding this heading lets a target
+         * in: within a route's band the domain cannot be kept, and the turn
+         * (chosen to keep it) is not held on through the traffic to the
+         * band's edge: the least bad manoeuvre instead (step_steady) */
+        d->reason = "avoiding: no helm clears any more: the domain cannot be kept within the "
+                    "route's band: the least bad heading and speed within it";
+        p->unkept = true;
+        p->psi_hold = own->psi;
+        p->helm = autopilot(p, own, p->psi_hold);
+        fw_policy_set_mode(p, FW_MODE_STEADY, in->t);
+        return FW_OK;
+    }
     /* holding this heading would leave a channel: steady parallel to its
      * edges (below) */
     bool parallel = hold < 0.0 && in->ctx->band.on;

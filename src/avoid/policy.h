@@ -41,7 +41,8 @@
  *   - the minimum effective helm, if the order waited act_lookahead seconds more,
  *     would no longer keep every target out (so waiting longer would need more
  *     than the minimum helm: act now, early and substantial, rule 16);
- *   - no helm clears any more (take the best available action at once).
+ *   - no helm clears any more (take the best available action at once; in a
+ *     traffic separation scheme the least bad manoeuvre instead, below).
  * For a stand-on own ship (rule 17: crossing target on the port side, or being
  * overtaken) keep course and speed while the give-way ship may still act; act
  * when the predicted domain entry is closer than standon_act_time, the range
@@ -106,6 +107,25 @@
  * crossing); he keeps a predictable course and takes way off (rule 8(e):
  * "slacken her speed or take all way off"), which gives the other ship time
  * and room and keeps the own ship where the others expect it.
+ * In a traffic separation scheme (def.tss: the scenario's traffic.waterway
+ * tss), with a band, a threat that no helm on the permitted sides clears
+ * means the domain cannot be kept as well: from STANDBY, STEADY or the
+ * return the least bad manoeuvre above (heading within the band and speed)
+ * is taken, not the best available helm, and an AVOID whose turn no longer
+ * clears (no helm clears, and holding the heading reached lets a target in,
+ * after min_avoid_time) gives way to it.  The best available helm is a turn
+ * held until steadying clears, the band's edge or max_turn: among a scheme's
+ * lanes it turned the own ship 160 deg across them (strait study, seed 6,
+ * run 35: 305 -> 105 deg) or 90 deg on to run head-on along a lane (seed 6
+ * run 49, seed 2 run 6), and the next ship of the stream ran into it.  A
+ * master crossing a scheme who cannot keep his distance does not wheel round
+ * in the lanes (rule 10(c): cross on a heading as nearly as practicable at
+ * right angles to the flow): he keeps near his crossing heading and uses his
+ * speed (rule 8(e)), taking the heading and speed that keep the ships
+ * actually closing farthest off, which is what the least bad manoeuvre
+ * compares, each step, over the prediction and beyond (the closest approach
+ * in units of the domain).  In open water (the paper's cases, Imazu's) the
+ * best available helm stays the paper's action.
  *
  * Restricted visibility (helm colregs.visibility > 0): a target farther than
  * the visibility is not in sight (encounter.h rule19) and rule 19 governs it
@@ -207,6 +227,10 @@ typedef struct fw_policy_def {
                                   scheme's 4 nm lanes it keeps the crossing within the
                                   scheme's geometry */
     double slow_factor;        /* 0.5: the speed ordered when the domain cannot be kept */
+    bool tss;                  /* false; true: the ship is in a traffic separation scheme
+                                  (the scenario's traffic.waterway: tss): with no helm
+                                  clearing, the least bad manoeuvre, not the best
+                                  available helm (above) */
     /* the planned route (route.h): its active leg is the track returned to
      * and its course the heading kept; n 0: none given, a one-leg route
      * from where the ship is and heads at its first step.  A steered route

@@ -173,12 +173,24 @@ fw_status fw_policy_maybe_act(fw_policy *p, fw_helm_ctx *ctx, double t, const fw
                     "least bad heading";
         return FW_OK;
     }
-    if (p->no_room || out) {
+    /* no helm on the permitted sides clears: within a route's band the
+     * domain cannot be kept, and the least bad manoeuvre is taken (a heading
+     * within the band and a speed, judged by how far out they keep the
+     * targets: policy.h), not the best available helm, a turn held until
+     * steadying clears, the band's edge or max_turn (in the strait study it
+     * turned the own ship 160-170 deg across the lanes, to run along them
+     * or against their traffic, and most of its collisions followed) */
+    bool none_clears =
+        p->def.tss && fw_band_active(p) && d->search.threat && !d->search.feasible;
+    if (p->no_room || out || none_clears) {
         /* no permitted side has room within the route's band (policy.h):
          * the least bad heading within it (step_steady), slower */
         p->unkept = true;
-        d->reason = "the domain cannot be kept within the route's band: the least bad heading "
-                    "within it, reducing speed";
+        d->reason = none_clears && !p->no_room && !out
+                        ? "no helm clears: the domain cannot be kept within the route's band: "
+                          "the least bad heading and speed within it"
+                        : "the domain cannot be kept within the route's band: the least bad "
+                          "heading within it, reducing speed";
         p->psi_hold = own->psi;
         fw_policy_set_mode(p, FW_MODE_STEADY, t);
         return FW_OK;

@@ -199,6 +199,8 @@ static fw_status load_traffic(const yt_doc *doc, const yt_node *root, fw_scenari
      * ship proceeds (rule 10(b)(i)); elsewhere it may go anywhere (reactions.h) */
     s->reactions.room_from_lanes = s->waterway == FW_WATERWAY_CHANNEL;
     s->reactions.room_traffic_lanes = s->waterway == FW_WATERWAY_TSS;
+    /* the own ship's policy with no helm clearing in a scheme (policy.h) */
+    s->policy.tss = s->waterway == FW_WATERWAY_TSS;
     /* the audit's risk distance for this water and this ship (audit.h) */
     s->audit = fw_audit_def_for(s->waterway, s->ship.Loa);
     long fill = 0;
