@@ -126,8 +126,8 @@ static void test_no_round_turn(void)
  * on, head-on along the lane, and a collision, hulls 0 m apart, centres 25 m),
  * the domain reported as not kept, the heading within the band (90 deg and
  * the autopilot's overshoot), the hulls kept 20 m apart at least (after the
- * change 102 m; 20 m: a fifth of that, so that a change of the prediction's
- * details does not fail it, yet well clear of contact). */
+ * change 44 m; 20 m: under half of that, so that a change of the
+ * prediction's details does not fail it, yet clear of contact). */
 static void test_lane_stream(void)
 {
     sailed a = sail("tests/data/route/lane-stream.yaml");

@@ -70,7 +70,11 @@ fw_status fw_band_hold(fw_policy *p, const fw_policy_input *in, fw_error *err);
  * the course among equals (within 0.02 of the normalised domain radius);
  * p->slow: whether at the slowed speed (fw_band_slow) or the planned one,
  * whichever keeps them farther out on it, slowed among equals (each predicted
- * with the speed relaxing to it: nomoto/track.h fw_steer_def.U0).  Slowing
+ * with the speed relaxing to it: nomoto/track.h fw_steer_def.U0); the heading
+ * and speed in force (p->lb_k, p->slow while p->lb_held) are kept unless
+ * another keeps the targets farther out by 0.1 of the domain (band.c
+ * LEAST_BAD_KEEP: chosen afresh every step, the choice swung with the
+ * rudder's and propeller's response to the last order).  Slowing
  * gives a ship ahead or crossing time and room (rule 8(e)); for one coming up
  * from astern or across the quarter it only lets it in sooner. */
 fw_status fw_band_least_bad(fw_policy *p, const fw_policy_input *in, fw_error *err);

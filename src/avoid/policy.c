@@ -118,6 +118,8 @@ void fw_policy_init(fw_policy *p, const fw_policy_def *def)
     p->wo = 0.0;
     p->dev = p->psi_last = 0.0;
     p->unkept = p->no_room = p->r19e = false;
+    p->lb_k = 0;
+    p->lb_held = false;
     p->edge_side = FW_SIDE_NONE;
     p->slow = true;
     p->speed_order = 0.0;

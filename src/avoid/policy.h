@@ -271,6 +271,8 @@ typedef struct fw_policy {
     double psi_last;  /* rad, the heading at the last step */
     bool unkept;      /* the domain cannot be kept within the band */
     bool slow;        /* ... and slowing keeps the targets farther out (band.h) */
+    int lb_k;         /* ... the least bad heading in force: the leg's course + lb_k 15 deg */
+    bool lb_held;     /* ... chosen, and the domain not kept since (band.h) */
     bool r19e;        /* rule 19(e)'s speed held (above) ... */
     double t_19e;     /* s, ... since when no target has called for it (< 0: one does) */
     char r19e_id[FW_TARGET_ID_MAX]; /* the last target that called for it */

@@ -71,7 +71,7 @@ void fw_policy_order_speed(fw_policy *p, const fw_policy_input *in, fw_decision 
     else if (p->t_kept < 0.0)
         p->t_kept = in->t;
     if (p->unkept && p->t_kept >= 0.0 && in->t - p->t_kept >= p->def.min_avoid_time)
-        p->unkept = false;
+        p->unkept = p->lb_held = false;
     rule19e(p, in, d);
     if (p->r19e) /* below the planned speed, or the speed it goes at without a plan */
         p->speed_order = fw_rule19e_speed(&in->ctx->ship->nomoto,
