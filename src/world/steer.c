@@ -119,6 +119,17 @@ static double return_course(const steer_ctl *c, const fw_sense *in, double chi, 
     return d_lane >= d_chi ? course : chi;
 }
 
+/* The least speed through the water it slows to on course chi: steerage
+ * way over ground, so that a head stream does not hold it stopped in its
+ * lane (dover-imperfect: the ~1 m/s spring stream against a floor of 1 m/s
+ * through the water left steered ships 0.2-0.3 kn over ground for minutes,
+ * which the monitors count as stopped). */
+static double least_way(const fw_sense *in, double chi)
+{
+    double along = in->own->cur_e * sin(chi) + in->own->cur_n * cos(chi);
+    return kSteerageWay + fmax(0.0, -along);
+}
+
 /* Close quarters (rules 2(b), 8(e) and 17(b)): whatever the roles, a ship
  * the course it steers (chi) would pass within a quarter of the passing
  * distance in the next 5 minutes (not one going its way: same_way) makes it
@@ -143,7 +154,7 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
     if (!(fw_steer_pass_within(in, chi, in->own->U, kCloseS, true, &j) < lim))
         return false;
     double now = c->want > 0.0 ? c->want : in->own->U;
-    double speeds[3] = {now, c->speed > 0.0 ? c->speed : in->own->U, kSteerageWay};
+    double speeds[3] = {now, c->speed > 0.0 ? c->speed : in->own->U, least_way(in, chi)};
     double best = fw_steer_pass_along(c, in, chi, now) + kBetterM, pick = chi, v_pick = now;
     for (int s = 0; s <= 9; s++) {
         double cand = s == 0 ? chi : in->own->psi + fw_deg_to_rad(10.0 * s);
@@ -189,12 +200,13 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
 static void slow_for(steer_ctl *c, const fw_sense *in, double chi)
 {
     double own = c->speed > 0.0 ? c->speed : fmax(in->own->U, kSteerageWay);
-    double best = -1.0, v_best = kSlowFraction * own;
+    double floor_v = fmax(kSlowFraction * own, least_way(in, chi));
+    double best = -1.0, v_best = floor_v;
     for (int k = 0; k <= 14; k++) {
         double v = own * (1.0 - 0.05 * k);
         if (v > in->own->U + 1e-9)
             continue;
-        if (v < kSlowFraction * own - 1e-9)
+        if (v < floor_v - 1e-9)
             break;
         double d = fw_steer_pass_within(in, chi, v, kHorizonS, false, NULL);
         if (d >= c->def.cpa) {
@@ -295,7 +307,8 @@ static double speed_order(steer_ctl *c, const fw_sense *in, double chi)
         c->speed = fmax(in->own->U, kSteerageWay);
     if (!isfinite(c->t_order))
         c->u_order = in->own->U, c->t_order = in->t;
-    double want = in->t < c->stop_until   ? kSteerageWay
+    double least = least_way(in, chi);
+    double want = in->t < c->stop_until   ? least
                   : in->t < c->go_until   ? c->speed
                   : in->t < c->slow_until ? c->slow_v
                                           : c->speed;
@@ -305,7 +318,7 @@ static double speed_order(steer_ctl *c, const fw_sense *in, double chi)
      * the old course for a while */
     double cog = fw_steer_ground_course(in->own);
     want = fmin(follow_speed(c, in, chi, want), follow_speed(c, in, cog, want));
-    want = fmax(kSteerageWay, want);
+    want = fmax(least, want);
     double dt = fmax(0.0, in->t - c->t_order), u = c->u_order;
     u = want > u ? fmin(want, u + kAccel * dt) : fmax(want, u - kDecel * dt);
     c->u_order = u, c->t_order = in->t;
