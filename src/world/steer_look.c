@@ -214,12 +214,15 @@ double fw_steer_pass_along(const steer_ctl *c, const fw_sense *in, double chi, d
     double pe[kSamples], pn[kSamples], e = 0.0, n = 0.0, run_prev = 0.0, psi = o->psi;
     double psi_to = fw_steer_heading_for(chi, v, o->cur_e, o->cur_n);
     double per_m = FW_STEER_K_ND / c->def.length * c->def.helm_max;
+    double mid_prev = NAN, sm = 0.0, cm = 1.0;
     for (int k = 0; k < kSamples; k++) {
         double s = kSampleS * (k + 1), run = fw_steer_run_in(o->U, v, s), dr = run - run_prev;
         double left = fw_wrap_pi(psi_to - psi), turn = fmin(fabs(left), per_m * dr);
         double mid = psi + copysign(0.5 * turn, left);
         psi += copysign(turn, left);
-        e += dr * sin(mid) + o->cur_e * kSampleS, n += dr * cos(mid) + o->cur_n * kSampleS;
+        if (mid != mid_prev) /* steady on psi_to once turned: the same sines */
+            sm = sin(mid), cm = cos(mid), mid_prev = mid;
+        e += dr * sm + o->cur_e * kSampleS, n += dr * cm + o->cur_n * kSampleS;
         pe[k] = e, pn[k] = n, run_prev = run;
     }
     double best = INFINITY;
@@ -227,13 +230,14 @@ double fw_steer_pass_along(const steer_ctl *c, const fw_sense *in, double chi, d
         const fw_target *t = &in->targets[i];
         double te, tn, dx = t->east - o->east, dy = t->north - o->north;
         fw_velocity(t->speed, t->course, &te, &tn);
-        double d0 = hypot(dx, dy), dmin = d0;
+        double d0 = hypot(dx, dy), d2min = INFINITY;
         if (d0 > (fabs(t->speed) + fmax(o->U, v) + 2.0) * kCloseS)
             continue; /* cannot come near in the look ahead */
-        for (int k = 0; k < kSamples; k++) {
-            double s = kSampleS * (k + 1);
-            dmin = fmin(dmin, hypot(dx + te * s - pe[k], dy + tn * s - pn[k]));
+        for (int k = 0; k < kSamples; k++) { /* squared: one root at the end */
+            double s = kSampleS * (k + 1), ex = dx + te * s - pe[k], ny = dy + tn * s - pn[k];
+            d2min = fmin(d2min, ex * ex + ny * ny);
         }
+        double dmin = sqrt(d2min);
         if (dmin < d0)
             best = fmin(best, dmin);
     }
