@@ -30,39 +30,50 @@
 
 static fw_ship c3p;
 
-/* g's first order in 30 s (false: none). */
-static bool first_order(bool with_y, fw_reaction *out)
+/* The world of the source's ships ks (n of them) and the own ship (c3-paper,
+ * Nomoto, no controller) from (e, no) on course at speed, stepped steps s
+ * with the reactions' give-way kind gw; g's first slow-down (false: none). */
+static bool g_slows(const fw_kin_ship *ks, int n, fw_give_way gw, double e, double no,
+                    double course, double speed, int steps, fw_reaction *out)
 {
     fw_error err = {0};
-    fw_kin_ship ks[2] = {
-        {.start = {.id = "g", .east = 0, .north = 0, .course = 0.5 * FW_PI,
-                   .speed = fw_kn_to_ms(16), .length = 150, .breadth = 25}},
-        {.start = {.id = "y", .east = 4000, .north = 30, .course = 1.5 * FW_PI,
-                   .speed = fw_kn_to_ms(12), .length = 150, .breadth = 25}}};
     fw_kinematic_def kd = fw_default_kinematic_def();
     kd.ships = ks;
-    kd.n = with_y ? 2 : 1;
+    kd.n = n;
     fw_world_def wd = fw_default_world_def();
     wd.reactions = fw_default_reactions_def();
-    wd.reactions.give_way = FW_GIVE_WAY_SPEED; /* the speed orders this test reads */
+    wd.reactions.give_way = gw;
     fw_world *w = NULL;
     CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
     CHECK_MSG(fw_world_create(&wd, &w, &err) == FW_OK, "%s", err.msg);
     fw_vessel_def own = fw_default_vessel_def();
     own.id = "own", own.role = FW_ROLE_OWN, own.ship = &c3p, own.dynamics = FW_DYN_NOMOTO;
-    own.east = 1500, own.north = 120, own.course = 0.5 * FW_PI, own.speed = fw_kn_to_ms(6);
+    own.east = e, own.north = no, own.course = course, own.speed = speed;
     CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
     CHECK(fw_world_start(w, &err) == FW_OK);
-    for (int k = 0; k < 30; k++)
+    for (int k = 0; k < steps; k++)
         CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
-    int n;
-    const fw_reaction *r = fw_world_reactions(w, &n);
+    int nr;
+    const fw_reaction *r = fw_world_reactions(w, &nr);
     bool found = false;
-    for (int i = 0; i < n && !found; i++)
+    for (int i = 0; i < nr && !found; i++)
         if (strcmp(r[i].ship, "g") == 0 && r[i].kind == FW_REACT_SLOW)
             *out = r[i], found = true;
     fw_world_destroy(w);
     return found;
+}
+
+/* g's first order in 30 s (false: none). */
+static bool first_order(bool with_y, fw_reaction *out)
+{
+    fw_kin_ship ks[2] = {
+        {.start = {.id = "g", .east = 0, .north = 0, .course = 0.5 * FW_PI,
+                   .speed = fw_kn_to_ms(16), .length = 150, .breadth = 25}},
+        {.start = {.id = "y", .east = 4000, .north = 30, .course = 1.5 * FW_PI,
+                   .speed = fw_kn_to_ms(12), .length = 150, .breadth = 25}}};
+    /* the speed orders this test reads */
+    return g_slows(ks, with_y ? 2 : 1, FW_GIVE_WAY_SPEED, 1500, 120, 0.5 * FW_PI,
+                   fw_kn_to_ms(6), 30, out);
 }
 
 static void test_masked_by_a_close_pass(void)
@@ -86,34 +97,11 @@ static void test_masked_by_a_close_pass(void)
  * 1 s (crawling) or goes its 7 m/s.  g's rule 17(b) order (false: none). */
 static bool stand_on_order(bool crawling, fw_reaction *out)
 {
-    fw_error err = {0};
     fw_kin_ship ks[1] = {{.start = {.id = "g", .east = 0, .north = 0, .course = 0.5 * FW_PI,
                                     .speed = 7.0, .length = 150, .breadth = 25},
                           .n_legs = crawling ? 1 : 0,
                           .legs = {{.t_start = 1.0, .course = 0.5 * FW_PI, .speed = 1.0}}}};
-    fw_kinematic_def kd = fw_default_kinematic_def();
-    kd.ships = ks;
-    kd.n = 1;
-    fw_world_def wd = fw_default_world_def();
-    wd.reactions = fw_default_reactions_def();
-    fw_world *w = NULL;
-    CHECK(fw_kinematic_source_create(&kd, &wd.source, &err) == FW_OK);
-    CHECK_MSG(fw_world_create(&wd, &w, &err) == FW_OK, "%s", err.msg);
-    fw_vessel_def own = fw_default_vessel_def();
-    own.id = "own", own.role = FW_ROLE_OWN, own.ship = &c3p, own.dynamics = FW_DYN_NOMOTO;
-    own.east = 800, own.north = 1600, own.course = FW_PI, own.speed = 7.0;
-    CHECK(fw_world_add_vessel(w, &own, NULL, &err) == FW_OK);
-    CHECK(fw_world_start(w, &err) == FW_OK);
-    for (int k = 0; k < 60; k++)
-        CHECK(fw_world_step(w, 1.0, &err) == FW_OK);
-    int n;
-    const fw_reaction *r = fw_world_reactions(w, &n);
-    bool found = false;
-    for (int i = 0; i < n && !found; i++)
-        if (strcmp(r[i].ship, "g") == 0 && r[i].kind == FW_REACT_SLOW)
-            *out = r[i], found = true;
-    fw_world_destroy(w);
-    return found;
+    return g_slows(ks, 1, fw_default_reactions_def().give_way, 800, 1600, FW_PI, 7.0, 60, out);
 }
 
 /* A ship judges a speed faster than it goes along its acceleration
