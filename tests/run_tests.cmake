@@ -86,6 +86,8 @@ fw_test(test_watch_redraw test_watch_redraw.c)
 target_link_libraries(test_watch_redraw PRIVATE fairway_run)
 fw_test(test_vessels test_vessels.c)
 fw_test(test_steer test_steer.c)
+# its look along the swing: the shortcuts against every ship over every sample
+fw_test(test_steer_look test_steer_look.c)
 target_link_libraries(test_vessels PRIVATE fairway_run)
 set_tests_properties(test_vessels PROPERTIES TIMEOUT 60
                      ENVIRONMENT "FAIRWAY_DATA=${CMAKE_SOURCE_DIR};${fw_lsan}")

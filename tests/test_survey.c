@@ -675,6 +675,15 @@ static void test_idmap_keys(void)
     fw_idmap_free(&byname);
     fw_idmap_free(&keyed);
     CHECK(keyed.n == 0 && keyed.key_cap == 0 && !keyed.by_key);
+    /* every id with a key: a key not seen is an id not seen, found without
+     * the name; one id without a key, and names are looked up again */
+    fw_idmap only = {0};
+    CHECK(fw_idmap_intern_keyed(&only, 3, "east.3", &a) == 0 && only.keyless == 0);
+    CHECK(fw_idmap_find_keyed(&only, 4, "east.4") == -1);
+    CHECK(fw_idmap_intern(&only, "west.9", &b) == 0 && only.keyless == 1);
+    CHECK(fw_idmap_find_keyed(&only, 9, "west.9") == b);
+    CHECK(fw_idmap_find_keyed(&only, 3, "east.3") == a);
+    fw_idmap_free(&only);
 }
 
 int main(void)

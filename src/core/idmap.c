@@ -2,6 +2,7 @@
 #include "core/idmap.h"
 
 #include <assert.h>
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -49,10 +50,12 @@ static int find(const fw_idmap *t, const char *id, uint64_t h)
 
 int fw_idmap_find(const fw_idmap *t, const char *id) { return find(t, id, hash_str(id)); }
 
-int fw_idmap_intern(fw_idmap *t, const char *id, int *out)
+/* fw_idmap_intern; *made: it was new. */
+static int intern(fw_idmap *t, const char *id, int *out, bool *made)
 {
     uint64_t h = hash_str(id);
     int found = find(t, id, h);
+    *made = false;
     if (found >= 0) {
         *out = found;
         return 0;
@@ -78,6 +81,16 @@ int fw_idmap_intern(fw_idmap *t, const char *id, int *out)
         k = (k + 1) & (t->cap - 1);
     t->slot[k] = i + 1;
     *out = i;
+    *made = true;
+    return 0;
+}
+
+int fw_idmap_intern(fw_idmap *t, const char *id, int *out)
+{
+    bool made;
+    if (intern(t, id, out, &made))
+        return -1;
+    t->keyless += made;
     return 0;
 }
 
@@ -95,7 +108,9 @@ static int by_key(const fw_idmap *t, int key, const char *id)
 int fw_idmap_find_keyed(const fw_idmap *t, int key, const char *id)
 {
     int i = by_key(t, key, id);
-    return i >= 0 ? i : fw_idmap_find(t, id);
+    if (i >= 0 || (key > 0 && t->keyless == 0))
+        return i; /* (a key stands for one id: had it been interned, its key would map) */
+    return fw_idmap_find(t, id);
 }
 
 int fw_idmap_intern_keyed(fw_idmap *t, int key, const char *id, int *out)
@@ -111,10 +126,13 @@ int fw_idmap_intern_keyed(fw_idmap *t, int key, const char *id, int *out)
         return -1;
     if (t->key_cap > had)
         memset(t->by_key + had, 0, sizeof *t->by_key * (size_t)(t->key_cap - had));
-    if (fw_idmap_intern(t, id, &i))
+    bool made;
+    if (intern(t, id, &i, &made))
         return -1;
     if (key > 0)
         t->by_key[key - 1] = i + 1;
+    else
+        t->keyless += made;
     *out = i;
     return 0;
 }

@@ -26,6 +26,7 @@ typedef struct fw_idmap {
     int n, name_cap;
     int *by_key;      /* key_cap entries: key - 1 -> interned index + 1, 0 = not seen */
     int key_cap;
+    int keyless;      /* ids interned with no key: while none, a key not seen is an id not seen */
 } fw_idmap;
 
 /* The index of id, -1 if it has not been interned. */

@@ -5,14 +5,6 @@
 
 #include "geom/geom.h"
 
-double fw_ramp_run(double u, double v, double acc, double dec, double t)
-{
-    double a = v >= u ? acc : -dec, tr = (v - u) / a;
-    if (t <= tr)
-        return u * t + 0.5 * a * t * t;
-    return 0.5 * (u + v) * tr + v * (t - tr);
-}
-
 /* The point of the segment p + s q, s in [0, 1], nearest the origin: s. */
 static double nearest_on(double px, double py, double qx, double qy)
 {

@@ -102,7 +102,7 @@ static double return_course(const steer_ctl *c, const fw_sense *in, double chi, 
 {
     double lim = 0.5 * c->def.cpa;
     /* held, within its room as when it altered (steer_decide) */
-    double hold = course + fw_wrap_pi(fw_steer_ground_course(in->own) - course);
+    double hold = course + fw_wrap_pi(c->cog - course);
     if (isfinite(c->def.room))
         hold = fmin(hold, los_course(c, course, xt, c->def.room));
     double d_hold = fw_steer_conflict_pass(c, in, hold);
@@ -151,17 +151,18 @@ static bool close_quarters(steer_ctl *c, const fw_sense *in, double course, doub
 {
     int j = -1;
     double lim = 0.25 * c->def.cpa;
-    if (!(fw_steer_pass_within(in, chi, in->own->U, kCloseS, true, &j) < lim))
+    if (!(fw_steer_pass_within(c, in, chi, in->own->U, kCloseS, true, &j) < lim))
         return false;
     double now = c->want > 0.0 ? c->want : in->own->U;
     double speeds[3] = {now, c->speed > 0.0 ? c->speed : in->own->U, least_way(in, chi)};
-    double best = fw_steer_pass_along(c, in, chi, now) + kBetterM, pick = chi, v_pick = now;
+    double best = fw_steer_pass_along(c, in, chi, now, INFINITY) + kBetterM;
+    double pick = chi, v_pick = now;
     for (int s = 0; s <= 9; s++) {
         double cand = s == 0 ? chi : in->own->psi + fw_deg_to_rad(10.0 * s);
         if (s > 0 && fw_wrap_pi(cand - course) > kMaxOff + 1e-9)
             break;
         for (int k = s == 0 ? 1 : 0; k < 3; k++) {
-            double d = fw_steer_pass_along(c, in, cand, speeds[k]);
+            double d = fw_steer_pass_along(c, in, cand, speeds[k], INFINITY);
             if (d > best)
                 best = d, pick = cand, v_pick = speeds[k];
         }
@@ -208,7 +209,7 @@ static void slow_for(steer_ctl *c, const fw_sense *in, double chi)
             continue;
         if (v < floor_v - 1e-9)
             break;
-        double d = fw_steer_pass_within(in, chi, v, kHorizonS, false, NULL);
+        double d = fw_steer_pass_within(c, in, chi, v, kHorizonS, false, NULL);
         if (d >= c->def.cpa) {
             v_best = v;
             break;
@@ -248,8 +249,8 @@ static bool replan(steer_ctl *c, const fw_sense *in, double course, double chi, 
             double off = fw_wrap_pi(chi + alt - course);
             if (off > kMaxOff + 1e-9)
                 break;
-            if (tier == 0 ? fw_steer_pass_on(in, chi + alt) < c->def.cpa
-                          : fw_steer_pass_on(in, chi + alt) < 0.5 * c->def.cpa ||
+            if (tier == 0 ? fw_steer_pass_on(c, in, chi + alt) < c->def.cpa
+                          : fw_steer_pass_on(c, in, chi + alt) < 0.5 * c->def.cpa ||
                                 fw_steer_pass_one(in, &in->targets[j], chi + alt) < c->def.cpa)
                 continue;
             c->news = true, c->news_from = chi, c->news_to = chi + alt, c->news_sit = sit;
@@ -288,7 +289,7 @@ static double follow_speed(const steer_ctl *c, const fw_sense *in, double chi, d
         double across = dx * cc - dy * sc;
         double w = 0.5 * (c->def.breadth + t->breadth) + kSideM, tc, dcpa;
         if (fabs(across) > w) {
-            fw_steer_cpa_on(o, t, oe, on, &tc, &dcpa);
+            fw_steer_cpa_seen(c, in, i, oe, on, &tc, &dcpa);
             if (!(tc > 0.0 && tc < kPathS && dcpa < w))
                 continue;
         }
@@ -316,7 +317,7 @@ static double speed_order(steer_ctl *c, const fw_sense *in, double chi)
     /* behind the ships ahead on the course it steers and on the course it
      * makes good now: a slow ship turns slowly (K = K' U / L), and sails on
      * the old course for a while */
-    double cog = fw_steer_ground_course(in->own);
+    double cog = c->cog;
     want = fmin(follow_speed(c, in, chi, want), follow_speed(c, in, cog, want));
     want = fmax(least, want);
     double dt = fmax(0.0, in->t - c->t_order), u = c->u_order;
@@ -339,9 +340,10 @@ static double los_course(const steer_ctl *c, double course, double xtrack, doubl
 static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decision *d,
                               fw_error *err)
 {
-    (void)err;
     steer_ctl *c = (steer_ctl *)ctl;
     const fw_own_state *o = in->own;
+    if (!fw_steer_see(c, in))
+        return fw_fail(err, FW_ERUN, "out of memory");
     double course, xt;
     int seg;
     fw_lane_where(&c->def.lane, o->east, o->north, &course, &xt, &seg);
@@ -361,7 +363,7 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
          * in Dover's spring stream: 1 of 51 altered ships given back in
          * an hour in 1 nm fog, each steered to the end of the run) */
         double bc, bxt, half = 0.5 * c->def.length;
-        double dir = o->cur_e == 0.0 && o->cur_n == 0.0 ? o->psi : fw_steer_ground_course(o);
+        double dir = o->cur_e == 0.0 && o->cur_n == 0.0 ? o->psi : c->cog;
         fw_lane_where(&c->def.lane, o->east + half * sin(dir), o->north + half * cos(dir), &bc,
                       &bxt, &seg);
         if (fabs(xt) < 0.3 && fabs(bxt) < 0.3 && fabs(o->r) < fw_deg_to_rad(0.05))
@@ -398,7 +400,13 @@ static fw_status steer_decide(fw_controller *ctl, const fw_sense *in, fw_decisio
     return FW_OK;
 }
 
-static void steer_destroy(fw_controller *c) { free(c); }
+static void steer_destroy(fw_controller *ctl)
+{
+    steer_ctl *c = (steer_ctl *)ctl;
+    if (c)
+        free(c->seen), free(c->memo);
+    free(c);
+}
 
 static const fw_controller_ops steer_ops = {.name = "steer", .decide = steer_decide,
                                             .assesses = false, .destroy = steer_destroy};

@@ -3,6 +3,7 @@
  * sees (as a straight line, or along the swing and the speed change it would
  * make), which it must give way to or stands on for. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/units.h"
@@ -39,6 +40,74 @@ void fw_steer_cpa_on(const fw_own_state *o, const fw_target *t, double oe, doubl
     double te, tn;
     fw_velocity(t->speed, t->course, &te, &tn);
     fw_cpa(t->east - o->east, t->north - o->north, te - oe, tn - on, tc, dc);
+}
+
+/* a and b alike to the bit (a zero's sign too: the same velocity) */
+static bool same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* The memo of the ship of this key (NULL: no key, or no memory for it:
+ * then the velocity is worked out each time). */
+static struct steer_memo *memo_of(steer_ctl *c, int key)
+{
+    if (key <= 0)
+        return NULL;
+    if (key > c->memo_cap) {
+        int cap = key > 2 * c->memo_cap ? key : 2 * c->memo_cap;
+        struct steer_memo *m = realloc(c->memo, (size_t)cap * sizeof *m);
+        if (!m)
+            return NULL;
+        for (int i = c->memo_cap; i < cap; i++)
+            m[i] = (struct steer_memo){.course = NAN}; /* matches no course */
+        c->memo = m, c->memo_cap = cap;
+    }
+    return &c->memo[key - 1];
+}
+
+/* Takes what the decision under way knows of each ship it sees (steer_seen);
+ * false: out of memory. */
+bool fw_steer_see(steer_ctl *c, const fw_sense *in)
+{
+    if (in->n > c->seen_cap) {
+        int cap = in->n > 2 * c->seen_cap ? in->n : 2 * c->seen_cap;
+        steer_seen *seen = realloc(c->seen, (size_t)cap * sizeof *seen);
+        if (!seen)
+            return false;
+        c->seen = seen, c->seen_cap = cap;
+    }
+    c->cog = fw_steer_ground_course(in->own);
+    for (int i = 0; i < in->n; i++) {
+        const fw_target *t = &in->targets[i];
+        steer_seen *s = &c->seen[i];
+        s->same_way = -1;
+        struct steer_memo *m = memo_of(c, t->key);
+        if (m && same_bits(m->course, t->course) && same_bits(m->speed, t->speed)) {
+            s->ve = m->ve, s->vn = m->vn;
+            continue;
+        }
+        fw_velocity(t->speed, t->course, &s->ve, &s->vn);
+        if (m)
+            *m = (struct steer_memo){t->course, t->speed, s->ve, s->vn};
+    }
+    return true;
+}
+
+/* fw_steer_same_way for in->targets[i], asked once a decision (the table is
+ * the decision's scratch: written through the const controller). */
+bool fw_steer_seen_same_way(const steer_ctl *c, const fw_sense *in, int i)
+{
+    steer_seen *s = &c->seen[i];
+    if (s->same_way < 0)
+        s->same_way = fw_steer_same_way(in->own, &in->targets[i]);
+    return s->same_way;
+}
+
+/* fw_steer_cpa_on for in->targets[i], its velocity as seen. */
+void fw_steer_cpa_seen(const steer_ctl *c, const fw_sense *in, int i, double oe, double on,
+                       double *tc, double *dc)
+{
+    const fw_target *t = &in->targets[i];
+    fw_cpa(t->east - in->own->east, t->north - in->own->north, c->seen[i].ve - oe,
+           c->seen[i].vn - on, tc, dc);
 }
 
 /* Does ship t pass it at the passing distance or more (or no closest
@@ -91,8 +160,8 @@ double fw_steer_ground_course(const fw_own_state *o)
  * seed 3, replication 0: hulls overlapping). */
 double fw_steer_conflict_pass(const steer_ctl *c, const fw_sense *in, double chi)
 {
-    return fmin(fw_steer_pass_within(in, chi, in->own->U, kConflictS, false, NULL),
-                fw_steer_pass_along(c, in, chi, in->own->U));
+    double straight = fw_steer_pass_within(c, in, chi, in->own->U, kConflictS, false, NULL);
+    return fw_steer_pass_along(c, in, chi, in->own->U, straight);
 }
 
 /* A ship going its way (rule 13): its course within 45 deg of its heading,
@@ -128,9 +197,9 @@ int fw_steer_at_risk(const steer_ctl *c, const fw_sense *in, double chi, bool gi
     fw_steer_own_velocity(in->own, chi, &oe, &on);
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
-        if (fw_steer_same_way(in->own, &in->targets[i]))
+        if (fw_steer_seen_same_way(c, in, i))
             continue;
-        fw_steer_cpa_on(in->own, &in->targets[i], oe, on, &tc, &dc);
+        fw_steer_cpa_seen(c, in, i, oe, on, &tc, &dc);
         if (!(tc > 0.0 && tc < kHorizonS && dc < lim && tc < tbest))
             continue;
         fw_situation s = fw_classify(&c->colregs, in->own, &in->targets[i]);
@@ -157,16 +226,16 @@ bool fw_steer_stands_on(const steer_ctl *c, const fw_sense *in, double chi)
 /* The closest it would pass any ship it sees on course chi at speed v,
  * ahead in the horizon (constant velocities; with cross_only, only ships
  * not going its way); *who (may be NULL): that ship's index. */
-double fw_steer_pass_within(const fw_sense *in, double chi, double v, double horizon,
-                            bool cross_only, int *who)
+double fw_steer_pass_within(const steer_ctl *c, const fw_sense *in, double chi, double v,
+                            double horizon, bool cross_only, int *who)
 {
     double best = INFINITY, oe, on;
     fw_steer_velocity_at(in->own, chi, v, &oe, &on);
     for (int i = 0; i < in->n; i++) {
         double tc, dc;
-        if (cross_only && fw_steer_same_way(in->own, &in->targets[i]))
+        if (cross_only && fw_steer_seen_same_way(c, in, i))
             continue;
-        fw_steer_cpa_on(in->own, &in->targets[i], oe, on, &tc, &dc);
+        fw_steer_cpa_seen(c, in, i, oe, on, &tc, &dc);
         if (tc > 0.0 && tc < horizon && dc < best) {
             best = dc;
             if (who)
@@ -185,9 +254,9 @@ double fw_steer_pass_one(const fw_sense *in, const fw_target *t, double chi)
     return tc > 0.0 && tc < kHorizonS ? dc : INFINITY;
 }
 
-double fw_steer_pass_on(const fw_sense *in, double chi)
+double fw_steer_pass_on(const steer_ctl *c, const fw_sense *in, double chi)
 {
-    return fw_steer_pass_within(in, chi, in->own->U, kHorizonS, false, NULL);
+    return fw_steer_pass_within(c, in, chi, in->own->U, kHorizonS, false, NULL);
 }
 
 /* m: how far a ship at u0 m/s runs in t s when ordered v, speeding up or
@@ -206,36 +275,98 @@ double fw_steer_run_in(double u0, double v, double t)
  * straight on: judged as a turn made at once, a 70 deg turn at close
  * quarters by a 180 m ferry at 20 kn (near two minutes and a kilometre of
  * swing) took it onto the slow ship fine on its bow that the straight line
- * missed (strait-domain seed 1, replication 12, and three more overlaps). */
+ * missed (strait-domain seed 1, replication 12, and three more overlaps).
+ * A distance of cap or more counts as cap: the caller knows of one that
+ * near (fw_steer_conflict_pass), and a ship that cannot come nearer is
+ * not followed sample by sample (pass_bound). */
 enum { kSamples = 60 }; /* kCloseS / kSampleS */
-double fw_steer_pass_along(const steer_ctl *c, const fw_sense *in, double chi, double v)
+
+/* Its path (metres from where it is, every kSampleS), sampled as far as
+ * asked: most looks find every ship out of reach of the straight line it
+ * sails once turned and at speed, and need no more of it than the turn. */
+typedef struct along {
+    double pe[kSamples], pn[kSamples];
+    int n; /* samples taken */
+    double u0, v, psi_to, per_m, ce, cn;
+    double e, north, run_prev, psi, mid_prev, sm, cm;
+    bool steady; /* turned: every later sample on the same sines */
+} along;
+
+static void along_next(along *p)
+{
+    int k = p->n++;
+    double s = kSampleS * (k + 1), run = fw_steer_run_in(p->u0, p->v, s), dr = run - p->run_prev;
+    if (!p->steady) {
+        double left = fw_wrap_pi(p->psi_to - p->psi), turn = fabs(left), most = p->per_m * dr;
+        turn = most < turn ? most : turn; /* fmin: a libm call, as below */
+        double mid = p->psi + copysign(0.5 * turn, left);
+        p->psi += copysign(turn, left);
+        if (mid != p->mid_prev)
+            p->sm = sin(mid), p->cm = cos(mid), p->mid_prev = mid;
+        p->steady = left == 0.0;
+    }
+    p->e += dr * p->sm + p->ce * kSampleS, p->north += dr * p->cm + p->cn * kSampleS;
+    p->pe[k] = p->e, p->pn[k] = p->north, p->run_prev = run;
+}
+
+/* No closer than this can ship t come to the path (pe, pn) in its samples:
+ * the straight line at the path's final velocity (qe, qn) from where it is,
+ * less the farthest the path strays from that line (dev).  (Every sample's
+ * distance is at least its distance to the line's point at that time less
+ * the path's offset from that point, and the line's points are no nearer
+ * than the segment they lie on.) */
+static double pass_bound(double dx, double dy, double te, double tn, double qe, double qn,
+                         double dev)
+{
+    double we = te - qe, wn = tn - qn, w2 = we * we + wn * wn;
+    double s = w2 > 0.0 ? -(dx * we + dy * wn) / w2 : 0.0;
+    s = fmax(kSampleS, fmin(kCloseS, s));
+    double px = dx + we * s, py = dy + wn * s;
+    return sqrt(px * px + py * py) - dev; /* dev's slack covers the rounding */
+}
+
+double fw_steer_pass_along(const steer_ctl *c, const fw_sense *in, double chi, double v,
+                           double cap)
 {
     const fw_own_state *o = in->own;
-    double pe[kSamples], pn[kSamples], e = 0.0, n = 0.0, run_prev = 0.0, psi = o->psi;
-    double psi_to = fw_steer_heading_for(chi, v, o->cur_e, o->cur_n);
-    double per_m = FW_STEER_K_ND / c->def.length * c->def.helm_max;
-    double mid_prev = NAN, sm = 0.0, cm = 1.0;
-    for (int k = 0; k < kSamples; k++) {
-        double s = kSampleS * (k + 1), run = fw_steer_run_in(o->U, v, s), dr = run - run_prev;
-        double left = fw_wrap_pi(psi_to - psi), turn = fmin(fabs(left), per_m * dr);
-        double mid = psi + copysign(0.5 * turn, left);
-        psi += copysign(turn, left);
-        if (mid != mid_prev) /* steady on psi_to once turned: the same sines */
-            sm = sin(mid), cm = cos(mid), mid_prev = mid;
-        e += dr * sm + o->cur_e * kSampleS, n += dr * cm + o->cur_n * kSampleS;
-        pe[k] = e, pn[k] = n, run_prev = run;
+    along p = {.u0 = o->U, .v = v, .psi_to = fw_steer_heading_for(chi, v, o->cur_e, o->cur_n),
+               .per_m = FW_STEER_K_ND / c->def.length * c->def.helm_max, .ce = o->cur_e,
+               .cn = o->cur_n, .psi = o->psi, .mid_prev = NAN, .cm = 1.0};
+    /* the line at its final velocity over ground, and how far the path
+     * strays from it (pass_bound): sampled until turned and at speed (at
+     * tr: fw_ramp_run's), after which it strays no farther, every step
+     * then the line's own (to rounding, far below the 1 mm of slack) */
+    double qe = v * sin(p.psi_to) + o->cur_e, qn = v * cos(p.psi_to) + o->cur_n, dev2 = 0.0;
+    double tr = (v - o->U) / (v >= o->U ? kAccel : -kDecel);
+    while (p.n < kSamples) {
+        along_next(&p);
+        double s = kSampleS * p.n, ex = p.e - qe * s, ny = p.north - qn * s;
+        double d2 = ex * ex + ny * ny;
+        dev2 = d2 > dev2 ? d2 : dev2;
+        if (p.steady && s - kSampleS >= tr)
+            break;
     }
-    double best = INFINITY;
+    double dev = sqrt(dev2) + 1e-3, best = cap;
     for (int i = 0; i < in->n; i++) {
         const fw_target *t = &in->targets[i];
-        double te, tn, dx = t->east - o->east, dy = t->north - o->north;
-        fw_velocity(t->speed, t->course, &te, &tn);
+        double te = c->seen[i].ve, tn = c->seen[i].vn;
+        double dx = t->east - o->east, dy = t->north - o->north;
+        double reach = (fabs(t->speed) + fmax(o->U, v) + 2.0) * kCloseS;
+        if (dx * dx + dy * dy > reach * reach * (1.0 + 1e-9))
+            continue; /* (squared first: most are, and need no root) */
         double d0 = hypot(dx, dy), d2min = INFINITY;
-        if (d0 > (fabs(t->speed) + fmax(o->U, v) + 2.0) * kCloseS)
+        if (d0 > reach)
             continue; /* cannot come near in the look ahead */
-        for (int k = 0; k < kSamples; k++) { /* squared: one root at the end */
-            double s = kSampleS * (k + 1), ex = dx + te * s - pe[k], ny = dy + tn * s - pn[k];
-            d2min = fmin(d2min, ex * ex + ny * ny);
+        if (pass_bound(dx, dy, te, tn, qe, qn, dev) >= fmin(d0, best))
+            continue; /* cannot come nearer than it is, or than the nearest so far */
+        while (p.n < kSamples)
+            along_next(&p);
+        /* squared: one root at the end; the comparison rather than fmin,
+         * a libm call that spilled the loop's registers every sample */
+        for (int k = 0; k < kSamples; k++) {
+            double s = kSampleS * (k + 1), ex = dx + te * s - p.pe[k], ny = dy + tn * s - p.pn[k];
+            double d2 = ex * ex + ny * ny;
+            d2min = d2 < d2min ? d2 : d2min;
         }
         double dmin = sqrt(d2min);
         if (dmin < d0)
