@@ -66,6 +66,16 @@ static double long_way(const steer_ctl *c, const fw_sense *in, double chi, doubl
     return best;
 }
 
+/* A steered ship of the default kind, its lane due north. */
+static steer_ctl *steered(void)
+{
+    fw_alter_def def = fw_default_alter_def();
+    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
+    fw_controller *ctl = NULL;
+    CHECK(fw_steer_controller_create(&def, &ctl, NULL) == FW_OK);
+    return (steer_ctl *)ctl;
+}
+
 /* m: how far apart two answers are (none, INFINITY, is an answer too) */
 static double off_by(double got, double want)
 {
@@ -100,11 +110,7 @@ static void random_scene(fw_own_state *o, fw_target *t, int n)
  * another course (the memo) must not keep its old velocity. */
 static void test_look_is_the_long_way(void)
 {
-    fw_alter_def def = fw_default_alter_def();
-    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
-    fw_controller *ctl = NULL;
-    CHECK(fw_steer_controller_create(&def, &ctl, NULL) == FW_OK);
-    steer_ctl *c = (steer_ctl *)ctl;
+    steer_ctl *c = steered();
     enum { kScenes = 3000, kMax = 14 };
     fw_target t[kMax];
     fw_own_state o;
@@ -133,7 +139,7 @@ static void test_look_is_the_long_way(void)
     CHECK_MSG(err_c < 1e-6, "scene %d: the conflict look is %g m off", worst_c, err_c);
     /* the scenes are not all empty: most find a ship */
     CHECK_MSG(found > kScenes / 3, "%d of %d scenes find a ship", found, kScenes);
-    fw_controller_destroy(ctl);
+    fw_controller_destroy(&c->base);
 }
 
 /* Gathering way from 2 to 10 m/s it lags far behind the line it will sail
@@ -145,11 +151,7 @@ static void test_look_is_the_long_way(void)
  * the first sample, 39 m) would have put her out of reach. */
 static void test_gathering_way_crossed(void)
 {
-    fw_alter_def def = fw_default_alter_def();
-    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
-    fw_controller *ctl = NULL;
-    CHECK(fw_steer_controller_create(&def, &ctl, NULL) == FW_OK);
-    steer_ctl *c = (steer_ctl *)ctl;
+    steer_ctl *c = steered();
     fw_own_state o = {.psi = 0.0, .U = 2.0};
     double west = fw_deg_to_rad(270.0);
     fw_target t = {.id = "crossing", .east = 800.0, .north = 450.0, .course = west, .speed = 8.0,
@@ -159,7 +161,7 @@ static void test_gathering_way_crossed(void)
     double got = fw_steer_pass_along(c, &in, 0.0, 10.0, 300.0);
     CHECK_NEAR(got, long_way(c, &in, 0.0, 10.0, 300.0), 1e-6);
     CHECK_NEAR(got, 0.0, 1e-6);
-    fw_controller_destroy(ctl);
+    fw_controller_destroy(&c->base);
 }
 
 int main(void)
