@@ -434,7 +434,7 @@ static void give_back_beside_changer(fw_traffic *t)
 {
     fw_error err = {0};
     const fw_target *near;
-    int n, k = 670;
+    int n, k = (int)fw_traffic_time(t);
     CHECK(fw_traffic_around(t, &near, &n, &err) == FW_OK);
     for (int i = 0; i < n; i++)
         if (sin(near[i].course) > 0.99999 && fabs(near[i].north + 375.0) < 0.01)
@@ -477,6 +477,77 @@ static void give_back_beside_changer(fw_traffic *t)
            c.id, into, err.msg);
 }
 
+/* One step of a taken ship moved by hand to (x, y) heading east, the own
+ * ship on its circle. */
+static void move_step(fw_traffic *t, const fw_target *s, double x, double y)
+{
+    fw_error err = {0};
+    double ox, oy, psi;
+    own_pose(fw_traffic_time(t), &ox, &oy, &psi);
+    CHECK(fw_traffic_move(t, s->id, x, y, M_PI / 2, s->length, &err) == FW_OK);
+    CHECK(fw_traffic_place(t, ox, oy, psi, 6.0, &err) == FW_OK);
+    CHECK(fw_traffic_step(t, &err) == FW_OK);
+}
+
+/* An eastbound ship taken on lane 1's line (y = -125 m) and steered across
+ * the westbound lane 1's line (y = +125 m), landing on it exactly: SUMO maps
+ * a ship placed within a lane's match threshold onto it and gives it that
+ * edge (EW) as its route.  Given back beside EW it is refused (EW is not on
+ * its route as taken; before, it was given back on EW and sailed west, as a
+ * Dover ferry did); given back 0.5 m off its own lane's line, it is put on
+ * WE with its route as taken and SUMO drives it east. */
+static void give_back_mapped_across(fw_traffic *t)
+{
+    fw_error err = {0};
+    const fw_target *near;
+    int n;
+    fw_target s = {0};
+    CHECK(fw_traffic_around(t, &near, &n, &err) == FW_OK);
+    for (int i = 0; i < n && !s.id[0]; i++)
+        if (fabs(near[i].north + 125.0) < 0.01 && near[i].speed > 2.0 &&
+            sin(near[i].course) > 0.99999)
+            s = near[i];
+    CHECK_MSG(s.id[0], "no eastbound ship on lane 1's line among %d", n);
+    if (!s.id[0])
+        return;
+    CHECK(fw_traffic_take(t, s.id, &err) == FW_OK);
+    double x = s.east, y = -125.0;
+    for (int k = 0; k < 52; k++) { /* 5 m a step north to y = +125 exactly, held 2 steps */
+        x += s.speed, y = fmin(y + 5.0, 125.0);
+        move_step(t, &s, x, y);
+    }
+    x += s.speed, y = 120.0;
+    move_step(t, &s, x, y);
+    CHECK(fw_traffic_give_back(t, s.id, x + s.speed, y, M_PI / 2, s.speed, s.length, 10.0,
+                               &err) == FW_EINPUT);
+    CHECK_CONTAINS(err.msg, "nearest to edge 'EW', not on its route ahead");
+    while (y > -120.0) {
+        x += s.speed, y -= 5.0;
+        move_step(t, &s, x, y);
+    }
+    x += s.speed, y = -124.5;
+    move_step(t, &s, x, y);
+    CHECK_MSG(fw_traffic_give_back(t, s.id, x + s.speed, y, M_PI / 2, s.speed, s.length, 1.0,
+                                   &err) == FW_OK,
+              "%s", err.msg);
+    const double x0 = x + s.speed;
+    fw_target g = {0};
+    for (int k = 0; k < 10; k++) {
+        double ox, oy, psi;
+        own_pose(fw_traffic_time(t), &ox, &oy, &psi);
+        CHECK(fw_traffic_place(t, ox, oy, psi, 6.0, &err) == FW_OK);
+        CHECK(fw_traffic_step(t, &err) == FW_OK);
+        CHECK(fw_traffic_get(t, s.id, &g, &err) == FW_OK);
+        /* on the eastbound half, heading east (a lane change to lane 0 may begin) */
+        CHECK_MSG(g.north < -120.0 && g.north > -380.0, "'%s' at y = %.1f m", s.id, g.north);
+        CHECK_NEAR(fw_rad_to_deg(fw_wrap_pi(g.course - M_PI / 2)), 0.0, 5.0);
+    }
+    const double along = g.east - x0;
+    CHECK_NEAR(along, 9.0 * s.speed, 0.15 * 9.0 * s.speed);
+    printf("'%s' mapped onto the westbound lane while steered, given back on its own: %.1f m "
+           "east in 9 s (%.1f m at its speed)\n", s.id, along, 9.0 * s.speed);
+}
+
 static void test_embedded(void)
 {
     fw_traffic_def d = fw_default_traffic_def();
@@ -492,6 +563,7 @@ static void test_embedded(void)
     }
     run_channel(t, 1);
     take_give_back(t);
+    give_back_mapped_across(t);
     give_back_beside_changer(t);
     fw_traffic_close(t);
     CHECK(access(log, R_OK) == 0);
@@ -533,6 +605,7 @@ static void test_remote(void)
     if (fw_traffic_open(&d, &t, &err) == FW_OK) {
         run_channel(t, 20); /* getters over a socket are slow: check every 20th step */
         take_give_back(t);
+        give_back_mapped_across(t);
         fw_traffic_close(t);
     } else {
         CHECK_MSG(0, "%s", err.msg);

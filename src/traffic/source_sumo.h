@@ -50,11 +50,14 @@
  * lanes, as the own ship is, and SUMO's ships do not see it (SUMO's reads
  * of one taken in the middle of a lane change stayed where the first move
  * put it: nothing here reads them).  Mapped onto a lane of another
- * edge, SUMO gives it that edge as its route, and it can no longer be given
- * back (refused, below).  Given back, it is moved onto the
- * nearest lane of its route ahead where it will be after the next step
- * (moveToXY keepRoute 1) with its speed as its last (setPreviousSpeed), and
- * SUMO drives it on; refused if that lane's line is more than
+ * edge (steered across its line, within the 1 mm), SUMO gives it that edge
+ * as its route; its route as taken is what it is given back to.  Given
+ * back, it is moved onto the nearest lane of its route ahead where it will
+ * be after the next step (moveToXY keepRoute 1; where SUMO replaced its
+ * route, keepRoute 0 onto that lane and the route as taken set again from
+ * there after the step) with its speed as its last (setPreviousSpeed), and
+ * SUMO drives it on; refused if that lane is not on its route as taken
+ * ahead, if its line is more than
  * FW_SOURCE_REJOIN_MAX away, or while a ship in that lane or changing lanes
  * into it is beside it or ahead within its gap (traffic.h
  * fw_traffic_give_back): it is steered on along its line meanwhile.

@@ -190,8 +190,10 @@ fw_status fw_traffic_lane(fw_traffic *t, const char *id, double *xy, int max, in
  * mapped onto the nearest lane of its route ahead and moved there, its
  * speed (m/s) as its last, SUMO's car following driving it from then on.
  * FW_EINPUT (nothing changed) when that lane's line is more than max_off m
- * away, the nearest lane is not on its route ahead, or a ship in that lane
- * or changing lanes into it would be beside it or ahead within its gap
+ * away, the nearest lane is not on its route ahead (its route as taken:
+ * SUMO gives a ship steered across another edge's lane line that edge as
+ * its route), or a ship in that lane or changing lanes into it would be
+ * beside it or ahead within its gap
  * (its type's minGap): SUMO's lane-change model, whose lane change the
  * taken ship did not hinder, stops a ship given back there at its
  * emergency rate until the other is a gap ahead. */

@@ -27,6 +27,7 @@ namespace S = libsumo;
 #include <cstring>
 #include <exception>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "traffic/sumo_text.h"
@@ -71,9 +72,25 @@ struct Move {
     std::string id, edge;
     int lane, keep_route;
     double x, y, angle, match;
-    double prev_speed; // keepRoute 1 (a ship given back): its speed, set after the move
+    double prev_speed; // keepRoute 0 or 1 (a ship given back): its speed, set after the move
+    // keepRoute 0 (a ship given back whose route SUMO replaced while it was
+    // steered): its route ahead as taken, from the edge it is put on, set
+    // after the step (SUMO takes a route only from the edge a ship is on)
+    std::vector<std::string> route;
 };
 std::vector<Move> g_moves;
+// The routes given back after the next step (Move::route), and each steered
+// ship's route as taken with its index on it: placed off the lanes, a ship
+// within a lane's line's match threshold of another edge is mapped onto it
+// and SUMO gives it that edge as its route (dover-imperfect seed 1,
+// replication 54: a northbound ferry steered across the eastbound lane
+// came back on it with route [NE] and sailed east to the end of the run).
+std::vector<Move> g_reroutes;
+struct Taken {
+    std::vector<std::string> route;
+    int at;
+};
+std::unordered_map<std::string, Taken> g_taken;
 
 #ifdef FW_LIBTRACI
 // A variable subscription result as double / string, whatever the back end
@@ -171,6 +188,8 @@ fw_status be_start(const char *const *argv, fw_error *err)
     g_subscribed = false;
     g_centred = false;
     g_moves.clear();
+    g_reroutes.clear();
+    g_taken.clear();
     return guarded("cannot load the simulation", err, [&] {
         S::Simulation::start(cmd);
         g_open = true;
@@ -184,6 +203,9 @@ fw_status be_connect(const char *host, int port, int retries, fw_error *err)
 #ifdef FW_LIBTRACI
     g_subscribed = false;
     g_centred = false;
+    g_moves.clear();
+    g_reroutes.clear();
+    g_taken.clear();
     return guarded("cannot connect", err, [&] {
         S::Simulation::init(port, retries, host);
         g_open = true;
@@ -275,8 +297,28 @@ void apply_move(const Move &m)
     if (m.keep_route == 2)
         clear_stack_below();
     S::Vehicle::moveToXY(m.id, m.edge, m.lane, m.x, m.y, m.angle, m.keep_route, m.match);
-    if (m.keep_route == 1)
+    if (m.keep_route != 2)
         S::Vehicle::setPreviousSpeed(m.id, m.prev_speed);
+    if (m.keep_route == 0)
+        g_reroutes.push_back(m);
+    else if (m.keep_route == 1)
+        g_taken.erase(m.id); // given back: SUMO's from now on
+}
+
+// After the step: each ship moved by keepRoute 0 is on the edge it was put
+// on, with that edge alone as its route; its route ahead as taken is set
+// from there.
+void apply_reroutes()
+{
+    for (const Move &m : g_reroutes) {
+        const std::string on = S::Vehicle::getRoadID(m.id);
+        if (on != m.route.front())
+            throw libsumo::TraCIException("ship '" + m.id + "' given back onto edge '" +
+                                          m.route.front() + "' is on '" + on + "'");
+        S::Vehicle::setRoute(m.id, m.route);
+        g_taken.erase(m.id);
+    }
+    g_reroutes.clear();
 }
 
 fw_status be_place(const char *id, double fx, double fy, double angle_deg, double cx, double cy,
@@ -288,7 +330,7 @@ fw_status be_place(const char *id, double fx, double fy, double angle_deg, doubl
         // a lane, SUMO ships behind it took it for their leader and braked to
         // a stop (emergency braking, measured), which ships cannot do.  Off the
         // lanes they keep lane and speed, as the benchmark targets do.
-        g_moves.push_back(Move{id, "", -1, 2, fx, fy, angle_deg, 1e-3, 0.0});
+        g_moves.push_back(Move{id, "", -1, 2, fx, fy, angle_deg, 1e-3, 0.0, {}});
         // every ship fairway steers is placed after the own ship, about the
         // same centre: the POI is moved (a look-up by name; over a socket a
         // round trip) only when the centre moves
@@ -327,6 +369,11 @@ fw_status be_take(const char *id, fw_error *err)
     return guarded("cannot take a ship", err, [&] {
         // whatever speed the reactive traffic held it at: fairway's now
         S::Vehicle::setSpeed(id, -1.0);
+        // its route as taken; one given back in this step and taken again
+        // keeps the one it had (its rejoin, below, is not made)
+        if (g_taken.find(id) == g_taken.end())
+            g_taken.emplace(id, Taken{S::Vehicle::getRoute(id),
+                                      std::max(0, S::Vehicle::getRouteIndex(id))});
         // given back in this step and taken again: its rejoin is not made,
         // SUMO gets the one move fairway steers it to
         g_moves.erase(std::remove_if(g_moves.begin(), g_moves.end(),
@@ -379,12 +426,19 @@ fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, doub
     fw_status st = FW_OK;
     *off = INFINITY;
     fw_status gst = guarded("cannot give a ship back", err, [&] {
-        const std::vector<std::string> route = S::Vehicle::getRoute(id);
-        const int at = std::max(0, S::Vehicle::getRouteIndex(id));
+        // its route as taken; SUMO's now, unless SUMO replaced it meanwhile
+        std::vector<std::string> route = S::Vehicle::getRoute(id);
+        int at = std::max(0, S::Vehicle::getRouteIndex(id));
+        const auto taken = g_taken.find(id);
+        const bool replaced = taken != g_taken.end() && taken->second.route != route;
+        if (replaced)
+            route = taken->second.route, at = taken->second.at;
         // the nearest lane a ship may use, and the point of its line there
         const libsumo::TraCIRoadPosition rp = S::Simulation::convertRoad(fx, fy, false, "ship");
-        if (at > (int)route.size() ||
-            std::find(route.begin() + at, route.end(), rp.edgeID) == route.end()) {
+        const auto on = at > (int)route.size()
+                            ? route.end()
+                            : std::find(route.begin() + at, route.end(), rp.edgeID);
+        if (on == route.end()) {
             st = fw_fail(err, FW_EINPUT, "ship '%s' is nearest to edge '%s', not on its route "
                          "ahead: steer it back first", id, rp.edgeID.c_str());
             return;
@@ -403,9 +457,13 @@ fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, doub
                          "its lane or crossing into it: not yet", id, b.c_str());
             return;
         }
-        // keepRoute 1: onto that lane of its route, where it is along it
-        g_moves.push_back(Move{id, rp.edgeID, rp.laneIndex, 1, fx, fy, angle_deg, max_off + 1.0,
-                               speed});
+        // keepRoute 1: onto that lane of its route, where it is along it;
+        // keepRoute 0 onto that lane where SUMO replaced its route, and the
+        // route as taken set from there after the step
+        g_moves.push_back(Move{id, rp.edgeID, rp.laneIndex, replaced ? 0 : 1, fx, fy, angle_deg,
+                               max_off + 1.0, speed,
+                               replaced ? std::vector<std::string>(on, route.end())
+                                        : std::vector<std::string>()});
     });
     return gst ? gst : st;
 }
@@ -463,6 +521,7 @@ fw_status be_remove(const char *id, fw_error *err)
 {
     return guarded("cannot remove a ship", err, [&] {
         S::Vehicle::remove(id);
+        g_taken.erase(id);
         g_moves.erase(std::remove_if(g_moves.begin(), g_moves.end(),
                                      [&](const Move &m) { return m.id == id; }),
                       g_moves.end());
@@ -490,6 +549,9 @@ fw_status be_step(double *time, fw_error *err)
         fw_range::stepped();
 #endif
     });
+    if (!st && !sst)
+        sst = guarded("cannot give a ship its route back", err, apply_reroutes);
+    g_reroutes.clear();
     return st ? st : sst;
 }
 
@@ -631,6 +693,8 @@ fw_status be_pending(char **ids, fw_error *err)
 void be_close(void)
 {
     g_moves.clear(); // never given to SUMO (Moves wait for the step)
+    g_reroutes.clear();
+    g_taken.clear();
     g_subscribed = false;
     if (!g_open)
         return;
