@@ -548,6 +548,87 @@ static void give_back_mapped_across(fw_traffic *t)
            "east in 9 s (%.1f m at its speed)\n", s.id, along, 9.0 * s.speed);
 }
 
+/* An eastbound ship on a lane's line with no ship ahead of it on that line
+ * within 3 km (f), and the ship ahead beyond that, if any (its x, else
+ * INFINITY); false: none. */
+static bool lone_follower(fw_traffic *t, fw_target *f, double *ahead_x)
+{
+    fw_error err = {0};
+    const fw_target *all;
+    int n;
+    CHECK(fw_traffic_all(t, &all, &n, &err) == FW_OK);
+    for (int i = 0; i < n; i++) {
+        const fw_target *q = &all[i];
+        double off = fmin(fabs(q->north + 125.0), fabs(q->north + 375.0));
+        if (q->own || off > 0.01 || q->speed < 3.0 || sin(q->course) < 0.99999)
+            continue;
+        double next = INFINITY;
+        for (int j = 0; j < n; j++)
+            if (j != i && fabs(all[j].north - q->north) < 130.0 && all[j].east > q->east)
+                next = fmin(next, all[j].east);
+        if (next - q->east > 3000.0) {
+            *f = *q, *ahead_x = next;
+            return true;
+        }
+    }
+    return false;
+}
+
+/* A ship taken and put 0.3 m off its lane's line (off the lanes for SUMO)
+ * 100 m beyond a faster follower's gap (SUMO's minGap, 200 m) ahead of it:
+ * given back there at 1 m/s it is refused, the follower named (SUMO's car
+ * following would brake the follower at its emergency rate: Krauss's safe
+ * speed behind a ship 100 m off at 1 m/s is far below its own); put 1500 m
+ * beyond the gap and given back at the follower's speed it is taken back,
+ * and over the next minute the follower never brakes harder than its type's
+ * decel (0.1 m/s^2, networks/ships.add.xml). */
+static void give_back_before_follower(fw_traffic *t)
+{
+    fw_error err = {0};
+    fw_target f = {0}, s = {0};
+    double ahead_x = INFINITY;
+    CHECK_MSG(lone_follower(t, &f, &ahead_x), "no eastbound ship on a lane's line alone");
+    const fw_target *all;
+    int n;
+    CHECK(fw_traffic_all(t, &all, &n, &err) == FW_OK);
+    for (int i = 0; i < n && !s.id[0] && f.id[0]; i++)
+        if (strcmp(all[i].id, f.id) && !all[i].own && sin(all[i].course) > 0.99999 &&
+            fmin(fabs(all[i].north + 125.0), fabs(all[i].north + 375.0)) < 0.01 &&
+            all[i].speed > 2.0)
+            s = all[i];
+    CHECK_MSG(s.id[0], "no other eastbound ship on a lane's line to take");
+    if (!f.id[0] || !s.id[0])
+        return;
+    CHECK(fw_traffic_take(t, s.id, &err) == FW_OK);
+    const double y = f.north + 0.3, front = f.east + 0.5 * f.length;
+    double x = front + 200.0 + 100.0 + 0.5 * s.length;
+    move_step(t, &s, x, y);
+    CHECK(fw_traffic_get(t, f.id, &f, &err) == FW_OK);
+    CHECK(fw_traffic_give_back(t, s.id, x + 1.0, y, M_PI / 2, 1.0, s.length, 1.0, &err) ==
+          FW_EINPUT);
+    CHECK_CONTAINS(err.msg, f.id);
+    printf("'%s' not given back 100 m beyond the gap ahead of '%s' at %.1f m/s: %s\n", s.id, f.id,
+           f.speed, err.msg);
+    x = fmin(front + 200.0 + 1500.0 + 0.5 * s.length, ahead_x - 1000.0);
+    move_step(t, &s, x, y);
+    CHECK(fw_traffic_get(t, f.id, &f, &err) == FW_OK);
+    CHECK_MSG(fw_traffic_give_back(t, s.id, x + f.speed, y, M_PI / 2, f.speed, s.length, 1.0,
+                                   &err) == FW_OK,
+              "%s", err.msg);
+    double v = f.speed, worst = 0.0;
+    for (int k = 0; k < 60; k++) {
+        double ox, oy, psi;
+        own_pose(fw_traffic_time(t), &ox, &oy, &psi);
+        CHECK(fw_traffic_place(t, ox, oy, psi, 6.0, &err) == FW_OK);
+        CHECK(fw_traffic_step(t, &err) == FW_OK);
+        CHECK(fw_traffic_get(t, f.id, &f, &err) == FW_OK);
+        worst = fmax(worst, v - f.speed), v = f.speed;
+    }
+    CHECK_MSG(worst <= 0.1 + 1e-6, "'%s' braked %.3f m/s in a step", f.id, worst);
+    printf("given back 1500 m beyond the gap ahead of '%s': its hardest braking %.3f m/s^2\n",
+           f.id, worst);
+}
+
 static void test_embedded(void)
 {
     fw_traffic_def d = fw_default_traffic_def();
@@ -564,6 +645,7 @@ static void test_embedded(void)
     run_channel(t, 1);
     take_give_back(t);
     give_back_mapped_across(t);
+    give_back_before_follower(t);
     give_back_beside_changer(t);
     fw_traffic_close(t);
     CHECK(access(log, R_OK) == 0);
@@ -606,6 +688,7 @@ static void test_remote(void)
         run_channel(t, 20); /* getters over a socket are slow: check every 20th step */
         take_give_back(t);
         give_back_mapped_across(t);
+        give_back_before_follower(t);
         fw_traffic_close(t);
     } else {
         CHECK_MSG(0, "%s", err.msg);

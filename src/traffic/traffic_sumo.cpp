@@ -393,29 +393,47 @@ std::string lane_of(const std::string &e, int k)
     return e + "_" + std::to_string(std::max(0, std::min(k, nl - 1)));
 }
 
+// Whether a ship at speed vf (its decel b and headway tau) gap m behind
+// the back of one at speed vl (decel bl) is already faster than SUMO's safe
+// speed behind it (Krauss: the speed from which, after its headway, it stops
+// behind the leader braking at the leader's own rate), and so must brake
+// harder than its own decel: SUMO brakes it at its emergency rate.
+bool must_brake_for(double gap, double vf, double b, double tau, double vl, double bl)
+{
+    return gap < 0.0 || vf * tau + vf * vf / (2.0 * b) > gap + vl * vl / (2.0 * bl);
+}
+
 // The ship of edge e's lanes in lane `lane` (or moving across into it from
-// another: its lateral offset towards it) that a ship of length len and gap
-// min_gap with its front at pos would have ahead within its gap or beside it,
+// another: its lateral offset towards it) that a ship of length len, gap
+// min_gap, speed v and decel b with its front at pos would have ahead within
+// its gap or beside it, or behind too close to slow for it (must_brake_for),
 // "" for none (id itself aside).  SUMO's lane changes take minutes
 // (lanechange.duration), and one begun beside a ship fairway had taken (its
 // lane-change model does not see such a ship) counts that ship, given back
 // there, as the follower that must let it in: it brakes at its emergency
 // rate to a stop and waits until the other is a gap ahead (strait-domain
 // seed 2, replication 4: west.5 given back beside west.1, a 366 m ship
-// crossing into its lane 28 m ahead, stopped for 150 s).
+// crossing into its lane 28 m ahead, stopped for 150 s).  A faster ship
+// behind brakes so too (dover-imperfect seed 2, replication 3 in fog:
+// sw_fill3, in a lane change out of sw_fill12's lane at 18.9 kn, was braked
+// to 0.6 kn in 12 s when sw_fill12 came back 10 kn slower 400 m ahead, and
+// slid sideways at 2.2 m/s as its lane change went on at a standstill).
 std::string lane_blocker(const std::string &e, int lane, const char *id, double pos, double len,
-                         double min_gap)
+                         double min_gap, double v, double b)
 {
     const int nl = S::Edge::getLaneNumber(e);
     for (int k = 0; k < nl; k++)
-        for (const std::string &v : S::Lane::getLastStepVehicleIDs(lane_of(e, k))) {
-            const double lat = S::Vehicle::getLateralLanePosition(v);
+        for (const std::string &o : S::Lane::getLastStepVehicleIDs(lane_of(e, k))) {
+            const double lat = S::Vehicle::getLateralLanePosition(o);
             // lanes count from the right, lateral offsets to the left
-            if (v == id || (k != lane && !(k > lane ? lat < -1e-3 : lat > 1e-3)))
+            if (o == id || (k != lane && !(k > lane ? lat < -1e-3 : lat > 1e-3)))
                 continue;
-            const double p = S::Vehicle::getLanePosition(v);
-            if (p > pos - len && p - S::Vehicle::getLength(v) - pos < min_gap)
-                return v;
+            const double p = S::Vehicle::getLanePosition(o);
+            if (p > pos - len ? p - S::Vehicle::getLength(o) - pos < min_gap
+                              : must_brake_for(pos - len - p - S::Vehicle::getMinGap(o),
+                                               S::Vehicle::getSpeed(o), S::Vehicle::getDecel(o),
+                                               S::Vehicle::getTau(o), v, b))
+                return o;
         }
     return "";
 }
@@ -451,10 +469,12 @@ fw_status be_rejoin(const char *id, double fx, double fy, double angle_deg, doub
             return;
         }
         const std::string b = lane_blocker(rp.edgeID, rp.laneIndex, id, rp.pos,
-                                           S::Vehicle::getLength(id), S::Vehicle::getMinGap(id));
+                                           S::Vehicle::getLength(id), S::Vehicle::getMinGap(id),
+                                           speed, S::Vehicle::getDecel(id));
         if (!b.empty()) {
-            st = fw_fail(err, FW_EINPUT, "ship '%s' would come back within its gap of '%s' in "
-                         "its lane or crossing into it: not yet", id, b.c_str());
+            st = fw_fail(err, FW_EINPUT, "ship '%s' would come back within its gap of '%s' (ahead, "
+                         "beside, or behind and too fast to slow for it) in its lane or crossing "
+                         "into it: not yet", id, b.c_str());
             return;
         }
         // keepRoute 1: onto that lane of its route, where it is along it;
