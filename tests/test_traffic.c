@@ -344,6 +344,25 @@ static void run_channel(fw_traffic *t, int check_every)
     CHECK_MSG(max_seen > 30, "only %d ships", max_seen);
 }
 
+/* The first ship of list (n) other than the own ship and skip that sails
+ * along x (east only if east) at more than 2 m/s on one of the lines y =
+ * lines[0..nl-1] (within 1 cm); an empty id for none. */
+static fw_target first_on_line(const fw_target *list, int n, const double *lines, int nl,
+                               bool east, const char *skip)
+{
+    fw_target none = {0};
+    for (int i = 0; i < n; i++) {
+        const fw_target *q = &list[i];
+        double s = east ? sin(q->course) : fabs(sin(q->course));
+        bool on = false;
+        for (int k = 0; k < nl; k++)
+            on = on || fabs(q->north - lines[k]) < 0.01;
+        if (on && !q->own && q->speed > 2.0 && s > 0.99999 && strcmp(q->id, skip))
+            return *q;
+    }
+    return none;
+}
+
 /* After run_channel (steps 600 on): a ship on its lane's line taken,
  * moved straight on by hand for a minute, given back (a point 50 m off its
  * lane refused first), then driven by SUMO on its lane at its speed. */
@@ -352,13 +371,9 @@ static void take_give_back(fw_traffic *t)
     fw_error err = {0};
     const fw_target *near;
     int n;
-    fw_target s = {0};
+    const double lines[4] = {-375.0, -125.0, 125.0, 375.0};
     CHECK(fw_traffic_around(t, &near, &n, &err) == FW_OK);
-    for (int i = 0; i < n && !s.id[0]; i++) {
-        double off = fmin(fabs(fabs(near[i].north) - 125.0), fabs(fabs(near[i].north) - 375.0));
-        if (off < 0.01 && near[i].speed > 2.0 && fabs(sin(near[i].course)) > 0.99999)
-            s = near[i];
-    }
+    fw_target s = first_on_line(near, n, lines, 4, false, "");
     CHECK_MSG(s.id[0], "no ship on a lane's line among %d", n);
     if (!s.id[0])
         return;
@@ -477,16 +492,22 @@ static void give_back_beside_changer(fw_traffic *t)
            c.id, into, err.msg);
 }
 
-/* One step of a taken ship moved by hand to (x, y) heading east, the own
- * ship on its circle. */
-static void move_step(fw_traffic *t, const fw_target *s, double x, double y)
+/* One step, the own ship on its circle. */
+static void own_step(fw_traffic *t)
 {
     fw_error err = {0};
     double ox, oy, psi;
     own_pose(fw_traffic_time(t), &ox, &oy, &psi);
-    CHECK(fw_traffic_move(t, s->id, x, y, M_PI / 2, s->length, &err) == FW_OK);
     CHECK(fw_traffic_place(t, ox, oy, psi, 6.0, &err) == FW_OK);
     CHECK(fw_traffic_step(t, &err) == FW_OK);
+}
+
+/* One step of a taken ship moved by hand to (x, y) heading east. */
+static void move_step(fw_traffic *t, const fw_target *s, double x, double y)
+{
+    fw_error err = {0};
+    CHECK(fw_traffic_move(t, s->id, x, y, M_PI / 2, s->length, &err) == FW_OK);
+    own_step(t);
 }
 
 /* An eastbound ship taken on lane 1's line (y = -125 m) and steered across
@@ -501,12 +522,9 @@ static void give_back_mapped_across(fw_traffic *t)
     fw_error err = {0};
     const fw_target *near;
     int n;
-    fw_target s = {0};
+    const double line = -125.0;
     CHECK(fw_traffic_around(t, &near, &n, &err) == FW_OK);
-    for (int i = 0; i < n && !s.id[0]; i++)
-        if (fabs(near[i].north + 125.0) < 0.01 && near[i].speed > 2.0 &&
-            sin(near[i].course) > 0.99999)
-            s = near[i];
+    fw_target s = first_on_line(near, n, &line, 1, true, "");
     CHECK_MSG(s.id[0], "no eastbound ship on lane 1's line among %d", n);
     if (!s.id[0])
         return;
@@ -533,10 +551,7 @@ static void give_back_mapped_across(fw_traffic *t)
     const double x0 = x + s.speed;
     fw_target g = {0};
     for (int k = 0; k < 10; k++) {
-        double ox, oy, psi;
-        own_pose(fw_traffic_time(t), &ox, &oy, &psi);
-        CHECK(fw_traffic_place(t, ox, oy, psi, 6.0, &err) == FW_OK);
-        CHECK(fw_traffic_step(t, &err) == FW_OK);
+        own_step(t);
         CHECK(fw_traffic_get(t, s.id, &g, &err) == FW_OK);
         /* on the eastbound half, heading east (a lane change to lane 0 may begin) */
         CHECK_MSG(g.north < -120.0 && g.north > -380.0, "'%s' at y = %.1f m", s.id, g.north);
@@ -557,10 +572,10 @@ static bool lone_follower(fw_traffic *t, fw_target *f, double *ahead_x)
     const fw_target *all;
     int n;
     CHECK(fw_traffic_all(t, &all, &n, &err) == FW_OK);
+    const double lines[2] = {-375.0, -125.0};
     for (int i = 0; i < n; i++) {
         const fw_target *q = &all[i];
-        double off = fmin(fabs(q->north + 125.0), fabs(q->north + 375.0));
-        if (q->own || off > 0.01 || q->speed < 3.0 || sin(q->course) < 0.99999)
+        if (!first_on_line(q, 1, lines, 2, true, "").id[0] || q->speed < 3.0)
             continue;
         double next = INFINITY;
         for (int j = 0; j < n; j++)
@@ -590,12 +605,10 @@ static void give_back_before_follower(fw_traffic *t)
     CHECK_MSG(lone_follower(t, &f, &ahead_x), "no eastbound ship on a lane's line alone");
     const fw_target *all;
     int n;
+    const double lines[2] = {-375.0, -125.0};
     CHECK(fw_traffic_all(t, &all, &n, &err) == FW_OK);
-    for (int i = 0; i < n && !s.id[0] && f.id[0]; i++)
-        if (strcmp(all[i].id, f.id) && !all[i].own && sin(all[i].course) > 0.99999 &&
-            fmin(fabs(all[i].north + 125.0), fabs(all[i].north + 375.0)) < 0.01 &&
-            all[i].speed > 2.0)
-            s = all[i];
+    if (f.id[0])
+        s = first_on_line(all, n, lines, 2, true, f.id);
     CHECK_MSG(s.id[0], "no other eastbound ship on a lane's line to take");
     if (!f.id[0] || !s.id[0])
         return;
@@ -617,10 +630,7 @@ static void give_back_before_follower(fw_traffic *t)
               "%s", err.msg);
     double v = f.speed, worst = 0.0;
     for (int k = 0; k < 60; k++) {
-        double ox, oy, psi;
-        own_pose(fw_traffic_time(t), &ox, &oy, &psi);
-        CHECK(fw_traffic_place(t, ox, oy, psi, 6.0, &err) == FW_OK);
-        CHECK(fw_traffic_step(t, &err) == FW_OK);
+        own_step(t);
         CHECK(fw_traffic_get(t, f.id, &f, &err) == FW_OK);
         worst = fmax(worst, v - f.speed), v = f.speed;
     }
