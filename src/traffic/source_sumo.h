@@ -59,8 +59,9 @@
  * SUMO drives it on; refused if that lane is not on its route as taken
  * ahead, if its line is more than
  * FW_SOURCE_REJOIN_MAX away, or while a ship in that lane or changing lanes
- * into it is beside it or ahead within its gap (traffic.h
- * fw_traffic_give_back): it is steered on along its line meanwhile.
+ * into it is beside it or ahead within its gap, or behind too close to slow
+ * for it at its own decel (traffic.h fw_traffic_give_back): it is steered
+ * on along its line meanwhile.
  * Taken again before SUMO has stepped it (in the step it was given back),
  * it is handed over as it was given back, and its rejoin is not made.
  */

@@ -193,10 +193,11 @@ fw_status fw_traffic_lane(fw_traffic *t, const char *id, double *xy, int max, in
  * away, the nearest lane is not on its route ahead (its route as taken:
  * SUMO gives a ship steered across another edge's lane line that edge as
  * its route), or a ship in that lane or changing lanes into it would be
- * beside it or ahead within its gap
- * (its type's minGap): SUMO's lane-change model, whose lane change the
- * taken ship did not hinder, stops a ship given back there at its
- * emergency rate until the other is a gap ahead. */
+ * beside it or ahead within its gap (its type's minGap), or behind it faster
+ * than SUMO's safe speed there: SUMO's lane-change model, whose lane change
+ * the taken ship did not hinder, stops a ship given back beside one at its
+ * emergency rate until the other is a gap ahead, and its car following
+ * brakes a ship too close behind at its emergency rate. */
 fw_status fw_traffic_give_back(fw_traffic *t, const char *id, double x, double y, double heading,
                                double speed, double length, double max_off, fw_error *err);
 /* Advances SUMO by one step. */
