@@ -293,6 +293,20 @@ static void test_head_on_alters(void)
     fw_world_destroy(w);
 }
 
+/* A steered 150 m ship (speed m/s its own) on a lane north along east 0,
+ * the ship it gave way to past (it comes back at once). */
+static fw_controller *past_on_lane(double speed)
+{
+    fw_alter_def def = fw_default_alter_def();
+    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
+    def.length = 150.0, def.breadth = 25.0, def.speed = speed;
+    snprintf(def.other, sizeof def.other, "%s", "gone");
+    fw_controller *c = NULL;
+    fw_error err = {0};
+    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    return c;
+}
+
 /* Keeping its distance: a steered ship (150 x 25 m, its own speed 6 m/s) on
  * its lane's line going north, a lane-mate 1 km ahead at 3 m/s.  It slows
  * at no more than 0.1 m/s^2, never comes within SUMO's gap of 200 m hull to
@@ -300,13 +314,8 @@ static void test_head_on_alters(void)
  * lane-mate's speed (kinematic: it makes good its order along the line). */
 static void test_follows_a_slower_ship_ahead(void)
 {
-    fw_alter_def def = fw_default_alter_def();
-    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
-    def.length = 150.0, def.breadth = 25.0, def.speed = 6.0;
-    snprintf(def.other, sizeof def.other, "%s", "gone"); /* past: it comes back at once */
-    fw_controller *c = NULL;
+    fw_controller *c = past_on_lane(6.0);
     fw_error err = {0};
-    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
     fw_own_state o = {.U = 6.0};
     fw_target lead = {.id = "lead", .north = 1000.0, .speed = 3.0, .stw = 3.0, .length = 150.0,
                       .breadth = 25.0};
@@ -349,13 +358,8 @@ static void test_follows_a_slower_ship_ahead(void)
  * events in seeds 1-4 at 64 replications). */
 static double slowest_behind(double cur_n)
 {
-    fw_alter_def def = fw_default_alter_def();
-    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
-    def.length = 150.0, def.breadth = 25.0, def.speed = 6.0;
-    snprintf(def.other, sizeof def.other, "%s", "gone");
-    fw_controller *c = NULL;
+    fw_controller *c = past_on_lane(6.0);
     fw_error err = {0};
-    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
     fw_own_state o = {.U = 6.0, .cur_n = cur_n};
     fw_target lead = {.id = "lead", .north = 600.0, .speed = 0.3, .stw = 0.3 - cur_n,
                       .length = 150.0, .breadth = 25.0};
@@ -422,13 +426,7 @@ static void sail_pair(fw_controller *c, fw_own_state *o, fw_target *t, int n, do
  * background overlaps in seeds 1-4 on a93facc). */
 static void test_close_quarters_keeps_way_out_of_a_lane(void)
 {
-    fw_alter_def def = fw_default_alter_def();
-    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
-    def.length = 150.0, def.breadth = 25.0, def.speed = 8.0;
-    snprintf(def.other, sizeof def.other, "%s", "gone");
-    fw_controller *c = NULL;
-    fw_error err = {0};
-    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
+    fw_controller *c = past_on_lane(8.0);
     fw_own_state o = {.U = 1.0};
     fw_target t = {.id = "lane", .east = -1500.0, .north = 150.0, .course = 0.5 * FW_PI,
                    .heading = 0.5 * FW_PI, .speed = 6.0, .stw = 6.0, .length = 150.0,
@@ -447,17 +445,12 @@ static void test_close_quarters_keeps_way_out_of_a_lane(void)
  * way and neither saw the other (strait-domain, seed 4, replication 4). */
 static void test_converging_from_abeam_is_crossing(void)
 {
-    fw_alter_def def = fw_default_alter_def();
-    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
-    def.length = 150.0, def.breadth = 25.0, def.speed = fw_kn_to_ms(15.0);
-    snprintf(def.other, sizeof def.other, "%s", "gone");
-    fw_controller *c = NULL;
-    fw_error err = {0};
-    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
-    fw_own_state o = {.U = def.speed};
+    const double speed = fw_kn_to_ms(15.0);
+    fw_controller *c = past_on_lane(speed);
+    fw_own_state o = {.U = speed};
     /* meeting at (0, 3000) in 390 s: it from due east of that point's
      * approach, on 327 deg */
-    double v = fw_kn_to_ms(19.0), tm = 3000.0 / def.speed, crs = fw_deg_to_rad(327.0);
+    double v = fw_kn_to_ms(19.0), tm = 3000.0 / speed, crs = fw_deg_to_rad(327.0);
     fw_target t = {.id = "ferry", .course = crs, .heading = crs, .speed = v, .stw = v,
                    .length = 150.0, .breadth = 25.0};
     t.east = -v * tm * sin(crs), t.north = 3000.0 - v * tm * cos(crs);
@@ -522,20 +515,7 @@ static void test_overtaking_a_ship_moving_off(void)
     fw_world_destroy(w);
 }
 
-/* A steered 150 m ship (speed m/s its own) on a lane north along east 0,
- * the ship it gave way to past; and a 150 m ship at (e, n) m on course
- * deg at v m/s. */
-static fw_controller *past_on_lane(double speed)
-{
-    fw_alter_def def = fw_default_alter_def();
-    def.lane = (fw_lane_info){.np = 2, .e = {0.0, 0.0}, .n = {-1e4, 5e4}};
-    def.length = 150.0, def.breadth = 25.0, def.speed = speed;
-    snprintf(def.other, sizeof def.other, "%s", "gone");
-    fw_controller *c = NULL;
-    fw_error err = {0};
-    CHECK(fw_steer_controller_create(&def, &c, &err) == FW_OK);
-    return c;
-}
+/* A 150 m ship at (e, n) m on course deg at v m/s. */
 
 static fw_target ship_at(double e, double n, double deg, double v)
 {
